@@ -1,0 +1,1 @@
+//! Axisymmetric finite elements (report Appendices A and B).

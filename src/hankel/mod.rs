@@ -1,0 +1,1 @@
+//! Semi-analytic infinite-slab solutions by Hankel transforms (Sneddon 1946).

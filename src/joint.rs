@@ -1,0 +1,297 @@
+//! The joint's geometry in the report's notation (Nomenclature; Fig. 5): hole radius A, load
+//! annulus A..B, plate outer radius C (finite or infinite), plate thickness D (of ONE plate), and a
+//! material per plate.
+//!
+//! Two descriptions are used:
+//! - [`Joint`]: two plates pressed together by a bolt head on the outer face of the upper plate and a
+//!   nut on the outer face of the lower plate, both over the same annulus (the two-plate model,
+//!   report Figs. 4–5);
+//! - [`SinglePlate`]: the single-plate substitution of Fernlund, Greenwood and Lardner, one plate 2D
+//!   thick loaded symmetrically on both faces (report Fig. 3(f)); its midplane σ_z approximates the
+//!   interface pressure.
+//!
+//! Lengths in any one unit (inches in the report and the command-line tool).
+//!
+//! ```
+//! use boltzone::{Joint, Material};
+//! let j = Joint::symmetric(0.1, 0.31, 0.1, Material::unit(0.3).unwrap()).unwrap();
+//! let s = j.single_plate_substitute().unwrap();
+//! assert_eq!(s.half_thickness(), 0.1);
+//! assert!(Joint::symmetric(0.1, 0.05, 0.1, Material::unit(0.3).unwrap()).is_err());
+//! ```
+
+use crate::error::{non_negative, positive, InputError};
+use crate::load::FaceLoad;
+use crate::material::Material;
+use serde::{Deserialize, Serialize};
+
+/// Outer radius C of the plates.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub enum OuterRadius {
+    /// An infinite plate (the Hankel-transform solutions).
+    Infinite,
+    /// A finite plate of radius C with a traction-free rim unless supports say otherwise.
+    Finite(f64),
+}
+
+impl OuterRadius {
+    /// C as a number (`f64::INFINITY` for an infinite plate).
+    pub fn value(&self) -> f64 {
+        match self {
+            Self::Infinite => f64::INFINITY,
+            Self::Finite(c) => *c,
+        }
+    }
+
+    fn check(&self, b: f64) -> Result<(), InputError> {
+        if let Self::Finite(c) = *self {
+            positive("plate outer radius C", c)?;
+            if c <= b {
+                return Err(InputError::OuterRadius { b, c });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// One plate: thickness D and material.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Plate {
+    thickness: f64,
+    material: Material,
+}
+
+impl Plate {
+    /// A plate `thickness` thick (> 0) of `material`.
+    pub fn new(thickness: f64, material: Material) -> Result<Self, InputError> {
+        positive("plate thickness D", thickness)?;
+        Ok(Self {
+            thickness,
+            material,
+        })
+    }
+
+    /// Thickness D.
+    pub fn thickness(&self) -> f64 {
+        self.thickness
+    }
+
+    /// Material.
+    pub fn material(&self) -> Material {
+        self.material
+    }
+}
+
+fn check_load_on_plate(hole_radius: f64, load: &FaceLoad) -> Result<(), InputError> {
+    non_negative("hole radius A", hole_radius)?;
+    if load.inner() < hole_radius {
+        return Err(InputError::LoadOffPlate {
+            load_a: load.inner(),
+            hole_a: hole_radius,
+        });
+    }
+    Ok(())
+}
+
+/// Two plates clamped by a bolt: the upper plate's outer face carries the head's pressure, the
+/// lower plate's outer face the nut's, both the same `load` (report eq. 2.7 and Fig. 11).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Joint {
+    hole_radius: f64,
+    outer_radius: OuterRadius,
+    upper: Plate,
+    lower: Plate,
+    load: FaceLoad,
+}
+
+impl Joint {
+    /// A joint of two plates with a hole of radius `hole_radius` (0: no hole).
+    pub fn new(
+        hole_radius: f64,
+        outer_radius: OuterRadius,
+        upper: Plate,
+        lower: Plate,
+        load: FaceLoad,
+    ) -> Result<Self, InputError> {
+        check_load_on_plate(hole_radius, &load)?;
+        outer_radius.check(load.outer())?;
+        Ok(Self {
+            hole_radius,
+            outer_radius,
+            upper,
+            lower,
+            load,
+        })
+    }
+
+    /// Two equal infinite plates `d` thick, uniform unit pressure on `a ≤ r ≤ b`.
+    pub fn symmetric(a: f64, b: f64, d: f64, material: Material) -> Result<Self, InputError> {
+        let plate = Plate::new(d, material)?;
+        Self::new(
+            a,
+            OuterRadius::Infinite,
+            plate,
+            plate,
+            FaceLoad::uniform(a, b, 1.0)?,
+        )
+    }
+
+    /// The same joint with outer radius `c`.
+    pub fn with_outer_radius(mut self, c: OuterRadius) -> Result<Self, InputError> {
+        c.check(self.load.outer())?;
+        self.outer_radius = c;
+        Ok(self)
+    }
+
+    /// The same joint with another load.
+    pub fn with_load(mut self, load: FaceLoad) -> Result<Self, InputError> {
+        check_load_on_plate(self.hole_radius, &load)?;
+        self.outer_radius.check(load.outer())?;
+        self.load = load;
+        Ok(self)
+    }
+
+    /// Hole radius A.
+    pub fn hole_radius(&self) -> f64 {
+        self.hole_radius
+    }
+
+    /// Outer radius C.
+    pub fn outer_radius(&self) -> OuterRadius {
+        self.outer_radius
+    }
+
+    /// The plate under the bolt head.
+    pub fn upper(&self) -> Plate {
+        self.upper
+    }
+
+    /// The plate under the nut.
+    pub fn lower(&self) -> Plate {
+        self.lower
+    }
+
+    /// The bearing pressure of head and nut.
+    pub fn load(&self) -> &FaceLoad {
+        &self.load
+    }
+
+    /// Whether the two plates are equal (same thickness and material): then the joint is one plate
+    /// on a frictionless rigid plane (report Chapter II.B).
+    pub fn is_symmetric(&self) -> bool {
+        self.upper == self.lower
+    }
+
+    /// The single-plate substitute (a plate 2D thick loaded on both faces) of a symmetric joint;
+    /// `None` for unequal plates, which have no symmetric substitute.
+    pub fn single_plate_substitute(&self) -> Option<SinglePlate> {
+        self.is_symmetric().then(|| SinglePlate {
+            hole_radius: self.hole_radius,
+            outer_radius: self.outer_radius,
+            half_thickness: self.upper.thickness,
+            material: self.upper.material,
+            load: self.load.clone(),
+        })
+    }
+}
+
+/// The single-plate substitution: one plate 2D thick (midplane z = 0, faces z = ±D), both faces
+/// pressed by the same `load`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SinglePlate {
+    hole_radius: f64,
+    outer_radius: OuterRadius,
+    half_thickness: f64,
+    material: Material,
+    load: FaceLoad,
+}
+
+impl SinglePlate {
+    /// A plate `2 half_thickness` thick with a hole of radius `hole_radius` (0: none).
+    pub fn new(
+        hole_radius: f64,
+        outer_radius: OuterRadius,
+        half_thickness: f64,
+        material: Material,
+        load: FaceLoad,
+    ) -> Result<Self, InputError> {
+        positive("plate thickness D", half_thickness)?;
+        check_load_on_plate(hole_radius, &load)?;
+        outer_radius.check(load.outer())?;
+        Ok(Self {
+            hole_radius,
+            outer_radius,
+            half_thickness,
+            material,
+            load,
+        })
+    }
+
+    /// Hole radius A.
+    pub fn hole_radius(&self) -> f64 {
+        self.hole_radius
+    }
+
+    /// Outer radius C.
+    pub fn outer_radius(&self) -> OuterRadius {
+        self.outer_radius
+    }
+
+    /// D: half the thickness of the substitute, the thickness of one plate of the joint.
+    pub fn half_thickness(&self) -> f64 {
+        self.half_thickness
+    }
+
+    /// Material.
+    pub fn material(&self) -> Material {
+        self.material
+    }
+
+    /// The face load (on both faces).
+    pub fn load(&self) -> &FaceLoad {
+        &self.load
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn steel() -> Material {
+        Material::steel_304_psi()
+    }
+
+    #[test]
+    fn errors_name_the_field() {
+        let e = Joint::symmetric(0.1, 0.3, 0.0, steel()).unwrap_err();
+        assert!(e.to_string().contains("plate thickness D = 0"), "{e}");
+        let e = Joint::symmetric(-0.1, 0.3, 0.1, steel()).unwrap_err();
+        assert!(e.to_string().contains("A"), "{e}");
+        let j = Joint::symmetric(0.1, 0.3, 0.1, steel()).unwrap();
+        let e = j
+            .clone()
+            .with_outer_radius(OuterRadius::Finite(0.2))
+            .unwrap_err();
+        assert_eq!(e, InputError::OuterRadius { b: 0.3, c: 0.2 });
+        let off = FaceLoad::uniform(0.05, 0.3, 1.0).unwrap();
+        assert!(matches!(
+            j.with_load(off),
+            Err(InputError::LoadOffPlate { .. })
+        ));
+    }
+
+    #[test]
+    fn unequal_plates_have_no_substitute() {
+        let load = FaceLoad::uniform(0.1285, 0.211, 1.0).unwrap();
+        let j = Joint::new(
+            0.1285,
+            OuterRadius::Finite(2.0),
+            Plate::new(0.124, steel()).unwrap(),
+            Plate::new(0.257, steel()).unwrap(),
+            load,
+        )
+        .unwrap();
+        assert!(!j.is_symmetric());
+        assert!(j.single_plate_substitute().is_none());
+    }
+}
