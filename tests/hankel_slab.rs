@@ -9,7 +9,12 @@ use boltzone::hankel::{MidplaneCurve, MidplaneRule, QuadParams, Slab};
 use boltzone::{FaceLoad, Material, Peak};
 
 fn slab(a: f64, b: f64, d: f64) -> Slab {
-    Slab::new(d, Material::unit(0.3).unwrap(), FaceLoad::uniform(a, b, 1.0).unwrap()).unwrap()
+    Slab::new(
+        d,
+        Material::unit(0.3).unwrap(),
+        FaceLoad::uniform(a, b, 1.0).unwrap(),
+    )
+    .unwrap()
 }
 
 #[test]
@@ -18,8 +23,16 @@ fn kernels_meet_the_face_conditions_and_bound() {
     for k in 0..2000 {
         let t = 1e-6 * 1.01f64.powi(k);
         let kk = Kernels::at(t, t, 0.3);
-        assert!((kk.z - 1.0).abs() < 8.0 * f64::EPSILON * (1.0 + t), "t={t} {}", kk.z);
-        assert!(kk.tau.abs() < 8.0 * f64::EPSILON * (1.0 + t), "t={t} {}", kk.tau);
+        assert!(
+            (kk.z - 1.0).abs() < 8.0 * f64::EPSILON * (1.0 + t),
+            "t={t} {}",
+            kk.z
+        );
+        assert!(
+            kk.tau.abs() < 8.0 * f64::EPSILON * (1.0 + t),
+            "t={t} {}",
+            kk.tau
+        );
         assert!(midplane(t) <= midplane_bound(t) && midplane(t) >= 0.0);
         assert!((midplane(t) - Kernels::at(t, 0.0, 0.3).z).abs() < 1e-15);
         // the overflow-free form agrees with the textbook form where that is safe
@@ -35,7 +48,11 @@ fn kernels_meet_the_face_conditions_and_bound() {
 fn total_force_is_carried_by_the_midplane() {
     // 2π ∫ σ_z(r, 0) r dr = −P π (B² − A²); σ_z decays like e^(−2.1 r/D) beyond the load,
     // so [0, B + 30D] with 20-point Gauss panels of width D/4 holds everything above 1e-20
-    for &(a, b, d) in &[(0.1, 0.31, 0.1), (0.1, 0.13, 0.2), (0.1, 0.16, 0.1333333333333333)] {
+    for &(a, b, d) in &[
+        (0.1, 0.31, 0.1),
+        (0.1, 0.13, 0.2),
+        (0.1, 0.16, 0.1333333333333333),
+    ] {
         let s = slab(a, b, d);
         let r_end = b + 30.0 * d;
         let rule = MidplaneRule::new(&s, r_end, 1e-15).unwrap();
@@ -50,7 +67,10 @@ fn total_force_is_carried_by_the_midplane() {
             }
         }
         let exact = -(b * b - a * a) / 2.0;
-        assert!((f - exact).abs() < 1e-9 * exact.abs(), "{a} {b} {d}: {f} vs {exact}");
+        assert!(
+            (f - exact).abs() < 1e-9 * exact.abs(),
+            "{a} {b} {d}: {f} vs {exact}"
+        );
     }
 }
 
@@ -72,7 +92,10 @@ fn face_conditions_hold_in_the_limit_from_inside() {
     // about Πδ_i·|fourth derivative|/24 ≈ 1e-9 for a field varying on the scale of the nearest
     // load edge (≥ 0.04 here). σ_z → −p(r) and τ_rz → 0 to 1e-8 away from the edges.
     let s = slab(0.1, 0.31, 0.1);
-    let p = QuadParams { rel_tol: 1e-13, ..Default::default() };
+    let p = QuadParams {
+        rel_tol: 1e-13,
+        ..Default::default()
+    };
     let deltas = [0.25e-3, 0.5e-3, 1e-3, 2e-3];
     let limit = |v: &[f64]| extrapolate_to_zero(&deltas, v);
     for &r in &[0.0, 0.15, 0.2, 0.5] {
@@ -85,7 +108,11 @@ fn face_conditions_hold_in_the_limit_from_inside() {
         assert!(tau.abs() < 1e-8, "r={r}: τ → {tau}");
         // the face route (analytic half-space terms + decaying remainders) gives the same σ_r
         let f = s.stress(r, 0.1, &p);
-        assert!((f.sigma_r.value - sr).abs() < 1e-8, "r={r}: σ_r {} vs {sr}", f.sigma_r.value);
+        assert!(
+            (f.sigma_r.value - sr).abs() < 1e-8,
+            "r={r}: σ_r {} vs {sr}",
+            f.sigma_r.value
+        );
     }
 }
 
@@ -100,7 +127,10 @@ fn thick_slab_tends_to_boussinesq_on_the_axis() {
     let disk = |rad: f64, s: f64| {
         let q = (rad * rad + s * s).sqrt();
         let c = s.powi(3) / q.powi(3);
-        (-(1.0 - c), -0.5 * ((1.0 + 2.0 * nu) - 2.0 * (1.0 + nu) * s / q + c))
+        (
+            -(1.0 - c),
+            -0.5 * ((1.0 + 2.0 * nu) - 2.0 * (1.0 + nu) * s / q + c),
+        )
     };
     let p = QuadParams::default();
     let mut errs = Vec::new();
@@ -129,7 +159,12 @@ fn wide_uniform_load_compresses_the_midplane_by_p() {
     // exponentially small in B/D
     let mut last = 1.0;
     for &bd in &[2.0, 5.0, 10.0, 20.0] {
-        let s = Slab::new(1.0, Material::unit(0.3).unwrap(), FaceLoad::uniform(0.0, bd, 1.0).unwrap()).unwrap();
+        let s = Slab::new(
+            1.0,
+            Material::unit(0.3).unwrap(),
+            FaceLoad::uniform(0.0, bd, 1.0).unwrap(),
+        )
+        .unwrap();
         let e = s.sigma_z(0.0, 0.0, &QuadParams::default());
         let dev = (e.value + 1.0).abs();
         assert!(dev < last, "B/D = {bd}: {dev}");
@@ -144,7 +179,10 @@ fn interior_field_is_in_equilibrium() {
     // differences of step h: the residual must be pure O(h²) truncation, so it falls by 4 per
     // halving of h (observed slope 2 ± 0.2) and is small at the finest h.
     let s = slab(0.1, 0.31, 0.1);
-    let p = QuadParams { rel_tol: 1e-14, ..Default::default() };
+    let p = QuadParams {
+        rel_tol: 1e-14,
+        ..Default::default()
+    };
     for &(r, z) in &[(0.2, 0.05), (0.35, 0.08), (0.5, 0.02)] {
         let c = s.stress(r, z, &p);
         let residual = |h: f64| {
@@ -160,7 +198,10 @@ fn interior_field_is_in_equilibrium() {
         };
         let (e1, e3) = (residual(4e-3), residual(1e-3));
         let slope = (e1 / e3).log2() / 2.0;
-        assert!((slope - 2.0).abs() < 0.2, "({r},{z}): residuals {e1:e} {e3:e}");
+        assert!(
+            (slope - 2.0).abs() < 0.2,
+            "({r},{z}): residuals {e1:e} {e3:e}"
+        );
         // terms are O(P/D) = 10; the residual at h = D/100 is 1e-3 of that
         assert!(e3 < 1e-2, "({r},{z}): {e3:e}");
     }
@@ -170,7 +211,10 @@ fn interior_field_is_in_equilibrium() {
 fn displacement_is_compatible_with_strain() {
     // ε_θ = u/r = (σ_θ − ν(σ_r + σ_z))/E: a second, independent combination of the kernels
     let s = slab(0.1, 0.31, 0.1);
-    let p = QuadParams { rel_tol: 1e-13, ..Default::default() };
+    let p = QuadParams {
+        rel_tol: 1e-13,
+        ..Default::default()
+    };
     for &(r, z) in &[(0.2, 0.0), (0.4, 0.05), (0.15, 0.09)] {
         let st = s.stress(r, z, &p);
         let u = s.displacement(r, z, &p).u.value;
@@ -181,17 +225,30 @@ fn displacement_is_compatible_with_strain() {
 
 #[test]
 fn fast_midplane_rule_and_curve_match_direct_quadrature() {
-    for load in [FaceLoad::uniform(0.1, 0.31, 1.0).unwrap(), FaceLoad::triangular(0.1, 0.31, 1.0, Peak::AtA).unwrap()] {
+    for load in [
+        FaceLoad::uniform(0.1, 0.31, 1.0).unwrap(),
+        FaceLoad::triangular(0.1, 0.31, 1.0, Peak::AtA).unwrap(),
+    ] {
         let s = Slab::new(0.1, Material::unit(0.3).unwrap(), load).unwrap();
         let rule = MidplaneRule::new(&s, 1.5, 1e-13).unwrap();
         let curve = MidplaneCurve::new(&s, 0.0, 1.5, 1e-12).unwrap();
         for k in 0..40 {
             let r = 1.5 * k as f64 / 39.0;
-            let d = s.sigma_z(r, 0.0, &QuadParams { rel_tol: 1e-14, ..Default::default() });
+            let d = s.sigma_z(
+                r,
+                0.0,
+                &QuadParams {
+                    rel_tol: 1e-14,
+                    ..Default::default()
+                },
+            );
             let f = rule.eval(r);
             let c = curve.eval(r);
             assert!((d.value - f.value).abs() <= d.error + f.error, "r={r}");
-            assert!((d.value - c.value).abs() <= d.error + c.error && c.error < 1e-11, "r={r}");
+            assert!(
+                (d.value - c.value).abs() <= d.error + c.error && c.error < 1e-11,
+                "r={r}"
+            );
         }
     }
 }

@@ -205,7 +205,11 @@ pub fn integrate_oscillatory_vec<const N: usize, F: FnMut(f64) -> [f64; N]>(
     loop {
         let (mut x0, end) = (k as f64 * h, (k + 1) as f64 * h);
         while x0 < end {
-            let x1 = if x0 < cut { (x0 + smooth).min(end) } else { end };
+            let x1 = if x0 < cut {
+                (x0 + smooth).min(end)
+            } else {
+                end
+            };
             let (c, hw) = (0.5 * (x0 + x1), 0.5 * (x1 - x0));
             x0 = x1;
             evaluations += rule.len();
