@@ -9,7 +9,7 @@ use boltzone::{FaceLoad, Material};
 use std::time::Instant;
 
 fn main() -> anyhow::Result<()> {
-    let repeats: usize = std::env::args().nth(1).map_or(Ok(20), |s| s.parse())?;
+    let repeats: usize = std::env::args().nth(1).map_or(Ok(3), |s| s.parse())?;
     let a = 0.1;
     let mut ok = true;
     println!("R_o/A of the no-hole slab, Table 1's geometries (A = 0.1, nu = 0.3):");
