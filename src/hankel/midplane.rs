@@ -1,11 +1,13 @@
 //! The midplane stress σ_z(r, 0) = −∫₀^∞ ξ p̄(ξ) K(ξD) J₀(ξr) dξ fast, for many radii.
 //!
 //! K(t) = 2(sinh t + t cosh t)/(sinh 2t + 2t) ≤ 2.5(1 + t)e^(−t) ([`super::kernel`]), and
-//! |p̄| ≤ M = ∫|p| r dr, so the tail beyond ξ = T/D is at most
-//! 2.5·M·e^(−T)(T² + 3T + 3)/D²: [`MidplaneRule`] truncates there with T chosen from the
-//! tolerance, cuts [0, T/D] into panels no wider than three half-periods of the fastest
+//! |p̄| ≤ min(M, C₁/ξ) with M = ∫|p| r dr ([`super::transform::LoadTransform::decay_constant`] gives C₁), so the
+//! tail beyond ξ = T/D is at most 2.5 e^(−T) min(M(T² + 3T + 3)/D², C₁(T + 2)/D):
+//! [`MidplaneRule`] truncates there with T chosen from the tolerance, cuts [0, T/D] into panels no wider than five half-periods of the fastest
 //! oscillation (r_max + B) and no wider than 1.5/D (the kernel's scale), and puts a 20-point
-//! Gauss–Legendre rule on each. The weights w_i ξ_i p̄(ξ_i) K(ξ_i D) are computed once, so
+//! Gauss–Legendre rule on each (Gauss's error bound for cos ωξ on 5 half-periods with 20
+//! points: (5π)^41 (20!)^4/(41·(40!)^3) ≈ 2e-23 of the amplitude; the kernel's poles at
+//! Im ξ ≈ 1.1/D give a Bernstein ellipse ρ ≈ 3.3 on panels of 1.5/D, ρ^(−40) ≈ 2e-21). The weights w_i ξ_i p̄(ξ_i) K(ξ_i D) are computed once, so
 //! σ_z(r, 0) = −Σ c_i J₀(ξ_i r) for every r ≤ r_max. Error estimate: the tail bound plus a
 //! rounding floor 50ε Σ|c_i| (the Gauss rule's own error, ≈ 1e-25 of the amplitude, is
 //! checked in the tests against a rule of twice the density).
@@ -51,21 +53,18 @@ impl MidplaneRule {
         positive("midplane tolerance", abs_tol)?;
         let d = slab.half_thickness();
         let tr = slab.transform();
-        let m = tr.abs_moment();
-        let bound = |t: f64| 2.5 * m * (-t).exp() * (t * t + 3.0 * t + 3.0) / (d * d);
-        let mut t: f64 = 10.0;
-        for _ in 0..50 {
-            let next = (2.5 * m * (t * t + 3.0 * t + 3.0) / (d * d * 0.5 * abs_tol))
-                .ln()
-                .max(1.0);
-            if (next - t).abs() < 1e-3 {
-                t = next;
-                break;
-            }
-            t = next;
+        let (m, c1) = (tr.abs_moment(), tr.decay_constant());
+        // tail beyond ξ = T/D with |p̄| ≤ M: 2.5 M e^(−T)(T² + 3T + 3)/D²;
+        // with |p̄| ≤ C₁/ξ: 2.5 C₁ e^(−T)(T + 2)/D. The smaller bound decides.
+        let bound = |t: f64| {
+            2.5 * (-t).exp() * (m * (t * t + 3.0 * t + 3.0) / (d * d)).min(c1 * (t + 2.0) / d)
+        };
+        let mut t: f64 = 1.0;
+        while bound(t) > 0.5 * abs_tol && t < 800.0 {
+            t += 0.125;
         }
         let xi_max = t / d;
-        let width = (3.0 * PI / (r_max + tr.outer())).min(1.5 / d);
+        let width = (5.0 * PI / (r_max + tr.outer())).min(1.5 / d);
         let panels = (xi_max / width).ceil();
         let rule = gauss_legendre(20);
         let n = panels * rule.len() as f64;
@@ -127,14 +126,20 @@ impl MidplaneRule {
     }
 }
 
-/// Chebyshev points per panel of a [`MidplaneCurve`].
-const CHEB: usize = 28;
+/// Chebyshev points per panel of a [`MidplaneCurve`] for an absolute tolerance `tol` relative
+/// to the curve's scale: σ_z(r, 0) is analytic in the strip |Im r| < D (the ξ-integrand is
+/// bounded by e^(−ξD)·e^(ξ|Im r|)), so on panels of width D the Chebyshev coefficients fall
+/// like ρ^(−n) with ρ = 2 + √5 (Bernstein ellipse of semi-minor axis D over half-width D/2).
+fn cheb_points(tol: f64) -> usize {
+    let rho = 2.0 + 5f64.sqrt();
+    (((1e3 / tol.clamp(1e-16, 1e-2)).ln() / rho.ln()).ceil() as usize).clamp(8, 40)
+}
 
 /// Piecewise Chebyshev interpolant of σ_z(r, 0) on [r₀, r₁].
 #[derive(Debug, Clone)]
 pub struct MidplaneCurve {
     breaks: Vec<f64>,
-    coef: Vec<[f64; CHEB]>,
+    coef: Vec<Vec<f64>>,
     errors: Vec<f64>,
     evaluations: usize,
 }
@@ -152,25 +157,31 @@ impl MidplaneCurve {
         let breaks: Vec<f64> = (0..=n).map(|k| r0 + k as f64 * h).collect();
         let mut coef = Vec::with_capacity(n);
         let mut errors = Vec::with_capacity(n);
+        let scale = slab
+            .load()
+            .values()
+            .iter()
+            .fold(0.0f64, |m, v| m.max(v.abs()));
+        let cheb = cheb_points(abs_tol / scale.max(f64::MIN_POSITIVE));
         for k in 0..n {
             let (a, b) = (breaks[k], breaks[k + 1]);
             // values at Chebyshev points x_j = cos(π(j + ½)/N), then the discrete cosine transform
-            let vals: Vec<f64> = (0..CHEB)
+            let vals: Vec<f64> = (0..cheb)
                 .map(|j| {
-                    let x = (PI * (j as f64 + 0.5) / CHEB as f64).cos();
+                    let x = (PI * (j as f64 + 0.5) / cheb as f64).cos();
                     rule.eval(0.5 * (a + b) + 0.5 * (b - a) * x).value
                 })
                 .collect();
-            let mut c = [0.0; CHEB];
+            let mut c = vec![0.0; cheb];
             for (m, cm) in c.iter_mut().enumerate() {
-                let s: f64 = (0..CHEB)
-                    .map(|j| vals[j] * (PI * m as f64 * (j as f64 + 0.5) / CHEB as f64).cos())
+                let s: f64 = (0..cheb)
+                    .map(|j| vals[j] * (PI * m as f64 * (j as f64 + 0.5) / cheb as f64).cos())
                     .sum();
-                *cm = 2.0 * s / CHEB as f64;
+                *cm = 2.0 * s / cheb as f64;
             }
             c[0] *= 0.5;
             // the last three coefficients bound the truncation; the rule's error adds
-            let tail = c[CHEB - 3..].iter().map(|v| v.abs()).sum::<f64>();
+            let tail = c[cheb - 3..].iter().map(|v| v.abs()).sum::<f64>();
             errors.push(2.0 * tail + rule.eval(a).error);
             coef.push(c);
         }
@@ -178,7 +189,7 @@ impl MidplaneCurve {
             breaks,
             coef,
             errors,
-            evaluations: n * CHEB * rule.nodes(),
+            evaluations: n * cheb * rule.nodes(),
         })
     }
 

@@ -3,7 +3,7 @@
 //!
 //! By symmetry the midplane of the slab 2D thick plays the joint's interface; where σ_z(r, 0)
 //! would be tensile the two plates separate. R_o is found by an outward scan from r = B in
-//! steps of D/4 for the first sign change of σ_z(r, 0) from compressive to tensile (beyond it
+//! steps of D/2 for the first sign change of σ_z(r, 0) from compressive to tensile (beyond it
 //! σ_z keeps oscillating with amplitude falling ≈ e⁻⁶ per half-wave of ≈ 2.8D: those later
 //! crossings are not separations), then Brent's method (Brent 1973, *Algorithms for
 //! Minimization without Derivatives*, ch. 4) on the bracket. Only midplane σ_z is evaluated,
@@ -29,7 +29,8 @@ use std::time::Instant;
 pub struct SeparationParams {
     /// Relative tolerance on R_o (default 1e-10).
     pub rel_tol: f64,
-    /// Scan step as a fraction of D (default 0.25).
+    /// Scan step as a fraction of D (default 0.5; the half-wavelength of the far-field
+    /// oscillation is ≈ 2.8D, so no pair of crossings hides between two steps).
     pub step: f64,
     /// The scan stops at B + `reach`·D (default 12).
     pub reach: f64,
@@ -41,7 +42,7 @@ impl Default for SeparationParams {
     fn default() -> Self {
         Self {
             rel_tol: 1e-10,
-            step: 0.25,
+            step: 0.5,
             reach: 12.0,
             max_iterations: 100,
         }
