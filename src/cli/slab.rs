@@ -3,7 +3,7 @@
 //! ([`boltzone::hankel::separation`]), and optionally the midplane σ_z/P curve as CSV.
 
 use anyhow::Context;
-use boltzone::hankel::{MidplaneCurve, SeparationParams, Slab};
+use boltzone::hankel::{Midplane, MidplaneCurve, SeparationParams, Slab};
 use boltzone::{FaceLoad, Material};
 use std::io::Write;
 use std::path::PathBuf;
@@ -88,7 +88,16 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 fn write_curve(slab: &Slab, a: f64, path: &std::path::Path) -> anyhow::Result<()> {
     let (b, d) = (slab.load().outer(), slab.half_thickness());
     let r_end = (3.0 * b).max(b + 6.0 * d);
-    let curve = MidplaneCurve::new(slab, 0.0, r_end, 1e-11)?;
+    // interpolated curve, or for very thin slabs (more than MAX_CURVE_PANELS panels of width D)
+    // direct evaluation at each radius
+    let eval: Box<dyn Fn(f64) -> boltzone::hankel::Estimate> =
+        match MidplaneCurve::new(slab, 0.0, r_end, 1e-11) {
+            Ok(curve) => Box::new(move |r| curve.eval(r)),
+            Err(_) => {
+                let m = Midplane::new(slab, r_end, 1e-11)?;
+                Box::new(move |r| m.eval(r))
+            }
+        };
     let tmp = path.with_extension("csv.tmp");
     {
         let mut f = std::io::BufWriter::new(std::fs::File::create(&tmp)?);
@@ -97,7 +106,7 @@ fn write_curve(slab: &Slab, a: f64, path: &std::path::Path) -> anyhow::Result<()
         let n = 1000;
         for k in 0..=n {
             let r = r_end * k as f64 / n as f64;
-            let e = curve.eval(r);
+            let e = eval(r);
             writeln!(f, "{},{},{:.1e}", r / a, e.value, e.error)?;
         }
         f.flush()?;

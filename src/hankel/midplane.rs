@@ -29,12 +29,70 @@
 use super::field::Slab;
 use super::kernel::midplane;
 use super::quadrature::{gauss_legendre, Estimate};
+use super::transform::LoadTransform;
 use crate::error::{positive, InputError};
 use std::f64::consts::PI;
 
-/// Largest node count a [`MidplaneRule`] may use (thin slabs with (r_max + B)/D beyond ≈ 2000
-/// exceed it and are refused with [`InputError::Parameter`]).
+/// Largest node count a [`MidplaneRule`] may use (thin slabs with (r_max + B)/D beyond a few
+/// thousand exceed it and are refused with [`InputError::Parameter`]).
 pub const MAX_NODES: usize = 400_000;
+
+/// Above this node count [`Midplane`] uses the real-space route instead of a [`MidplaneRule`]
+/// (one real-space evaluation costs about as much as 50 000 nodes).
+pub const SWITCH_NODES: usize = 50_000;
+
+/// Largest number of panels (of width D) a [`MidplaneCurve`] may have.
+pub const MAX_CURVE_PANELS: usize = 20_000;
+
+/// σ_z(r, 0) by whichever route is cheaper: a shared ξ-rule, or for thin slabs the real-space
+/// superposition of [`super::realspace`].
+#[derive(Debug, Clone)]
+pub enum Midplane {
+    /// Shared ξ-nodes (thick and moderate slabs).
+    Rule(MidplaneRule),
+    /// Real-space point-kernel superposition (thin slabs).
+    RealSpace {
+        /// The load transform (its pieces are used).
+        transform: LoadTransform,
+        /// Half-thickness D.
+        d: f64,
+    },
+}
+
+impl Midplane {
+    /// The evaluator for radii up to `r_max` to absolute tolerance `abs_tol`.
+    pub fn new(slab: &Slab, r_max: f64, abs_tol: f64) -> Result<Self, InputError> {
+        match MidplaneRule::with_budget(slab, r_max, abs_tol, SWITCH_NODES) {
+            Ok(rule) => Ok(Midplane::Rule(rule)),
+            Err(InputError::Parameter {
+                field: "midplane rule nodes",
+                ..
+            }) => Ok(Midplane::RealSpace {
+                transform: slab.transform().clone(),
+                d: slab.half_thickness(),
+            }),
+            Err(e) => Err(e),
+        }
+    }
+
+    /// σ_z(r, 0) with its error estimate.
+    pub fn eval(&self, r: f64) -> Estimate {
+        match self {
+            Midplane::Rule(rule) => rule.eval(r),
+            Midplane::RealSpace { transform, d } => {
+                super::realspace::midplane_sigma_z(transform, *d, r)
+            }
+        }
+    }
+
+    /// ξ-nodes of the rule (0 for the real-space route).
+    pub fn nodes(&self) -> usize {
+        match self {
+            Midplane::Rule(rule) => rule.nodes(),
+            Midplane::RealSpace { .. } => 0,
+        }
+    }
+}
 
 /// σ_z(r, 0) for all r ≤ r_max on one shared node set.
 #[derive(Debug, Clone)]
@@ -49,6 +107,16 @@ impl MidplaneRule {
     /// The rule for radii up to `r_max`, truncated so that the tail is below `abs_tol / 2`
     /// (absolute, in the load's pressure units).
     pub fn new(slab: &Slab, r_max: f64, abs_tol: f64) -> Result<Self, InputError> {
+        Self::with_budget(slab, r_max, abs_tol, MAX_NODES)
+    }
+
+    /// As [`MidplaneRule::new`], refusing rules of more than `max_nodes` nodes.
+    pub fn with_budget(
+        slab: &Slab,
+        r_max: f64,
+        abs_tol: f64,
+        max_nodes: usize,
+    ) -> Result<Self, InputError> {
         positive("midplane rule r_max", r_max)?;
         positive("midplane tolerance", abs_tol)?;
         let d = slab.half_thickness();
@@ -68,11 +136,11 @@ impl MidplaneRule {
         let panels = (xi_max / width).ceil();
         let rule = gauss_legendre(20);
         let n = panels * rule.len() as f64;
-        if n.is_nan() || n > MAX_NODES as f64 {
+        if n.is_nan() || n > max_nodes as f64 {
             return Err(InputError::Parameter {
                 field: "midplane rule nodes",
                 value: n,
-                reason: "the slab is too thin for the ξ-quadrature at this radius (more than MAX_NODES nodes)",
+                reason: "the slab is too thin for the ξ-quadrature at this radius (node budget exceeded)",
             });
         }
         let h = xi_max / panels;
@@ -150,9 +218,18 @@ impl MidplaneCurve {
     pub fn new(slab: &Slab, r0: f64, r1: f64, abs_tol: f64) -> Result<Self, InputError> {
         crate::error::non_negative("curve start radius", r0)?;
         positive("curve length", r1 - r0)?;
-        let rule = MidplaneRule::new(slab, r1, abs_tol / 4.0)?;
+        let rule = Midplane::new(slab, r1, abs_tol / 4.0)?;
+        let mut evaluations = 0;
         let d = slab.half_thickness();
-        let n = ((r1 - r0) / d).ceil().max(1.0) as usize;
+        let panels = ((r1 - r0) / d).ceil().max(1.0);
+        if panels > MAX_CURVE_PANELS as f64 {
+            return Err(InputError::Parameter {
+                field: "midplane curve panels (length / D)",
+                value: panels,
+                reason: "too many panels of width D: evaluate the radii directly with Midplane",
+            });
+        }
+        let n = panels as usize;
         let h = (r1 - r0) / n as f64;
         let breaks: Vec<f64> = (0..=n).map(|k| r0 + k as f64 * h).collect();
         let mut coef = Vec::with_capacity(n);
@@ -169,7 +246,9 @@ impl MidplaneCurve {
             let vals: Vec<f64> = (0..cheb)
                 .map(|j| {
                     let x = (PI * (j as f64 + 0.5) / cheb as f64).cos();
-                    rule.eval(0.5 * (a + b) + 0.5 * (b - a) * x).value
+                    let e = rule.eval(0.5 * (a + b) + 0.5 * (b - a) * x);
+                    evaluations += e.evaluations;
+                    e.value
                 })
                 .collect();
             let mut c = vec![0.0; cheb];
@@ -189,7 +268,7 @@ impl MidplaneCurve {
             breaks,
             coef,
             errors,
-            evaluations: n * cheb * rule.nodes(),
+            evaluations,
         })
     }
 
@@ -225,7 +304,7 @@ impl MidplaneCurve {
         self.errors.iter().cloned().fold(0.0, f64::max)
     }
 
-    /// J₀ evaluations spent building the curve.
+    /// Kernel evaluations spent building the curve (J₀ calls or point-kernel calls).
     pub fn evaluations(&self) -> usize {
         self.evaluations
     }

@@ -61,6 +61,11 @@ impl LoadTransform {
         self.segments.iter().map(|s| segment(s, xi)).sum()
     }
 
+    /// The load's linear pieces.
+    pub fn segments(&self) -> &[Segment] {
+        &self.segments
+    }
+
     /// ∫₀^∞ |p(r)| r dr, a bound of |p̄(ξ)| for every ξ (|J₀| ≤ 1).
     pub fn abs_moment(&self) -> f64 {
         self.abs_moment
