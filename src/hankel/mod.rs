@@ -8,6 +8,7 @@
 //! - [`transform`]: the load's transform p̄(ξ), computed once per slab;
 //! - [`field`]: [`Slab`], every stress and displacement at any (r, z) with error estimates;
 //! - [`midplane`]: the midplane σ_z(r, 0) fast, on a node set shared by all radii, and the curve;
+//! - [`realspace`]: the midplane σ_z of thin slabs by a localised real-space point kernel;
 //! - [`separation`]: the separation radius R_o (first upward zero of σ_z(r, 0) beyond B).
 //!
 //! ```
@@ -22,10 +23,11 @@ pub mod hole;
 pub mod kernel;
 pub mod midplane;
 pub mod quadrature;
+pub mod realspace;
 pub mod separation;
 pub mod transform;
 
 pub use field::{Displacement, Slab, Stress};
-pub use midplane::{MidplaneCurve, MidplaneRule};
+pub use midplane::{Midplane, MidplaneCurve, MidplaneRule};
 pub use quadrature::{Estimate, QuadParams};
 pub use separation::{SeparationInfo, SeparationParams};
