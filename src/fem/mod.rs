@@ -32,6 +32,7 @@
 pub mod assemble;
 pub mod dofs;
 pub mod element;
+pub mod lame;
 pub mod loads;
 pub mod mesh;
 pub mod recover;
