@@ -29,6 +29,7 @@ use faer::sparse::linalg::cholesky::{
 use faer::sparse::SparseColMat;
 use faer::{Conj, Mat, MatRef, Par, Side};
 use std::sync::Arc;
+use std::time::Instant;
 
 /// Parameters of the sparse solve.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -44,11 +45,13 @@ pub struct Factorization {
     symbolic: Arc<SymbolicCholesky<usize>>,
     values: Vec<f64>,
     par: Par,
+    seconds: [f64; 2],
 }
 
 impl Factorization {
     /// Symbolic and numeric factorization of the lower triangle `k`.
     pub fn new(k: &SparseColMat<usize, f64>, params: &SolveParams) -> Result<Self, FemError> {
+        let t0 = Instant::now();
         let symbolic = factorize_symbolic_cholesky(
             k.symbolic(),
             Side::Lower,
@@ -65,6 +68,7 @@ impl Factorization {
             symbolic: Arc::new(symbolic),
             values: Vec::new(),
             par,
+            seconds: [t0.elapsed().as_secs_f64(), 0.0],
         };
         f.refactor(k)?;
         Ok(f)
@@ -72,6 +76,7 @@ impl Factorization {
 
     /// Numeric factorization of new values with the same pattern (the symbolic step is reused).
     pub fn refactor(&mut self, k: &SparseColMat<usize, f64>) -> Result<(), FemError> {
+        let t0 = Instant::now();
         let sym = &*self.symbolic;
         self.values.clear();
         self.values.resize(sym.len_val(), 0.0);
@@ -87,12 +92,18 @@ impl Factorization {
             Default::default(),
         )
         .map_err(|e| FemError::NotPositiveDefinite(format!("{e:?}")))?;
+        self.seconds[1] = t0.elapsed().as_secs_f64();
         Ok(())
     }
 
     /// Number of equations.
     pub fn n(&self) -> usize {
         self.symbolic.nrows()
+    }
+
+    /// Wall-clock seconds of the symbolic analysis and of the last numeric factorization.
+    pub fn seconds(&self) -> [f64; 2] {
+        self.seconds
     }
 
     /// Stored entries of L (a measure of fill and memory: 8 bytes each).
