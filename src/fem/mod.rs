@@ -45,7 +45,9 @@ pub use dofs::{Component, DofMap, NodeSupport, Supports};
 pub use element::{ElementKind, ElementPoint, Stress};
 pub use loads::Loads;
 pub use mesh::{Mesh, PlateSpec};
-pub use recover::{gauss_stresses, internal_forces, line_traction, nodal_stresses, reactions};
+pub use recover::{
+    centre_stresses, gauss_stresses, internal_forces, line_traction, nodal_stresses, reactions,
+};
 pub use solve::{Factorization, SolveParams};
 pub use spacing::Spacing;
 
