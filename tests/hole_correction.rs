@@ -233,3 +233,46 @@ fn bad_parameters_are_typed_errors() {
     .unwrap_err();
     assert!(e.to_string().contains("hole residual target"), "{e}");
 }
+
+#[test]
+fn batched_hole_tractions_match_the_slab_solver() {
+    // The batch shares ξ-nodes among heights; Slab::stress integrates each point alone (with its
+    // own error estimate). Disk loads (the extended loads of a hole plate: smooth at r = A),
+    // wide and narrow, heights from the midplane to 1e-4 D below the face, and the face itself.
+    use boltzone::hankel::hole::traction::hole_tractions;
+    let q = QuadParams {
+        rel_tol: 1e-10,
+        abs_tol: 1e-10,
+        ..QuadParams::default()
+    };
+    for (r0, b, d) in [(0.0, 0.31, 0.1), (0.0, 0.13, 0.2)] {
+        let slab = Slab::new(
+            d,
+            Material::unit(0.3).unwrap(),
+            FaceLoad::uniform(r0, b, 1.0).unwrap(),
+        )
+        .unwrap();
+        let z: Vec<f64> = [0.0, 0.3, 0.7, 0.9, 0.99, 0.999, 0.9999, 1.0, -0.5]
+            .iter()
+            .map(|t| t * d)
+            .collect();
+        let (t, evals) = hole_tractions(&slab, 0.1, &z, &q);
+        assert!(evals > 0);
+        for (zi, ti) in z.iter().zip(&t) {
+            let s = slab.stress(0.1, *zi, &q);
+            let tol = ti.error + s.sigma_r.error.max(s.tau_rz.error) + 1e-12;
+            assert!(
+                (ti.sigma_r - s.sigma_r.value).abs() <= tol,
+                "σ_r z {zi}: {} vs {}",
+                ti.sigma_r,
+                s.sigma_r.value
+            );
+            assert!(
+                (ti.tau_rz - s.tau_rz.value).abs() <= tol,
+                "τ z {zi}: {} vs {}",
+                ti.tau_rz,
+                s.tau_rz.value
+            );
+        }
+    }
+}

@@ -18,13 +18,20 @@ fn hankel_with_hole_agrees_with_finite_elements_on_table1() {
         let (d, b) = (a / a_over_d, a * b_over_a);
         let load = FaceLoad::uniform(a, b, 1.0).unwrap();
         let mat = Material::unit(0.3).unwrap();
-        let fe_plate = SinglePlate::new(a, OuterRadius::Finite(1.54), d, mat, load.clone()).unwrap();
+        let fe_plate =
+            SinglePlate::new(a, OuterRadius::Finite(1.54), d, mat, load.clone()).unwrap();
         let hk_plate = SinglePlate::new(a, OuterRadius::Infinite, d, mat, load).unwrap();
-        let fe_params = SingleParams { levels: 5, ..SingleParams::default() };
+        let fe_params = SingleParams {
+            levels: 5,
+            ..SingleParams::default()
+        };
         let (r_fe, fe) = single_plate_r_o(&fe_plate, &fe_params).unwrap();
-        let (hk, hole) =
-            single_plate_separation(&hk_plate, &SeparationParams::default(), &HoleParams::default())
-                .unwrap();
+        let (hk, hole) = single_plate_separation(
+            &hk_plate,
+            &SeparationParams::default(),
+            &HoleParams::default(),
+        )
+        .unwrap();
         let diff = (hk.r_o - r_fe).abs();
         println!(
             "A/D {a_over_d} B/A {b_over_a}: hankel {:.7} ± {:.1e} (N {}), fem {:.7} ± {:.1e}",
@@ -34,7 +41,11 @@ fn hankel_with_hole_agrees_with_finite_elements_on_table1() {
             r_fe / a,
             fe.error_estimate / a
         );
-        assert!(diff <= 5e-4 * r_fe, "differ by {:.4} %", 100.0 * diff / r_fe);
+        assert!(
+            diff <= 5e-4 * r_fe,
+            "differ by {:.4} %",
+            100.0 * diff / r_fe
+        );
         // Both estimates are of the error's size, not strict bounds: allow three times their sum.
         assert!(diff <= 3.0 * (hk.error + fe.error_estimate), "{diff:e}");
     }

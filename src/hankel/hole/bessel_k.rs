@@ -39,7 +39,7 @@ const TRAPEZOID_DIGITS: f64 = 42.0;
 /// (e^z K₀(z), e^z K₁(z)) for Re z > 0 (principal branch). Returns NaN components for
 /// Re z ≤ 0 or a non-finite z, which the eigenfunctions never produce.
 pub fn k01_scaled(z: Complex64) -> (Complex64, Complex64) {
-    if !(z.re > 0.0) || !z.im.is_finite() || !z.re.is_finite() {
+    if z.re.is_nan() || z.re <= 0.0 || !z.im.is_finite() || !z.re.is_finite() {
         let nan = Complex64::new(f64::NAN, f64::NAN);
         return (nan, nan);
     }

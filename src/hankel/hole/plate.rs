@@ -21,6 +21,7 @@
 
 use super::eigen::{lame_field, symmetric_roots, Mode, ModeField};
 use super::fit::{fit, heights, Fit, HoleData};
+use super::traction::hole_tractions;
 use super::{HoleInfo, HoleLevel, HoleParams};
 use crate::error::InputError;
 use crate::hankel::field::{Slab, Stress};
@@ -112,7 +113,7 @@ impl HolePlate {
             fit: None,
             grid: Vec::new(),
             quad: QuadParams {
-                rel_tol: 1e-14,
+                rel_tol: 1e-10,
                 abs_tol: params.slab_tolerance * p_ref,
                 ..QuadParams::default()
             },
@@ -147,24 +148,34 @@ impl HolePlate {
         let d = self.slab.half_thickness();
         let z = heights(d, 4 * n);
         let nested = !self.grid.is_empty() && self.grid.len() * 2 - 1 == z.len();
-        let mut old = std::mem::take(&mut self.grid).into_iter();
-        let mut grid = Vec::with_capacity(z.len());
-        for (j, &zj) in z.iter().enumerate() {
-            match (nested && j % 2 == 0).then(|| old.next()).flatten() {
-                Some(p) => grid.push(p),
-                None => {
-                    let s = self.slab.stress(self.a, zj, &self.quad);
-                    self.info.slab_evaluations += s.sigma_r.evaluations;
-                    let err = s.sigma_r.error.hypot(s.tau_rz.error) / self.p_ref;
-                    self.info.slab_error = self.info.slab_error.max(err);
-                    grid.push(HoleData {
-                        z: zj,
-                        sigma_r: s.sigma_r.value,
-                        tau_rz: s.tau_rz.value,
-                    });
-                }
-            }
+        // heights not sampled yet: all, or the odd-numbered ones of a nested refinement
+        let fresh: Vec<f64> = z
+            .iter()
+            .enumerate()
+            .filter(|(j, _)| !nested || j % 2 == 1)
+            .map(|(_, &zj)| zj)
+            .collect();
+        let (values, evaluations) = hole_tractions(&self.slab, self.a, &fresh, &self.quad);
+        self.info.slab_evaluations += evaluations;
+        for v in &values {
+            self.info.slab_error = self.info.slab_error.max(v.error / self.p_ref);
         }
+        let mut old = std::mem::take(&mut self.grid).into_iter();
+        let mut new = fresh.iter().zip(&values);
+        let grid: Vec<HoleData> = (0..z.len())
+            .map(|j| {
+                if nested && j % 2 == 0 {
+                    old.next().expect("nested grid")
+                } else {
+                    let (&z, v) = new.next().expect("one value per fresh height");
+                    HoleData {
+                        z,
+                        sigma_r: v.sigma_r,
+                        tau_rz: v.tau_rz,
+                    }
+                }
+            })
+            .collect();
         if self.roots.len() < n {
             self.roots = symmetric_roots(n);
         }
