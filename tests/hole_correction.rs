@@ -276,3 +276,54 @@ fn batched_hole_tractions_match_the_slab_solver() {
         }
     }
 }
+
+#[test]
+fn a_rim_is_freed_too_and_a_far_rim_changes_nothing() {
+    let (a, b, d) = (0.1, 0.22, 0.1);
+    let load = FaceLoad::uniform(a, b, 1.0).unwrap();
+    let mat = Material::unit(0.3).unwrap();
+    let sep = SeparationParams::default();
+    let params = fixed(16);
+    let near = SinglePlate::new(a, OuterRadius::Finite(0.35), d, mat, load.clone()).unwrap();
+    let h = HolePlate::new(&near, &params).unwrap();
+    assert_eq!(h.rim(), Some(0.35));
+    // The rim's residual is measured like the hole's and falls with N as well.
+    let mut h8 = HolePlate::with_terms(
+        &near,
+        &HoleParams {
+            max_terms: 16,
+            ..params
+        },
+        8,
+    )
+    .unwrap();
+    let rim8 = h8.info().rim_residual_max;
+    assert!(h8.refine());
+    assert!(
+        h8.info().rim_residual_max < 0.5 * rim8,
+        "{:?}",
+        h8.info().history
+    );
+    // Free rim between the fitted heights, loaded faces up to it.
+    let q = QuadParams {
+        rel_tol: 1e-12,
+        abs_tol: 1e-12,
+        ..QuadParams::default()
+    };
+    for zr in [0.0, 0.41, 0.83, 0.97] {
+        let s = h.stress(0.35, zr * d, &q);
+        let t = s.sigma_r.value.hypot(s.tau_rz.value);
+        assert!(t <= 2.0 * h.info().rim_residual_max, "z/D {zr}: {t:e}");
+    }
+    let s = h.stress(0.34, d, &q);
+    assert!(s.sigma_z.value.abs() < 1e-9 && s.tau_rz.value.abs() < 1e-9);
+    // A rim 12 D beyond R_o: e^(−2.1·12) ≈ 1e-11, R_o as for the infinite plate.
+    let far = SinglePlate::new(a, OuterRadius::Finite(1.54), d, mat, load.clone()).unwrap();
+    let inf = SinglePlate::new(a, OuterRadius::Infinite, d, mat, load).unwrap();
+    let r_far = single_plate_separation(&far, &sep, &params).unwrap().0.r_o;
+    let r_inf = single_plate_separation(&inf, &sep, &params).unwrap().0.r_o;
+    assert!((r_far - r_inf).abs() < 1e-9 * r_inf, "{r_far} {r_inf}");
+    // ... while the near rim moves R_o by percents (R_o/A 3.0439 against 3.1316).
+    let r_near = single_plate_separation(&near, &sep, &params).unwrap().0.r_o;
+    assert!(r_inf - r_near > 0.02 * r_inf, "{r_near} {r_inf}");
+}

@@ -19,14 +19,14 @@
 //! assert!(holed.info().residual_max <= 1e-6);
 //! ```
 
-use super::eigen::{lame_field, symmetric_roots, Mode, ModeField};
-use super::fit::{fit, heights, Fit, HoleData};
+use super::eigen::{lame_field, symmetric_roots, uniform_field, Mode, ModeField};
+use super::fit::{fit, heights, Boundary, Fit, HoleData};
 use super::traction::hole_tractions;
 use super::{HoleInfo, HoleLevel, HoleParams};
 use crate::error::InputError;
 use crate::hankel::field::{Slab, Stress};
 use crate::hankel::quadrature::QuadParams;
-use crate::joint::SinglePlate;
+use crate::joint::{OuterRadius, SinglePlate};
 use crate::load::FaceLoad;
 use std::time::Instant;
 
@@ -69,8 +69,12 @@ pub struct HolePlate {
     roots: Vec<num_complex::Complex64>,
     modes: Vec<Mode>,
     fit: Option<Fit>,
-    /// Slab hole traction on the heights of 4N intervals (collocation + check points).
+    /// Rim radius C (None: infinite plate).
+    rim: Option<f64>,
+    /// Slab traction on the hole (and the rim) at the heights of 4N intervals (collocation +
+    /// check points).
     grid: Vec<HoleData>,
+    rim_grid: Vec<HoleData>,
     quad: QuadParams,
     nu: f64,
     g: f64,
@@ -80,9 +84,9 @@ pub struct HolePlate {
 }
 
 impl HolePlate {
-    /// Solves the hole correction of `plate` (its outer radius is taken as infinite): N from
-    /// `params.terms`, or doubled from `params.start_terms` until the residual target is met or
-    /// `params.max_terms` is reached.
+    /// Solves the hole correction of `plate` (and frees its rim r = C if the outer radius is
+    /// finite): N from `params.terms`, or doubled from `params.start_terms` until the residual
+    /// target is met or `params.max_terms` is reached.
     pub fn new(plate: &SinglePlate, params: &HoleParams) -> Result<Self, InputError> {
         let mut holed =
             Self::with_terms(plate, params, params.terms.unwrap_or(params.start_terms))?;
@@ -111,7 +115,12 @@ impl HolePlate {
             roots: Vec::new(),
             modes: Vec::new(),
             fit: None,
+            rim: match plate.outer_radius() {
+                OuterRadius::Finite(c) if a > 0.0 => Some(c),
+                _ => None,
+            },
             grid: Vec::new(),
+            rim_grid: Vec::new(),
             quad: QuadParams {
                 rel_tol: 1e-10,
                 abs_tol: params.slab_tolerance * p_ref,
@@ -143,11 +152,10 @@ impl HolePlate {
         true
     }
 
-    /// Fits N = `n` modes: samples the slab on the new heights, solves, measures the residual.
-    fn solve(&mut self, n: usize) {
-        let d = self.slab.half_thickness();
-        let z = heights(d, 4 * n);
-        let nested = !self.grid.is_empty() && self.grid.len() * 2 - 1 == z.len();
+    /// Slab traction at radius `r` on the heights `z` of 4N intervals, reusing `old` (the grid of
+    /// 2N intervals) when nested.
+    fn sample(&mut self, r: f64, old: Vec<HoleData>, z: &[f64]) -> Vec<HoleData> {
+        let nested = !old.is_empty() && old.len() * 2 - 1 == z.len();
         // heights not sampled yet: all, or the odd-numbered ones of a nested refinement
         let fresh: Vec<f64> = z
             .iter()
@@ -155,14 +163,14 @@ impl HolePlate {
             .filter(|(j, _)| !nested || j % 2 == 1)
             .map(|(_, &zj)| zj)
             .collect();
-        let (values, evaluations) = hole_tractions(&self.slab, self.a, &fresh, &self.quad);
+        let (values, evaluations) = hole_tractions(&self.slab, r, &fresh, &self.quad);
         self.info.slab_evaluations += evaluations;
         for v in &values {
             self.info.slab_error = self.info.slab_error.max(v.error / self.p_ref);
         }
-        let mut old = std::mem::take(&mut self.grid).into_iter();
+        let mut old = old.into_iter();
         let mut new = fresh.iter().zip(&values);
-        let grid: Vec<HoleData> = (0..z.len())
+        (0..z.len())
             .map(|j| {
                 if nested && j % 2 == 0 {
                     old.next().expect("nested grid")
@@ -175,7 +183,19 @@ impl HolePlate {
                     }
                 }
             })
-            .collect();
+            .collect()
+    }
+
+    /// Fits N = `n` modes: samples the slab on the new heights, solves, measures the residual.
+    fn solve(&mut self, n: usize) {
+        let d = self.slab.half_thickness();
+        let z = heights(d, 4 * n);
+        let old = std::mem::take(&mut self.grid);
+        self.grid = self.sample(self.a, old, &z);
+        if let Some(c) = self.rim {
+            let old = std::mem::take(&mut self.rim_grid);
+            self.rim_grid = self.sample(c, old, &z);
+        }
         if self.roots.len() < n {
             self.roots = symmetric_roots(n);
         }
@@ -184,25 +204,64 @@ impl HolePlate {
             .iter()
             .map(|x| Mode::new(*x, a, d, nu, g))
             .collect();
-        let colloc: Vec<HoleData> = grid.iter().step_by(2).copied().collect();
-        let f = fit(&self.modes, &colloc);
-        let (rmax, rrms) = f.residual(&self.modes, &grid);
+        if let Some(c) = self.rim {
+            let growing = self.roots[..n]
+                .iter()
+                .map(|x| Mode::growing(*x, c, d, nu, g));
+            self.modes.extend(growing);
+        }
+        let colloc: Vec<HoleData> = self.grid.iter().step_by(2).copied().collect();
+        let rim_colloc: Vec<HoleData> = self.rim_grid.iter().step_by(2).copied().collect();
+        let mut bounds = vec![Boundary {
+            r: a,
+            data: &colloc,
+        }];
+        if let Some(c) = self.rim {
+            bounds.push(Boundary {
+                r: c,
+                data: &rim_colloc,
+            });
+        }
+        let f = fit(&self.modes, a, self.rim.is_some(), &bounds);
+        let (rmax, rrms) = f.residual(
+            &self.modes,
+            &Boundary {
+                r: a,
+                data: &self.grid,
+            },
+        );
+        let rim_residual = self.rim.map_or(0.0, |c| {
+            f.residual(
+                &self.modes,
+                &Boundary {
+                    r: c,
+                    data: &self.rim_grid,
+                },
+            )
+            .0 / self.p_ref
+        });
         let level = HoleLevel {
             terms: n,
             collocation_points: colloc.len(),
             residual_max: rmax / self.p_ref,
             residual_rms: rrms / self.p_ref,
+            rim_residual_max: rim_residual,
             condition: f.condition,
         };
         self.info.history.push(level);
         self.info.terms = n;
         self.info.collocation_points = level.collocation_points;
-        self.info.check_points = grid.len();
+        self.info.check_points = self.grid.len();
         self.info.residual_max = level.residual_max;
         self.info.residual_rms = level.residual_rms;
+        self.info.rim_residual_max = rim_residual;
         self.info.condition = level.condition;
-        self.grid = grid;
         self.fit = Some(f);
+    }
+
+    /// The rim radius C whose traction the correction cancels (None: infinite plate).
+    pub fn rim(&self) -> Option<f64> {
+        self.rim
     }
 
     /// The fit's sizes, residual and cost.
@@ -226,13 +285,14 @@ impl HolePlate {
             return ModeField::default();
         };
         let l = lame_field(self.a, self.g, r);
+        let s = uniform_field(self.nu, self.g, r, z);
         let mut out = ModeField {
-            sigma_r: f.lame * l.sigma_r,
-            sigma_theta: f.lame * l.sigma_theta,
+            sigma_r: f.lame * l.sigma_r + f.uniform * s.sigma_r,
+            sigma_theta: f.lame * l.sigma_theta + f.uniform * s.sigma_theta,
             sigma_z: 0.0,
             tau_rz: 0.0,
-            u: f.lame * l.u,
-            w: 0.0,
+            u: f.lame * l.u + f.uniform * s.u,
+            w: f.uniform * s.w,
         };
         for (m, c) in self.modes.iter().zip(&f.modes) {
             let v = m.field(r, z);

@@ -26,7 +26,8 @@ pub fn single_plate_separation(
     let mut holed = HolePlate::with_terms(plate, hole, hole.terms.unwrap_or(hole.start_terms))?;
     let d = plate.half_thickness();
     let b = plate.load().outer();
-    let r_end = b + sep.reach * d;
+    // R_o lies on the plate: a rim at C ends the search there.
+    let r_end = (b + sep.reach * d).min(holed.rim().unwrap_or(f64::INFINITY));
     let p_ref = plate.load().mean_pressure().abs();
     let sigma_tol = (1e-3 * sep.rel_tol * p_ref).max(1e-15 * p_ref);
     let rule = MidplaneRule::new(holed.slab(), r_end, sigma_tol)?;
