@@ -139,8 +139,9 @@ impl Mode {
         self.lam
     }
 
-    /// Radial factors (R₀, R₁) at r (r ≥ A for a decaying mode, r ≤ C for a growing one).
-    fn radial(&self, r: f64) -> (Complex64, Complex64) {
+    /// Radial factors (R₀, R₁) at r (r ≥ A for a decaying mode, r ≤ C for a growing one): the
+    /// costly part of a field, shared by every height at that radius (see [`Self::field_at`]).
+    pub fn radial(&self, r: f64) -> (Complex64, Complex64) {
         if self.growing {
             let (i0, i1) = i01_scaled(self.lam * r);
             let e = (self.lam * (r - self.a)).exp() / self.k1a;
@@ -154,7 +155,17 @@ impl Mode {
 
     /// σ_r and τ_rz on the cylinder of radius r at height z (the traction the fit matches).
     pub fn traction(&self, r: f64, z: f64) -> (Complex64, Complex64) {
-        let f = self.field(r, z);
+        self.traction_at(self.radial(r), r, z)
+    }
+
+    /// [`Self::traction`] with the radial factors of r given.
+    pub fn traction_at(
+        &self,
+        radial: (Complex64, Complex64),
+        r: f64,
+        z: f64,
+    ) -> (Complex64, Complex64) {
+        let f = self.field_at(radial, r, z);
         (f.sigma_r, f.tau_rz)
     }
 
@@ -166,7 +177,16 @@ impl Mode {
 
     /// Every field at (r, z), r ≥ A, |z| ≤ D.
     pub fn field(&self, r: f64, z: f64) -> ModeField<Complex64> {
-        let (r0, r1) = self.radial(r);
+        self.field_at(self.radial(r), r, z)
+    }
+
+    /// [`Self::field`] with the radial factors `(r0, r1)` = [`Self::radial`]`(r)` given.
+    pub fn field_at(
+        &self,
+        (r0, r1): (Complex64, Complex64),
+        r: f64,
+        z: f64,
+    ) -> ModeField<Complex64> {
         let (nu, al, lam) = (self.nu, self.alpha, self.lam);
         let zz = lam * z;
         let (s, c) = (zz.sin(), zz.cos());

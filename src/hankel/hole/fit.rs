@@ -91,6 +91,7 @@ pub fn fit(modes: &[Mode], a: f64, uniform: bool, boundaries: &[Boundary]) -> Fi
     let mut rhs = DVector::<f64>::zeros(rows);
     let mut i = 0;
     for bd in boundaries {
+        let radial: Vec<_> = modes.iter().map(|md| md.radial(bd.r)).collect();
         for p in bd.data {
             m[(i, 0)] = -(a / bd.r) * (a / bd.r); // Lamé σ_r, τ = 0
             if uniform {
@@ -98,8 +99,8 @@ pub fn fit(modes: &[Mode], a: f64, uniform: bool, boundaries: &[Boundary]) -> Fi
             }
             rhs[i] = -p.sigma_r;
             rhs[i + 1] = -p.tau_rz;
-            for (k, md) in modes.iter().enumerate() {
-                let (sr, tau) = md.traction(bd.r, p.z);
+            for (k, (md, rad)) in modes.iter().zip(&radial).enumerate() {
+                let (sr, tau) = md.traction_at(*rad, bd.r, p.z);
                 m[(i, extra + 2 * k)] = sr.re;
                 m[(i, extra + 2 * k + 1)] = sr.im;
                 m[(i + 1, extra + 2 * k)] = tau.re;
@@ -148,11 +149,23 @@ pub fn fit(modes: &[Mode], a: f64, uniform: bool, boundaries: &[Boundary]) -> Fi
 impl Fit {
     /// The correction's traction (σ_r, τ_rz) on the cylinder of radius r at height z.
     pub fn traction(&self, modes: &[Mode], r: f64, z: f64) -> (f64, f64) {
+        let radial: Vec<_> = modes.iter().map(|m| m.radial(r)).collect();
+        self.traction_at(modes, &radial, r, z)
+    }
+
+    /// [`Self::traction`] with every mode's radial factors at r given.
+    fn traction_at(
+        &self,
+        modes: &[Mode],
+        radial: &[(Complex64, Complex64)],
+        r: f64,
+        z: f64,
+    ) -> (f64, f64) {
         let q = (self.a / r) * (self.a / r);
-        modes.iter().zip(&self.modes).fold(
+        modes.iter().zip(radial).zip(&self.modes).fold(
             (-self.lame * q + self.uniform, 0.0),
-            |(sr, tau), (m, c)| {
-                let (ms, mt) = m.traction(r, z);
+            |(sr, tau), ((m, rad), c)| {
+                let (ms, mt) = m.traction_at(*rad, r, z);
                 (sr + (c * ms).re, tau + (c * mt).re)
             },
         )
@@ -165,8 +178,9 @@ impl Fit {
         let mut sum = 0.0;
         let data = boundary.data;
         let last = data.len() - 1;
+        let radial: Vec<_> = modes.iter().map(|m| m.radial(boundary.r)).collect();
         for (i, p) in data.iter().enumerate() {
-            let (sr, tau) = self.traction(modes, boundary.r, p.z);
+            let (sr, tau) = self.traction_at(modes, &radial, boundary.r, p.z);
             let r = (p.sigma_r + sr).hypot(p.tau_rz + tau);
             max = max.max(r);
             let w = if i == 0 || i == last { 0.5 } else { 1.0 };

@@ -124,6 +124,7 @@ impl HolePlate {
             quad: QuadParams {
                 rel_tol: 1e-10,
                 abs_tol: params.slab_tolerance * p_ref,
+                window: 9,
                 ..QuadParams::default()
             },
             nu: mat.poisson_ratio(),

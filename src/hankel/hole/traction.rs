@@ -64,18 +64,17 @@ pub fn hole_tractions(
     for chunk in interior.chunks(BATCH) {
         // pad a short chunk with its last height (computed twice, used once)
         let z: [f64; BATCH] = std::array::from_fn(|k| chunk[k.min(chunk.len() - 1)].1);
-        let e = integrate_oscillatory_vec::<{ 3 * BATCH }, _>(
+        let e = integrate_oscillatory_vec::<{ 2 * BATCH }, _>(
             |xi| {
                 let x = xi * a;
                 let (j0, j1) = (libm::j0(x), libm::j1(x));
                 let j1x = if x > 0.0 { j1 / x } else { 0.5 };
                 let q = xi * tr.eval(xi);
-                let mut v = [0.0; 3 * BATCH];
+                let mut v = [0.0; 2 * BATCH];
                 for (k, zk) in z.iter().enumerate() {
                     let kn = Kernels::at(xi * d, xi * zk, nu);
-                    v[3 * k] = q * kn.r * j0;
-                    v[3 * k + 1] = q * kn.m * j1x;
-                    v[3 * k + 2] = q * kn.tau * j1;
+                    v[2 * k] = q * (kn.m * j1x - kn.r * j0); // σ_r
+                    v[2 * k + 1] = -q * kn.tau * j1; // τ_rz for z ≥ 0
                 }
                 v
             },
@@ -91,11 +90,11 @@ pub fn hole_tractions(
         evaluations += e[0].evaluations;
         for (k, (i, _)) in chunk.iter().enumerate() {
             let sign = if heights[*i] < 0.0 { -1.0 } else { 1.0 };
-            let (ir, im, it) = (e[3 * k], e[3 * k + 1], e[3 * k + 2]);
+            let (sr, tau) = (e[2 * k], e[2 * k + 1]);
             values[*i] = Some(HoleTraction {
-                sigma_r: im.value - ir.value,
-                tau_rz: -sign * it.value,
-                error: (ir.error + im.error).max(it.error),
+                sigma_r: sr.value,
+                tau_rz: sign * tau.value,
+                error: sr.error.max(tau.error),
             });
         }
     }
