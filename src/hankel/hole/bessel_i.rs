@@ -18,7 +18,7 @@
 //! let (i0, i1) = i01_scaled(Complex64::new(1.0, 0.0));
 //! // e^(−1) I₀(1), e^(−1) I₁(1) (Abramowitz & Stegun Table 9.8)
 //! assert!((i0.re - 0.465_759_607_593_640_3).abs() < 1e-15);
-//! assert!((i1.re - 0.207_910_415_349_483_5).abs() < 1e-15);
+//! assert!((i1.re - 0.207_910_415_349_708_4).abs() < 1e-15);
 //! ```
 
 use super::bessel_k::{asymptotic_series, ASYMPTOTIC_FROM};

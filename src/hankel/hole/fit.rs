@@ -20,7 +20,7 @@
 //!
 //! ```
 //! use boltzone::hankel::hole::fit::heights;
-//! let z = heights(0.1, 4);
+//! let z = heights(0.1, 8);
 //! assert_eq!(z.len(), 9);
 //! assert!((z[0] - 0.1).abs() < 1e-17 && z[8].abs() < 1e-17);
 //! ```

@@ -57,8 +57,9 @@
 //! let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
 //! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3).unwrap(), load).unwrap();
 //! let (sep, hole) = single_plate_separation(&plate, &Default::default(), &HoleParams::default()).unwrap();
-//! assert!(hole.residual_max <= 1e-6);
-//! assert!(sep.r_o > 0.31 && sep.error < 1e-4);
+//! // R_o converged (two changes below 1e-6 R_o) long before the corner-limited residual
+//! assert!(hole.residual_max < 1e-3 && sep.error < 1e-6 * sep.r_o);
+//! assert!((sep.r_o / 0.1 - 4.03183).abs() < 1e-5);
 //! ```
 
 pub mod bessel_i;
