@@ -12,8 +12,9 @@ use crate::joint::SinglePlate;
 use std::time::Instant;
 
 /// R_o of `plate` with its hole made traction-free (see [`super`]); the hole's fit is
-/// described by the returned [`HoleInfo`]. R_o's error estimate is the bracket half-width plus
-/// (slab quadrature error + max hole residual·P)/slope at R_o.
+/// described by the returned [`HoleInfo`]. R_o's error estimate is the bracket half-width, plus
+/// (midplane quadrature error + the hole data's quadrature error)/slope at R_o, plus the hole's
+/// share (the larger of the last two changes of R_o as N doubled, or max residual·P/slope).
 pub fn single_plate_separation(
     plate: &SinglePlate,
     sep: &SeparationParams,
@@ -80,7 +81,11 @@ pub fn single_plate_separation(
             // residual falls algebraically, like N^(−1.74), so a change bounds what is left), or
             // with a single N the bound max residual·P / slope.
             let hole_error = change.unwrap_or(residual_max * p_ref / slope.abs());
-            let error = half_width + rule.eval(r_o).error / slope.abs() + hole_error;
+            // The slab's hole tractions enter the fit with their quadrature error, which the
+            // residual (measured against the same data) cannot see: add its effect too.
+            let data_error = holed.info().slab_error * p_ref;
+            let error =
+                half_width + (rule.eval(r_o).error + data_error) / slope.abs() + hole_error;
             let sep_info = SeparationInfo {
                 r_o,
                 error,
