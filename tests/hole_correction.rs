@@ -327,3 +327,75 @@ fn a_rim_is_freed_too_and_a_far_rim_changes_nothing() {
     let r_near = single_plate_separation(&near, &sep, &params).unwrap().0.r_o;
     assert!(r_inf - r_near > 0.02 * r_inf, "{r_near} {r_inf}");
 }
+
+#[test]
+fn extended_load_continues_the_load_into_the_hole() {
+    use boltzone::hankel::hole::plate::extended_load;
+    use boltzone::Peak;
+    let (a, b, d) = (0.1, 0.31, 0.05);
+    for load in [
+        FaceLoad::uniform(a, b, 2.0).unwrap(),
+        FaceLoad::triangular(a, b, 1.0, Peak::AtA).unwrap(),
+        FaceLoad::triangular(a, b, 1.0, Peak::AtB).unwrap(),
+    ] {
+        let ext = extended_load(&load, a, d).unwrap().unwrap();
+        // identical on the plate, continuous at A with the first segment's slope just inside
+        for r in [a, 0.15, 0.2, 0.3, b] {
+            assert!(
+                (ext.pressure_at(r) - load.pressure_at(r)).abs() < 1e-12,
+                "r {r}"
+            );
+        }
+        let s = load.segments().next().unwrap();
+        let slope = (s.p1 - s.p0) / (s.r1 - s.r0);
+        let inside = ext.pressure_at(a - 0.5 * d);
+        assert!((inside - (s.p0 - slope * 0.5 * d)).abs() < 1e-12);
+        assert_eq!(ext.inner(), 0.0);
+    }
+    // no hole: nothing to extend
+    assert!(
+        extended_load(&FaceLoad::uniform(0.0, b, 1.0).unwrap(), 0.0, d)
+            .unwrap()
+            .is_none()
+    );
+}
+
+#[test]
+fn triangular_load_with_a_hole_converges_and_loads_the_faces() {
+    use boltzone::Peak;
+    let load = FaceLoad::triangular(0.1, 0.16, 1.0, Peak::AtA).unwrap();
+    let p = SinglePlate::new(
+        0.1,
+        OuterRadius::Infinite,
+        0.2,
+        Material::unit(0.3).unwrap(),
+        load.clone(),
+    )
+    .unwrap();
+    // Sloped loads cost far more than uniform ones (the slab's transform of a sloped piece is a
+    // Gauss sum over every half-period of J₀(ξr): O(ξ) per node near the face), so N ≤ 4 here.
+    let params = HoleParams {
+        max_terms: 4,
+        ..HoleParams::default()
+    };
+    let mut h = HolePlate::with_terms(&p, &params, 2).unwrap();
+    while h.refine() {}
+    let hist = &h.info().history;
+    assert!(
+        hist.windows(2)
+            .all(|w| w[1].residual_max < w[0].residual_max),
+        "{hist:?}"
+    );
+    let q = QuadParams {
+        rel_tol: 1e-12,
+        abs_tol: 1e-12,
+        ..QuadParams::default()
+    };
+    for r in [0.11, 0.13, 0.15, 0.3] {
+        let s = h.stress(r, 0.2, &q);
+        assert!(
+            (s.sigma_z.value + load.pressure_at(r)).abs() < 1e-9,
+            "r {r}"
+        );
+    }
+}

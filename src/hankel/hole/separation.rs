@@ -84,8 +84,7 @@ pub fn single_plate_separation(
             // The slab's hole tractions enter the fit with their quadrature error, which the
             // residual (measured against the same data) cannot see: add its effect too.
             let data_error = holed.info().slab_error * p_ref;
-            let error =
-                half_width + (rule.eval(r_o).error + data_error) / slope.abs() + hole_error;
+            let error = half_width + (rule.eval(r_o).error + data_error) / slope.abs() + hole_error;
             let sep_info = SeparationInfo {
                 r_o,
                 error,
