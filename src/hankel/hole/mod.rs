@@ -66,6 +66,7 @@ pub mod bessel_i;
 pub mod bessel_k;
 pub mod eigen;
 pub mod fit;
+pub mod linear_transform;
 pub mod plate;
 mod separation;
 pub mod traction;

@@ -6,7 +6,8 @@
 //! σ_r = −∫ ξp̄ [K_r J₀(ξA) − K_m J₁(ξA)/(ξA)] dξ,  τ_rz = −∫ ξp̄ K_τ J₁(ξA) dξ,
 //!
 //! but [`BATCH`] heights share one set of ξ-nodes, so J₀(ξA), J₁(ξA) and p̄(ξ) — most of an
-//! integrand's cost — are computed once per node for all of them. Heights are batched in the
+//! integrand's cost — are computed once per node for all of them, and p̄ comes from the
+//! closed form of [`super::linear_transform`] (O(1) per ξ for sloped loads too). Heights are batched in the
 //! order given (the θ-grid of [`super::fit`] puts neighbours together, whose integrands decay at
 //! similar rates e^(−ξ(D−z))), and the tolerance applies to the largest value in the batch.
 //! The face height z = D, where the kernels do not decay, is left to `Slab::stress`, which
@@ -22,6 +23,7 @@
 //! assert!((t[0].sigma_r - s.sigma_r.value).abs() < 1e-9);
 //! ```
 
+use super::linear_transform::LinearTransform;
 use crate::hankel::field::Slab;
 use crate::hankel::kernel::Kernels;
 use crate::hankel::quadrature::{integrate_oscillatory_vec, QuadParams};
@@ -50,8 +52,9 @@ pub fn hole_tractions(
 ) -> (Vec<HoleTraction>, usize) {
     let d = slab.half_thickness();
     let nu = slab.material().poisson_ratio();
-    let tr = slab.transform();
-    let omega = a + tr.outer();
+    // The closed-form transform: O(1) per ξ even for sloped pieces (the slab's own is O(ξ)).
+    let tr = LinearTransform::new(slab.load());
+    let omega = a + slab.transform().outer();
     let mut out = Vec::with_capacity(heights.len());
     let mut evaluations = 0;
     let interior: Vec<(usize, f64)> = heights
