@@ -17,10 +17,15 @@
 //! assert_eq!(solve_lcp(&lcp, &LcpParams::default()).unwrap().force[0], 2.0);
 //! ```
 
+pub mod axisym;
 mod error;
+pub mod grid;
 pub mod lcp;
+pub mod level;
 pub mod pgs;
 pub mod separation;
+pub mod stack;
+pub mod two_plate;
 
 pub use error::ContactError;
 pub use lcp::{solve_lcp, solve_lcp_from, Lcp, LcpInfo, LcpParams, LcpSolution};

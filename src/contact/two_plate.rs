@@ -1,0 +1,536 @@
+//! The report's two-plate model (Chapter II.B, Figs. 4–5): the contact zone A ≤ r ≤ R_o of two
+//! bolted plates, the interface pressure p(r), the gap g(r) beyond R_o, found automatically and
+//! with R_o resolved far below one element.
+//!
+//! - **Equal plates of one material** (Fig. 5(b)): by symmetry one plate D thick on a
+//!   frictionless rigid plane, unilateral contact; exact for welded and frictionless alike (the
+//!   interface shear vanishes by symmetry).
+//! - **Unequal or dissimilar plates** (Fig. 5(c)): both plates meshed, coincident interface node
+//!   pairs, either [`InterfaceModel::Welded`] (u and w tied inside the contact zone: the report's
+//!   model, exact when friction prevents slip) or [`InterfaceModel::Frictionless`] (only w tied,
+//!   unilaterally). The head presses the upper plate's outer face, the nut the lower one's.
+//! - Loads: the joint's face pressure (uniform or triangular with the peak at A or B, Figs. 19–20)
+//!   or a uniform displacement under the nut (Fig. 21); outer edge free or fixed (Fig. 20(c)).
+//!
+//! Each mesh level is solved by [`super::level`] (one factorization, a Schur complement on the
+//! interface window, the LCP of [`super::lcp`]); R_o on a level comes from the gap's
+//! (r − R_o)^{3/2} shape ([`super::separation`]). The next level halves the element size at the
+//! estimated R_o (and at A and B) and ties every point well inside the contact zone, so only a
+//! handful of points near the edge stay unknown. Levels continue until the Richardson estimate
+//! of R_o's error, from the observed rate of the last three levels, falls below the tolerance.
+//!
+//! Units: any consistent set (inches, psi). Forces are totals around the circle; p > 0 is
+//! compression; g > 0 an open gap; the nut deflection is negative toward the interface.
+//!
+//! ```
+//! use boltzone::contact::two_plate::{solve, TwoPlateParams};
+//! use boltzone::{Joint, Material, OuterRadius};
+//! let joint = Joint::symmetric(0.1, 0.31, 0.1, Material::unit(0.3).unwrap())
+//!     .unwrap()
+//!     .with_outer_radius(OuterRadius::Finite(1.54))
+//!     .unwrap();
+//! let params = TwoPlateParams { tolerance: 1e-2, ..Default::default() };
+//! let s = solve(&joint, &params).unwrap();
+//! assert!(s.r_o > 0.31 && s.r_o < 0.5, "R_o = {}", s.r_o);
+//! ```
+
+use super::grid::{graded, KeyPoint};
+use super::lcp::LcpParams;
+use super::level::{solve_level, LevelSetup, LevelSolution};
+use super::separation::{estimate, observed_rate, NodalInterface};
+use super::stack::{Body, Stack};
+use super::ContactError;
+use crate::error::InputError;
+use crate::joint::{Joint, OuterRadius};
+use serde::Serialize;
+use std::time::Instant;
+
+/// How the two plates interact inside the contact zone.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum InterfaceModel {
+    /// u and w tied where in contact (the report's model).
+    Welded,
+    /// Only w tied, unilaterally; no shear.
+    Frictionless,
+}
+
+/// What presses the plates together.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub enum Loading {
+    /// The joint's face pressure on both outer faces over A..B.
+    Pressure,
+    /// A uniform axial displacement δ of each outer face over A..B toward the interface
+    /// (report Fig. 21: 50 µin under each nut); u is free there.
+    NutDisplacement(f64),
+}
+
+/// Support of the outer edge r = C.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum EdgeSupport {
+    /// Traction-free (the report's standard case).
+    Free,
+    /// u = w = 0 on r = C for both plates (report Fig. 20(c)).
+    Fixed,
+}
+
+/// Knobs of [`solve`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TwoPlateParams {
+    /// Element order: 1 (Q4) or 2 (Q9, default).
+    pub order: usize,
+    /// Interface model for unequal or dissimilar plates (default frictionless); equal plates of
+    /// one material use the exact symmetric model whatever this says.
+    pub interface: InterfaceModel,
+    /// Load (default: the joint's face pressure).
+    pub loading: Loading,
+    /// Outer edge (default free).
+    pub edge: EdgeSupport,
+    /// Wanted relative error of R_o (default 5e-4 = 0.05 %).
+    pub tolerance: f64,
+    /// Fewest mesh levels (default 3, so that a convergence rate is observed).
+    pub min_levels: usize,
+    /// Most mesh levels (default 9).
+    pub max_levels: usize,
+    /// Element size at R_o, A and B on the first level, as a fraction of min(D, B − A)
+    /// (default 0.25); halved on each further level.
+    pub coarse: f64,
+    /// Mesh both plates even for a symmetric joint (default false; for cross-checks).
+    pub both_plates: bool,
+    /// LCP knobs.
+    pub lcp: LcpParams,
+}
+
+impl Default for TwoPlateParams {
+    fn default() -> Self {
+        Self {
+            order: 2,
+            interface: InterfaceModel::Frictionless,
+            loading: Loading::Pressure,
+            edge: EdgeSupport::Free,
+            tolerance: 5e-4,
+            min_levels: 3,
+            max_levels: 9,
+            coarse: 0.25,
+            both_plates: false,
+            lcp: LcpParams::default(),
+        }
+    }
+}
+
+/// One mesh level of the study.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct TwoPlateLevel {
+    /// Element size at R_o.
+    pub h: f64,
+    /// Nodes of the mesh.
+    pub nodes: usize,
+    /// Reduced unknowns.
+    pub dofs: usize,
+    /// LCP unknowns (window points).
+    pub window: usize,
+    /// R_o on this level.
+    pub r_o: f64,
+    /// Spread of the R_o estimators on this level.
+    pub spread: f64,
+    /// Active-set iterations.
+    pub iterations: usize,
+    /// Active-set changes.
+    pub changes: usize,
+    /// Assembly + factorization + load solve, seconds.
+    pub time_linear: f64,
+    /// Flexibility solves + LCP + recovery, seconds.
+    pub time_contact: f64,
+}
+
+/// The record of [`solve`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TwoPlateInfo {
+    /// Which model ran: "symmetric (one plate on a rigid frictionless plane)", "welded", "frictionless".
+    pub model: &'static str,
+    /// The levels, coarse to fine.
+    pub levels: Vec<TwoPlateLevel>,
+    /// Observed convergence rate of R_o in the element size (last three levels).
+    pub rate: Option<f64>,
+    /// Whether the tolerance was met.
+    pub converged: bool,
+    /// Wall time, seconds.
+    pub time: f64,
+}
+
+/// The result of [`solve`]: R_o and the interface curves of the finest level.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TwoPlateSolution {
+    /// Separation radius.
+    pub r_o: f64,
+    /// Its estimated absolute error (Richardson on the levels; at least the last change).
+    pub r_o_error: f64,
+    /// Interface node radii of the finest level.
+    pub radius: Vec<f64>,
+    /// Contact force per interface node (totals; sums to the applied force).
+    pub force: Vec<f64>,
+    /// Interface pressure p(r) (force / tributary area; 0 where open).
+    pub pressure: Vec<f64>,
+    /// Gap g(r) (0 in contact).
+    pub gap: Vec<f64>,
+    /// Mean axial displacement under the nut (upper plate, negative toward the interface).
+    pub nut_deflection: f64,
+    /// The study's record.
+    pub info: TwoPlateInfo,
+}
+
+struct Geometry {
+    a: f64,
+    b: f64,
+    c: f64,
+    d: [f64; 2],
+    two: bool,
+    welded: bool,
+}
+
+/// Solves the two-plate contact problem of `joint` (module docs).
+pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution, ContactError> {
+    let start = Instant::now();
+    check(params)?;
+    let load = joint.load();
+    let (a, b) = (joint.hole_radius(), load.outer());
+    let d = [joint.upper().thickness(), joint.lower().thickness()];
+    let two = params.both_plates || !joint.is_symmetric();
+    let c = match joint.outer_radius() {
+        OuterRadius::Finite(c) => c,
+        // The report: no difference between infinite plates and C > 5B; take more room.
+        OuterRadius::Infinite => 10.0 * b + 10.0 * (d[0] + d[1]),
+    };
+    let g = Geometry {
+        a,
+        b,
+        c,
+        d,
+        two,
+        welded: two && params.interface == InterfaceModel::Welded,
+    };
+    let h0 = params.coarse * d[0].min(d[1]).min(b - a);
+    let mut levels = Vec::new();
+    let mut values = Vec::new();
+    let mut prev: Option<(LevelSolution, f64, f64)> = None;
+    let mut r_o_error = f64::INFINITY;
+    let mut converged = false;
+    let mut rate = None;
+    let mut last: Option<LevelSolution> = None;
+    for k in 0..params.max_levels {
+        let h = h0 / 2f64.powi(k as i32);
+        let r_est = prev.as_ref().map(|p| p.1);
+        let (stack, nodes) = mesh(joint, &g, params.order, h, r_est)?;
+        let (sol, window) = solve_adaptive(stack, joint, &g, params, prev.as_ref())?;
+        let est = estimate(&NodalInterface {
+            radius: &sol.radius,
+            pressure: &closed_pressure(&sol),
+            gap: &sol.gap,
+        })
+        .ok_or(ContactError::WindowExhausted { radius: g.c })?;
+        values.push(est.r_o);
+        levels.push(TwoPlateLevel {
+            h,
+            nodes,
+            dofs: sol.dofs,
+            window,
+            r_o: est.r_o,
+            spread: est.spread,
+            iterations: sol.lcp.iterations,
+            changes: sol.lcp.changes,
+            time_linear: sol.time_linear.as_secs_f64(),
+            time_contact: sol.time_contact.as_secs_f64(),
+        });
+        if values.len() >= 2 {
+            let n = values.len();
+            let change = (values[n - 1] - values[n - 2]).abs();
+            r_o_error = change;
+            if let Some((p, e)) = observed_rate(&values, 2.0) {
+                rate = Some(p);
+                // Trust Richardson only for a plausible rate; otherwise the last change.
+                if (0.5..=6.0).contains(&p) {
+                    r_o_error = e;
+                }
+            }
+            if n >= params.min_levels && r_o_error <= params.tolerance * est.r_o {
+                converged = true;
+                last = Some(sol);
+                break;
+            }
+        }
+        prev = Some((sol.clone(), est.r_o, h));
+        last = Some(sol);
+    }
+    let sol = last.expect("at least one level");
+    let pressure = closed_pressure(&sol).iter().map(|p| p.max(0.0)).collect();
+    Ok(TwoPlateSolution {
+        r_o: *values.last().expect("one level"),
+        r_o_error,
+        radius: sol.radius.clone(),
+        force: sol.force.clone(),
+        pressure,
+        gap: sol.gap.clone(),
+        nut_deflection: sol.nut_deflection,
+        info: TwoPlateInfo {
+            model: if !g.two {
+                "symmetric (one plate on a rigid frictionless plane)"
+            } else if g.welded {
+                "welded"
+            } else {
+                "frictionless"
+            },
+            levels,
+            rate,
+            converged,
+            time: start.elapsed().as_secs_f64(),
+        },
+    })
+}
+
+fn check(p: &TwoPlateParams) -> Result<(), InputError> {
+    let bad = |field, value: f64, reason| {
+        Err(InputError::Parameter {
+            field,
+            value,
+            reason,
+        })
+    };
+    if !(p.tolerance > 0.0 && p.tolerance < 1.0) {
+        return bad(
+            "TwoPlateParams::tolerance",
+            p.tolerance,
+            "must lie in (0, 1)",
+        );
+    }
+    if !(p.coarse > 0.0 && p.coarse <= 1.0) {
+        return bad("TwoPlateParams::coarse", p.coarse, "must lie in (0, 1]");
+    }
+    if p.min_levels < 1 || p.max_levels < p.min_levels || p.max_levels > 14 {
+        return bad(
+            "TwoPlateParams::max_levels",
+            p.max_levels as f64,
+            "need 1 ≤ min_levels ≤ max_levels ≤ 14",
+        );
+    }
+    if let Loading::NutDisplacement(v) = p.loading {
+        crate::error::positive("nut displacement", v)?;
+    }
+    Ok(())
+}
+
+/// Pressure on closed nodes (at least the smallest positive number), 0 on open ones.
+fn closed_pressure(s: &LevelSolution) -> Vec<f64> {
+    s.pressure
+        .iter()
+        .zip(&s.closed)
+        .map(|(&p, &c)| if c { p.max(f64::MIN_POSITIVE) } else { 0.0 })
+        .collect()
+}
+
+/// The mesh of one level: radial grading at A, B and the estimate of R_o, axial grading at the
+/// interface and the loaded faces.
+fn mesh(
+    joint: &Joint,
+    g: &Geometry,
+    order: usize,
+    h: f64,
+    r_est: Option<f64>,
+) -> Result<(Stack, usize), ContactError> {
+    let q = 1.25;
+    let mut keys = vec![KeyPoint { x: g.a, h }, KeyPoint { x: g.b, h }];
+    if let Some(r) = r_est.filter(|&r| r > g.a && r < g.c) {
+        keys.push(KeyPoint { x: r, h });
+    }
+    let r = graded(g.a, g.c, &keys, q, (g.c - g.a) / 10.0);
+    let zgrid = |d: f64| {
+        graded(
+            0.0,
+            d,
+            &[KeyPoint { x: 0.0, h }, KeyPoint { x: d, h: 2.0 * h }],
+            q,
+            d / 3.0,
+        )
+    };
+    let upper = Body {
+        z: zgrid(g.d[0]),
+        material: joint.upper().material(),
+    };
+    let lower = g.two.then(|| Body {
+        z: zgrid(g.d[1]).iter().rev().map(|z| -z).collect(),
+        material: joint.lower().material(),
+    });
+    let s = Stack::new(order, &r, upper, lower)?;
+    let n = s.nodes();
+    Ok((s, n))
+}
+
+/// Solves one level, choosing tied and window points from the previous level and widening the
+/// window or untying points when the solution shows the choice was wrong.
+fn solve_adaptive(
+    stack: Stack,
+    joint: &Joint,
+    g: &Geometry,
+    params: &TwoPlateParams,
+    prev: Option<&(LevelSolution, f64, f64)>,
+) -> Result<(LevelSolution, usize), ContactError> {
+    let r = stack.radii().to_vec();
+    let load = joint.load();
+    // First choice: from the previous level; fallback: one reference point under the load.
+    let mut plan = prev.and_then(|p| refined_plan(&r, p));
+    let mut reference = nearest(&r, centroid(load));
+    let mut r_win = (g.b + 3.0 * g.d[0].max(g.d[1])).min(g.c);
+    let mut tries = 0;
+    loop {
+        tries += 1;
+        let (tied, window) = match &plan {
+            Some(p) => p.clone(),
+            None => (
+                vec![reference],
+                (0..r.len())
+                    .filter(|&i| i != reference && r[i] <= r_win)
+                    .collect(),
+            ),
+        };
+        let setup = LevelSetup {
+            tied: &tied,
+            window: &window,
+            welded: g.welded,
+            fix_rigid: params.edge == EdgeSupport::Free && params.loading == Loading::Pressure,
+            lcp: params.lcp,
+            nut: (g.a, g.b),
+        };
+        let sol = solve_level(
+            stack.clone(),
+            &setup,
+            |s| supports(s, g, params),
+            |s, f| {
+                if params.loading == Loading::Pressure {
+                    s.add_face_load(0, load, f);
+                    if s.bodies() == 2 {
+                        s.add_face_load(1, load, f);
+                    }
+                }
+            },
+        )?;
+        let fmax = sol.force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
+        let gmax = sol.gap.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        // Round-off level of the checks: the LCP's own tolerance.
+        let tol = params.lcp.tolerance;
+        let pulls = tied.iter().copied().find(|&i| sol.force[i] < -tol * fmax);
+        let wmax = window.iter().map(|&i| r[i]).fold(0.0, f64::max);
+        let penetrates =
+            (0..r.len()).any(|i| r[i] > wmax && !tied.contains(&i) && sol.gap[i] < -tol * gmax);
+        if tries > 6 {
+            return Err(ContactError::NotConverged {
+                iterations: tries,
+                violations: 1,
+            });
+        }
+        match (pulls, penetrates) {
+            (None, false) => return Ok((sol, window.len())),
+            (Some(i), _) if plan.is_none() => {
+                // The reference pulls: take the point pressing hardest instead.
+                let best = (0..r.len())
+                    .filter(|&j| sol.closed[j])
+                    .max_by(|&x, &y| sol.force[x].total_cmp(&sol.force[y]));
+                match best {
+                    Some(j) if j != reference => reference = j,
+                    _ => {
+                        return Err(ContactError::ReferenceInTension {
+                            radius: r[i],
+                            reaction: sol.force[i],
+                        })
+                    }
+                }
+            }
+            (Some(_), _) => plan = None,
+            (None, true) => {
+                if plan.is_some() {
+                    plan = None;
+                } else if r_win >= g.c {
+                    return Err(ContactError::WindowExhausted { radius: g.c });
+                } else {
+                    r_win = (r_win + 0.5 * (r_win - g.a)).min(g.c);
+                }
+            }
+        }
+    }
+}
+
+/// Ties and window from the previous level: points closed there and farther than three old
+/// elements from every contact boundary are tied; the rest up to R_o + 6 old elements are unknown.
+fn refined_plan(r: &[f64], prev: &(LevelSolution, f64, f64)) -> Option<(Vec<usize>, Vec<usize>)> {
+    let (s, r_o, h) = prev;
+    let margin = 3.0 * h;
+    let mut bounds: Vec<f64> = s
+        .closed
+        .windows(2)
+        .zip(s.radius.windows(2))
+        .filter(|(c, _)| c[0] != c[1])
+        .map(|(_, x)| 0.5 * (x[0] + x[1]))
+        .collect();
+    bounds.push(*r_o);
+    let closed_at = |x: f64| s.closed[nearest(&s.radius, x)];
+    let tied: Vec<usize> = (0..r.len())
+        .filter(|&i| {
+            closed_at(r[i]) && r[i] < *r_o && bounds.iter().all(|b| (r[i] - b).abs() > margin)
+        })
+        .collect();
+    let window: Vec<usize> = (0..r.len())
+        .filter(|&i| !tied.contains(&i) && r[i] <= r_o + 2.0 * margin)
+        .collect();
+    (!tied.is_empty()).then_some((tied, window))
+}
+
+/// Index of the radius closest to `x`.
+fn nearest(r: &[f64], x: f64) -> usize {
+    (0..r.len())
+        .min_by(|&i, &j| (r[i] - x).abs().total_cmp(&(r[j] - x).abs()))
+        .expect("non-empty grid")
+}
+
+/// Force centroid ∫p r² dr / ∫p r dr of the load.
+fn centroid(load: &crate::load::FaceLoad) -> f64 {
+    let n = 64;
+    let (a, b) = (load.inner(), load.outer());
+    let (mut m1, mut m2) = (0.0, 0.0);
+    for i in 0..n {
+        let r = a + (b - a) * (i as f64 + 0.5) / n as f64;
+        let p = load.pressure_at(r);
+        m1 += p * r;
+        m2 += p * r * r;
+    }
+    if m1 > 0.0 {
+        m2 / m1
+    } else {
+        0.5 * (a + b)
+    }
+}
+
+/// Edge supports and prescribed nut displacements.
+fn supports(s: &mut Stack, g: &Geometry, params: &TwoPlateParams) {
+    let nr = s.radii().len();
+    if params.edge == EdgeSupport::Fixed {
+        for b in 0..s.bodies() {
+            for j in 0..s.z_lines(b).len() {
+                let n = s.node(b, nr - 1, j);
+                s.fix(n, 0, 0.0);
+                s.fix(n, 1, 0.0);
+            }
+        }
+    }
+    if let Loading::NutDisplacement(delta) = params.loading {
+        let eps = 1e-12 * g.b;
+        for i in 0..nr {
+            let r = s.radii()[i];
+            if r >= g.a - eps && r <= g.b + eps {
+                let top = s.z_lines(0).len() - 1;
+                let n = s.node(0, i, top);
+                s.fix(n, 1, -delta);
+                if s.bodies() == 2 {
+                    let n = s.node(1, i, 0);
+                    s.fix(n, 1, delta);
+                }
+            }
+        }
+    }
+}
