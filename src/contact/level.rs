@@ -16,13 +16,42 @@
 //! forces λ solve the LCP of [`super::lcp`] and the displacements are X₀ + X_B λ.
 //! Contact forces are read back as the upper plate's internal nodal forces on its interface
 //! nodes, pressures as force / tributary area ∫N_i 2πr dr. Forces are totals (2π included), z up.
+//! The mesh, elements, supports, assembly and factorization are those of [`crate::fem`]; ties
+//! between plates go through [`super::tie`].
 
 use super::lcp::{solve_lcp, Lcp, LcpInfo, LcpParams};
-use super::stack::{Dof, Solver, Stack};
+use super::tie::Ties;
 use super::ContactError;
+use crate::fem::{
+    assemble, Component, DofMap, Factorization, FemError, Loads, Mesh, Pattern, SolveParams,
+    Supports,
+};
+use crate::load::FaceLoad;
+use crate::material::Material;
 use faer::Mat;
 use nalgebra::{DMatrix, DVector};
 use std::time::{Duration, Instant};
+
+/// The meshed joint: a fem mesh of one plate (on a rigid plane) or two plates, and which is which.
+#[derive(Debug, Clone)]
+pub struct Model {
+    /// The mesh (plates stacked bottom to top).
+    pub mesh: Mesh,
+    /// Materials, indexed by the plates' material indices.
+    pub materials: Vec<Material>,
+    /// Plate index of the upper plate (its bottom face is the interface).
+    pub upper: usize,
+    /// Plate index of the lower plate, None for a rigid plane.
+    pub lower: Option<usize>,
+}
+
+impl Model {
+    /// Interface node of the upper plate at radial line `i` and its partner below (if any).
+    pub fn pair(&self, i: usize) -> (usize, Option<usize>) {
+        let low = self.lower.map(|l| self.mesh.top(l)[i]);
+        (self.mesh.bottom(self.upper)[i], low)
+    }
+}
 
 /// What the level needs to know besides the mesh.
 #[derive(Debug, Clone)]
@@ -54,8 +83,6 @@ pub struct LevelSolution {
     pub gap: Vec<f64>,
     /// Whether each interface node is closed (tied or active).
     pub closed: Vec<bool>,
-    /// Full nodal displacements (u, w interleaved).
-    pub displacement: Vec<f64>,
     /// Mean axial displacement of the upper plate's top face over the loaded annulus, weighted
     /// by area (the deflection under the nut; negative = toward the interface).
     pub nut_deflection: f64,
@@ -69,55 +96,82 @@ pub struct LevelSolution {
     pub time_contact: Duration,
 }
 
-/// Applies the ties of `setup`, numbers, factors and solves the level (module docs).
-/// `supports` prescribes the loads' displacements and edge supports before numbering, and
-/// `loads` adds face loads to the reduced right-hand side.
+/// Ties, numbers, assembles, factors and solves the level (module docs). `supports` adds the
+/// edge supports and prescribed nut displacements; `loads` are the external nodal forces.
 pub fn solve_level(
-    mut stack: Stack,
+    model: &Model,
     setup: &LevelSetup<'_>,
-    supports: impl Fn(&mut Stack),
-    loads: impl Fn(&Stack, &mut [f64]),
+    supports: &Supports,
+    loads: &Loads,
 ) -> Result<LevelSolution, ContactError> {
     let t0 = Instant::now();
-    let nr = stack.radii().len();
-    supports(&mut stack);
+    let mesh = &model.mesh;
+    let nr = mesh.radial_nodes().len();
+    let mut sup = supports.clone();
+    let mut pairs = Vec::new();
     for (k, &i) in setup.tied.iter().enumerate() {
-        let (up, low) = stack.interface_pair(i);
-        match low {
-            None => stack.fix(up, 1, 0.0),
-            Some(low) => {
+        match model.pair(i) {
+            (up, None) => sup.roller_z(up),
+            (up, Some(low)) => {
                 if k == 0 && setup.fix_rigid {
-                    stack.fix(up, 1, 0.0);
+                    sup.roller_z(up);
+                    sup.roller_z(low);
+                } else {
+                    pairs.push((up, low, Component::Z));
                 }
-                stack.tie(up, low, 1);
                 if setup.welded {
-                    stack.tie(up, low, 0);
+                    pairs.push((up, low, Component::R));
                 }
             }
         }
     }
-    let n = stack.number();
-    let (solver, mut f) = stack.factorize(n)?;
-    loads(&stack, &mut f);
-    let mut x0 = Mat::from_fn(n, 1, |i, _| f[i]);
-    solver.solve_in_place(&mut x0);
+    let dofs = DofMap::new(&sup);
+    let eq_pairs: Vec<(usize, usize)> = pairs
+        .iter()
+        .filter_map(|&(a, b, c)| Some((dofs.equation(a, c)?, dofs.equation(b, c)?)))
+        .collect();
+    let ties = Ties::new(dofs.n_equations(), &eq_pairs);
+    let stiff = assemble(mesh, &model.materials, &dofs, &Pattern::new(mesh, &dofs)).map_err(fe)?;
+    let k = ties.matrix(&stiff.matrix).map_err(fe)?;
+    let solver = Factorization::new(&k, &SolveParams { parallel: false }).map_err(fe)?;
+    let mut f = dofs.gather(loads.forces());
+    for (fi, pi) in f.iter_mut().zip(&stiff.prescribed_load) {
+        *fi += pi;
+    }
+    let x0 = solver.solve(&ties.restrict(&f));
     let time_linear = t0.elapsed();
 
     let t1 = Instant::now();
-    let comps: &[usize] = if setup.welded { &[1, 0] } else { &[1] };
+    let comps: &[Component] = if setup.welded {
+        &[Component::Z, Component::R]
+    } else {
+        &[Component::Z]
+    };
     let cols: Vec<Vec<(usize, f64)>> = comps
         .iter()
         .flat_map(|&c| setup.window.iter().map(move |&i| (c, i)))
-        .map(|(c, i)| pair_vector(&stack, i, c))
+        .map(|(c, i)| pair_vector(model, &dofs, &ties, i, c))
         .collect();
-    let (g0, flex, xb) = flexibility(&solver, &x0, &cols);
+    let mut b = Mat::<f64>::zeros(ties.n(), cols.len());
+    for (k, col) in cols.iter().enumerate() {
+        for &(e, v) in col {
+            b[(e, k)] += v;
+        }
+    }
+    let xb = solver.solve_many(b.as_ref());
+    let dot = |col: &[(usize, f64)], x: &dyn Fn(usize) -> f64| {
+        col.iter().map(|&(e, v)| v * x(e)).sum::<f64>()
+    };
+    let m = cols.len();
+    let g0 = DVector::from_fn(m, |k, _| dot(&cols[k], &|e| x0[e]));
+    let flex = DMatrix::from_fn(m, m, |a, c| dot(&cols[a], &|e| xb[(e, c)]));
     let lcp = Lcp {
-        flexibility: flex,
+        flexibility: (&flex + flex.transpose()) * 0.5,
         gap0: g0,
         welded: setup.welded,
     };
     let sol = solve_lcp(&lcp, &setup.lcp)?;
-    let mut y: Vec<f64> = (0..n).map(|i| x0[(i, 0)]).collect();
+    let mut y = x0;
     for (k, l) in sol.force.iter().enumerate() {
         if *l != 0.0 {
             for (i, yi) in y.iter_mut().enumerate() {
@@ -125,13 +179,15 @@ pub fn solve_level(
             }
         }
     }
-    let x = stack.expand(&y);
-    let forces = stack.interface_forces(&x);
-    let area = stack.edge_weights(|_| 1.0, &[]);
-    let mut areas = vec![0.0; nr];
-    for (i, a) in area {
-        areas[i] = a;
-    }
+    let u = dofs.expand(&ties.prolong(&y));
+    let line = mesh.bottom(model.upper);
+    let force = line_forces(model, &u, &line)?;
+    let areas = face_weights(
+        mesh,
+        &line,
+        -1.0,
+        &FaceLoad::uniform(mesh.radial_nodes()[0], mesh.radial_nodes()[nr - 1], 1.0)?,
+    )?;
     let mut closed = vec![false; nr];
     for &i in setup.tied {
         closed[i] = true;
@@ -141,66 +197,92 @@ pub fn solve_level(
     }
     let gap: Vec<f64> = (0..nr)
         .map(|i| {
-            let (up, low) = stack.interface_pair(i);
-            x[2 * up + 1] - low.map_or(0.0, |l| x[2 * l + 1])
+            let (up, low) = model.pair(i);
+            u[up][1] - low.map_or(0.0, |l| u[l][1])
         })
         .collect();
-    let force: Vec<f64> = forces.iter().map(|f| f[1]).collect();
-    let (a, b) = setup.nut;
-    let top = stack.z_lines(0).len() - 1;
-    let (mut ws, mut aw) = (0.0, 0.0);
-    for (i, wgt) in stack.edge_weights(|r| if r >= a && r <= b { 1.0 } else { 0.0 }, &[a, b]) {
-        ws += wgt * x[2 * stack.node(0, i, top) + 1];
-        aw += wgt;
-    }
+    let (a, bb) = setup.nut;
+    let top = mesh.top(model.upper);
+    let w = face_weights(mesh, &top, 1.0, &FaceLoad::uniform(a, bb, 1.0)?)?;
+    let nut_deflection =
+        top.iter().zip(&w).map(|(&n, wi)| u[n][1] * wi).sum::<f64>() / w.iter().sum::<f64>();
     Ok(LevelSolution {
-        nut_deflection: ws / aw,
-        radius: stack.radii().to_vec(),
+        radius: mesh.radial_nodes().to_vec(),
         pressure: force.iter().zip(&areas).map(|(f, a)| f / a).collect(),
         force,
         gap,
         closed,
-        displacement: x,
+        nut_deflection,
         lcp: sol.info,
-        dofs: n,
+        dofs: ties.n(),
         time_linear,
         time_contact: t1.elapsed(),
     })
 }
 
-/// The reduced unit pair force of component `c` at radial line `i`: +1 on the upper node,
-/// −1 on the lower one (free unknowns only).
-fn pair_vector(stack: &Stack, i: usize, c: usize) -> Vec<(usize, f64)> {
-    let (up, low) = stack.interface_pair(i);
+fn fe(e: FemError) -> ContactError {
+    ContactError::Factorization(e.to_string())
+}
+
+/// The unit pair force of component `c` at radial line `i` in tied unknowns: +1 on the upper
+/// node, −1 on the lower one (free equations only).
+fn pair_vector(
+    model: &Model,
+    dofs: &DofMap,
+    ties: &Ties,
+    i: usize,
+    c: Component,
+) -> Vec<(usize, f64)> {
+    let (up, low) = model.pair(i);
     let mut v = Vec::new();
-    if let Dof::Free(e) = stack.dof(up, c) {
-        v.push((e, 1.0));
+    if let Some(e) = dofs.equation(up, c) {
+        v.push((ties.of(e), 1.0));
     }
-    if let Some(Dof::Free(e)) = low.map(|l| stack.dof(l, c)) {
-        v.push((e, -1.0));
+    if let Some(e) = low.and_then(|l| dofs.equation(l, c)) {
+        v.push((ties.of(e), -1.0));
     }
     v
 }
 
-/// g⁰ = Bᵀx₀, F = BᵀK⁻¹B (symmetrized), and X_B = K⁻¹B, by one multi-column solve.
-fn flexibility(
-    solver: &Solver,
-    x0: &Mat<f64>,
-    cols: &[Vec<(usize, f64)>],
-) -> (DVector<f64>, DMatrix<f64>, Mat<f64>) {
-    let m = cols.len();
-    let mut xb = Mat::<f64>::zeros(solver.size(), m);
-    for (k, col) in cols.iter().enumerate() {
-        for &(e, v) in col {
-            xb[(e, k)] = v;
+/// ∫ q N_i 2πr dr along a face `line` (as positive weights), from the fem consistent loads.
+fn face_weights(
+    mesh: &Mesh,
+    line: &[usize],
+    outward_z: f64,
+    q: &FaceLoad,
+) -> Result<Vec<f64>, ContactError> {
+    let mut l = Loads::new(mesh.n_nodes());
+    l.add_face_pressure(mesh, line, outward_z, q)?;
+    Ok(line
+        .iter()
+        .map(|&n| -outward_z * l.forces()[n][1])
+        .collect())
+}
+
+/// Axial internal forces K u of the upper plate at its interface nodes `line` (only the
+/// elements touching the line are visited): the contact forces on the upper plate.
+fn line_forces(model: &Model, u: &[[f64; 2]], line: &[usize]) -> Result<Vec<f64>, ContactError> {
+    let mesh = &model.mesh;
+    let mut pos = vec![usize::MAX; mesh.n_nodes()];
+    for (k, &n) in line.iter().enumerate() {
+        pos[n] = k;
+    }
+    let mut f = vec![0.0; line.len()];
+    for e in 0..mesh.n_elements() {
+        let nodes = mesh.element_nodes(e);
+        if nodes.iter().all(|&n| pos[n] == usize::MAX) {
+            continue;
+        }
+        let mat = model.materials[mesh.element_material(e)];
+        let k = mesh.kind().stiffness(&mesh.element_coords(e), &mat);
+        let ue: Vec<f64> = nodes.iter().flat_map(|&n| u[n]).collect();
+        let nd = ue.len();
+        for (a, &n) in nodes.iter().enumerate() {
+            if pos[n] != usize::MAX {
+                let row = 2 * a + 1;
+                f[pos[n]] += (0..nd).map(|j| k[row * nd + j] * ue[j]).sum::<f64>();
+            }
         }
     }
-    solver.solve_in_place(&mut xb);
-    let dot = |col: &[(usize, f64)], x: &dyn Fn(usize) -> f64| {
-        col.iter().map(|&(e, v)| v * x(e)).sum::<f64>()
-    };
-    let g0 = DVector::from_fn(m, |k, _| dot(&cols[k], &|e| x0[(e, 0)]));
-    let f = DMatrix::from_fn(m, m, |a, b| dot(&cols[a], &|e| xb[(e, b)]));
-    let f = (&f + f.transpose()) * 0.5;
-    (g0, f, xb)
+    Ok(f)
 }

@@ -17,14 +17,12 @@
 //! assert_eq!(solve_lcp(&lcp, &LcpParams::default()).unwrap().force[0], 2.0);
 //! ```
 
-pub mod axisym;
 mod error;
-pub mod grid;
 pub mod lcp;
 pub mod level;
 pub mod pgs;
 pub mod separation;
-pub mod stack;
+pub mod tie;
 pub mod two_plate;
 
 pub use error::ContactError;

@@ -34,13 +34,12 @@
 //! assert!(s.r_o > 0.31 && s.r_o < 0.5, "R_o = {}", s.r_o);
 //! ```
 
-use super::grid::{graded, KeyPoint};
 use super::lcp::LcpParams;
-use super::level::{solve_level, LevelSetup, LevelSolution};
+use super::level::{solve_level, LevelSetup, LevelSolution, Model};
 use super::separation::{estimate, observed_rate, NodalInterface};
-use super::stack::{Body, Stack};
 use super::ContactError;
 use crate::error::InputError;
+use crate::fem::{Component, ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
 use crate::joint::{Joint, OuterRadius};
 use serde::Serialize;
 use std::time::Instant;
@@ -76,8 +75,8 @@ pub enum EdgeSupport {
 /// Knobs of [`solve`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TwoPlateParams {
-    /// Element order: 1 (Q4) or 2 (Q9, default).
-    pub order: usize,
+    /// Element (default Q9; Q4, Q4Bbar and the report's Cst4 work as well).
+    pub element: ElementKind,
     /// Interface model for unequal or dissimilar plates (default frictionless); equal plates of
     /// one material use the exact symmetric model whatever this says.
     pub interface: InterfaceModel,
@@ -103,7 +102,7 @@ pub struct TwoPlateParams {
 impl Default for TwoPlateParams {
     fn default() -> Self {
         Self {
-            order: 2,
+            element: ElementKind::Q9,
             interface: InterfaceModel::Frictionless,
             loading: Loading::Pressure,
             edge: EdgeSupport::Free,
@@ -219,8 +218,9 @@ pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution,
     for k in 0..params.max_levels {
         let h = h0 / 2f64.powi(k as i32);
         let r_est = prev.as_ref().map(|p| p.1);
-        let (stack, nodes) = mesh(joint, &g, params.order, h, r_est)?;
-        let (sol, window) = solve_adaptive(stack, joint, &g, params, prev.as_ref())?;
+        let model = mesh(joint, &g, params.element, h, r_est)?;
+        let nodes = model.mesh.n_nodes();
+        let (sol, window) = solve_adaptive(&model, joint, &g, params, prev.as_ref())?;
         let est = estimate(&NodalInterface {
             radius: &sol.radius,
             pressure: &closed_pressure(&sol),
@@ -327,53 +327,64 @@ fn closed_pressure(s: &LevelSolution) -> Vec<f64> {
 }
 
 /// The mesh of one level: radial grading at A, B and the estimate of R_o, axial grading at the
-/// interface and the loaded faces.
+/// interface and the outer faces; materials by plate.
 fn mesh(
     joint: &Joint,
     g: &Geometry,
-    order: usize,
+    kind: ElementKind,
     h: f64,
     r_est: Option<f64>,
-) -> Result<(Stack, usize), ContactError> {
+) -> Result<Model, ContactError> {
     let q = 1.25;
-    let mut keys = vec![KeyPoint { x: g.a, h }, KeyPoint { x: g.b, h }];
-    if let Some(r) = r_est.filter(|&r| r > g.a && r < g.c) {
-        keys.push(KeyPoint { x: r, h });
-    }
-    let r = graded(g.a, g.c, &keys, q, (g.c - g.a) / 10.0);
-    let zgrid = |d: f64| {
-        graded(
-            0.0,
-            d,
-            &[KeyPoint { x: 0.0, h }, KeyPoint { x: d, h: 2.0 * h }],
-            q,
-            d / 3.0,
-        )
+    let mut foci = vec![g.a, g.b];
+    foci.extend(r_est.filter(|&r| r > g.a && r < g.c));
+    let r = Spacing::graded(g.a, g.c, &foci[1..], &foci, h, q, (g.c - g.a) / 10.0)?;
+    let zs = |z0: f64, z1: f64| Spacing::graded(z0, z1, &[], &[z0, z1], h, q, (z1 - z0) / 3.0);
+    let upper_mat = joint.upper().material();
+    let model = if g.two {
+        let plates = [
+            PlateSpec {
+                z: zs(-g.d[1], 0.0)?,
+                material: 0,
+            },
+            PlateSpec {
+                z: zs(0.0, g.d[0])?,
+                material: 1,
+            },
+        ];
+        Model {
+            mesh: Mesh::structured(kind, &r, &plates)?,
+            materials: vec![joint.lower().material(), upper_mat],
+            upper: 1,
+            lower: Some(0),
+        }
+    } else {
+        let plates = [PlateSpec {
+            z: zs(0.0, g.d[0])?,
+            material: 0,
+        }];
+        Model {
+            mesh: Mesh::structured(kind, &r, &plates)?,
+            materials: vec![upper_mat],
+            upper: 0,
+            lower: None,
+        }
     };
-    let upper = Body {
-        z: zgrid(g.d[0]),
-        material: joint.upper().material(),
-    };
-    let lower = g.two.then(|| Body {
-        z: zgrid(g.d[1]).iter().rev().map(|z| -z).collect(),
-        material: joint.lower().material(),
-    });
-    let s = Stack::new(order, &r, upper, lower)?;
-    let n = s.nodes();
-    Ok((s, n))
+    Ok(model)
 }
 
 /// Solves one level, choosing tied and window points from the previous level and widening the
 /// window or untying points when the solution shows the choice was wrong.
 fn solve_adaptive(
-    stack: Stack,
+    model: &Model,
     joint: &Joint,
     g: &Geometry,
     params: &TwoPlateParams,
     prev: Option<&(LevelSolution, f64, f64)>,
 ) -> Result<(LevelSolution, usize), ContactError> {
-    let r = stack.radii().to_vec();
+    let r = model.mesh.radial_nodes().to_vec();
     let load = joint.load();
+    let (supports, loads) = boundary(model, joint, g, params)?;
     // First choice: from the previous level; fallback: one reference point under the load.
     let mut plan = prev.and_then(|p| refined_plan(&r, p));
     let mut reference = nearest(&r, centroid(load));
@@ -398,19 +409,7 @@ fn solve_adaptive(
             lcp: params.lcp,
             nut: (g.a, g.b),
         };
-        let sol = solve_level(
-            stack.clone(),
-            &setup,
-            |s| supports(s, g, params),
-            |s, f| {
-                if params.loading == Loading::Pressure {
-                    s.add_face_load(0, load, f);
-                    if s.bodies() == 2 {
-                        s.add_face_load(1, load, f);
-                    }
-                }
-            },
-        )?;
+        let sol = solve_level(model, &setup, &supports, &loads)?;
         let fmax = sol.force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
         let gmax = sol.gap.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         // Round-off level of the checks: the LCP's own tolerance.
@@ -506,31 +505,43 @@ fn centroid(load: &crate::load::FaceLoad) -> f64 {
     }
 }
 
-/// Edge supports and prescribed nut displacements.
-fn supports(s: &mut Stack, g: &Geometry, params: &TwoPlateParams) {
-    let nr = s.radii().len();
+/// Edge supports, prescribed nut displacements and face loads.
+fn boundary(
+    model: &Model,
+    joint: &Joint,
+    g: &Geometry,
+    params: &TwoPlateParams,
+) -> Result<(Supports, Loads), ContactError> {
+    let mesh = &model.mesh;
+    let plates: Vec<usize> = std::iter::once(model.upper).chain(model.lower).collect();
+    let mut s = Supports::new(mesh.n_nodes());
     if params.edge == EdgeSupport::Fixed {
-        for b in 0..s.bodies() {
-            for j in 0..s.z_lines(b).len() {
-                let n = s.node(b, nr - 1, j);
-                s.fix(n, 0, 0.0);
-                s.fix(n, 1, 0.0);
+        for &p in &plates {
+            for n in mesh.outer(p) {
+                s.fix(n);
             }
         }
     }
-    if let Loading::NutDisplacement(delta) = params.loading {
-        let eps = 1e-12 * g.b;
-        for i in 0..nr {
-            let r = s.radii()[i];
-            if r >= g.a - eps && r <= g.b + eps {
-                let top = s.z_lines(0).len() - 1;
-                let n = s.node(0, i, top);
-                s.fix(n, 1, -delta);
-                if s.bodies() == 2 {
-                    let n = s.node(1, i, 0);
-                    s.fix(n, 1, delta);
+    let mut loads = Loads::new(mesh.n_nodes());
+    match params.loading {
+        Loading::NutDisplacement(delta) => {
+            let eps = 1e-12 * g.b;
+            let under = |n: &usize| mesh.nodes()[*n][0] <= g.b + eps;
+            for n in mesh.top(model.upper).into_iter().filter(under) {
+                s.prescribe(n, Component::Z, -delta);
+            }
+            if let Some(l) = model.lower {
+                for n in mesh.bottom(l).into_iter().filter(under) {
+                    s.prescribe(n, Component::Z, delta);
                 }
             }
         }
+        Loading::Pressure => {
+            loads.add_face_pressure(mesh, &mesh.top(model.upper), 1.0, joint.load())?;
+            if let Some(l) = model.lower {
+                loads.add_face_pressure(mesh, &mesh.bottom(l), -1.0, joint.load())?;
+            }
+        }
     }
+    Ok((s, loads))
 }
