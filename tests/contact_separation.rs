@@ -90,10 +90,17 @@ fn observed_rate_recovers_a_power_law() {
     let xs: Vec<f64> = (0..4)
         .map(|k| 1.0 + 0.3 * 0.5f64.powi(k).powf(1.5))
         .collect();
-    let (rate, err) = observed_rate(&xs, 2.0).unwrap();
+    let (rate, err) = observed_rate(&xs, 2.0, 3.0).unwrap();
     assert!((rate - 1.5).abs() < 1e-12);
     assert!((err - 0.3 * 0.125f64.powf(1.5)).abs() < 1e-14);
-    assert!(observed_rate(&xs[..2], 2.0).is_none());
+    assert!(observed_rate(&xs[..2], 2.0, 3.0).is_none());
+    // Faster than the cap: the error is estimated as if the rate were the cap (conservative).
+    let (rate, err) = observed_rate(&xs, 2.0, 1.0).unwrap();
+    assert!((rate - 1.5).abs() < 1e-12);
+    assert!((err - (xs[3] - xs[2]).abs()).abs() < 1e-15);
+    // Oscillating: the last change is the error.
+    let (_, err) = observed_rate(&[1.0, 1.1, 1.05, 1.06], 2.0, 3.0).unwrap();
+    assert!((err - 0.01).abs() < 1e-12);
 }
 
 #[test]

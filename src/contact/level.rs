@@ -75,7 +75,8 @@ pub struct LevelSetup<'a> {
 pub struct LevelSolution {
     /// Interface node radii.
     pub radius: Vec<f64>,
-    /// Contact force on the upper plate at each interface node (total, axial, > 0 compression).
+    /// Contact force on the upper plate at each interface node (total, axial, > 0 compression;
+    /// 0 at nodes held by an edge support, whose reaction is the support's).
     pub force: Vec<f64>,
     /// Interface pressure: force / tributary area.
     pub pressure: Vec<f64>,
@@ -181,7 +182,17 @@ pub fn solve_level(
     }
     let u = dofs.expand(&ties.prolong(&y));
     let line = mesh.bottom(model.upper);
-    let force = line_forces(model, &u, &line)?;
+    let mut force = line_forces(model, &u, &line)?;
+    // A node held by an edge support transmits that support's reaction, not contact.
+    for (i, f) in force.iter_mut().enumerate() {
+        let (up, low) = model.pair(i);
+        if std::iter::once(up)
+            .chain(low)
+            .any(|n| supports.get(n).fixed[1].is_some())
+        {
+            *f = 0.0;
+        }
+    }
     let areas = face_weights(
         mesh,
         &line,

@@ -96,22 +96,25 @@ pub fn estimate(data: &NodalInterface<'_>) -> Option<SeparationEstimate> {
 }
 
 /// Observed convergence of a sequence of estimates on meshes refined by a constant factor:
-/// returns (rate, Richardson error estimate of the last value) from the last three values,
-/// i.e. rate = log(|x₁ − x₀| / |x₂ − x₁|) / log(factor) and error = |x₂ − x₁| / (factor^rate − 1).
-/// None if fewer than three values or the last two coincide (then the error is below round-off).
-pub fn observed_rate(values: &[f64], factor: f64) -> Option<(f64, f64)> {
+/// returns (rate, error estimate of the last value) from the last three values, with
+/// rate = log(|x₁ − x₀| / |x₂ − x₁|) / log(factor) and the Richardson error
+/// |x₂ − x₁| / (factor^p − 1), p = min(rate, `max_rate`). Conservative on purpose: when the two
+/// differences change sign (not yet asymptotic) or the rate is below 1, the error is the last
+/// change |x₂ − x₁| itself, and a rate above `max_rate` (the expected asymptotic order) is not
+/// trusted beyond it. None if fewer than three values or a difference vanishes.
+pub fn observed_rate(values: &[f64], factor: f64, max_rate: f64) -> Option<(f64, f64)> {
     let n = values.len();
     if n < 3 {
         return None;
     }
-    let d1 = (values[n - 2] - values[n - 3]).abs();
-    let d2 = (values[n - 1] - values[n - 2]).abs();
+    let (s1, s2) = (values[n - 2] - values[n - 3], values[n - 1] - values[n - 2]);
+    let (d1, d2) = (s1.abs(), s2.abs());
     if d2 == 0.0 || d1 == 0.0 {
         return None;
     }
     let rate = (d1 / d2).ln() / factor.ln();
-    let err = if rate > 0.0 {
-        d2 / (factor.powf(rate) - 1.0)
+    let err = if rate >= 1.0 && s1.signum() == s2.signum() {
+        d2 / (factor.powf(rate.min(max_rate)) - 1.0)
     } else {
         d2
     };
