@@ -274,6 +274,42 @@ fn r_o_converges_at_the_observed_rate() {
 }
 
 #[test]
+fn error_estimate_bounds_the_actual_error() {
+    // Reference: the same geometry converged 100 times tighter.
+    for (b, d) in [(0.31, 0.1), (0.13, 0.2)] {
+        let j = joint(b, d, d, None);
+        let fine = solve(
+            &j,
+            &TwoPlateParams {
+                tolerance: 5e-6,
+                max_levels: 10,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        assert!(fine.info.converged);
+        let s = solve(
+            &j,
+            &TwoPlateParams {
+                tolerance: 5e-4,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let actual = (s.r_o - fine.r_o).abs();
+        assert!(
+            actual <= s.r_o_error + fine.r_o_error,
+            "B={b} D={d}: error {actual:e} > estimate {:e}",
+            s.r_o_error
+        );
+        assert!(
+            actual <= 5e-4 * fine.r_o,
+            "B={b} D={d}: tolerance missed ({actual:e})"
+        );
+    }
+}
+
+#[test]
 fn bad_parameters_are_typed_errors() {
     let j = joint(0.31, 0.1, 0.1, None);
     for p in [
