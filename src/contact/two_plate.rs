@@ -367,7 +367,9 @@ fn mesh(
     let mut foci = vec![g.a, g.b];
     foci.extend(r_est.filter(|&r| r > g.a && r < g.c));
     let r = Spacing::graded(g.a, g.c, &foci[1..], &foci, h, q, (g.c - g.a) / 10.0)?;
-    let zs = |z0: f64, z1: f64| Spacing::graded(z0, z1, &[], &[z0, z1], h, q, (z1 - z0) / 3.0);
+    // Axially the fields vary more slowly than radially near R_o: a faster growth (1.5) away
+    // from the interface and the loaded face halves the node count at no measurable cost in R_o.
+    let zs = |z0: f64, z1: f64| Spacing::graded(z0, z1, &[], &[z0, z1], h, 1.5, (z1 - z0) / 3.0);
     let upper_mat = joint.upper().material();
     let model = if g.two {
         let plates = [
