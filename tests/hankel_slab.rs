@@ -46,14 +46,27 @@ fn kernels_meet_the_face_conditions_and_bound() {
 
 #[test]
 fn total_force_is_carried_by_the_midplane() {
-    // 2π ∫ σ_z(r, 0) r dr = −P π (B² − A²); σ_z decays like e^(−2.1 r/D) beyond the load,
+    // 2π ∫ σ_z(r, 0) r dr = −F = −P π (B² − A²) (uniform and triangular loads); σ_z decays like e^(−2.1 r/D) beyond the load,
     // so [0, B + 30D] with 20-point Gauss panels of width D/4 holds everything above 1e-20
-    for &(a, b, d) in &[
-        (0.1, 0.31, 0.1),
-        (0.1, 0.13, 0.2),
-        (0.1, 0.16, 0.1333333333333333),
-    ] {
-        let s = slab(a, b, d);
+    let loads = [
+        (FaceLoad::uniform(0.1, 0.31, 1.0).unwrap(), 0.1),
+        (FaceLoad::uniform(0.1, 0.13, 1.0).unwrap(), 0.2),
+        (
+            FaceLoad::uniform(0.1, 0.16, 1.0).unwrap(),
+            0.1333333333333333,
+        ),
+        (
+            FaceLoad::triangular(0.1, 0.31, 1.0, Peak::AtA).unwrap(),
+            0.1,
+        ),
+        (
+            FaceLoad::triangular(0.1, 0.22, 1.0, Peak::AtB).unwrap(),
+            0.2,
+        ),
+    ];
+    for (load, d) in loads {
+        let (a, b) = (load.inner(), load.outer());
+        let s = Slab::new(d, Material::unit(0.3).unwrap(), load).unwrap();
         let r_end = b + 30.0 * d;
         let rule = MidplaneRule::new(&s, r_end, 1e-15).unwrap();
         let g = gauss_legendre(20);
@@ -66,7 +79,8 @@ fn total_force_is_carried_by_the_midplane() {
                 f += 0.5 * h * w * rule.eval(r).value * r;
             }
         }
-        let exact = -(b * b - a * a) / 2.0;
+        // F/(2π) from the load's closed-form moments (load.rs), not from p̄
+        let exact = -s.load().total_force() / (2.0 * std::f64::consts::PI);
         assert!(
             (f - exact).abs() < 1e-9 * exact.abs(),
             "{a} {b} {d}: {f} vs {exact}"
@@ -209,17 +223,27 @@ fn interior_field_is_in_equilibrium() {
 
 #[test]
 fn displacement_is_compatible_with_strain() {
-    // ε_θ = u/r = (σ_θ − ν(σ_r + σ_z))/E: a second, independent combination of the kernels
+    // ε_θ = u/r = (σ_θ − ν(σ_r + σ_z))/E and ε_z = ∂w/∂z = (σ_z − ν(σ_r + σ_θ))/E (E = 1):
+    // the displacement kernels K_m, K_w against the stress kernels
     let s = slab(0.1, 0.31, 0.1);
     let p = QuadParams {
         rel_tol: 1e-13,
         ..Default::default()
     };
-    for &(r, z) in &[(0.2, 0.0), (0.4, 0.05), (0.15, 0.09)] {
+    for &(r, z) in &[(0.2, 0.02), (0.4, 0.05), (0.15, 0.09)] {
         let st = s.stress(r, z, &p);
         let u = s.displacement(r, z, &p).u.value;
         let eps = st.sigma_theta.value - 0.3 * (st.sigma_r.value + st.sigma_z.value);
         assert!((u / r - eps).abs() < 1e-10, "({r},{z}): {} vs {eps}", u / r);
+        // ε_z = ∂w/∂z by central differences: O(h²) truncation, ≈ 1e-8 relative for h = 1e-4
+        let h = 1e-4;
+        let w = |z: f64| s.displacement(r, z, &p).w.value;
+        let dw = (w(z + h) - w(z - h)) / (2.0 * h);
+        let eps_z = st.sigma_z.value - 0.3 * (st.sigma_r.value + st.sigma_theta.value);
+        assert!(
+            (dw - eps_z).abs() < 1e-6 * eps_z.abs().max(1.0),
+            "({r},{z}): {dw} vs {eps_z}"
+        );
     }
 }
 
@@ -250,5 +274,47 @@ fn fast_midplane_rule_and_curve_match_direct_quadrature() {
                 "r={r}"
             );
         }
+    }
+}
+
+#[test]
+fn load_transform_obeys_its_bounds_and_small_argument_limit() {
+    // |p̄(ξ)| ≤ min(M, C₁/ξ) (used to truncate the midplane rule) on a fine grid, and
+    // p̄(ξ) = ∫ p ρ dρ − ξ²∫ p ρ³ dρ/4 + O(ξ⁴) (J₀ series) at small ξ
+    for load in [
+        FaceLoad::uniform(0.1, 0.31, 1.0).unwrap(),
+        FaceLoad::triangular(0.1, 0.31, 1.0, Peak::AtA).unwrap(),
+        FaceLoad::triangular(0.1, 0.31, 1.0, Peak::AtB).unwrap(),
+        FaceLoad::tabulated(&[0.0, 0.2, 0.5], &[2.0, 1.0, 0.0]).unwrap(),
+    ] {
+        let s = Slab::new(0.1, Material::unit(0.3).unwrap(), load.clone()).unwrap();
+        let t = s.transform();
+        let (m, c1) = (t.abs_moment(), t.decay_constant());
+        for k in 1..20000 {
+            let xi = 0.01 * k as f64;
+            let v = t.eval(xi).abs();
+            assert!(
+                v <= m * (1.0 + 1e-12) && v <= c1 / xi * (1.0 + 1e-12),
+                "ξ={xi}"
+            );
+        }
+        // moments ∫ p ρ^{1,3} dρ by a fine midpoint rule (independent of both routes)
+        let (a, b) = (load.inner(), load.outer());
+        let n = 200_000;
+        let h = (b - a) / n as f64;
+        let (mut m1, mut m3) = (0.0, 0.0);
+        for i in 0..n {
+            let r = a + (i as f64 + 0.5) * h;
+            let p = load.pressure_at(r);
+            m1 += p * r * h;
+            m3 += p * r * r * r * h;
+        }
+        let xi = 1e-3;
+        let series = m1 - xi * xi * m3 / 4.0;
+        assert!(
+            (t.eval(xi) - series).abs() < 1e-9 * m1,
+            "{} vs {series}",
+            t.eval(xi)
+        );
     }
 }
