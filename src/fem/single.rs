@@ -29,7 +29,7 @@ use super::solve::{Factorization, SolveParams};
 use super::spacing::Spacing;
 use super::FemError;
 use crate::error::InputError;
-use crate::joint::SinglePlate;
+use crate::joint::{OuterRadius, SinglePlate};
 use std::time::Instant;
 
 /// Parameters of the single-plate R_o study.
@@ -98,17 +98,13 @@ pub fn coarse_radial_spacing(
 ) -> Result<Spacing, InputError> {
     let d = plate.half_thickness();
     let (a, b) = (plate.hole_radius(), plate.load().outer());
-    let c = plate.outer_radius().value().min(b + 30.0 * d);
+    let c = match plate.outer_radius() {
+        OuterRadius::Infinite => b + 30.0 * d,
+        OuterRadius::Finite(c) => c,
+    };
     let h = params.coarse_size * d;
-    Spacing::graded(
-        a,
-        c,
-        plate.load().knots(),
-        &[a, b],
-        h,
-        params.growth,
-        4.0 * d,
-    )
+    let foci = [a, plate.load().inner(), b];
+    Spacing::graded(a, c, plate.load().knots(), &foci, h, params.growth, 4.0 * d)
 }
 
 /// Solves the half plate on the mesh `radial` × `nz` uniform axial elements.
