@@ -23,12 +23,13 @@ use super::dofs::{DofMap, Supports};
 use super::element::ElementKind;
 use super::loads::Loads;
 use super::mesh::{Mesh, PlateSpec};
+use super::ordering::nested_dissection;
 use super::recover::{line_traction, reactions};
 use super::solve::{Factorization, SolveParams};
 use super::spacing::Spacing;
 use super::FemError;
 use crate::error::InputError;
-use crate::joint::SinglePlate;
+use crate::joint::{OuterRadius, SinglePlate};
 use std::time::Instant;
 
 /// Parameters of the single-plate R_o study.
@@ -97,17 +98,13 @@ pub fn coarse_radial_spacing(
 ) -> Result<Spacing, InputError> {
     let d = plate.half_thickness();
     let (a, b) = (plate.hole_radius(), plate.load().outer());
-    let c = plate.outer_radius().value().min(b + 30.0 * d);
+    let c = match plate.outer_radius() {
+        OuterRadius::Infinite => b + 30.0 * d,
+        OuterRadius::Finite(c) => c,
+    };
     let h = params.coarse_size * d;
-    Spacing::graded(
-        a,
-        c,
-        plate.load().knots(),
-        &[a, b],
-        h,
-        params.growth,
-        4.0 * d,
-    )
+    let foci = [a, plate.load().inner(), b];
+    Spacing::graded(a, c, plate.load().knots(), &foci, h, params.growth, 4.0 * d)
 }
 
 /// Solves the half plate on the mesh `radial` × `nz` uniform axial elements.
@@ -139,7 +136,8 @@ pub fn solve_midplane(
     for (a, b) in rhs.iter_mut().zip(&k.prescribed_load) {
         *a += b;
     }
-    let x = Factorization::new(&k.matrix, solve)?.solve(&rhs);
+    let order = nested_dissection(&mesh, &dofs);
+    let x = Factorization::with_ordering(&k.matrix, Some(&order), solve)?.solve(&rhs);
     let u = dofs.expand(&x);
     let reac = reactions(&mesh, &mats, &u, &loads)?;
     let rz: Vec<f64> = mid.iter().map(|&n| reac[n][1]).collect();

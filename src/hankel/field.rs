@@ -1,0 +1,224 @@
+//! Stresses and displacements anywhere in the infinite slab −D ≤ z ≤ D, no hole, pressed by
+//! p(r) on both faces: [`Slab`].
+//!
+//! Each field is a Hankel integral of the load transform p̄(ξ) ([`super::transform`]) times a
+//! kernel of [`super::kernel`] times J₀(ξr) or J₁(ξr), integrated by partition–extrapolation
+//! ([`super::quadrature`]) with panels of a half-period π/(r + B). Inside the slab the integrands
+//! decay like e^(−ξ(D−|z|)); on a face (|z| = D) they do not, so there the large-ξ limits of the
+//! kernels (the half-space surface values) are integrated analytically:
+//! σ_z = −p(r), τ_rz = 0, σ_r = −p + (1−2ν)m(r)/r², σ_θ = −2νp − (1−2ν)m(r)/r²,
+//! u = −(1−2ν)m(r)/(2G r) with m(r) = ∫₀^r p ρ dρ, and only exponentially decaying remainders are
+//! integrated numerically (w keeps a slowly decaying ∫ p̄ J₀ dξ, left to the extrapolation).
+//! Compression negative; stresses in the load's pressure units, displacements in length units
+//! when E is in pressure units.
+//!
+//! ```
+//! use boltzone::{FaceLoad, Material, hankel::Slab};
+//! let slab = Slab::new(0.1, Material::unit(0.3).unwrap(), FaceLoad::uniform(0.1, 0.31, 1.0).unwrap()).unwrap();
+//! let s = slab.stress(0.2, 0.1, &Default::default());
+//! assert!((s.sigma_z.value + 1.0).abs() < 1e-12 && s.tau_rz.value.abs() < 1e-12);
+//! ```
+
+use super::kernel::{face_remainders, Kernels};
+use super::quadrature::{integrate_oscillatory_vec, Estimate, QuadParams};
+use super::transform::LoadTransform;
+use crate::error::{positive, InputError};
+use crate::load::FaceLoad;
+use crate::material::Material;
+
+/// The infinite slab of half-thickness D (thickness 2D), no hole, loaded by the same p(r) on
+/// both faces.
+#[derive(Debug, Clone)]
+pub struct Slab {
+    d: f64,
+    material: Material,
+    load: FaceLoad,
+    transform: LoadTransform,
+}
+
+/// The stress tensor's axisymmetric components at one point, each with its error estimate.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Stress {
+    /// Radial normal stress σ_r.
+    pub sigma_r: Estimate,
+    /// Hoop stress σ_θ.
+    pub sigma_theta: Estimate,
+    /// Axial normal stress σ_z.
+    pub sigma_z: Estimate,
+    /// Shear stress τ_rz.
+    pub tau_rz: Estimate,
+}
+
+/// Displacements (u radial, w axial, positive outward / upward) with error estimates.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Displacement {
+    /// Radial displacement u.
+    pub u: Estimate,
+    /// Axial displacement w.
+    pub w: Estimate,
+}
+
+/// J₁(x)/x, continuous at 0.
+fn j1_over_x(x: f64) -> f64 {
+    if x < 1e-8 {
+        0.5 - x * x / 16.0
+    } else {
+        libm::j1(x) / x
+    }
+}
+
+impl Slab {
+    /// A slab of half-thickness `d` (> 0) of `material`, with `load` on both faces.
+    pub fn new(d: f64, material: Material, load: FaceLoad) -> Result<Self, InputError> {
+        positive("half-thickness D", d)?;
+        let transform = LoadTransform::new(&load);
+        Ok(Self {
+            d,
+            material,
+            load,
+            transform,
+        })
+    }
+
+    /// Half-thickness D.
+    pub fn half_thickness(&self) -> f64 {
+        self.d
+    }
+
+    /// The material.
+    pub fn material(&self) -> Material {
+        self.material
+    }
+
+    /// The face load.
+    pub fn load(&self) -> &FaceLoad {
+        &self.load
+    }
+
+    /// The load transform p̄(ξ), shared by all evaluations.
+    pub fn transform(&self) -> &LoadTransform {
+        &self.transform
+    }
+
+    /// Panel frequency for the point r: the fastest oscillation r + B of J(ξr)·p̄(ξ). Panels are
+    /// split into sub-panels of 1/D, the scale on which the kernels vary (their poles nearest
+    /// the real axis lie at Im ξ ≈ 1.1/D).
+    fn omega(&self, r: f64) -> f64 {
+        r + self.transform.outer()
+    }
+
+    /// Checks (r, z) and returns (r, |z| clamped to D, sign of z).
+    fn point(&self, r: f64, z: f64) -> (f64, f64, f64) {
+        let sign = if z < 0.0 { -1.0 } else { 1.0 };
+        (r.abs(), z.abs().min(self.d), sign)
+    }
+
+    /// σ_r, σ_θ, σ_z, τ_rz at (r, z), |z| ≤ D (larger |z| is clamped to the face).
+    pub fn stress(&self, r: f64, z: f64, params: &QuadParams) -> Stress {
+        let (r, az, sign) = self.point(r, z);
+        let nu = self.material.poisson_ratio();
+        let face = az >= self.d;
+        let (d, tr) = (self.d, &self.transform);
+        let [iz, itau, ir, im, inn] = integrate_oscillatory_vec(
+            |xi| {
+                let k = if face {
+                    face_remainders(xi * d, nu)
+                } else {
+                    Kernels::at(xi * d, xi * az, nu)
+                };
+                let x = xi * r;
+                let (j0, j1) = (libm::j0(x), libm::j1(x));
+                let q = xi * tr.eval(xi);
+                [
+                    q * k.z * j0,
+                    q * k.tau * j1,
+                    q * k.r * j0,
+                    q * k.m * j1_over_x(x),
+                    q * k.n * j0,
+                ]
+            },
+            self.omega(r),
+            1.0 / d,
+            &QuadParams {
+                products: true,
+                ..*params
+            },
+        );
+        let (mut sz, mut tau, mut sr, mut st) = (
+            iz.scale(-1.0),
+            itau.scale(-sign),
+            ir.scale(-1.0).plus(im),
+            inn.scale(-1.0).plus(im.scale(-1.0)),
+        );
+        if face {
+            let p = tr.pressure(r);
+            let m = (1.0 - 2.0 * nu) * tr.moment_within_over_r2(r);
+            sz.value -= p;
+            tau.value = 0.0;
+            sr.value += -p + m;
+            st.value += -2.0 * nu * p - m;
+        }
+        Stress {
+            sigma_r: sr,
+            sigma_theta: st,
+            sigma_z: sz,
+            tau_rz: tau,
+        }
+    }
+
+    /// σ_z at (r, z) with its error estimate.
+    pub fn sigma_z(&self, r: f64, z: f64, params: &QuadParams) -> Estimate {
+        if z == 0.0 {
+            let (d, tr) = (self.d, &self.transform);
+            let [e] = integrate_oscillatory_vec(
+                |xi| [-xi * tr.eval(xi) * super::kernel::midplane(xi * d) * libm::j0(xi * r)],
+                self.omega(r.abs()),
+                1.0 / d,
+                params,
+            );
+            return e;
+        }
+        self.stress(r, z, params).sigma_z
+    }
+
+    /// u and w at (r, z), |z| ≤ D.
+    pub fn displacement(&self, r: f64, z: f64, params: &QuadParams) -> Displacement {
+        let (r, az, sign) = self.point(r, z);
+        let nu = self.material.poisson_ratio();
+        let face = az >= self.d;
+        let (d, tr) = (self.d, &self.transform);
+        let [iu, iw, iw0] = integrate_oscillatory_vec(
+            |xi| {
+                let k = if face {
+                    face_remainders(xi * d, nu)
+                } else {
+                    Kernels::at(xi * d, xi * az, nu)
+                };
+                let x = xi * r;
+                let q = tr.eval(xi);
+                let j0 = libm::j0(x);
+                [
+                    q * k.m * libm::j1(x),
+                    q * k.w * j0,
+                    if face { q * j0 } else { 0.0 },
+                ]
+            },
+            self.omega(r),
+            1.0 / d,
+            &QuadParams {
+                products: true,
+                ..*params
+            },
+        );
+        let c = -1.0 / (2.0 * self.material.shear_modulus());
+        let mut u = iu.scale(c);
+        let mut w = iw.plus(iw0.scale(2.0 * (1.0 - nu))).scale(c * sign);
+        if face {
+            u.value += c * (1.0 - 2.0 * nu) * r * tr.moment_within_over_r2(r);
+        }
+        if az == 0.0 {
+            w = Estimate::default(); // odd in z
+        }
+        Displacement { u, w }
+    }
+}

@@ -1,0 +1,223 @@
+//! The separation radius R_o of the single-plate substitution (Fernlund): the first radius
+//! beyond the load's outer radius B where the midplane stress σ_z(r, 0) turns tensile.
+//!
+//! By symmetry the midplane of the slab 2D thick plays the joint's interface; where σ_z(r, 0)
+//! would be tensile the two plates separate. R_o is found by an outward scan from r = B in
+//! steps of D/2 for the first sign change of σ_z(r, 0) from compressive to tensile (beyond it
+//! σ_z keeps oscillating with amplitude falling ≈ e⁻⁶ per half-wave of ≈ 2.8D: those later
+//! crossings are not separations), then Brent's method (Brent 1973, *Algorithms for
+//! Minimization without Derivatives*, ch. 4) on the bracket. Only midplane σ_z is evaluated,
+//! by a [`Midplane`] evaluator shared by all evaluations (a ξ-rule, or the
+//! real-space route for thin slabs). The zero is shallow (slope ≈ 0.01–0.1 P/A),
+//! so the error estimate is the final bracket half-width plus the σ_z error divided by the
+//! slope at the root.
+//!
+//! ```
+//! use boltzone::{FaceLoad, Material, hankel::{Slab, SeparationParams}};
+//! let slab = Slab::new(0.1, Material::unit(0.3).unwrap(), FaceLoad::uniform(0.1, 0.31, 1.0).unwrap()).unwrap();
+//! let s = slab.separation_radius(&SeparationParams::default()).unwrap();
+//! let at = |r: f64| slab.sigma_z(r, 0.0, &Default::default()).value;
+//! assert!(at(s.r_o - 1e-6) < 0.0 && at(s.r_o + 1e-6) > 0.0);
+//! ```
+
+use super::field::Slab;
+use super::midplane::Midplane;
+use crate::error::{positive, InputError};
+use std::time::Instant;
+
+/// Knobs of the R_o search.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SeparationParams {
+    /// Relative tolerance on R_o (default 1e-10).
+    pub rel_tol: f64,
+    /// Scan step as a fraction of D (default 0.5; the half-wavelength of the far-field
+    /// oscillation is ≈ 2.8D, so no pair of crossings hides between two steps).
+    pub step: f64,
+    /// The scan stops at B + `reach`·D (default 12).
+    pub reach: f64,
+    /// Brent iterations allowed (default 100).
+    pub max_iterations: usize,
+}
+
+impl Default for SeparationParams {
+    fn default() -> Self {
+        Self {
+            rel_tol: 1e-10,
+            step: 0.5,
+            reach: 12.0,
+            max_iterations: 100,
+        }
+    }
+}
+
+/// R_o with its error estimate and cost.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SeparationInfo {
+    /// The separation radius R_o.
+    pub r_o: f64,
+    /// Estimated absolute error of R_o.
+    pub error: f64,
+    /// Midplane σ_z evaluations (scan + root finder).
+    pub evaluations: usize,
+    /// Slope dσ_z/dr at R_o (pressure per length; positive).
+    pub slope: f64,
+    /// ξ-nodes of the midplane rule (0: the real-space route was used).
+    pub nodes: usize,
+    /// Wall-clock time in seconds.
+    pub seconds: f64,
+}
+
+/// Why no R_o was found.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SeparationError {
+    /// Bad parameters or a slab outside the solver's range.
+    #[error(transparent)]
+    Input(#[from] InputError),
+    /// σ_z(r, 0) stayed compressive up to `searched_to`.
+    #[error("midplane sigma_z stays compressive from B to r = {searched_to}: no separation found")]
+    NotFound {
+        /// End of the scan.
+        searched_to: f64,
+    },
+}
+
+impl Slab {
+    /// The separation radius R_o (see the module docs of [`super::separation`]).
+    pub fn separation_radius(
+        &self,
+        params: &SeparationParams,
+    ) -> Result<SeparationInfo, SeparationError> {
+        let start = Instant::now();
+        positive("R_o relative tolerance", params.rel_tol)?;
+        positive("scan step", params.step)?;
+        positive("scan reach", params.reach)?;
+        let d = self.half_thickness();
+        let b = self.transform().outer();
+        let r_end = b + params.reach * d;
+        // scale of the midplane σ_z: P under a wide load, F·g(0)/D² ≈ 2∫|p|ρdρ/D² under a
+        // narrow one in a thick slab (then the zero lies ≈ 1.55D out with slope ≈ scale/D);
+        // a slope of order 1e-3·scale/length turns the σ_z tolerance into rel_tol on R_o
+        let p_max = self
+            .load()
+            .values()
+            .iter()
+            .fold(0.0f64, |m, v| m.max(v.abs()));
+        let scale = p_max.min(2.0 * self.transform().abs_moment() / (d * d));
+        let sigma_tol = (1e-3 * params.rel_tol * scale).max(1e-15 * scale);
+        let rule = Midplane::new(self, r_end, sigma_tol)?;
+        let sign = self.load().total_force().signum();
+        let mut evaluations = 0;
+        let mut f = |r: f64| {
+            evaluations += 1;
+            sign * rule.eval(r).value
+        };
+        let h = params.step * d;
+        let (mut lo, mut f_lo) = (b, f(b));
+        let mut bracket = None;
+        let mut k = 1;
+        while lo < r_end {
+            let hi = (b + k as f64 * h).min(r_end);
+            let f_hi = f(hi);
+            if f_lo <= 0.0 && f_hi > 0.0 {
+                bracket = Some((lo, f_lo, hi, f_hi));
+                break;
+            }
+            (lo, f_lo) = (hi, f_hi);
+            k += 1;
+        }
+        let (a, fa, c, fc) = bracket.ok_or(SeparationError::NotFound { searched_to: r_end })?;
+        let root = brent(
+            &mut f,
+            a,
+            fa,
+            c,
+            fc,
+            params.rel_tol * b * 0.25,
+            params.max_iterations,
+        );
+        // slope by a central difference on the σ_z scale of the bracket
+        let dr = (1e-4 * d).max(1e-6 * root.x);
+        let slope = (f(root.x + dr) - f(root.x - dr)) / (2.0 * dr);
+        let error = root.half_width + rule.eval(root.x).error / slope.abs();
+        Ok(SeparationInfo {
+            r_o: root.x,
+            error,
+            evaluations,
+            slope,
+            nodes: rule.nodes(),
+            seconds: start.elapsed().as_secs_f64(),
+        })
+    }
+}
+
+struct Root {
+    x: f64,
+    half_width: f64,
+}
+
+/// Brent's method on a bracket [a, b] with f(a)·f(b) ≤ 0, to half-width `tol`.
+fn brent<F: FnMut(f64) -> f64>(
+    f: &mut F,
+    mut a: f64,
+    mut fa: f64,
+    mut b: f64,
+    mut fb: f64,
+    tol: f64,
+    max_iter: usize,
+) -> Root {
+    let (mut c, mut fc) = (a, fa);
+    let (mut d, mut e) = (b - a, b - a);
+    for _ in 0..max_iter {
+        if (fb > 0.0) == (fc > 0.0) {
+            (c, fc) = (a, fa);
+            d = b - a;
+            e = d;
+        }
+        if fc.abs() < fb.abs() {
+            (a, fa, b, fb, c, fc) = (b, fb, c, fc, b, fb);
+        }
+        let tol1 = 2.0 * f64::EPSILON * b.abs() + 0.5 * tol;
+        let m = 0.5 * (c - b);
+        if m.abs() <= tol1 || fb == 0.0 {
+            return Root {
+                x: b,
+                half_width: m.abs().max(tol1),
+            };
+        }
+        if e.abs() >= tol1 && fa.abs() > fb.abs() {
+            // inverse quadratic interpolation (secant when a = c)
+            let s = fb / fa;
+            let (mut p, mut q);
+            if a == c {
+                p = 2.0 * m * s;
+                q = 1.0 - s;
+            } else {
+                let qa = fa / fc;
+                let r = fb / fc;
+                p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
+                q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
+            }
+            if p > 0.0 {
+                q = -q;
+            }
+            p = p.abs();
+            if 2.0 * p < (3.0 * m * q - (tol1 * q).abs()).min((e * q).abs()) {
+                e = d;
+                d = p / q;
+            } else {
+                d = m;
+                e = m;
+            }
+        } else {
+            d = m;
+            e = m;
+        }
+        (a, fa) = (b, fb);
+        b += if d.abs() > tol1 { d } else { tol1.copysign(m) };
+        fb = f(b);
+    }
+    Root {
+        x: b,
+        half_width: (c - b).abs(),
+    }
+}
