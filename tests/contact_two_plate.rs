@@ -199,6 +199,84 @@ fn unequal_plates_welded_and_frictionless() {
 }
 
 #[test]
+fn a_rigid_lower_plate_is_the_rigid_plane() {
+    // A lower plate 10⁴ times stiffer than the upper one, frictionless: the upper plate rests on
+    // a (nearly) rigid frictionless plane, which is the half model of an equal pair of upper
+    // plates. The lower plate's compliance moves R_o by O(1e-4); the meshes differ (the stack
+    // grades toward its own interface), so compare within both error estimates plus that.
+    let soft = Material::unit(0.3).unwrap();
+    let hard = Material::new(1e4, 0.25).unwrap();
+    let load = FaceLoad::uniform(0.1, 0.22, 1.0).unwrap();
+    let stack = Joint::new(
+        0.1,
+        OuterRadius::Finite(1.54),
+        Plate::new(0.1, soft).unwrap(),
+        Plate::new(0.15, hard).unwrap(),
+        load.clone(),
+    )
+    .unwrap();
+    let half = Joint::new(
+        0.1,
+        OuterRadius::Finite(1.54),
+        Plate::new(0.1, soft).unwrap(),
+        Plate::new(0.1, soft).unwrap(),
+        load,
+    )
+    .unwrap();
+    let p = TwoPlateParams {
+        interface: InterfaceModel::Frictionless,
+        ..loose()
+    };
+    let s = solve(&stack, &p).unwrap();
+    let h = solve(&half, &p).unwrap();
+    assert_eq!(s.info.model, "frictionless");
+    assert_signorini("rigid lower plate", &s, Some(stack.load().total_force()));
+    let tol = s.r_o_error + h.r_o_error + 1e-3 * h.r_o;
+    assert!(
+        (s.r_o - h.r_o).abs() < tol,
+        "{} vs {} (±{tol:e})",
+        s.r_o,
+        h.r_o
+    );
+    // Welded to a much stiffer plate: bonded dissimilar materials have no sign-consistent contact
+    // edge (the bond's edge stresses oscillate), the pivoting finds no Signorini solution and the
+    // report's rule (longest zone without tension) decides, as the level record says; equilibrium
+    // and p ≥ 0 still hold, and the zone is larger than the sliding one.
+    let w = solve(
+        &stack,
+        &TwoPlateParams {
+            interface: InterfaceModel::Welded,
+            ..loose()
+        },
+    )
+    .unwrap();
+    assert!(w.info.levels.iter().all(|l| l.report_rule));
+    let total: f64 = w.force.iter().sum();
+    assert!((total - stack.load().total_force()).abs() < 1e-8 * total);
+    assert!(w.pressure.iter().all(|&p| p >= 0.0));
+    assert!(w.r_o > s.r_o, "welded {} vs frictionless {}", w.r_o, s.r_o);
+    // A moderate contrast (E₂/E₁ = 3) keeps a Signorini solution in the welded model.
+    let mid = Joint::new(
+        0.1,
+        OuterRadius::Finite(1.54),
+        Plate::new(0.1, soft).unwrap(),
+        Plate::new(0.15, Material::new(3.0, 0.25).unwrap()).unwrap(),
+        stack.load().clone(),
+    )
+    .unwrap();
+    let m = solve(
+        &mid,
+        &TwoPlateParams {
+            interface: InterfaceModel::Welded,
+            ..loose()
+        },
+    )
+    .unwrap();
+    assert!(m.info.levels.iter().all(|l| !l.report_rule));
+    assert_signorini("welded, E2/E1 = 3", &m, Some(mid.load().total_force()));
+}
+
+#[test]
 fn report_load_variants() {
     let b = 0.211;
     let base = joint(b, 0.1, 0.1, None);

@@ -36,7 +36,7 @@
 
 use super::lcp::LcpParams;
 use super::level::{solve_level, LevelSetup, LevelSolution, Model};
-use super::separation::{estimate, observed_rate, NodalInterface};
+use super::separation::{estimate, observed_rate, NodalInterface, SeparationEstimate};
 use super::ContactError;
 use crate::error::InputError;
 use crate::fem::{Component, ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
@@ -137,6 +137,11 @@ pub struct TwoPlateLevel {
     pub changes: usize,
     /// Solves of the level (1 unless the tied set or the window had to be revised).
     pub attempts: usize,
+    /// Whether the welded zone came from the report's rule (no Signorini solution found; see
+    /// [`super::lcp`]): then `residual` says how far the conditions are from holding.
+    pub report_rule: bool,
+    /// Relative KKT residual of the interface LCP ([`super::lcp::LcpInfo::residual`]).
+    pub residual: f64,
     /// Assembly + factorization + load solve, seconds.
     pub time_linear: f64,
     /// Flexibility solves + LCP + recovery, seconds.
@@ -224,12 +229,7 @@ pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution,
         let model = mesh(joint, &g, params.element, h, r_est)?;
         let nodes = model.mesh.n_nodes();
         let (sol, window, attempts) = solve_adaptive(&model, joint, &g, params, prev.as_ref())?;
-        let est = estimate(&NodalInterface {
-            radius: &sol.radius,
-            pressure: &closed_pressure(&sol),
-            gap: &sol.gap,
-        })
-        .ok_or(ContactError::WindowExhausted { radius: g.c })?;
+        let est = separation(&sol).ok_or(ContactError::WindowExhausted { radius: g.c })?;
         values.push(est.r_o);
         levels.push(TwoPlateLevel {
             h,
@@ -241,6 +241,8 @@ pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution,
             iterations: sol.lcp.iterations,
             changes: sol.lcp.changes,
             attempts,
+            report_rule: sol.lcp.prefix,
+            residual: sol.lcp.residual,
             time_linear: sol.time_linear.as_secs_f64(),
             time_contact: sol.time_contact.as_secs_f64(),
         });
@@ -343,6 +345,32 @@ fn check(p: &TwoPlateParams) -> Result<(), InputError> {
         crate::error::positive("nut displacement", v)?;
     }
     Ok(())
+}
+
+/// R_o of a level: from the gap's shape ([`estimate`]); where the welded zone came from the
+/// report's rule and the open side penetrates (no smooth separation to fit), the midpoint
+/// between the last closed and the first open node, ± half that interval (the report's own
+/// resolution).
+fn separation(sol: &LevelSolution) -> Option<SeparationEstimate> {
+    let p = closed_pressure(sol);
+    let est = estimate(&NodalInterface {
+        radius: &sol.radius,
+        pressure: &p,
+        gap: &sol.gap,
+    });
+    if est.is_some() || !sol.lcp.prefix {
+        return est;
+    }
+    let k = p.iter().rposition(|&x| x > 0.0)?;
+    let (r0, r1) = (sol.radius[k], *sol.radius.get(k + 1)?);
+    Some(SeparationEstimate {
+        r_o: 0.5 * (r0 + r1),
+        r_o_gap_far: None,
+        r_o_pressure: None,
+        last_contact: r0,
+        first_open: r1,
+        spread: 0.5 * (r1 - r0),
+    })
 }
 
 /// Pressure on closed nodes (at least the smallest positive number), 0 on open ones.
@@ -457,8 +485,9 @@ fn solve_adaptive(
         let tol = params.lcp.tolerance;
         let pulls = tied.iter().copied().find(|&i| sol.force[i] < -tol * fmax);
         let wmax = window.iter().map(|&i| r[i]).fold(0.0, f64::max);
-        let penetrates =
-            (0..r.len()).any(|i| r[i] > wmax && !tied.contains(&i) && sol.gap[i] < -tol * gmax);
+        // (A welded zone chosen by the report's rule admits penetration anyway: no widening.)
+        let penetrates = !sol.lcp.prefix
+            && (0..r.len()).any(|i| r[i] > wmax && !tied.contains(&i) && sol.gap[i] < -tol * gmax);
         if tries > 6 {
             return Err(ContactError::NotConverged {
                 iterations: tries,
