@@ -277,6 +277,33 @@ fn a_rigid_lower_plate_is_the_rigid_plane() {
 }
 
 #[test]
+fn a_plate_without_hole_is_the_limit_of_small_holes() {
+    // A = 0: a disk load on r ≤ B, u = 0 on the axis. R_o is continuous as A → 0 (the hole's
+    // effect on the far contact edge fades like the hole's area).
+    let m = Material::unit(0.3).unwrap();
+    let r_o = |a: f64| {
+        let j = Joint::new(
+            a,
+            OuterRadius::Finite(1.5),
+            Plate::new(0.1, m).unwrap(),
+            Plate::new(0.1, m).unwrap(),
+            FaceLoad::uniform(a, 0.2, 1.0).unwrap(),
+        )
+        .unwrap();
+        let s = solve(&j, &loose()).unwrap();
+        assert_signorini("small hole", &s, Some(j.load().total_force()));
+        (s.r_o, s.r_o_error)
+    };
+    let (r0, e0) = r_o(0.0);
+    let (r1, e1) = r_o(0.002);
+    eprintln!("R_o: A = 0 {r0} ± {e0:e}; A = 0.002 {r1} ± {e1:e}");
+    assert!(
+        (r0 - r1).abs() < e0 + e1 + 1e-3 * r0,
+        "A = 0: {r0}, A = 0.002: {r1}"
+    );
+}
+
+#[test]
 fn report_load_variants() {
     let b = 0.211;
     let base = joint(b, 0.1, 0.1, None);

@@ -5,7 +5,8 @@
 //! A tied point must press (p ≥ 0) and a point beyond the window must not penetrate (g ≥ 0);
 //! when either fails the level is solved again with one reference point tied and a window from
 //! A to B + 3D (widened by half its length while the gap beyond is negative); a reference that
-//! pulls is replaced by the point pressing hardest. Units as in [`super::two_plate`].
+//! pulls is replaced by the point pressing hardest. Without a hole (A = 0) the axis nodes have
+//! u = 0. Units as in [`super::two_plate`].
 //!
 //! ```
 //! use boltzone::contact::two_plate::{solve, TwoPlateParams};
@@ -236,6 +237,14 @@ fn boundary(
     let mesh = &model.mesh;
     let plates: Vec<usize> = std::iter::once(model.upper).chain(model.lower).collect();
     let mut s = Supports::new(mesh.n_nodes());
+    if g.a == 0.0 {
+        // No hole: the axis r = 0, where u = 0 by symmetry.
+        for &p in &plates {
+            for n in mesh.inner(p) {
+                s.roller_r(n);
+            }
+        }
+    }
     if params.edge == EdgeSupport::Fixed {
         for &p in &plates {
             for n in mesh.outer(p) {
