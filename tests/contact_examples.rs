@@ -19,3 +19,12 @@ fn example_15_two_plate_variants_quick() {
     std::env::set_var("BOLTZONE_QUICK", "1");
     ex15::main();
 }
+
+#[path = "../examples/16_report_mesh.rs"]
+mod ex16;
+
+#[test]
+fn example_16_report_mesh_quick() {
+    std::env::set_var("BOLTZONE_QUICK", "1");
+    ex16::main();
+}

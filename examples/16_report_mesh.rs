@@ -1,0 +1,96 @@
+//! Example 16: why the report's two-plate R_o are larger than ours — its mesh and its criterion.
+//!
+//! The report (Chapter II.B) meshed with "typical spacings between nodal points … 0.015 inch
+//! radially and 0.03 inch in the z-direction", used quadrilaterals of four constant-strain
+//! triangles (our `ElementKind::Cst4`), and took R_o as "the largest nodal circle on the parting
+//! plane which is common to an element on each plate", i.e. the last closed node: its resolution
+//! is one nodal interval. Here the same contact problem (one plate on a rigid frictionless
+//! plane, Table 1: A = 0.1 in, C = 1.54 in, ν = 0.3) is solved once on such a mesh (uniform
+//! 0.015 in × ≈ 0.03 in, Cst4) with [`boltzone::contact::level`], and the discrete contact edge
+//! (last closed node, first open node) is printed beside the report's value and our converged
+//! R_o (example 04).
+//!
+//! Self-check (panics): the report's value lies within one radial interval of the discrete edge
+//! of its own kind of mesh.
+
+use boltzone::contact::level::{solve_level, LevelSetup, Model};
+use boltzone::contact::two_plate::{solve, TwoPlateParams};
+use boltzone::contact::LcpParams;
+use boltzone::fem::{ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
+use boltzone::reference::{table1, TABLE1_HOLE_RADIUS, TABLE1_OUTER_RADIUS, TABLE1_POISSON};
+use boltzone::{FaceLoad, Joint, Material, OuterRadius};
+
+pub fn main() {
+    let (a, c) = (TABLE1_HOLE_RADIUS, TABLE1_OUTER_RADIUS);
+    let m = Material::unit(TABLE1_POISSON).unwrap();
+    let quick = std::env::var("BOLTZONE_QUICK").is_ok();
+    println!("Table 1 two-plate R_o/A on the report's kind of mesh (0.015 in × 0.03 in, Cst4)");
+    println!(
+        "{:>5} {:>5} {:>12} {:>11} {:>8} {:>10}",
+        "A/D", "B/A", "last closed", "first open", "report", "converged"
+    );
+    for row in table1() {
+        let (b, d) = (row.b(), row.d());
+        let radial = Spacing::uniform(a, c, ((c - a) / 0.015).round() as usize).unwrap();
+        let axial = Spacing::uniform(0.0, d, (d / 0.03).round().max(1.0) as usize).unwrap();
+        let mesh = Mesh::structured(
+            ElementKind::Cst4,
+            &radial,
+            &[PlateSpec {
+                z: axial,
+                material: 0,
+            }],
+        )
+        .unwrap();
+        let load = FaceLoad::uniform(a, b, 1.0).unwrap();
+        let mut loads = Loads::new(mesh.n_nodes());
+        loads
+            .add_face_pressure(&mesh, &mesh.top(0), 1.0, &load)
+            .unwrap();
+        let r = mesh.radial_nodes().to_vec();
+        let model = Model {
+            mesh,
+            materials: vec![m],
+            upper: 0,
+            lower: None,
+        };
+        // The node at the hole edge holds the plate down; every node out to B + 3D is unknown.
+        let window: Vec<usize> = (1..r.len()).filter(|&i| r[i] <= b + 3.0 * d).collect();
+        let setup = LevelSetup {
+            tied: &[0],
+            window: &window,
+            welded: false,
+            fix_rigid: true,
+            lcp: LcpParams::default(),
+            nut: (a, b),
+        };
+        let s = solve_level(&model, &setup, &Supports::new(model.mesh.n_nodes()), &loads).unwrap();
+        assert!(s.force[0] >= 0.0, "the hole edge must press");
+        let k = s.closed.iter().rposition(|&x| x).unwrap();
+        let converged = if quick {
+            f64::NAN
+        } else {
+            let j = Joint::symmetric(a, b, d, m)
+                .unwrap()
+                .with_outer_radius(OuterRadius::Finite(c))
+                .unwrap();
+            solve(&j, &TwoPlateParams::default()).unwrap().r_o / a
+        };
+        println!(
+            "{:>5} {:>5} {:>12.3} {:>11.3} {:>8.2} {:>10.4}",
+            row.a_over_d,
+            row.b_over_a,
+            r[k] / a,
+            r[k + 1] / a,
+            row.two,
+            converged
+        );
+        // The report printed two digits of a node radius: within one interval of its edge.
+        let h = 0.015 / a;
+        assert!(
+            row.two >= r[k] / a - h - 0.05 && row.two <= r[k + 1] / a + h + 0.05,
+            "report's R_o/A {} far from this mesh's edge",
+            row.two
+        );
+    }
+}
