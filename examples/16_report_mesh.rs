@@ -18,7 +18,50 @@ use boltzone::contact::two_plate::{solve, TwoPlateParams};
 use boltzone::contact::LcpParams;
 use boltzone::fem::{ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
 use boltzone::reference::{table1, TABLE1_HOLE_RADIUS, TABLE1_OUTER_RADIUS, TABLE1_POISSON};
+use boltzone::reference::{TABLE2_HOLE_RADIUS, TABLE2_OUTER_RADIUS};
 use boltzone::{FaceLoad, Joint, Material, OuterRadius};
+
+/// The discrete contact edge (last closed, first open node radius) of one plate D thick on a
+/// rigid frictionless plane, pressed uniformly on A..B, on the report's kind of mesh.
+fn report_mesh_edge(a: f64, b: f64, c: f64, d: f64, m: Material) -> (f64, f64) {
+    let radial = Spacing::uniform(a, c, ((c - a) / 0.015).round() as usize).unwrap();
+    let axial = Spacing::uniform(0.0, d, (d / 0.03).round().max(1.0) as usize).unwrap();
+    let mesh = Mesh::structured(
+        ElementKind::Cst4,
+        &radial,
+        &[PlateSpec {
+            z: axial,
+            material: 0,
+        }],
+    )
+    .unwrap();
+    let load = FaceLoad::uniform(a, b, 1.0).unwrap();
+    let mut loads = Loads::new(mesh.n_nodes());
+    loads
+        .add_face_pressure(&mesh, &mesh.top(0), 1.0, &load)
+        .unwrap();
+    let r = mesh.radial_nodes().to_vec();
+    let model = Model {
+        mesh,
+        materials: vec![m],
+        upper: 0,
+        lower: None,
+    };
+    // The node at the hole edge holds the plate down; every node out to B + 3D is unknown.
+    let window: Vec<usize> = (1..r.len()).filter(|&i| r[i] <= b + 3.0 * d).collect();
+    let setup = LevelSetup {
+        tied: &[0],
+        window: &window,
+        welded: false,
+        fix_rigid: true,
+        lcp: LcpParams::default(),
+        nut: (a, b),
+    };
+    let s = solve_level(&model, &setup, &Supports::new(model.mesh.n_nodes()), &loads).unwrap();
+    assert!(s.force[0] >= 0.0, "the hole edge must press");
+    let k = s.closed.iter().rposition(|&x| x).unwrap();
+    (r[k], r[k + 1])
+}
 
 pub fn main() {
     let (a, c) = (TABLE1_HOLE_RADIUS, TABLE1_OUTER_RADIUS);
@@ -31,42 +74,7 @@ pub fn main() {
     );
     for row in table1() {
         let (b, d) = (row.b(), row.d());
-        let radial = Spacing::uniform(a, c, ((c - a) / 0.015).round() as usize).unwrap();
-        let axial = Spacing::uniform(0.0, d, (d / 0.03).round().max(1.0) as usize).unwrap();
-        let mesh = Mesh::structured(
-            ElementKind::Cst4,
-            &radial,
-            &[PlateSpec {
-                z: axial,
-                material: 0,
-            }],
-        )
-        .unwrap();
-        let load = FaceLoad::uniform(a, b, 1.0).unwrap();
-        let mut loads = Loads::new(mesh.n_nodes());
-        loads
-            .add_face_pressure(&mesh, &mesh.top(0), 1.0, &load)
-            .unwrap();
-        let r = mesh.radial_nodes().to_vec();
-        let model = Model {
-            mesh,
-            materials: vec![m],
-            upper: 0,
-            lower: None,
-        };
-        // The node at the hole edge holds the plate down; every node out to B + 3D is unknown.
-        let window: Vec<usize> = (1..r.len()).filter(|&i| r[i] <= b + 3.0 * d).collect();
-        let setup = LevelSetup {
-            tied: &[0],
-            window: &window,
-            welded: false,
-            fix_rigid: true,
-            lcp: LcpParams::default(),
-            nut: (a, b),
-        };
-        let s = solve_level(&model, &setup, &Supports::new(model.mesh.n_nodes()), &loads).unwrap();
-        assert!(s.force[0] >= 0.0, "the hole edge must press");
-        let k = s.closed.iter().rposition(|&x| x).unwrap();
+        let (r0, r1) = report_mesh_edge(a, b, c, d, m);
         let converged = if quick {
             f64::NAN
         } else {
@@ -80,17 +88,50 @@ pub fn main() {
             "{:>5} {:>5} {:>12.3} {:>11.3} {:>8.2} {:>10.4}",
             row.a_over_d,
             row.b_over_a,
-            r[k] / a,
-            r[k + 1] / a,
+            r0 / a,
+            r1 / a,
             row.two,
             converged
         );
         // The report printed two digits of a node radius: within one interval of its edge.
         let h = 0.015 / a;
         assert!(
-            row.two >= r[k] / a - h - 0.05 && row.two <= r[k + 1] / a + h + 0.05,
+            row.two >= r0 / a - h - 0.05 && row.two <= r1 / a + h + 0.05,
             "report's R_o/A {} far from this mesh's edge",
             row.two
+        );
+    }
+
+    println!("\nTable 2 symmetric cases (304 steel, A = 0.1285 in, C = 2 in): 2R_o in inches");
+    println!(
+        "{:>4} {:>6} {:>6} {:>12} {:>11} {:>8} {:>10}",
+        "case", "D", "2B", "last closed", "first open", "report", "converged"
+    );
+    let steel = Material::steel_304_psi();
+    for row in boltzone::reference::table2()
+        .into_iter()
+        .filter(|r| r.case != 5)
+    {
+        let (a, b, d) = (TABLE2_HOLE_RADIUS, row.two_b / 2.0, row.d_table);
+        let (r0, r1) = report_mesh_edge(a, b, TABLE2_OUTER_RADIUS, d, steel);
+        let converged = if quick {
+            f64::NAN
+        } else {
+            let j = Joint::symmetric(a, b, d, steel)
+                .unwrap()
+                .with_outer_radius(OuterRadius::Finite(TABLE2_OUTER_RADIUS))
+                .unwrap();
+            2.0 * solve(&j, &TwoPlateParams::default()).unwrap().r_o
+        };
+        println!(
+            "{:>4} {:>6} {:>6} {:>12.3} {:>11.3} {:>8.3} {:>10.4}",
+            row.case,
+            d,
+            row.two_b,
+            2.0 * r0,
+            2.0 * r1,
+            row.computed,
+            converged
         );
     }
 }
