@@ -304,6 +304,29 @@ fn a_plate_without_hole_is_the_limit_of_small_holes() {
 }
 
 #[test]
+fn a_too_small_first_window_grows() {
+    // The first level's window ends barely beyond B: points beyond it penetrate, the window
+    // doubles until they do not, and the answer is the default's to round-off (same meshes).
+    let j = joint(0.31, 0.1, 0.1, None);
+    let s0 = solve(&j, &loose()).unwrap();
+    let s = solve(
+        &j,
+        &TwoPlateParams {
+            window: 0.05,
+            ..loose()
+        },
+    )
+    .unwrap();
+    assert!(s.info.levels[0].attempts > 1, "{:?}", s.info.levels[0]);
+    assert!(
+        (s.r_o - s0.r_o).abs() < 1e-9 * s0.r_o,
+        "{} vs {}",
+        s.r_o,
+        s0.r_o
+    );
+}
+
+#[test]
 fn report_load_variants() {
     let b = 0.211;
     let base = joint(b, 0.1, 0.1, None);
@@ -427,6 +450,10 @@ fn bad_parameters_are_typed_errors() {
         },
         TwoPlateParams {
             coarse: -1.0,
+            ..Default::default()
+        },
+        TwoPlateParams {
+            window: 0.0,
             ..Default::default()
         },
         TwoPlateParams {

@@ -4,7 +4,7 @@
 //!
 //! A tied point must press (p ≥ 0) and a point beyond the window must not penetrate (g ≥ 0);
 //! when either fails the level is solved again with one reference point tied and a window from
-//! A to B + 3D (widened by half its length while the gap beyond is negative); a reference that
+//! A to B + 3D (doubled in length while the gap beyond is negative); a reference that
 //! pulls is replaced by the point pressing hardest. Without a hole (A = 0) the axis nodes have
 //! u = 0. Units as in [`super::two_plate`].
 //!
@@ -106,7 +106,7 @@ pub(crate) fn solve_adaptive(
     // First choice: from the previous level; fallback: one reference point under the load.
     let mut plan = prev.and_then(|p| refined_plan(&r, p));
     let mut reference = nearest(&r, centroid(load));
-    let mut r_win = (g.b + 3.0 * g.d[0].max(g.d[1])).min(g.c);
+    let mut r_win = (g.b + params.window * g.d[0].max(g.d[1])).min(g.c);
     let mut tries = 0;
     loop {
         tries += 1;
@@ -140,7 +140,7 @@ pub(crate) fn solve_adaptive(
         // (A welded zone chosen by the report's rule admits penetration anyway: no widening.)
         let penetrates = !sol.lcp.prefix
             && (0..r.len()).any(|i| r[i] > wmax && !tied.contains(&i) && sol.gap[i] < -tol * gmax);
-        if tries > 6 {
+        if tries > 12 {
             return Err(ContactError::NotConverged {
                 iterations: tries,
                 violations: 1,
@@ -170,7 +170,7 @@ pub(crate) fn solve_adaptive(
                 } else if r_win >= g.c {
                     return Err(ContactError::WindowExhausted { radius: g.c });
                 } else {
-                    r_win = (r_win + 0.5 * (r_win - g.a)).min(g.c);
+                    r_win = (g.a + 2.0 * (r_win - g.a)).min(g.c);
                 }
             }
         }

@@ -94,6 +94,9 @@ pub struct TwoPlateParams {
     /// Element size at R_o, A and B on the first level, as a fraction of min(D, B − A)
     /// (default 0.25); halved on each further level.
     pub coarse: f64,
+    /// The first level's LCP window reaches from A to B + `window`·D (thickest plate; default
+    /// 3); it doubles while points beyond it would penetrate.
+    pub window: f64,
     /// Mesh both plates even for a symmetric joint (default false; for cross-checks).
     pub both_plates: bool,
     /// LCP knobs.
@@ -111,6 +114,7 @@ impl Default for TwoPlateParams {
             min_levels: 3,
             max_levels: 9,
             coarse: 0.25,
+            window: 3.0,
             both_plates: false,
             lcp: LcpParams::default(),
         }
@@ -326,6 +330,9 @@ fn check(p: &TwoPlateParams) -> Result<(), InputError> {
     }
     if !(p.coarse > 0.0 && p.coarse <= 1.0) {
         return bad("TwoPlateParams::coarse", p.coarse, "must lie in (0, 1]");
+    }
+    if !(p.window > 0.0 && p.window.is_finite()) {
+        return bad("TwoPlateParams::window", p.window, "must be positive");
     }
     if p.min_levels < 1 || p.max_levels < p.min_levels || p.max_levels > 14 {
         return bad(
