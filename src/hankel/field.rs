@@ -8,7 +8,9 @@
 //! kernels (the half-space surface values) are integrated analytically:
 //! σ_z = −p(r), τ_rz = 0, σ_r = −p + (1−2ν)m(r)/r², σ_θ = −2νp − (1−2ν)m(r)/r²,
 //! u = −(1−2ν)m(r)/(2G r) with m(r) = ∫₀^r p ρ dρ, and only exponentially decaying remainders are
-//! integrated numerically (w keeps a slowly decaying ∫ p̄ J₀ dξ, left to the extrapolation).
+//! integrated numerically. w keeps the half-space surface deflection ∫ p̄ J₀ dξ, which decays
+//! only like ξ^(−2) at a load edge; it is evaluated in real space with the elliptic kernel
+//! ([`super::transform::LoadTransform::surface_integral`]).
 //! Compression negative; stresses in the load's pressure units, displacements in length units
 //! when E is in pressure units.
 //!
@@ -107,6 +109,15 @@ impl Slab {
         r + self.transform.outer()
     }
 
+    /// Whether r sits on a knot of the load (where p may jump or kink): there the beat
+    /// frequency of J(ξr)·p̄(ξ) vanishes and the integrands have a non-oscillating tail.
+    fn at_load_edge(&self, r: f64) -> bool {
+        self.load
+            .knots()
+            .iter()
+            .any(|&k| (r - k).abs() <= 1e-3 * self.d)
+    }
+
     /// Checks (r, z) and returns (r, |z| clamped to D, sign of z).
     fn point(&self, r: f64, z: f64) -> (f64, f64, f64) {
         let sign = if z < 0.0 { -1.0 } else { 1.0 };
@@ -141,6 +152,7 @@ impl Slab {
             1.0 / d,
             &QuadParams {
                 products: true,
+                algebraic_tail: self.at_load_edge(r),
                 ..*params
             },
         );
@@ -187,7 +199,7 @@ impl Slab {
         let nu = self.material.poisson_ratio();
         let face = az >= self.d;
         let (d, tr) = (self.d, &self.transform);
-        let [iu, iw, iw0] = integrate_oscillatory_vec(
+        let [iu, iw] = integrate_oscillatory_vec(
             |xi| {
                 let k = if face {
                     face_remainders(xi * d, nu)
@@ -197,22 +209,25 @@ impl Slab {
                 let x = xi * r;
                 let q = tr.eval(xi);
                 let j0 = libm::j0(x);
-                [
-                    q * k.m * libm::j1(x),
-                    q * k.w * j0,
-                    if face { q * j0 } else { 0.0 },
-                ]
+                [q * k.m * libm::j1(x), q * k.w * j0]
             },
             self.omega(r),
             1.0 / d,
             &QuadParams {
                 products: true,
+                algebraic_tail: self.at_load_edge(r),
                 ..*params
             },
         );
         let c = -1.0 / (2.0 * self.material.shear_modulus());
         let mut u = iu.scale(c);
-        let mut w = iw.plus(iw0.scale(2.0 * (1.0 - nu))).scale(c * sign);
+        let mut w = if face {
+            // the slowly decaying half-space part, in real space (elliptic kernel)
+            let w0 = tr.surface_integral(r, params.rel_tol.max(1e-15));
+            iw.plus(w0.scale(2.0 * (1.0 - nu))).scale(c * sign)
+        } else {
+            iw.scale(c * sign)
+        };
         if face {
             u.value += c * (1.0 - 2.0 * nu) * r * tr.moment_within_over_r2(r);
         }
