@@ -56,7 +56,7 @@ fn integral_of_j0_matches_mpmath() {
     {
         let v: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
         let err = (boltzone::hankel::transform::integral_j0(v[0]) - v[3]).abs()
-            / v[3].abs().max(1e-300).min(1.0);
+            / v[3].abs().clamp(1e-300, 1.0);
         assert!(err <= 16.0 * f64::EPSILON, "x = {}: error {err:e}", v[0]);
         worst = worst.max(err);
     }
