@@ -156,3 +156,19 @@ fn bad_input_is_named() {
         .to_string()
         .contains("R_o relative tolerance"));
 }
+
+#[test]
+fn point_kernel_matches_mpmath() {
+    // g(x) = (1/2π)∫ t K(t) J₀(tx) dt by mpmath 1.3 (quad / quadosc, 30 digits)
+    for (x, want) in [
+        (0.0, 0.822_520_724_830_781_4),
+        (2.0, -0.006_000_936_701_794_124),
+    ] {
+        let g = realspace::point_kernel(x);
+        assert!(
+            (g - want).abs() <= realspace::point_kernel_error(),
+            "g({x}) = {g} vs {want}"
+        );
+    }
+    assert!(realspace::point_kernel_error() < 1e-13);
+}
