@@ -396,3 +396,58 @@ fn surface_integral_matches_the_boussinesq_disk_deflection() {
         assert!(e.error < 1e-12, "r={r}: {e:?}");
     }
 }
+
+#[test]
+fn ring_loads_superpose_to_the_annulus() {
+    // ∫_A^B p(ρ₀) (ring-load field at ρ₀) dρ₀ = the annular-load field: Gauss–Legendre in ρ₀
+    // (panels of D/2 at an interior point ≥ D/2 from the faces: the ring field is analytic in
+    // ρ₀ there) against the Slab's direct transform
+    let (a, b, d) = (0.1, 0.31, 0.1);
+    let m = Material::unit(0.3).unwrap();
+    let s = Slab::new(d, m, FaceLoad::triangular(a, b, 1.0, Peak::AtA).unwrap()).unwrap();
+    let p = QuadParams {
+        rel_tol: 1e-13,
+        ..Default::default()
+    };
+    let g = gauss_legendre(20);
+    for &(r, z) in &[(0.2, 0.04), (0.5, 0.0), (0.05, -0.03)] {
+        let n = ((b - a) / (0.5 * d)).ceil() as usize;
+        let h = (b - a) / n as f64;
+        let mut acc = [0.0; 6];
+        for k in 0..n {
+            for &(x, w) in g.iter() {
+                let rho = a + (k as f64 + 0.5 + 0.5 * x) * h;
+                let (st, u) = boltzone::hankel::ring_load(d, m, rho, r, z, &p);
+                let f = 0.5 * h * w * s.load().pressure_at(rho);
+                let v = [
+                    st.sigma_r.value,
+                    st.sigma_theta.value,
+                    st.sigma_z.value,
+                    st.tau_rz.value,
+                    u.u.value,
+                    u.w.value,
+                ];
+                for i in 0..6 {
+                    acc[i] += f * v[i];
+                }
+            }
+        }
+        let (st, u) = (s.stress(r, z, &p), s.displacement(r, z, &p));
+        let want = [
+            st.sigma_r.value,
+            st.sigma_theta.value,
+            st.sigma_z.value,
+            st.tau_rz.value,
+            u.u.value,
+            u.w.value,
+        ];
+        for i in 0..6 {
+            assert!(
+                (acc[i] - want[i]).abs() < 1e-10,
+                "({r},{z}) component {i}: {} vs {}",
+                acc[i],
+                want[i]
+            );
+        }
+    }
+}
