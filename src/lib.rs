@@ -10,6 +10,7 @@
 //! - [`fem`]: an axisymmetric finite-element solver (the report's Appendices A and B);
 //! - [`material`], [`load`], [`joint`]: the input types, validated with typed errors ([`error`]);
 //! - [`reference`]: the report's Tables 1 and 2 and the Chapter V table, as data.
+//! - [`rules`]: the 45° cone of Rötscher, the VDI 2230 deformation cone and other cone rules.
 //!
 //! Sign convention throughout: compression negative (σ_z = −p under a face pressure p > 0); z is
 //! measured from the midplane (single plate) or the interface (joint); lengths and stresses in
@@ -30,6 +31,7 @@ pub mod joint;
 pub mod load;
 pub mod material;
 pub mod reference;
+pub mod rules;
 
 pub use error::InputError;
 pub use joint::{Joint, OuterRadius, Plate, SinglePlate};
