@@ -23,7 +23,7 @@
 //! let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
 //! let plate = SinglePlate::new(0.1, OuterRadius::Finite(1.54), 0.1,
 //!                              Material::unit(0.3).unwrap(), load).unwrap();
-//! let params = SingleParams { levels: 3, coarse_size: 0.04, ..SingleParams::default() };
+//! let params = SingleParams { levels: 3, ..SingleParams::default() };
 //! let (r_o, info) = single_plate_r_o(&plate, &params).unwrap();
 //! assert!(r_o > 0.31 && r_o < 0.6, "{r_o}");
 //! assert!(info.error_estimate < 0.01);

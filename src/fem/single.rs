@@ -159,20 +159,19 @@ impl Midplane {
         let start = self
             .r
             .partition_point(|&r| r < from - 1e-12 * (1.0 + from.abs()));
-        let first = start - start % o; // edge boundary at or before `from`
-        let mut i = first;
+        let mut i = start - start % o; // the edge that contains `from`
+        if self.sigma_z.get(i).is_some_and(|&s| s > 0.0) {
+            return Some(self.r[i]); // already tensile where the search starts
+        }
         while i + o < self.r.len() {
             let (s0, s1) = (self.sigma_z[i], self.sigma_z[i + o]);
-            let mid = if o == 2 { self.sigma_z[i + 1] } else { s0 };
-            if s1 > 0.0 || (o == 2 && mid > 0.0) {
-                let root = if o == 1 {
+            let mid = self.sigma_z[i + o / 2];
+            if s1 > 0.0 || mid > 0.0 {
+                return Some(if o == 1 {
                     self.r[i] + (self.r[i + 1] - self.r[i]) * (-s0) / (s1 - s0)
                 } else {
                     quadratic_root(self.r[i], self.r[i + 2], s0, mid, s1)
-                };
-                if root >= from || s0 <= 0.0 {
-                    return Some(root.max(from.min(root)));
-                }
+                });
             }
             i += o;
         }
@@ -272,5 +271,51 @@ pub fn richardson(v: &[f64]) -> (f64, Option<f64>, f64) {
         (extra, Some(p), (extra - last).abs())
     } else {
         (last, p.is_finite().then_some(p), d2.abs())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn mid(r: Vec<f64>, s: Vec<f64>, order: usize) -> Midplane {
+        Midplane {
+            r,
+            sigma_z: s,
+            order,
+            nodes: 0,
+            dofs: 0,
+        }
+    }
+
+    #[test]
+    fn crossing_is_interpolated_inside_the_edge() {
+        // σ = (r − 0.7)(r + 1): quadratic interpolation is exact, linear gives the chord's root
+        let r: Vec<f64> = (0..=10).map(|i| i as f64 * 0.1).collect();
+        let s: Vec<f64> = r.iter().map(|r| (r - 0.7) * (r + 1.0)).collect();
+        let q = mid(r.clone(), s.clone(), 2)
+            .first_tensile_crossing(0.2)
+            .unwrap();
+        assert!((q - 0.7).abs() < 1e-14, "{q}");
+        let l = mid(r, s, 1).first_tensile_crossing(0.2).unwrap();
+        assert!((l - 0.7).abs() < 1e-12, "{l}"); // 0.7 is a node: linear is exact there too
+                                                 // a crossing below `from` is ignored; never tensile: None
+        let r: Vec<f64> = (0..=4).map(|i| i as f64).collect();
+        let m = mid(r.clone(), vec![1.0, -1.0, -2.0, 1.0, 2.0], 1);
+        assert!((m.first_tensile_crossing(1.0).unwrap() - (2.0 + 2.0 / 3.0)).abs() < 1e-14);
+        assert_eq!(mid(r, vec![-1.0; 5], 1).first_tensile_crossing(0.0), None);
+    }
+
+    #[test]
+    fn richardson_recovers_a_known_limit() {
+        // v_l = 1 + 0.3·2^(−3l): order 3, limit 1
+        let v: Vec<f64> = (0..4).map(|l| 1.0 + 0.3 * 2f64.powi(-3 * l)).collect();
+        let (x, p, e) = richardson(&v);
+        assert!((x - 1.0).abs() < 1e-14 && (p.unwrap() - 3.0).abs() < 1e-12);
+        assert!((e - 0.3 * 2f64.powi(-9)).abs() < 1e-14);
+        // oscillating sequence: no extrapolation, the last difference as the estimate
+        let (x, _, e) = richardson(&[1.0, 1.1, 1.05]);
+        assert_eq!(x, 1.05);
+        assert!((e - 0.05).abs() < 1e-15);
     }
 }
