@@ -19,7 +19,7 @@
 //! beyond a few D the rim is invisible to R_o at the 10⁻⁶ level).
 
 use super::assemble::{assemble, Pattern};
-use super::dofs::{DofMap, Supports};
+use super::dofs::{Component, DofMap, Supports};
 use super::element::ElementKind;
 use super::loads::Loads;
 use super::mesh::{Mesh, PlateSpec};
@@ -32,9 +32,22 @@ use crate::error::InputError;
 use crate::joint::{OuterRadius, SinglePlate};
 use std::time::Instant;
 
+/// How the bolt head (and nut) load the faces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Loading {
+    /// The face pressure p(r) of the plate's [`crate::FaceLoad`] (Table 1).
+    #[default]
+    Pressure,
+    /// A rigid, frictionless nut: a uniform axial displacement of the face over the load's
+    /// annulus (report Fig. 21), radial motion free; R_o does not depend on its magnitude.
+    UniformDisplacement,
+}
+
 /// Parameters of the single-plate R_o study.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SingleParams {
+    /// Face pressure or rigid-nut displacement (default pressure).
+    pub loading: Loading,
     /// Element kind (default Q9).
     pub kind: ElementKind,
     /// Coarsest element size at the hole and load edges, as a fraction of D (default 0.5).
@@ -50,6 +63,7 @@ pub struct SingleParams {
 impl Default for SingleParams {
     fn default() -> Self {
         Self {
+            loading: Loading::Pressure,
             kind: ElementKind::Q9,
             coarse_size: 0.5,
             growth: 1.15,
@@ -110,6 +124,7 @@ pub fn coarse_radial_spacing(
 /// Solves the half plate on the mesh `radial` × `nz` uniform axial elements.
 pub fn solve_midplane(
     plate: &SinglePlate,
+    loading: Loading,
     kind: ElementKind,
     radial: &Spacing,
     nz: usize,
@@ -128,7 +143,20 @@ pub fn solve_midplane(
         }
     }
     let mut loads = Loads::new(mesh.n_nodes());
-    loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, plate.load())?;
+    match loading {
+        Loading::Pressure => loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, plate.load())?,
+        Loading::UniformDisplacement => {
+            let (a, b) = (plate.load().inner(), plate.load().outer());
+            let tol = 1e-12 * b;
+            for n in mesh.top(0) {
+                let r = mesh.nodes()[n][0];
+                if r >= a - tol && r <= b + tol {
+                    // δ = D/1000 of a unit-modulus plate: stresses of order 1e-3
+                    s.prescribe(n, Component::Z, -1e-3 * plate.half_thickness());
+                }
+            }
+        }
+    }
     let mats = [plate.material()];
     let dofs = DofMap::new(&s);
     let k = assemble(&mesh, &mats, &dofs, &Pattern::new(&mesh, &dofs))?;
@@ -224,6 +252,7 @@ pub fn single_plate_r_o(
         let k = 1 << l;
         let m = solve_midplane(
             plate,
+            params.loading,
             params.kind,
             &coarse.refined(k),
             nz0 * k,
