@@ -17,6 +17,21 @@
 //!
 //! An infinite plate is truncated at C = B + 30 D (the midplane stress decays like e^(−r/D)·…;
 //! beyond a few D the rim is invisible to R_o at the 10⁻⁶ level).
+//!
+//! Units: any consistent set; R_o in the length unit of A, B, D. Sign: compression negative.
+//!
+//! ```
+//! use boltzone::fem::single::{single_plate_r_o, Loading, SingleParams};
+//! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+//! let load = FaceLoad::uniform(0.1, 0.22, 1.0).unwrap();
+//! let plate = SinglePlate::new(0.1, OuterRadius::Finite(1.54), 0.1,
+//!                              Material::unit(0.3).unwrap(), load).unwrap();
+//! let (r_o, info) = single_plate_r_o(&plate, &SingleParams::default()).unwrap();
+//! assert!((r_o / 0.1 - 3.3).abs() < 0.2); // Table 1 (A/D = 1, B/A = 2.2): 3.3 ± its 0.15 grid
+//! assert_eq!(info.levels.len(), 4);
+//! let nut = SingleParams { loading: Loading::UniformDisplacement, ..SingleParams::default() };
+//! assert!(single_plate_r_o(&plate, &nut).unwrap().0 > r_o); // a rigid nut reaches further
+//! ```
 
 use super::assemble::{assemble, Pattern};
 use super::dofs::{Component, DofMap, Supports};
