@@ -6,6 +6,7 @@
 //! References: exact uniform-stress solutions (σ_z = −p in every plate whatever its E, u = ν p r/E)
 //! and Maxwell–Betti reciprocity (a flexibility matrix of a symmetric K is symmetric).
 
+use boltzone::fem::FemError;
 use boltzone::fem::*;
 use boltzone::{FaceLoad, Material};
 use faer::Mat;
@@ -230,4 +231,26 @@ fn prescribed_displacement_under_a_flat_punch_gives_exact_reactions_and_axis_is_
             );
         }
     }
+}
+
+#[test]
+fn a_pattern_of_another_dof_map_is_a_named_error() {
+    let mesh = stack(ElementKind::Q4);
+    let mats = [
+        Material::new(1.0, 0.3).unwrap(),
+        Material::new(3.0, 0.2).unwrap(),
+    ];
+    let mut s = Supports::new(mesh.n_nodes());
+    s.fix(0);
+    let other = DofMap::new(&Supports::new(mesh.n_nodes()));
+    let dofs = DofMap::new(&s);
+    let err = assemble(&mesh, &mats, &dofs, &Pattern::new(&mesh, &other)).unwrap_err();
+    assert!(matches!(err, FemError::PatternSize { .. }), "{err}");
+    // same size, other constrained component: an entry is missing from the pattern
+    let mut s2 = Supports::new(mesh.n_nodes());
+    s2.fix(mesh.n_nodes() - 1);
+    let err = assemble(&mesh, &mats, &dofs, &Pattern::new(&mesh, &DofMap::new(&s2))).unwrap_err();
+    assert!(matches!(err, FemError::PatternMismatch { .. }), "{err}");
+    let err = assemble(&mesh, &mats[..1], &dofs, &Pattern::new(&mesh, &dofs)).unwrap_err();
+    assert!(err.to_string().contains("material 1"), "{err}");
 }

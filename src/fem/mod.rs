@@ -73,13 +73,24 @@ pub enum FemError {
         /// Number of materials given.
         available: usize,
     },
-    /// The assembled values do not match the pattern (pattern built for another mesh or dof map).
-    #[error("assembly produced {found} values but the pattern has {expected}")]
+    /// An element couples two equations the pattern does not hold (a pattern built for another
+    /// mesh or dof map).
+    #[error(
+        "entry ({row}, {col}) is not in the sparsity pattern (pattern of another mesh or dof map?)"
+    )]
     PatternMismatch {
-        /// Values in the pattern.
-        expected: usize,
-        /// Values assembled.
-        found: usize,
+        /// Row equation.
+        row: usize,
+        /// Column equation.
+        col: usize,
+    },
+    /// The pattern was built for a different number of equations.
+    #[error("the sparsity pattern has {pattern} equations but the dof map {equations}")]
+    PatternSize {
+        /// Equations of the pattern.
+        pattern: usize,
+        /// Equations of the dof map.
+        equations: usize,
     },
     /// K is not positive definite: usually a rigid-body motion left free by the supports.
     #[error("stiffness matrix not positive definite (missing supports?): {0}")]
