@@ -26,3 +26,12 @@ mod ex11;
 fn rigid_nut_example_runs() {
     ex11::run(3).unwrap();
 }
+
+#[allow(dead_code)]
+#[path = "../examples/12_report_mesh.rs"]
+mod ex12;
+
+#[test]
+fn report_mesh_example_runs() {
+    ex12::run(1).unwrap();
+}

@@ -136,20 +136,38 @@ pub fn coarse_radial_spacing(
     Spacing::graded(a, c, plate.load().knots(), &foci, h, params.growth, 4.0 * d)
 }
 
-/// Solves the half plate on the mesh `radial` × `nz` uniform axial elements.
-pub fn solve_midplane(
+/// A solved half plate: mesh, supports, loads and nodal displacements (global frame).
+#[derive(Debug, Clone)]
+pub struct HalfPlate {
+    /// The mesh (one plate, 0 ≤ z ≤ D).
+    pub mesh: Mesh,
+    /// The equation map (midplane rollers, axis, rigid-nut displacements).
+    pub dofs: DofMap,
+    /// Applied nodal forces.
+    pub loads: Loads,
+    /// Nodal displacements (u, w).
+    pub u: Vec<[f64; 2]>,
+}
+
+/// Solves the upper half plate on the mesh `radial` × `axial` (0 ≤ z ≤ D).
+pub fn solve_half_plate(
     plate: &SinglePlate,
     loading: Loading,
     kind: ElementKind,
     radial: &Spacing,
-    nz: usize,
+    axial: &Spacing,
     solve: &SolveParams,
-) -> Result<Midplane, FemError> {
-    let z = Spacing::uniform(0.0, plate.half_thickness(), nz)?;
-    let mesh = Mesh::structured(kind, radial, &[PlateSpec { z, material: 0 }])?;
+) -> Result<HalfPlate, FemError> {
+    let mesh = Mesh::structured(
+        kind,
+        radial,
+        &[PlateSpec {
+            z: axial.clone(),
+            material: 0,
+        }],
+    )?;
     let mut s = Supports::new(mesh.n_nodes());
-    let mid = mesh.bottom(0);
-    for &n in &mid {
+    for n in mesh.bottom(0) {
         s.roller_z(n);
     }
     if plate.hole_radius() == 0.0 {
@@ -172,9 +190,13 @@ pub fn solve_midplane(
             }
         }
     }
-    let mats = [plate.material()];
     let dofs = DofMap::new(&s);
-    let k = assemble(&mesh, &mats, &dofs, &Pattern::new(&mesh, &dofs))?;
+    let k = assemble(
+        &mesh,
+        &[plate.material()],
+        &dofs,
+        &Pattern::new(&mesh, &dofs),
+    )?;
     let mut rhs = dofs.gather(loads.forces());
     for (a, b) in rhs.iter_mut().zip(&k.prescribed_load) {
         *a += b;
@@ -182,15 +204,36 @@ pub fn solve_midplane(
     let order = nested_dissection(&mesh, &dofs);
     let x = Factorization::with_ordering(&k.matrix, Some(&order), solve)?.solve(&rhs);
     let u = dofs.expand(&x);
-    let reac = reactions(&mesh, &mats, &u, &loads)?;
+    Ok(HalfPlate {
+        mesh,
+        dofs,
+        loads,
+        u,
+    })
+}
+
+/// Solves the half plate on the mesh `radial` × `nz` uniform axial elements and recovers the
+/// midplane σ_z from the roller reactions.
+pub fn solve_midplane(
+    plate: &SinglePlate,
+    loading: Loading,
+    kind: ElementKind,
+    radial: &Spacing,
+    nz: usize,
+    solve: &SolveParams,
+) -> Result<Midplane, FemError> {
+    let z = Spacing::uniform(0.0, plate.half_thickness(), nz)?;
+    let h = solve_half_plate(plate, loading, kind, radial, &z, solve)?;
+    let mid = h.mesh.bottom(0);
+    let reac = reactions(&h.mesh, &[plate.material()], &h.u, &h.loads)?;
     let rz: Vec<f64> = mid.iter().map(|&n| reac[n][1]).collect();
-    let t = line_traction(&mesh, &mid, &rz)?;
+    let t = line_traction(&h.mesh, &mid, &rz)?;
     Ok(Midplane {
-        r: mid.iter().map(|&n| mesh.nodes()[n][0]).collect(),
+        r: mid.iter().map(|&n| h.mesh.nodes()[n][0]).collect(),
         sigma_z: t.iter().map(|t| -t).collect(),
         order: kind.order(),
-        nodes: mesh.n_nodes(),
-        dofs: dofs.n_equations(),
+        nodes: h.mesh.n_nodes(),
+        dofs: h.dofs.n_equations(),
     })
 }
 
