@@ -12,10 +12,19 @@
 //! - [`dofs`]: supports (rollers, fixed, prescribed, the report's skew rollers) and the
 //!   (node, component) → equation map;
 //! - [`loads`]: consistent nodal forces of face pressures and point loads;
-//! - [`assemble`], [`solve`]: sparse symmetric K with a fixed pattern, faer's sparse Cholesky;
+//! - [`assemble`](mod@assemble), [`ordering`], [`solve`]: sparse symmetric K with a fixed pattern, a
+//!   nested-dissection ordering of structured meshes, faer's sparse Cholesky (one symbolic
+//!   analysis, numeric refactorization, many right-hand sides);
 //! - [`recover`]: stresses at Gauss points, element centres and nodes; reactions; the traction
 //!   along a supported line;
-//! - [`single`]: the single-plate model (Fernlund's substitution) and its separation radius R_o.
+//! - [`single`]: the single-plate model (Fernlund's substitution) and its separation radius R_o;
+//! - [`lame`]: the Lamé cylinder, the closed-form check of the elements.
+//!
+//! For a contact model: build a stack with [`Mesh::structured`] (each plate has its own
+//! interface nodes, [`Mesh::top`]/[`Mesh::bottom`] sorted by r), constrain with [`Supports`],
+//! number with [`DofMap`], assemble once ([`Pattern`], [`assemble()`](fn@assemble)), factor once
+//! ([`Factorization`]), form flexibilities with [`Factorization::solve_many`], and read interface
+//! forces with [`reactions`] and tractions with [`line_traction`].
 //!
 //! ```
 //! use boltzone::fem::single::{single_plate_r_o, SingleParams};
