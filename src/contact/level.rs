@@ -45,7 +45,7 @@ use super::lcp::{solve_lcp, Lcp, LcpInfo, LcpParams};
 use super::tie::Ties;
 use super::ContactError;
 use crate::fem::{
-    assemble, nested_dissection, Component, DofMap, Factorization, FemError, Loads, Mesh, Pattern,
+    assemble, nested_dissection, Component, DofMap, Factorization, Loads, Mesh, Pattern,
     SolveParams, Supports,
 };
 use crate::load::FaceLoad;
@@ -154,8 +154,8 @@ pub fn solve_level(
         .filter_map(|&(a, b, c)| Some((dofs.equation(a, c)?, dofs.equation(b, c)?)))
         .collect();
     let ties = Ties::new(dofs.n_equations(), &eq_pairs);
-    let stiff = assemble(mesh, &model.materials, &dofs, &Pattern::new(mesh, &dofs)).map_err(fe)?;
-    let k = ties.matrix(&stiff.matrix).map_err(fe)?;
+    let stiff = assemble(mesh, &model.materials, &dofs, &Pattern::new(mesh, &dofs))?;
+    let k = ties.matrix(&stiff.matrix)?;
     // Nested dissection of the structured mesh (fem's), carried over to the tied unknowns by
     // keeping each tied unknown at the place of its first equation.
     let mut seen = vec![false; ties.n()];
@@ -166,8 +166,7 @@ pub fn solve_level(
         .collect();
     // (AMD's symbolic analysis costs more than the extra fill ND leaves: measured 60 vs 115 ms
     // on a 3045-node Q9 mesh.)
-    let solver =
-        Factorization::with_ordering(&k, Some(&order), &SolveParams::default()).map_err(fe)?;
+    let solver = Factorization::with_ordering(&k, Some(&order), &SolveParams::default())?;
     let mut f = dofs.gather(loads.forces());
     for (fi, pi) in f.iter_mut().zip(&stiff.prescribed_load) {
         *fi += pi;
@@ -262,10 +261,6 @@ pub fn solve_level(
         time_linear,
         time_contact: t1.elapsed(),
     })
-}
-
-fn fe(e: FemError) -> ContactError {
-    ContactError::Factorization(e.to_string())
 }
 
 /// The unit pair force of component `c` at radial line `i` in tied unknowns: +1 on the upper
