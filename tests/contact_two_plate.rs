@@ -88,6 +88,9 @@ fn equilibrium_and_complementarity_symmetric() {
     let s = solve(&j, &loose()).unwrap();
     assert!(s.info.converged && s.info.levels.len() >= 3);
     assert_signorini("A/D=1 B/A=3.1", &s, Some(j.load().total_force()));
+    // One plate on a frictionless plane: no interface shear (round-off of K u).
+    let pmax = s.pressure.iter().fold(0.0f64, |m, p| m.max(*p));
+    assert!(s.shear.iter().all(|t| t.abs() < 1e-9 * pmax));
 }
 
 #[test]
@@ -171,6 +174,21 @@ fn unequal_plates_welded_and_frictionless() {
             }
         );
         assert_signorini("case 5", &s, Some(j.load().total_force()));
+        // Shear: none without friction (round-off of K u); the welded zone carries shear (the
+        // thin plate stretches more than the thick one at the interface), only where closed.
+        let pmax = s.pressure.iter().fold(0.0f64, |m, p| m.max(*p));
+        let tmax = s.shear.iter().fold(0.0f64, |m, t| m.max(t.abs()));
+        match model {
+            InterfaceModel::Frictionless => assert!(tmax < 1e-9 * pmax, "shear {tmax:e}"),
+            InterfaceModel::Welded => {
+                assert!(tmax > 1e-2 * pmax, "welded shear only {tmax:e}");
+                for (t, p) in s.shear.iter().zip(&s.pressure) {
+                    if *p == 0.0 {
+                        assert!(t.abs() < 1e-9 * pmax, "shear outside the contact zone");
+                    }
+                }
+            }
+        }
         r.push(s.r_o);
     }
     // Swapping the plates mirrors the problem: R_o must not change.

@@ -102,6 +102,9 @@ pub struct LevelSolution {
     pub force: Vec<f64>,
     /// Interface pressure: force / tributary area.
     pub pressure: Vec<f64>,
+    /// Interface shear stress on the upper plate (radial force / tributary area; outward > 0):
+    /// zero for frictionless contact, the welded model's shear otherwise.
+    pub shear: Vec<f64>,
     /// Gap w_upper − w_lower (rigid plane: w_upper).
     pub gap: Vec<f64>,
     /// Whether each interface node is closed (tied or active).
@@ -214,17 +217,20 @@ pub fn solve_level(
     }
     let u = dofs.expand(&ties.prolong(&y));
     let line = mesh.bottom(model.upper);
-    let mut force = line_forces(model, &u, &line)?;
-    // A node held by an edge support transmits that support's reaction, not contact.
-    for (i, f) in force.iter_mut().enumerate() {
+    let mut forces = line_forces(model, &u, &line)?;
+    // A component held by a support (edge, axis) transmits that support's reaction, not contact.
+    for (i, f) in forces.iter_mut().enumerate() {
         let (up, low) = model.pair(i);
-        if std::iter::once(up)
-            .chain(low)
-            .any(|n| supports.get(n).fixed[1].is_some())
-        {
-            *f = 0.0;
+        for (c, fc) in f.iter_mut().enumerate() {
+            if std::iter::once(up)
+                .chain(low)
+                .any(|n| supports.get(n).fixed[c].is_some())
+            {
+                *fc = 0.0;
+            }
         }
     }
+    let force: Vec<f64> = forces.iter().map(|f| f[1]).collect();
     let areas = face_weights(
         mesh,
         &line,
@@ -252,6 +258,7 @@ pub fn solve_level(
     Ok(LevelSolution {
         radius: mesh.radial_nodes().to_vec(),
         pressure: force.iter().zip(&areas).map(|(f, a)| f / a).collect(),
+        shear: forces.iter().zip(&areas).map(|(f, a)| f[0] / a).collect(),
         force,
         gap,
         closed,
@@ -298,15 +305,19 @@ fn face_weights(
         .collect())
 }
 
-/// Axial internal forces K u of the upper plate at its interface nodes `line` (only the
-/// elements touching the line are visited): the contact forces on the upper plate.
-fn line_forces(model: &Model, u: &[[f64; 2]], line: &[usize]) -> Result<Vec<f64>, ContactError> {
+/// Internal forces K u (radial, axial) of the upper plate at its interface nodes `line` (only
+/// the elements touching the line are visited): the contact forces on the upper plate.
+fn line_forces(
+    model: &Model,
+    u: &[[f64; 2]],
+    line: &[usize],
+) -> Result<Vec<[f64; 2]>, ContactError> {
     let mesh = &model.mesh;
     let mut pos = vec![usize::MAX; mesh.n_nodes()];
     for (k, &n) in line.iter().enumerate() {
         pos[n] = k;
     }
-    let mut f = vec![0.0; line.len()];
+    let mut f = vec![[0.0; 2]; line.len()];
     for e in 0..mesh.n_elements() {
         let nodes = mesh.element_nodes(e);
         if nodes.iter().all(|&n| pos[n] == usize::MAX) {
@@ -318,8 +329,10 @@ fn line_forces(model: &Model, u: &[[f64; 2]], line: &[usize]) -> Result<Vec<f64>
         let nd = ue.len();
         for (a, &n) in nodes.iter().enumerate() {
             if pos[n] != usize::MAX {
-                let row = 2 * a + 1;
-                f[pos[n]] += (0..nd).map(|j| k[row * nd + j] * ue[j]).sum::<f64>();
+                for (c, fc) in f[pos[n]].iter_mut().enumerate() {
+                    let row = 2 * a + c;
+                    *fc += (0..nd).map(|j| k[row * nd + j] * ue[j]).sum::<f64>();
+                }
             }
         }
     }

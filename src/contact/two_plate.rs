@@ -182,6 +182,9 @@ pub struct TwoPlateSolution {
     pub force: Vec<f64>,
     /// Interface pressure p(r) (force / tributary area; 0 where open).
     pub pressure: Vec<f64>,
+    /// Interface shear stress τ on the upper plate (outward > 0): zero for frictionless and
+    /// symmetric contact, the welded model's shear stress inside the contact zone.
+    pub shear: Vec<f64>,
     /// Gap g(r) between the two plates (0 in contact); for the symmetric model twice the lift
     /// of the one plate off the plane.
     pub gap: Vec<f64>,
@@ -273,6 +276,7 @@ pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution,
         radius: sol.radius.clone(),
         force: sol.force.clone(),
         pressure,
+        shear: sol.shear.clone(),
         gap: sol.gap.iter().map(|x| gap_factor * x).collect(),
         nut_deflection: sol.nut_deflection,
         info: TwoPlateInfo {
