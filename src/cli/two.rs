@@ -94,7 +94,8 @@ pub struct Args {
     /// Interface model for unequal or dissimilar plates (equal plates are exact either way).
     #[arg(long, value_enum, default_value_t = Interface::Welded)]
     interface: Interface,
-    /// Element type.
+    /// Element type (q9: the only one whose R_o error estimate is reliable; the linear ones are
+    /// cheaper but can miss the tolerance by a factor of three).
     #[arg(long, value_enum, default_value_t = Element::Q9)]
     element: Element,
     /// Wanted relative error of R_o.
