@@ -208,8 +208,10 @@ fn unequal_plates_welded_and_frictionless() {
         },
     )
     .unwrap();
+    // The stack turned upside down is the mirror image of the same discrete problem (each
+    // plate's axial grading is symmetric about its mid-thickness): equal up to round-off.
     assert!(
-        (s.r_o - r[0]).abs() < 5e-3 * r[0],
+        (s.r_o - r[0]).abs() < 1e-9 * r[0],
         "swapped: {} vs {}",
         s.r_o,
         r[0]
