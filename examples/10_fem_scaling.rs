@@ -5,7 +5,9 @@
 //! of the total time, and the relative residual ‖K x − b‖/‖b‖ as a check of the solve.
 //!
 //! Run: `cargo run --release --example 10_fem_scaling [dofs…]` (default 1e4 1e5 1e6). For the
-//! peak memory of one size alone, run that size by itself.
+//! peak memory of one size alone, run that size by itself. Environment: FEM_ORDER=amd uses faer's
+//! AMD instead of the mesh's nested dissection; FEM_THICKNESS=0.1 a plate-shaped section;
+//! FEM_PARALLEL=1 faer's threads; FEM_ELEMENT=q4 or q9 only one element kind.
 
 use boltzone::fem::*;
 use boltzone::{FaceLoad, Material};
@@ -54,7 +56,10 @@ pub fn run_size(
     let t1 = Instant::now();
     let k = assemble(&mesh, &[Material::unit(0.3)?], &dm, &pattern)?;
     let t_assemble = t1.elapsed().as_secs_f64();
-    let f = Factorization::new(&k.matrix, &SolveParams { parallel: par })?;
+    let nd = !std::env::var("FEM_ORDER").is_ok_and(|v| v == "amd");
+    let order = nd.then(|| nested_dissection(&mesh, &dm));
+    let f =
+        Factorization::with_ordering(&k.matrix, order.as_deref(), &SolveParams { parallel: par })?;
     let b = dm.gather(loads.forces());
     let t1 = Instant::now();
     let x = f.solve(&b);
@@ -134,7 +139,14 @@ fn main() -> anyhow::Result<()> {
         "peak MiB",
         "residual"
     );
+    let only = std::env::var("FEM_ELEMENT").ok();
     for kind in [ElementKind::Q4, ElementKind::Q9] {
+        if only
+            .as_ref()
+            .is_some_and(|k| !k.eq_ignore_ascii_case(&format!("{kind:?}")))
+        {
+            continue;
+        }
         let runs: Vec<(usize, f64)> = sizes
             .iter()
             .map(|&d| run_size(kind, d, thickness, par))

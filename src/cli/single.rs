@@ -5,7 +5,7 @@
 //! [`boltzone::hankel::hole::single_plate_separation`] (infinite slab + hole correction, and a
 //! rim correction when `--c` is given).
 
-use boltzone::fem::single::{single_plate_r_o, SingleParams};
+use boltzone::fem::single::{single_plate_r_o, Loading, SingleParams};
 use boltzone::fem::ElementKind;
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
@@ -27,6 +27,15 @@ pub enum Element {
     Q4bbar,
     /// The report's quadrilateral of four constant-strain triangles.
     Cst4,
+}
+
+/// How the bolt head loads the faces (fem).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Nut {
+    /// Uniform bearing pressure over A..B (Table 1).
+    Pressure,
+    /// Rigid frictionless nut: uniform displacement over A..B (report Fig. 21).
+    Rigid,
 }
 
 /// Arguments of `boltzone single`.
@@ -53,6 +62,9 @@ pub struct Args {
     /// Element family (fem).
     #[arg(long, value_enum, default_value_t = Element::Q9)]
     element: Element,
+    /// Face loading (fem).
+    #[arg(long, value_enum, default_value_t = Nut::Pressure)]
+    nut: Nut,
     /// Nested refinement levels (fem, ≥ 3 for an error estimate).
     #[arg(long, default_value_t = 5)]
     levels: usize,
@@ -74,7 +86,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Element::Q4bbar => ElementKind::Q4Bbar,
         Element::Cst4 => ElementKind::Cst4,
     };
+    let loading = match args.nut {
+        Nut::Pressure => Loading::Pressure,
+        Nut::Rigid => Loading::UniformDisplacement,
+    };
     let params = SingleParams {
+        loading,
         kind,
         levels: args.levels,
         ..SingleParams::default()
@@ -89,6 +106,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         let v = serde_json::json!({
             "method": "fem",
             "element": format!("{kind:?}"),
+            "loading": format!("{loading:?}"),
             "r_o": r_o,
             "r_o_over_a": r_o_over_a,
             "r_o_error": info.error_estimate,

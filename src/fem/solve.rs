@@ -23,6 +23,7 @@
 use super::FemError;
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
+use faer::perm::PermRef;
 use faer::sparse::linalg::cholesky::{
     factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymmetricOrdering,
 };
@@ -49,16 +50,42 @@ pub struct Factorization {
 }
 
 impl Factorization {
-    /// Symbolic and numeric factorization of the lower triangle `k`.
+    /// Symbolic and numeric factorization of the lower triangle `k` (AMD ordering).
     pub fn new(k: &SparseColMat<usize, f64>, params: &SolveParams) -> Result<Self, FemError> {
+        Self::with_ordering(k, None, params)
+    }
+
+    /// As [`Factorization::new`] with a caller's elimination order (`order[k]` = the equation
+    /// eliminated k-th, e.g. [`super::nested_dissection`]); None: AMD.
+    pub fn with_ordering(
+        k: &SparseColMat<usize, f64>,
+        order: Option<&[usize]>,
+        params: &SolveParams,
+    ) -> Result<Self, FemError> {
         let t0 = Instant::now();
-        let symbolic = factorize_symbolic_cholesky(
-            k.symbolic(),
-            Side::Lower,
-            SymmetricOrdering::Amd,
-            Default::default(),
-        )
-        .map_err(|e| FemError::Solver(format!("symbolic Cholesky: {e:?}")))?;
+        let inverse: Vec<usize>;
+        let ord = match order {
+            None => SymmetricOrdering::Amd,
+            Some(fwd) => {
+                let n = k.nrows();
+                let mut inv = vec![usize::MAX; n];
+                for (new, &old) in fwd.iter().enumerate() {
+                    if old < n && new < n {
+                        inv[old] = new;
+                    }
+                }
+                if fwd.len() != n || inv.contains(&usize::MAX) {
+                    return Err(FemError::Solver(format!(
+                        "the ordering is not a permutation of 0..{n}"
+                    )));
+                }
+                inverse = inv;
+                SymmetricOrdering::Custom(PermRef::new_checked(fwd, &inverse, n))
+            }
+        };
+        let symbolic =
+            factorize_symbolic_cholesky(k.symbolic(), Side::Lower, ord, Default::default())
+                .map_err(|e| FemError::Solver(format!("symbolic Cholesky: {e:?}")))?;
         let par = if params.parallel {
             Par::rayon(0)
         } else {
