@@ -79,6 +79,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let load = FaceLoad::uniform(args.a, args.b, 1.0)?;
     let plate = SinglePlate::new(args.a, outer, args.d, Material::unit(args.nu)?, load)?;
     if args.method == Method::Hankel {
+        if args.nut != Nut::Pressure {
+            anyhow::bail!(
+                "--nut rigid needs --method fem (the Hankel route loads the faces by a pressure)"
+            );
+        }
         return run_hankel(&args, &plate);
     }
     let kind = match args.element {
