@@ -232,6 +232,19 @@ fn bad_parameters_are_typed_errors() {
     )
     .unwrap_err();
     assert!(e.to_string().contains("hole residual target"), "{e}");
+    // A zero load: nothing to correct, finite numbers, and no separation (an error, no panic).
+    let zero = FaceLoad::uniform(0.1, 0.31, 0.0).unwrap();
+    let p0 = SinglePlate::new(
+        0.1,
+        OuterRadius::Infinite,
+        0.1,
+        Material::unit(0.3).unwrap(),
+        zero,
+    )
+    .unwrap();
+    let h = HolePlate::new(&p0, &fixed(4)).unwrap();
+    assert!(h.info().residual_max.is_finite() && h.info().residual_max < 1e-12);
+    assert!(single_plate_separation(&p0, &SeparationParams::default(), &fixed(4)).is_err());
 }
 
 #[test]

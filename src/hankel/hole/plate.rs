@@ -110,7 +110,10 @@ impl HolePlate {
         params.check()?;
         let (a, d) = (plate.hole_radius(), plate.half_thickness());
         let mat = plate.material();
-        let p_ref = plate.load().mean_pressure().abs();
+        // P (a zero load has nothing to correct: measure its residuals absolutely)
+        let p_ref = Some(plate.load().mean_pressure().abs())
+            .filter(|p| *p > 0.0)
+            .unwrap_or(1.0);
         let ext = extended_load(plate.load(), a, d)?;
         let slab = Slab::new(d, mat, ext.unwrap_or_else(|| plate.load().clone()))?;
         let mut holed = Self {

@@ -29,7 +29,9 @@ pub fn single_plate_separation(
     let b = plate.load().outer();
     // R_o lies on the plate: a rim at C ends the search there.
     let r_end = (b + sep.reach * d).min(holed.rim().unwrap_or(f64::INFINITY));
-    let p_ref = plate.load().mean_pressure().abs();
+    let p_ref = Some(plate.load().mean_pressure().abs())
+        .filter(|p| *p > 0.0)
+        .unwrap_or(1.0);
     // The hole's share of R_o's error is ≥ r_o_tolerance·R_o: the slab's midplane σ_z need not
     // be resolved to a much finer relative tolerance than a thousandth of it.
     let rel_tol = sep.rel_tol.max(1e-3 * hole.r_o_tolerance);
