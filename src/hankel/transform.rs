@@ -3,7 +3,7 @@
 //! p(r) is piecewise linear on knots A = r₀ < … < rₙ = B (see [`crate::load`]). A constant piece
 //! P on [r₀, r₁] has the closed form P[r₁J₁(ξr₁) − r₀J₁(ξr₀)]/ξ (from d(xJ₁)/dx = xJ₀), so the
 //! uniform annulus gives P[B J₁(ξB) − A J₁(ξA)]/ξ. A sloped piece needs ∫x²J₀ = x²J₁ + xJ₀ −
-//! Ji₀ with Ji₀(x) = ∫₀^x J₀ ([`integral_j0`]: series, Gauss, or its asymptotic expansion), so
+//! Ji₀ with Ji₀(x) = ∫₀^x J₀ ([`integral_j0`]: series, a Chebyshev table, or its asymptotic expansion), so
 //! every p̄(ξ) costs O(1) Bessel calls whatever ξ (small ξ: one Gauss rule on the piece). The transform is built once per slab and
 //! shared by every evaluation point. Units: pressure × length².
 //!
@@ -255,8 +255,70 @@ fn segment(s: &Segment, xi: f64) -> f64 {
         + beta * (cubic(s.r1) - cubic(s.r0)) / (xi * xi * xi)
 }
 
-/// Ji₀(x) = ∫₀^x J₀(t) dt for x ≥ 0: power series for x ≤ 2, 20-point Gauss–Legendre on
-/// panels of ≤ 3 for 2 < x < 40, and for x ≥ 40 the asymptotic expansion
+const TABLE_END: f64 = 40.0;
+const TABLE_PANEL: f64 = 2.0;
+const TABLE_POINTS: usize = 24;
+
+/// Ji₀ on panels of width 2 covering [0, 40]: values at 24 Chebyshev points (second kind) of
+/// each panel, each by 20-point Gauss–Legendre from the panel's left end (interpolation error
+/// ~1e-25, so rounding dominates: ~20ε accumulated over the panels).
+struct Ji0Table {
+    t: [f64; TABLE_POINTS],
+    w: [f64; TABLE_POINTS],
+    f: Vec<[f64; TABLE_POINTS]>,
+}
+
+fn ji0_tables() -> &'static Ji0Table {
+    static TABLE: std::sync::OnceLock<Ji0Table> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| {
+        let n = TABLE_POINTS - 1;
+        let t: [f64; TABLE_POINTS] =
+            std::array::from_fn(|j| (std::f64::consts::PI * j as f64 / n as f64).cos());
+        // barycentric weights of Chebyshev points of the second kind
+        let w: [f64; TABLE_POINTS] = std::array::from_fn(|j| {
+            let s = if j % 2 == 0 { 1.0 } else { -1.0 };
+            if j == 0 || j == n {
+                0.5 * s
+            } else {
+                s
+            }
+        });
+        let rule = gauss_legendre(20);
+        let mut j0 = |t: f64| libm::j0(t);
+        let mut f = Vec::new();
+        let mut start = 0.0; // Ji₀ at the panel's left end
+        for p in 0..(TABLE_END / TABLE_PANEL) as usize {
+            let a = p as f64 * TABLE_PANEL;
+            let vals = std::array::from_fn(|j| {
+                start + panel(&rule, a, a + 0.5 * TABLE_PANEL * (1.0 - t[j]), &mut j0).0
+            });
+            start += panel(&rule, a, a + TABLE_PANEL, &mut j0).0;
+            f.push(vals);
+        }
+        Ji0Table { t, w, f }
+    })
+}
+
+/// Ji₀(x) for 0 ≤ x < 40 by barycentric interpolation in the table's panel.
+fn ji0_table(x: f64) -> f64 {
+    let tab = ji0_tables();
+    let p = ((x / TABLE_PANEL) as usize).min(tab.f.len() - 1);
+    let s = 1.0 - 2.0 * (x - p as f64 * TABLE_PANEL) / TABLE_PANEL; // t₀ = 1 at the left end
+    let (mut num, mut den) = (0.0, 0.0);
+    for j in 0..TABLE_POINTS {
+        let d = s - tab.t[j];
+        if d == 0.0 {
+            return tab.f[p][j];
+        }
+        let c = tab.w[j] / d;
+        num += c * tab.f[p][j];
+        den += c;
+    }
+    num / den
+}
+
+/// Ji₀(x) = ∫₀^x J₀(t) dt for x ≥ 0: power series for x ≤ 2, a table of piecewise Chebyshev
+/// interpolants for 2 < x < 40 ([`ji0_table`]), and for x ≥ 40 the asymptotic expansion
 /// Ji₀ = 1 − Re F, F(x) = ∫ₓ^∞ H₀⁽¹⁾ = √(2/π) e^(i(x−π/4)) x^(−1/2) Σ b_k x^(−k), where
 /// b₀ = i, b_k = i^(k+1) a_k − i(k − ½) b_(k−1) follows from F′ = −H₀⁽¹⁾ with Hankel's
 /// a_k = a_(k−1)·(−(2k−1)²)/(8k) (DLMF 10.17.1); summed to its smallest term (≈ e^(−x) < 5e-18).
@@ -277,14 +339,8 @@ pub fn integral_j0(x: f64) -> f64 {
         }
         return sum;
     }
-    if x < 40.0 {
-        let rule = gauss_legendre(20);
-        let n = (x / 3.0).ceil();
-        let h = x / n;
-        let mut f = |t: f64| libm::j0(t);
-        return (0..n as usize)
-            .map(|k| panel(&rule, k as f64 * h, (k + 1) as f64 * h, &mut f).0)
-            .sum();
+    if x < TABLE_END {
+        return ji0_table(x);
     }
     // complex b_k as (re, im); i·(re, im) = (−im, re)
     let (mut b_re, mut b_im) = (0.0, 1.0);

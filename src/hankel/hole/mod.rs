@@ -66,7 +66,6 @@ pub mod bessel_i;
 pub mod bessel_k;
 pub mod eigen;
 pub mod fit;
-pub mod linear_transform;
 pub mod plate;
 mod separation;
 pub mod traction;

@@ -7,7 +7,7 @@
 //!
 //! but [`BATCH`] heights share one set of ξ-nodes, so J₀(ξA), J₁(ξA) and p̄(ξ) — most of an
 //! integrand's cost — are computed once per node for all of them, and p̄ comes from the
-//! closed form of [`super::linear_transform`] (O(1) per ξ for sloped loads too). Heights are batched in the
+//! closed form of [`crate::hankel::transform`] (O(1) per ξ for sloped loads too). Heights are batched in the
 //! order given (the θ-grid of [`super::fit`] puts neighbours together, whose integrands decay at
 //! similar rates e^(−ξ(D−z))), and the tolerance applies to the largest value in the batch.
 //! The face height z = D, where the kernels do not decay, is left to `Slab::stress`, which
@@ -23,10 +23,10 @@
 //! assert!((t[0].sigma_r - s.sigma_r.value).abs() < 1e-9);
 //! ```
 
-use super::linear_transform::LinearTransform;
 use crate::hankel::field::Slab;
 use crate::hankel::kernel::Kernels;
 use crate::hankel::quadrature::{integrate_oscillatory_vec, QuadParams};
+use crate::hankel::transform::LoadTransform;
 
 /// Heights per shared node set.
 pub const BATCH: usize = 4;
@@ -53,7 +53,7 @@ pub fn hole_tractions(
     let d = slab.half_thickness();
     let nu = slab.material().poisson_ratio();
     // The closed-form transform: O(1) per ξ even for sloped pieces (the slab's own is O(ξ)).
-    let tr = LinearTransform::new(slab.load());
+    let tr = LoadTransform::new(slab.load());
     let omega = a + slab.transform().outer();
     let mut out = Vec::with_capacity(heights.len());
     let mut evaluations = 0;
