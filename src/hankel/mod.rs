@@ -19,8 +19,11 @@
 
 pub mod field;
 pub mod kernel;
+pub mod layer;
 pub mod midplane;
 pub mod quadrature;
+pub mod receding;
+mod receding_system;
 pub mod separation;
 pub mod transform;
 
