@@ -139,7 +139,10 @@ impl Slab {
             },
             self.omega(r),
             1.0 / d,
-            params,
+            &QuadParams {
+                products: true,
+                ..*params
+            },
         );
         let (mut sz, mut tau, mut sr, mut st) = (
             iz.scale(-1.0),
@@ -202,7 +205,10 @@ impl Slab {
             },
             self.omega(r),
             1.0 / d,
-            params,
+            &QuadParams {
+                products: true,
+                ..*params
+            },
         );
         let c = -1.0 / (2.0 * self.material.shear_modulus());
         let mut u = iu.scale(c);

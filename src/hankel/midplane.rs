@@ -1,11 +1,13 @@
 //! The midplane stress σ_z(r, 0) = −∫₀^∞ ξ p̄(ξ) K(ξD) J₀(ξr) dξ fast, for many radii.
 //!
 //! K(t) = 2(sinh t + t cosh t)/(sinh 2t + 2t) ≤ 2.5(1 + t)e^(−t) ([`super::kernel`]), and
-//! |p̄| ≤ M = ∫|p| r dr, so the tail beyond ξ = T/D is at most
-//! 2.5·M·e^(−T)(T² + 3T + 3)/D²: [`MidplaneRule`] truncates there with T chosen from the
-//! tolerance, cuts [0, T/D] into panels no wider than three half-periods of the fastest
+//! |p̄| ≤ min(M, C₁/ξ) with M = ∫|p| r dr ([`super::transform::LoadTransform::decay_constant`] gives C₁), so the
+//! tail beyond ξ = T/D is at most 2.5 e^(−T) min(M(T² + 3T + 3)/D², C₁(T + 2)/D):
+//! [`MidplaneRule`] truncates there with T chosen from the tolerance, cuts [0, T/D] into panels no wider than five half-periods of the fastest
 //! oscillation (r_max + B) and no wider than 1.5/D (the kernel's scale), and puts a 20-point
-//! Gauss–Legendre rule on each. The weights w_i ξ_i p̄(ξ_i) K(ξ_i D) are computed once, so
+//! Gauss–Legendre rule on each (Gauss's error bound for cos ωξ on 5 half-periods with 20
+//! points: (5π)^41 (20!)^4/(41·(40!)^3) ≈ 2e-23 of the amplitude; the kernel's poles at
+//! Im ξ ≈ 1.1/D give a Bernstein ellipse ρ ≈ 3.3 on panels of 1.5/D, ρ^(−40) ≈ 2e-21). The weights w_i ξ_i p̄(ξ_i) K(ξ_i D) are computed once, so
 //! σ_z(r, 0) = −Σ c_i J₀(ξ_i r) for every r ≤ r_max. Error estimate: the tail bound plus a
 //! rounding floor 50ε Σ|c_i| (the Gauss rule's own error, ≈ 1e-25 of the amplitude, is
 //! checked in the tests against a rule of twice the density).
@@ -27,12 +29,70 @@
 use super::field::Slab;
 use super::kernel::midplane;
 use super::quadrature::{gauss_legendre, Estimate};
+use super::transform::LoadTransform;
 use crate::error::{positive, InputError};
 use std::f64::consts::PI;
 
-/// Largest node count a [`MidplaneRule`] may use (thin slabs with (r_max + B)/D beyond ≈ 2000
-/// exceed it and are refused with [`InputError::Parameter`]).
+/// Largest node count a [`MidplaneRule`] may use (thin slabs with (r_max + B)/D beyond a few
+/// thousand exceed it and are refused with [`InputError::Parameter`]).
 pub const MAX_NODES: usize = 400_000;
+
+/// Above this node count [`Midplane`] uses the real-space route instead of a [`MidplaneRule`]
+/// (one real-space evaluation costs about as much as 50 000 nodes).
+pub const SWITCH_NODES: usize = 50_000;
+
+/// Largest number of panels (of width D) a [`MidplaneCurve`] may have.
+pub const MAX_CURVE_PANELS: usize = 20_000;
+
+/// σ_z(r, 0) by whichever route is cheaper: a shared ξ-rule, or for thin slabs the real-space
+/// superposition of [`super::realspace`].
+#[derive(Debug, Clone)]
+pub enum Midplane {
+    /// Shared ξ-nodes (thick and moderate slabs).
+    Rule(MidplaneRule),
+    /// Real-space point-kernel superposition (thin slabs).
+    RealSpace {
+        /// The load transform (its pieces are used).
+        transform: LoadTransform,
+        /// Half-thickness D.
+        d: f64,
+    },
+}
+
+impl Midplane {
+    /// The evaluator for radii up to `r_max` to absolute tolerance `abs_tol`.
+    pub fn new(slab: &Slab, r_max: f64, abs_tol: f64) -> Result<Self, InputError> {
+        match MidplaneRule::with_budget(slab, r_max, abs_tol, SWITCH_NODES) {
+            Ok(rule) => Ok(Midplane::Rule(rule)),
+            Err(InputError::Parameter {
+                field: "midplane rule nodes",
+                ..
+            }) => Ok(Midplane::RealSpace {
+                transform: slab.transform().clone(),
+                d: slab.half_thickness(),
+            }),
+            Err(e) => Err(e),
+        }
+    }
+
+    /// σ_z(r, 0) with its error estimate.
+    pub fn eval(&self, r: f64) -> Estimate {
+        match self {
+            Midplane::Rule(rule) => rule.eval(r),
+            Midplane::RealSpace { transform, d } => {
+                super::realspace::midplane_sigma_z(transform, *d, r)
+            }
+        }
+    }
+
+    /// ξ-nodes of the rule (0 for the real-space route).
+    pub fn nodes(&self) -> usize {
+        match self {
+            Midplane::Rule(rule) => rule.nodes(),
+            Midplane::RealSpace { .. } => 0,
+        }
+    }
+}
 
 /// σ_z(r, 0) for all r ≤ r_max on one shared node set.
 #[derive(Debug, Clone)]
@@ -47,33 +107,40 @@ impl MidplaneRule {
     /// The rule for radii up to `r_max`, truncated so that the tail is below `abs_tol / 2`
     /// (absolute, in the load's pressure units).
     pub fn new(slab: &Slab, r_max: f64, abs_tol: f64) -> Result<Self, InputError> {
+        Self::with_budget(slab, r_max, abs_tol, MAX_NODES)
+    }
+
+    /// As [`MidplaneRule::new`], refusing rules of more than `max_nodes` nodes.
+    pub fn with_budget(
+        slab: &Slab,
+        r_max: f64,
+        abs_tol: f64,
+        max_nodes: usize,
+    ) -> Result<Self, InputError> {
         positive("midplane rule r_max", r_max)?;
         positive("midplane tolerance", abs_tol)?;
         let d = slab.half_thickness();
         let tr = slab.transform();
-        let m = tr.abs_moment();
-        let bound = |t: f64| 2.5 * m * (-t).exp() * (t * t + 3.0 * t + 3.0) / (d * d);
-        let mut t: f64 = 10.0;
-        for _ in 0..50 {
-            let next = (2.5 * m * (t * t + 3.0 * t + 3.0) / (d * d * 0.5 * abs_tol))
-                .ln()
-                .max(1.0);
-            if (next - t).abs() < 1e-3 {
-                t = next;
-                break;
-            }
-            t = next;
+        let (m, c1) = (tr.abs_moment(), tr.decay_constant());
+        // tail beyond ξ = T/D with |p̄| ≤ M: 2.5 M e^(−T)(T² + 3T + 3)/D²;
+        // with |p̄| ≤ C₁/ξ: 2.5 C₁ e^(−T)(T + 2)/D. The smaller bound decides.
+        let bound = |t: f64| {
+            2.5 * (-t).exp() * (m * (t * t + 3.0 * t + 3.0) / (d * d)).min(c1 * (t + 2.0) / d)
+        };
+        let mut t: f64 = 1.0;
+        while bound(t) > 0.5 * abs_tol && t < 800.0 {
+            t += 0.125;
         }
         let xi_max = t / d;
-        let width = (3.0 * PI / (r_max + tr.outer())).min(1.5 / d);
+        let width = (5.0 * PI / (r_max + tr.outer())).min(1.5 / d);
         let panels = (xi_max / width).ceil();
         let rule = gauss_legendre(20);
         let n = panels * rule.len() as f64;
-        if n.is_nan() || n > MAX_NODES as f64 {
+        if n.is_nan() || n > max_nodes as f64 {
             return Err(InputError::Parameter {
                 field: "midplane rule nodes",
                 value: n,
-                reason: "the slab is too thin for the ξ-quadrature at this radius (more than MAX_NODES nodes)",
+                reason: "the slab is too thin for the ξ-quadrature at this radius (node budget exceeded)",
             });
         }
         let h = xi_max / panels;
@@ -127,14 +194,20 @@ impl MidplaneRule {
     }
 }
 
-/// Chebyshev points per panel of a [`MidplaneCurve`].
-const CHEB: usize = 28;
+/// Chebyshev points per panel of a [`MidplaneCurve`] for an absolute tolerance `tol` relative
+/// to the curve's scale: σ_z(r, 0) is analytic in the strip |Im r| < D (the ξ-integrand is
+/// bounded by e^(−ξD)·e^(ξ|Im r|)), so on panels of width D the Chebyshev coefficients fall
+/// like ρ^(−n) with ρ = 2 + √5 (Bernstein ellipse of semi-minor axis D over half-width D/2).
+fn cheb_points(tol: f64) -> usize {
+    let rho = 2.0 + 5f64.sqrt();
+    (((1e3 / tol.clamp(1e-16, 1e-2)).ln() / rho.ln()).ceil() as usize).clamp(8, 40)
+}
 
 /// Piecewise Chebyshev interpolant of σ_z(r, 0) on [r₀, r₁].
 #[derive(Debug, Clone)]
 pub struct MidplaneCurve {
     breaks: Vec<f64>,
-    coef: Vec<[f64; CHEB]>,
+    coef: Vec<Vec<f64>>,
     errors: Vec<f64>,
     evaluations: usize,
 }
@@ -145,32 +218,49 @@ impl MidplaneCurve {
     pub fn new(slab: &Slab, r0: f64, r1: f64, abs_tol: f64) -> Result<Self, InputError> {
         crate::error::non_negative("curve start radius", r0)?;
         positive("curve length", r1 - r0)?;
-        let rule = MidplaneRule::new(slab, r1, abs_tol / 4.0)?;
+        let rule = Midplane::new(slab, r1, abs_tol / 4.0)?;
+        let mut evaluations = 0;
         let d = slab.half_thickness();
-        let n = ((r1 - r0) / d).ceil().max(1.0) as usize;
+        let panels = ((r1 - r0) / d).ceil().max(1.0);
+        if panels > MAX_CURVE_PANELS as f64 {
+            return Err(InputError::Parameter {
+                field: "midplane curve panels (length / D)",
+                value: panels,
+                reason: "too many panels of width D: evaluate the radii directly with Midplane",
+            });
+        }
+        let n = panels as usize;
         let h = (r1 - r0) / n as f64;
         let breaks: Vec<f64> = (0..=n).map(|k| r0 + k as f64 * h).collect();
         let mut coef = Vec::with_capacity(n);
         let mut errors = Vec::with_capacity(n);
+        let scale = slab
+            .load()
+            .values()
+            .iter()
+            .fold(0.0f64, |m, v| m.max(v.abs()));
+        let cheb = cheb_points(abs_tol / scale.max(f64::MIN_POSITIVE));
         for k in 0..n {
             let (a, b) = (breaks[k], breaks[k + 1]);
             // values at Chebyshev points x_j = cos(π(j + ½)/N), then the discrete cosine transform
-            let vals: Vec<f64> = (0..CHEB)
+            let vals: Vec<f64> = (0..cheb)
                 .map(|j| {
-                    let x = (PI * (j as f64 + 0.5) / CHEB as f64).cos();
-                    rule.eval(0.5 * (a + b) + 0.5 * (b - a) * x).value
+                    let x = (PI * (j as f64 + 0.5) / cheb as f64).cos();
+                    let e = rule.eval(0.5 * (a + b) + 0.5 * (b - a) * x);
+                    evaluations += e.evaluations;
+                    e.value
                 })
                 .collect();
-            let mut c = [0.0; CHEB];
+            let mut c = vec![0.0; cheb];
             for (m, cm) in c.iter_mut().enumerate() {
-                let s: f64 = (0..CHEB)
-                    .map(|j| vals[j] * (PI * m as f64 * (j as f64 + 0.5) / CHEB as f64).cos())
+                let s: f64 = (0..cheb)
+                    .map(|j| vals[j] * (PI * m as f64 * (j as f64 + 0.5) / cheb as f64).cos())
                     .sum();
-                *cm = 2.0 * s / CHEB as f64;
+                *cm = 2.0 * s / cheb as f64;
             }
             c[0] *= 0.5;
             // the last three coefficients bound the truncation; the rule's error adds
-            let tail = c[CHEB - 3..].iter().map(|v| v.abs()).sum::<f64>();
+            let tail = c[cheb - 3..].iter().map(|v| v.abs()).sum::<f64>();
             errors.push(2.0 * tail + rule.eval(a).error);
             coef.push(c);
         }
@@ -178,7 +268,7 @@ impl MidplaneCurve {
             breaks,
             coef,
             errors,
-            evaluations: n * CHEB * rule.nodes(),
+            evaluations,
         })
     }
 
@@ -214,7 +304,7 @@ impl MidplaneCurve {
         self.errors.iter().cloned().fold(0.0, f64::max)
     }
 
-    /// J₀ evaluations spent building the curve.
+    /// Kernel evaluations spent building the curve (J₀ calls or point-kernel calls).
     pub fn evaluations(&self) -> usize {
         self.evaluations
     }

@@ -22,7 +22,7 @@
 //! ```
 //! use boltzone::hankel::quadrature::{integrate_oscillatory, QuadParams};
 //! // ∫₀^∞ e^(−ξ/10) J₀(2ξ) dξ = 1/√(0.01 + 4)
-//! let est = integrate_oscillatory(|x| (-0.1 * x).exp() * libm::j0(2.0 * x), 2.0, &QuadParams::default());
+//! let est = integrate_oscillatory(|x| (-0.1 * x).exp() * libm::j0(2.0 * x), 2.0, 10.0, &QuadParams::default());
 //! assert!((est.value - 1.0 / (0.01f64 + 4.0).sqrt()).abs() <= est.error);
 //! assert!(est.error < 1e-11);
 //! ```
@@ -44,6 +44,10 @@ pub struct QuadParams {
     pub order: usize,
     /// Number of the latest partial sums Wynn's ε algorithm works on (default 13, odd).
     pub window: usize,
+    /// The integrand is a product of two oscillations (e.g. J₀(ξr)·J₁(ξB)) whose beat the
+    /// half-period sums do not resolve: the error estimate then also includes the distance to
+    /// a second extrapolation from whole-period sums (default false; pessimistic but honest).
+    pub products: bool,
 }
 
 impl Default for QuadParams {
@@ -54,6 +58,7 @@ impl Default for QuadParams {
             max_panels: 20_000,
             order: 10,
             window: 13,
+            products: false,
         }
     }
 }
@@ -153,14 +158,16 @@ pub fn wynn_epsilon(s: &[f64]) -> f64 {
     best
 }
 
-/// ∫₀^∞ f(ξ) dξ for an integrand oscillating with angular frequency at most `omega` (> 0):
-/// panels of width π/ω, Gauss–Legendre per panel, Wynn's ε on the partial sums.
+/// ∫₀^∞ f(ξ) dξ for an integrand oscillating with angular frequency at most `omega` (> 0)
+/// whose non-oscillating factor varies on the ξ-scale `smooth` (use `f64::INFINITY` when it
+/// varies slower than the oscillation): see [`integrate_oscillatory_vec`].
 pub fn integrate_oscillatory<F: FnMut(f64) -> f64>(
     mut f: F,
     omega: f64,
+    smooth: f64,
     params: &QuadParams,
 ) -> Estimate {
-    let [e] = integrate_oscillatory_vec(|x| [f(x)], omega, f64::INFINITY, params);
+    let [e] = integrate_oscillatory_vec(|x| [f(x)], omega, smooth, params);
     e
 }
 
@@ -170,22 +177,23 @@ pub fn integrate_oscillatory<F: FnMut(f64) -> f64>(
 /// `smooth` is the ξ-length over which the non-oscillating factor varies (1/D for the slab
 /// kernels): each half-period panel is split into sub-panels no longer than it, so the
 /// partial sums stay at half-period break points (what the extrapolation needs) while the
-/// Gauss rule resolves the kernel. At most 64 sub-panels: beyond that the panel is shortened,
-/// which only happens when the integrand has decayed by e^(−64) within one half-period.
+/// Gauss rule resolves the kernel; beyond ξ = 64·smooth one rule per half-period is used
+/// (there the slab kernels are e^(−ξ(D−|z|)) times a polynomial, up to e^(−64)).
 pub fn integrate_oscillatory_vec<const N: usize, F: FnMut(f64) -> [f64; N]>(
     mut f: F,
     omega: f64,
     smooth: f64,
     params: &QuadParams,
 ) -> [Estimate; N] {
-    let mut h = std::f64::consts::PI / omega.max(f64::MIN_POSITIVE);
-    let sub = if smooth > 0.0 && h > smooth {
-        let n = (h / smooth).ceil().min(64.0);
-        h = h.min(64.0 * smooth);
-        n as usize
+    let h = std::f64::consts::PI / omega.max(f64::MIN_POSITIVE);
+    // below ξ = 64·smooth, sub-panels of width `smooth`; beyond, the kernel has decayed or
+    // varies only through e^(−ξ·distance) and one Gauss rule per half-period suffices
+    let cut = if smooth.is_finite() && smooth > 0.0 {
+        64.0 * smooth
     } else {
-        1
+        0.0
     };
+    let mut evaluations = 0;
     let rule = gauss_legendre(params.order);
     let window = params.window.max(3);
     let max_panels = params.max_panels.max(5);
@@ -195,9 +203,16 @@ pub fn integrate_oscillatory_vec<const N: usize, F: FnMut(f64) -> [f64; N]>(
     let mut total_abs = [0.0; N];
     let mut k = 0;
     loop {
-        let hw = 0.5 * h / sub as f64;
-        for i in 0..sub {
-            let c = k as f64 * h + (2 * i + 1) as f64 * hw;
+        let (mut x0, end) = (k as f64 * h, (k + 1) as f64 * h);
+        while x0 < end {
+            let x1 = if x0 < cut {
+                (x0 + smooth).min(end)
+            } else {
+                end
+            };
+            let (c, hw) = (0.5 * (x0 + x1), 0.5 * (x1 - x0));
+            x0 = x1;
+            evaluations += rule.len();
             for &(x, w) in rule.iter() {
                 let v = f(c + hw * x);
                 for j in 0..N {
@@ -222,13 +237,32 @@ pub fn integrate_oscillatory_vec<const N: usize, F: FnMut(f64) -> [f64; N]>(
             let e = &extrapolated[j];
             let m = e.len();
             let floor = 50.0 * f64::EPSILON * total_abs[j];
-            let err = (e[m - 1] - e[m - 2]).abs() + (e[m - 2] - e[m - 3]).abs() + floor;
+            // a second extrapolation from every other partial sum (whole periods): it differs
+            // from the first when the integrand beats with a slower frequency (products of
+            // Bessel functions), where the half-period sums are not a clean alternation
+            let sj = &sums[j];
+            let every_other: Vec<f64> = sj[sj.len().saturating_sub(2 * window)..]
+                .iter()
+                .rev()
+                .step_by(2)
+                .rev()
+                .copied()
+                .collect();
+            let second = if params.products {
+                wynn_epsilon(&every_other)
+            } else {
+                e[m - 1]
+            };
+            let err = (e[m - 1] - e[m - 2]).abs()
+                + (e[m - 2] - e[m - 3]).abs()
+                + (e[m - 1] - second).abs()
+                + floor;
             finite &= e[m - 1].is_finite() && err.is_finite();
             scale = scale.max(params.rel_tol * e[m - 1].abs()).max(2.0 * floor);
             out[j] = Estimate {
                 value: e[m - 1],
                 error: err,
-                evaluations: k * sub * rule.len(),
+                evaluations,
             };
         }
         let done = out.iter().all(|e| e.error <= scale);
@@ -237,7 +271,7 @@ pub fn integrate_oscillatory_vec<const N: usize, F: FnMut(f64) -> [f64; N]>(
                 out[j] = Estimate {
                     value: total[j],
                     error: f64::INFINITY,
-                    evaluations: k * sub * rule.len(),
+                    evaluations,
                 };
             }
             return out;
