@@ -93,15 +93,31 @@ fn main() -> anyhow::Result<()> {
         );
     }
     println!("\nExtremes of the range (A = 1): route, R_o/A, error, time");
-    println!("{:>7} {:>7} {:>11} {:>20} {:>9} {:>9}", "D/A", "B/A", "route", "R_o/A", "error", "time/ms");
-    for &(da, ba) in &[(1e-3, 1.001), (1e-3, 1e3), (1e3, 1.001), (1e3, 1e3), (1.0, 1e3)] {
+    println!(
+        "{:>7} {:>7} {:>11} {:>20} {:>9} {:>9}",
+        "D/A", "B/A", "route", "R_o/A", "error", "time/ms"
+    );
+    for &(da, ba) in &[
+        (1e-3, 1.001),
+        (1e-3, 1e3),
+        (1e3, 1.001),
+        (1e3, 1e3),
+        (1.0, 1e3),
+    ] {
         let slab = Slab::new(da, Material::unit(0.3)?, FaceLoad::uniform(1.0, ba, 1.0)?)?;
         let t = Instant::now();
         let s = slab.separation_radius(&SeparationParams::default())?;
         let ms = 1e3 * t.elapsed().as_secs_f64();
-        let route = if s.nodes == 0 { "real-space" } else { "xi-rule" };
+        let route = if s.nodes == 0 {
+            "real-space"
+        } else {
+            "xi-rule"
+        };
         ok &= s.r_o.is_finite() && s.error < 1e-9 * s.r_o;
-        println!("{da:>7.0e} {ba:>7} {route:>11} {:>20.12} {:>9.1e} {ms:>9.2}", s.r_o, s.error);
+        println!(
+            "{da:>7.0e} {ba:>7} {route:>11} {:>20.12} {:>9.1e} {ms:>9.2}",
+            s.r_o, s.error
+        );
     }
     if !ok {
         anyhow::bail!("an achieved error exceeded its estimate");

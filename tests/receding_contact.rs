@@ -198,3 +198,34 @@ fn bad_parameters_are_typed_errors() {
     assert!(Layer::new(-1.0, Material::unit(0.3).unwrap(), disk(1.0, 1.0)).is_err());
     assert!(l.contact_over(0.0, &RecedingParams::default()).is_err());
 }
+
+#[test]
+fn a_lifting_centre_is_reported_not_hidden() {
+    // a wide ring on a thin plate: the plate bends down under the ring and lifts at the centre,
+    // so the contact zone is no disk r ≤ R_o; the solver must say so (tensile pressure inside)
+    let ring = FaceLoad::uniform(3.0, 4.0, 1.0).unwrap();
+    match layer(0.25, ring, 0.3).receding_contact(&RecedingParams::default()) {
+        Err(RecedingError::NotUnilateral { what, value, .. }) => {
+            assert_eq!(what, "contact pressure");
+            assert!(value < 0.0);
+        }
+        other => panic!("expected NotUnilateral, got {:?}", other.map(|c| c.r_o)),
+    }
+    // and a pulling load is no contact problem either
+    let pull = disk(1.0, -1.0);
+    assert!(matches!(
+        layer(1.0, pull, 0.3).receding_contact(&RecedingParams::default()),
+        Err(RecedingError::NotUnilateral { .. })
+    ));
+}
+
+#[test]
+fn contact_radius_shortcut_matches_the_layer() {
+    let load = disk(0.7, 2.0);
+    let (r, info) =
+        boltzone::hankel::receding::contact_radius(0.3, &load, &RecedingParams::default()).unwrap();
+    let c = layer(0.3, load, 0.1)
+        .receding_contact(&RecedingParams::default())
+        .unwrap();
+    assert!((r - c.r_o).abs() <= info.error && info.min_pressure >= 0.0 && info.min_gap >= 0.0);
+}

@@ -101,6 +101,10 @@ pub struct RecedingInfo {
     pub xi_nodes: usize,
     /// Nyström systems solved (scan and root finder, both runs).
     pub solves: usize,
+    /// Smallest contact pressure sampled at r = k·R_o/8, k = 0…7 (≥ 0, else an error).
+    pub min_pressure: f64,
+    /// Smallest gap sampled at r = R_o(1 + k/8), k = 1…8 (≥ 0, else an error).
+    pub min_gap: f64,
     /// Wall-clock time in seconds.
     pub seconds: f64,
 }
@@ -120,6 +124,18 @@ pub enum RecedingError {
         from: f64,
         /// End of the scan.
         to: f64,
+    },
+    /// The solution violates the unilateral conditions: a tensile contact pressure inside
+    /// R_o (the contact zone is not a disk, e.g. under a wide annulus on a thin plate) or a
+    /// penetration beyond it.
+    #[error("{what} = {value} at r = {r}: the contact zone is not the disk r <= R_o")]
+    NotUnilateral {
+        /// "contact pressure" or "gap".
+        what: &'static str,
+        /// Where.
+        r: f64,
+        /// The offending value.
+        value: f64,
     },
     /// The Nyström system was singular at this contact radius.
     #[error("singular Nystrom system at contact radius c = {c}")]
@@ -223,7 +239,7 @@ impl Layer {
         self.check(params)?;
         positive("contact radius c", c)?;
         let n = nodes(params, c / self.d)?;
-        self.solve(c, n, params.quad_tol)
+        self.solve(&self.rule(c, params.quad_tol), c, n)
     }
 
     fn check(&self, params: &RecedingParams) -> Result<(), InputError> {
@@ -248,11 +264,16 @@ impl Layer {
         Ok(())
     }
 
-    fn solve(&self, c: f64, n: usize, tol: f64) -> Result<ContactSolution, RecedingError> {
-        // ω covers cos ξ(t ± s) (≤ 2c), p̄'s J₁(ξB)·cos ξt (≤ B + c) and the gap's J₀(ξr), r ≤ 2c
-        let omega = 3.0 * c + self.transform.outer();
-        let rule = XiRule::new(self.d, &self.transform, omega, tol);
-        let system = Nystrom::solve(rule, c, n, self.transform.eval(0.0))
+    /// A ξ-rule for contact radii up to `cap`: ω covers cos ξ(t ± s) (≤ 2c), p̄'s J₁(ξB)·cos ξt
+    /// (≤ B + c) and the gap's J₀(ξr) for r ≤ 2c.
+    fn rule(&self, cap: f64, tol: f64) -> XiRule {
+        let omega = 3.0 * cap + self.transform.outer();
+        XiRule::new(self.d, &self.transform, omega, tol)
+    }
+
+    /// The system for contact radius `c` with `n` points on `rule` (built for radii ≥ c).
+    fn solve(&self, rule: &XiRule, c: f64, n: usize) -> Result<ContactSolution, RecedingError> {
+        let system = Nystrom::solve(rule.clone(), c, n, self.transform.eval(0.0))
             .ok_or(RecedingError::Singular { c })?;
         Ok(ContactSolution {
             system,
@@ -272,10 +293,21 @@ impl Layer {
         // R_o ≈ B + 0.4…1.1 D (examples/06_receding_contact.rs): size the rule for B + 2D
         let n = nodes(params, self.transform.outer() / self.d + 2.0)?;
         let coarse_n = (3 * n).div_ceil(4).max(4);
-        let mut solves = 0;
-        let (r_o, solution) = self.root(n, params, None, &mut solves)?;
-        let (coarse, _) = self.root(coarse_n, params, Some(r_o), &mut solves)?;
+        // one ξ-rule (it does not depend on n) for radii up to B + 2D, widened if the search
+        // goes beyond: the load transform is evaluated once per node, not once per solve
+        let mut search = Search {
+            cap: self.transform.outer() + 2.0 * self.d,
+            rule: self.rule(self.transform.outer() + 2.0 * self.d, params.quad_tol),
+            solves: 0,
+        };
+        let r_o = self.root(n, params, None, &mut search)?;
+        let coarse = self.root(coarse_n, params, Some(r_o), &mut search)?;
+        let solution = search.solve(self, r_o, n, params.quad_tol)?;
+        let solves = search.solves;
+        let (min_pressure, min_gap) = verify(&solution, self.transform.eval(0.0))?;
         let info = RecedingInfo {
+            min_pressure,
+            min_gap,
             error: (r_o - coarse).abs() + params.rel_tol * self.d,
             r_o_coarse: coarse,
             nodes: n,
@@ -297,13 +329,12 @@ impl Layer {
         n: usize,
         params: &RecedingParams,
         near: Option<f64>,
-        solves: &mut usize,
-    ) -> Result<(f64, ContactSolution), RecedingError> {
+        search: &mut Search,
+    ) -> Result<f64, RecedingError> {
         let p0 = self.transform.eval(0.0);
-        let mut edge = |c: f64| -> Result<(f64, ContactSolution), RecedingError> {
-            *solves += 1;
-            let s = self.solve(c, n, params.quad_tol)?;
-            Ok((c * s.edge_coefficient() / p0, s))
+        let mut edge = |c: f64| -> Result<f64, RecedingError> {
+            let s = search.solve(self, c, n, params.quad_tol)?;
+            Ok(c * s.edge_coefficient() / p0)
         };
         let b = self.transform.outer();
         let h = params.step * self.d;
@@ -314,7 +345,7 @@ impl Layer {
             let mut w = 0.01 * self.d;
             while bracket.is_none() && w < 0.2 * self.d {
                 let (lo, hi) = ((x - w).max(b), x + w);
-                let (f_lo, f_hi) = (edge(lo)?.0, edge(hi)?.0);
+                let (f_lo, f_hi) = (edge(lo)?, edge(hi)?);
                 if f_lo > 0.0 && f_hi <= 0.0 {
                     bracket = Some((lo, f_lo, hi, f_hi));
                 }
@@ -324,10 +355,10 @@ impl Layer {
         if bracket.is_none() {
             // scan from B outward for the first change from a compressive (> 0) edge to a
             // tensile one
-            let (mut lo, mut f_lo) = (b, edge(b)?.0);
+            let (mut lo, mut f_lo) = (b, edge(b)?);
             while lo < end {
                 let hi = (lo + h).min(end);
-                let (f_hi, _) = edge(hi)?;
+                let f_hi = edge(hi)?;
                 if f_lo > 0.0 && f_hi <= 0.0 {
                     bracket = Some((lo, f_lo, hi, f_hi));
                     break;
@@ -346,7 +377,7 @@ impl Layer {
             }
             let x = (a * fc - c * fa) / (fc - fa);
             let x = x.clamp(a + 0.5 * tol, c - 0.5 * tol);
-            let (fx, _) = edge(x)?;
+            let fx = edge(x)?;
             if fx > 0.0 {
                 (a, fa) = (x, fx);
                 if side == 1 {
@@ -364,10 +395,44 @@ impl Layer {
                 (a, c) = (x, x);
             }
         }
-        let r = 0.5 * (a + c);
-        let (_, sol) = edge(r)?;
-        Ok((r, sol))
+        Ok(0.5 * (a + c))
     }
+}
+
+/// The ξ-rule shared by the solves of one R_o search, and their count.
+struct Search {
+    cap: f64,
+    rule: XiRule,
+    solves: usize,
+}
+
+impl Search {
+    fn solve(
+        &mut self,
+        layer: &Layer,
+        c: f64,
+        n: usize,
+        tol: f64,
+    ) -> Result<ContactSolution, RecedingError> {
+        if c > self.cap {
+            self.cap = c.max(self.cap + 2.0 * layer.d);
+            self.rule = layer.rule(self.cap, tol);
+        }
+        self.solves += 1;
+        layer.solve(&self.rule, c, n)
+    }
+}
+
+/// R_o and its record for a layer `d` thick under `load` on a frictionless rigid base (ν does
+/// not enter R_o): [`Layer::receding_contact`] without the pressure and gap curves.
+pub fn contact_radius(
+    d: f64,
+    load: &FaceLoad,
+    params: &RecedingParams,
+) -> Result<(f64, RecedingInfo), RecedingError> {
+    let layer = Layer::new(d, Material::unit(0.25)?, load.clone())?;
+    let c = layer.receding_contact(params)?;
+    Ok((c.r_o, c.info))
 }
 
 /// The Nyström size for a contact radius of `c_over_d` thicknesses: at least `min_nodes` and
@@ -384,4 +449,45 @@ pub fn nodes(params: &RecedingParams, c_over_d: f64) -> Result<usize, InputError
         });
     }
     Ok(n as usize)
+}
+
+/// Samples the contact pressure inside R_o and the gap beyond; a negative value beyond rounding
+/// (1e-9 of the mean contact pressure or of the largest gap sampled) is an error.
+fn verify(s: &ContactSolution, p0: f64) -> Result<(f64, f64), RecedingError> {
+    let r_o = s.radius();
+    let mean = 2.0 * p0 / (r_o * r_o);
+    let mut min_q = (f64::INFINITY, 0.0);
+    for k in 0..8 {
+        let r = r_o * k as f64 / 8.0;
+        let q = s.pressure(r);
+        if q < min_q.0 {
+            min_q = (q, r);
+        }
+    }
+    if min_q.0 < -1e-9 * mean.abs() {
+        return Err(RecedingError::NotUnilateral {
+            what: "contact pressure",
+            r: min_q.1,
+            value: min_q.0,
+        });
+    }
+    let gaps: Vec<(f64, f64)> = (1..=8)
+        .map(|k| {
+            let r = r_o * (1.0 + k as f64 / 8.0);
+            (s.gap(r), r)
+        })
+        .collect();
+    let largest = gaps.iter().fold(0.0f64, |m, g| m.max(g.0.abs()));
+    let min_g = gaps
+        .iter()
+        .copied()
+        .fold((f64::INFINITY, 0.0), |m, g| if g.0 < m.0 { g } else { m });
+    if min_g.0 < -1e-9 * largest {
+        return Err(RecedingError::NotUnilateral {
+            what: "gap",
+            r: min_g.1,
+            value: min_g.0,
+        });
+    }
+    Ok((min_q.0, min_g.0))
 }

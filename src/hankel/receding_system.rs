@@ -8,7 +8,7 @@
 //!
 //! with k₁ = S − 1 and M_p of [`super::layer`]. Every ξ-integrand is analytic on [0, ∞) and
 //! decays like (1 + ξD)e^(−ξD): the ξ-integrals are truncated at ξ = X/D (X from the tolerance)
-//! and integrated by 20-point Gauss–Legendre panels no wider than one period of the fastest
+//! and integrated by 20-point Gauss–Legendre panels no wider than 1.5 periods of the fastest
 //! cosine and than 1/D ([`XiRule`]); the s-integral by an n-point Gauss–Legendre rule on
 //! [0, c], which converges geometrically because K and f are analytic in a strip of half-width
 //! ≈ D about the real axis.
@@ -41,7 +41,9 @@ impl XiRule {
         for _ in 0..20 {
             x_max = (scale * (2.0 + x_max) / tol).ln().max(1.0);
         }
-        let width = (2.0 * PI / omega).min(1.0 / d);
+        // 1.5 periods per 20-point panel: Gauss–Legendre's error on e^(iωξ) there is
+        // ≈ (e·ωh/80)^40 ≈ 1e-20 (ωh = 3π)
+        let width = (3.0 * PI / omega).min(1.0 / d);
         let panels = ((x_max / d) / width).ceil() as usize;
         let h = x_max / d / panels as f64;
         let rule = gauss_legendre(20);
@@ -90,6 +92,9 @@ pub(crate) struct Nystrom {
     g: Vec<f64>,
     /// h_m = a_m q̄(ξ_m).
     h: Vec<f64>,
+    /// The θ-rule of H(r) with φ folded in, (c sin θ_k, w_k φ(c sin θ_k) c cos θ_k), and H(c);
+    /// built on first use by [`Self::gap_scaled`] (it does not depend on r).
+    abel_rule: std::sync::OnceLock<(Vec<(f64, f64)>, f64)>,
 }
 
 impl Nystrom {
@@ -136,6 +141,7 @@ impl Nystrom {
             c0: sol[n],
             g,
             h,
+            abel_rule: std::sync::OnceLock::new(),
         })
     }
 
@@ -185,14 +191,34 @@ impl Nystrom {
         self.phi(c) / len - integral
     }
 
-    /// H(r) = ∫₀^c φ(t)/√(r² − t²) dt for r ≥ c, with t = c sin θ (smooth integrand at r = c).
+    /// H(r) = ∫₀^c φ(t)/√(r² − t²) dt for r ≥ c, with t = c sin θ (smooth integrand at r = c):
+    /// 20-point Gauss–Legendre on 8 panels of [0, π/2], the φ values shared by every r.
     fn abel(&self, r: f64) -> f64 {
-        let c = self.c;
-        integrate(0.0, FRAC_PI_2, FRAC_PI_2 / 8.0, |th| {
-            let (sn, cs) = th.sin_cos();
-            let den = ((r - c * sn) * (r + c * sn)).sqrt();
-            self.phi(c * sn) * c * cs / den
-        })
+        let (rule, _) = self.abel_rule.get_or_init(|| {
+            let c = self.c;
+            let gl = gauss_legendre(20);
+            let h = FRAC_PI_2 / 8.0;
+            let rule: Vec<(f64, f64)> = (0..8)
+                .flat_map(|k| {
+                    let mid = (k as f64 + 0.5) * h;
+                    gl.iter()
+                        .map(move |&(x, w)| (mid + 0.5 * h * x, 0.5 * h * w))
+                        .collect::<Vec<_>>()
+                })
+                .map(|(th, w)| {
+                    let (sn, cs) = th.sin_cos();
+                    (c * sn, w * self.phi(c * sn) * c * cs)
+                })
+                .collect();
+            let at_c = rule
+                .iter()
+                .map(|&(t, wf)| wf / ((c - t) * (c + t)).sqrt())
+                .sum();
+            (rule, at_c)
+        });
+        rule.iter()
+            .map(|&(t, wf)| wf / ((r - t) * (r + t)).sqrt())
+            .sum()
     }
 
     /// Gap g(r) = w(r, 0) − w(c, 0) divided by (1 − ν)/G, for c ≤ r ≤ 2c (the ξ-rule resolves
@@ -203,7 +229,9 @@ impl Nystrom {
         let bessel: f64 = (0..xi.len())
             .map(|k| (self.h[k] - self.g[k]) * (libm::j0(xi[k] * r) - libm::j0(xi[k] * c)))
             .sum();
-        self.abel(r) - self.abel(c) + FRAC_PI_2 * bessel
+        let h_r = self.abel(r);
+        let h_c = self.abel_rule.get().map_or(0.0, |a| a.1);
+        h_r - h_c + FRAC_PI_2 * bessel
     }
 }
 
