@@ -43,7 +43,9 @@ mod receding_system;
 pub mod separation;
 pub mod transform;
 
-pub use field::{Displacement, Slab, Stress};
+pub use field::{
+    displacement_for_transform, ring_load, stress_for_transform, Displacement, Slab, Stress,
+};
 pub use midplane::{Midplane, MidplaneCurve, MidplaneRule};
 pub use quadrature::{Estimate, QuadParams};
 pub use separation::{SeparationInfo, SeparationParams};
