@@ -20,7 +20,6 @@
 //! contact radius of a layer on a half-space against the load radius; their values for a rigid
 //! base were not found in the sources searched, so none are printed here.
 
-use boltzone::hankel::quadrature::gauss_legendre;
 use boltzone::hankel::receding::{Layer, RecedingContact, RecedingParams};
 use boltzone::{FaceLoad, Material, Peak};
 use std::f64::consts::PI;
@@ -34,20 +33,6 @@ fn solve(d: f64, load: FaceLoad, params: &RecedingParams) -> RecedingContact {
         .expect("valid layer")
         .receding_contact(params)
         .expect("a contact radius")
-}
-
-/// 2π∫₀^R_o q r dr with r = R_o(1 − u²) (smooth integrand), 40-point Gauss–Legendre.
-fn contact_force(c: &RecedingContact) -> f64 {
-    let r_o = c.r_o;
-    2.0 * PI
-        * gauss_legendre(40)
-            .iter()
-            .map(|&(x, w)| {
-                let u = 0.5 * (1.0 + x);
-                let r = r_o * (1.0 - u * u);
-                0.5 * w * c.solution.pressure(r) * r * 2.0 * r_o * u
-            })
-            .sum::<f64>()
 }
 
 pub fn main() {
@@ -90,7 +75,7 @@ pub fn main() {
             c.info.error
         );
         assert!(c.r_o > last, "R_o/D must grow with B/D");
-        let eq = contact_force(&c) / f - 1.0;
+        let eq = c.solution.total_force() / f - 1.0;
         assert!(eq.abs() < 1e-9, "B/D = {bd}: equilibrium {eq:e}");
         last = c.r_o;
     }
@@ -149,7 +134,7 @@ pub fn main() {
         let load = load.expect("valid load");
         let f = load.total_force();
         let c = solve(d, load, &params);
-        let eq = contact_force(&c) / f - 1.0;
+        let eq = c.solution.total_force() / f - 1.0;
         println!(
             "{name:>24}: R_o/D = {:.11} ± {:.1e}  equilibrium {:+.1e}  q(0)/p_mean = {:.6}  {:.1} ms",
             c.r_o / d,

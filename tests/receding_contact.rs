@@ -4,11 +4,9 @@
 //! convergence in the basis size with an honest error estimate, and the bilateral limit (the
 //! slab midplane stress of `hankel::midplane`, a second route through the slab kernels).
 
-use boltzone::hankel::quadrature::gauss_legendre;
 use boltzone::hankel::receding::{Layer, RecedingError, RecedingParams};
 use boltzone::hankel::{MidplaneRule, Slab};
 use boltzone::{FaceLoad, InputError, Material};
-use std::f64::consts::PI;
 
 fn layer(d: f64, load: FaceLoad, nu: f64) -> Layer {
     Layer::new(d, Material::new(2.0e5, nu).unwrap(), load).unwrap()
@@ -29,9 +27,9 @@ fn slope(x: &[f64], y: &[f64]) -> f64 {
 
 #[test]
 fn contact_force_balances_the_load() {
-    // disk, annulus with a tiny inner radius, triangular: 2π∫q r dr over r ≤ R_o = F. With
-    // r = R_o(1 − u²) the integrand is smooth (q ~ √(R_o − r)); 40-point Gauss–Legendre in u.
-    // 1e-9: the solution's own accuracy is ~1e-11 (its error estimate), the quadrature's finer.
+    // disk, annulus with a tiny inner radius, triangular: 2π∫q r dr over r ≤ R_o = F
+    // (`total_force`: r = R_o(1 − u²), smooth integrand, 40-point Gauss–Legendre in u; observed
+    // 1e-15). 1e-9: the solution's own accuracy is ~1e-11 (its error estimate).
     let loads = [
         disk(0.8, 3.0),
         FaceLoad::uniform(0.01, 1.5, 2.0).unwrap(),
@@ -42,17 +40,7 @@ fn contact_force_balances_the_load() {
         let c = layer(0.5, load, 0.3)
             .receding_contact(&RecedingParams::default())
             .unwrap();
-        let rule = gauss_legendre(40);
-        let r_o = c.r_o;
-        let sum: f64 = rule
-            .iter()
-            .map(|&(x, w)| {
-                let u = 0.5 * (1.0 + x);
-                let r = r_o * (1.0 - u * u);
-                0.5 * w * c.solution.pressure(r) * r * 2.0 * r_o * u
-            })
-            .sum();
-        let force = 2.0 * PI * sum;
+        let force = c.solution.total_force();
         assert!((force / f - 1.0).abs() < 1e-9, "{force} vs {f}");
     }
 }
@@ -228,4 +216,19 @@ fn contact_radius_shortcut_matches_the_layer() {
         .receding_contact(&RecedingParams::default())
         .unwrap();
     assert!((r - c.r_o).abs() <= info.error && info.min_pressure >= 0.0 && info.min_gap >= 0.0);
+}
+
+#[test]
+fn contact_zone_narrower_than_the_load() {
+    // a triangular load falling to zero at B = 10D: the plate separates before B (R_o/D ≈ 9.94
+    // in example 06), so the search must look inward from B; the pressure still balances F
+    let load = FaceLoad::triangular(0.0, 1.0, 1.0, boltzone::Peak::AtA).unwrap();
+    let f = load.total_force();
+    let c = layer(0.1, load, 0.3)
+        .receding_contact(&RecedingParams::default())
+        .unwrap();
+    assert!(c.r_o < 1.0 && c.r_o > 0.9, "R_o = {}", c.r_o);
+    assert!(c.info.min_pressure >= 0.0 && c.info.min_gap >= 0.0 && c.info.error < 1e-9);
+    let force = c.solution.total_force();
+    assert!((force / f - 1.0).abs() < 1e-9, "{force} vs {f}");
 }
