@@ -39,6 +39,7 @@ pub mod midplane;
 pub mod quadrature;
 pub mod realspace;
 pub mod receding;
+mod receding_search;
 mod receding_system;
 pub mod separation;
 pub mod transform;

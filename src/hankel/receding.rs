@@ -57,6 +57,7 @@
 //! assert!(contact.solution.gap(1.2 * contact.r_o) > 0.0);
 //! ```
 
+use super::receding_search::{root, verify, Search};
 use super::receding_system::{Nystrom, XiRule};
 use super::transform::LoadTransform;
 use crate::error::{positive, InputError};
@@ -163,10 +164,10 @@ pub enum RecedingError {
 /// An elastic layer of thickness D on a frictionless rigid base, pressed on its top face.
 #[derive(Debug, Clone)]
 pub struct Layer {
-    d: f64,
+    pub(super) d: f64,
     material: Material,
     load: FaceLoad,
-    transform: LoadTransform,
+    pub(super) transform: LoadTransform,
 }
 
 /// The layer in contact with the base over r ≤ c (bilateral there, free beyond).
@@ -298,13 +299,18 @@ impl Layer {
 
     /// A ξ-rule for contact radii up to `cap`: ω covers cos ξ(t ± s) (≤ 2c), p̄'s J₁(ξB)·cos ξt
     /// (≤ B + c) and the gap's J₀(ξr) for r ≤ 2c.
-    fn rule(&self, cap: f64, tol: f64) -> XiRule {
+    pub(super) fn rule(&self, cap: f64, tol: f64) -> XiRule {
         let omega = 3.0 * cap + self.transform.outer();
         XiRule::new(self.d, &self.transform, omega, tol)
     }
 
     /// The system for contact radius `c` with `n` points on `rule` (built for radii ≥ c).
-    fn solve(&self, rule: &XiRule, c: f64, n: usize) -> Result<ContactSolution, RecedingError> {
+    pub(super) fn solve(
+        &self,
+        rule: &XiRule,
+        c: f64,
+        n: usize,
+    ) -> Result<ContactSolution, RecedingError> {
         let system = Nystrom::solve(rule.clone(), c, n, self.transform.eval(0.0))
             .ok_or(RecedingError::Singular { c })?;
         Ok(ContactSolution {
@@ -332,8 +338,8 @@ impl Layer {
             rule: self.rule(self.transform.outer() + 2.0 * self.d, params.quad_tol),
             solves: 0,
         };
-        let r_o = self.root(n, params, None, &mut search)?;
-        let coarse = self.root(coarse_n, params, Some(r_o), &mut search)?;
+        let r_o = root(self, n, params, None, &mut search)?;
+        let coarse = root(self, coarse_n, params, Some(r_o), &mut search)?;
         let solution = search.solve(self, r_o, n, params.quad_tol)?;
         let solves = search.solves;
         let (min_pressure, min_gap) = verify(&solution, self.transform.eval(0.0))?;
@@ -352,122 +358,6 @@ impl Layer {
             info,
             solution,
         })
-    }
-
-    /// Root of the scaled edge coefficient c·φ(c; c)/p̄(0) with n points; `near`: a guess to
-    /// bracket first (the fine run's root, for the coarse run).
-    fn root(
-        &self,
-        n: usize,
-        params: &RecedingParams,
-        near: Option<f64>,
-        search: &mut Search,
-    ) -> Result<f64, RecedingError> {
-        let p0 = self.transform.eval(0.0);
-        let mut edge = |c: f64| -> Result<f64, RecedingError> {
-            let s = search.solve(self, c, n, params.quad_tol)?;
-            Ok(c * s.edge_coefficient() / p0)
-        };
-        let b = self.transform.outer();
-        let h = params.step * self.d;
-        let end = b + params.reach * self.d;
-        let mut bracket = None;
-        if let Some(x) = near {
-            // a few widening brackets around the guess before the full scan
-            let mut w = 0.01 * self.d;
-            while bracket.is_none() && w < 0.2 * self.d {
-                let (lo, hi) = ((x - w).max(b), x + w);
-                let (f_lo, f_hi) = (edge(lo)?, edge(hi)?);
-                if f_lo > 0.0 && f_hi <= 0.0 {
-                    bracket = Some((lo, f_lo, hi, f_hi));
-                }
-                w *= 4.0;
-            }
-        }
-        if bracket.is_none() {
-            // scan for the first change from a compressive (> 0) edge to a tensile one: outward
-            // from B, or inward if the edge is already tensile at B (a contact zone narrower
-            // than the load); later changes outward are the far, tiny oscillations of the
-            // solution, not separations
-            let f_b = edge(b)?;
-            if f_b > 0.0 {
-                let (mut lo, mut f_lo) = (b, f_b);
-                while lo < end {
-                    let hi = (lo + h).min(end);
-                    let f_hi = edge(hi)?;
-                    if f_hi <= 0.0 {
-                        bracket = Some((lo, f_lo, hi, f_hi));
-                        break;
-                    }
-                    (lo, f_lo) = (hi, f_hi);
-                }
-            } else {
-                let (mut hi, mut f_hi) = (b, f_b);
-                while hi > h {
-                    let lo = hi - h;
-                    let f_lo = edge(lo)?;
-                    if f_lo > 0.0 {
-                        bracket = Some((lo, f_lo, hi, f_hi));
-                        break;
-                    }
-                    (hi, f_hi) = (lo, f_lo);
-                }
-            }
-        }
-        let (mut a, mut fa, mut c, mut fc) =
-            bracket.ok_or(RecedingError::NotFound { from: b, to: end })?;
-        // Illinois regula falsi: superlinear, keeps the bracket
-        let tol = params.rel_tol * self.d;
-        let mut side = 0;
-        for _ in 0..params.max_iterations {
-            if c - a <= 2.0 * tol {
-                break;
-            }
-            let x = (a * fc - c * fa) / (fc - fa);
-            let x = x.clamp(a + 0.5 * tol, c - 0.5 * tol);
-            let fx = edge(x)?;
-            if fx > 0.0 {
-                (a, fa) = (x, fx);
-                if side == 1 {
-                    fc *= 0.5;
-                }
-                side = 1;
-            } else {
-                (c, fc) = (x, fx);
-                if side == -1 {
-                    fa *= 0.5;
-                }
-                side = -1;
-            }
-            if fx == 0.0 {
-                (a, c) = (x, x);
-            }
-        }
-        Ok(0.5 * (a + c))
-    }
-}
-
-/// The ξ-rule shared by the solves of one R_o search, and their count.
-struct Search {
-    cap: f64,
-    rule: XiRule,
-    solves: usize,
-}
-
-impl Search {
-    fn solve(
-        &mut self,
-        layer: &Layer,
-        c: f64,
-        n: usize,
-        tol: f64,
-    ) -> Result<ContactSolution, RecedingError> {
-        if c > self.cap {
-            self.cap = c.max(self.cap + 2.0 * layer.d);
-            self.rule = layer.rule(self.cap, tol);
-        }
-        self.solves += 1;
-        layer.solve(&self.rule, c, n)
     }
 }
 
@@ -497,45 +387,4 @@ pub fn nodes(params: &RecedingParams, c_over_d: f64) -> Result<usize, InputError
         });
     }
     Ok(n as usize)
-}
-
-/// Samples the contact pressure inside R_o and the gap beyond; a negative value beyond rounding
-/// (1e-9 of the mean contact pressure or of the largest gap sampled) is an error.
-fn verify(s: &ContactSolution, p0: f64) -> Result<(f64, f64), RecedingError> {
-    let r_o = s.radius();
-    let mean = 2.0 * p0 / (r_o * r_o);
-    let mut min_q = (f64::INFINITY, 0.0);
-    for k in 0..8 {
-        let r = r_o * k as f64 / 8.0;
-        let q = s.pressure(r);
-        if q < min_q.0 {
-            min_q = (q, r);
-        }
-    }
-    if min_q.0 < -1e-9 * mean.abs() {
-        return Err(RecedingError::NotUnilateral {
-            what: "contact pressure",
-            r: min_q.1,
-            value: min_q.0,
-        });
-    }
-    let gaps: Vec<(f64, f64)> = (1..=8)
-        .map(|k| {
-            let r = r_o * (1.0 + k as f64 / 8.0);
-            (s.gap(r), r)
-        })
-        .collect();
-    let largest = gaps.iter().fold(0.0f64, |m, g| m.max(g.0.abs()));
-    let min_g = gaps
-        .iter()
-        .copied()
-        .fold((f64::INFINITY, 0.0), |m, g| if g.0 < m.0 { g } else { m });
-    if min_g.0 < -1e-9 * largest {
-        return Err(RecedingError::NotUnilateral {
-            what: "gap",
-            r: min_g.1,
-            value: min_g.0,
-        });
-    }
-    Ok((min_q.0, min_g.0))
 }
