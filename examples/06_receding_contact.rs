@@ -14,7 +14,8 @@
 //!
 //! Self-checks (panics): every error estimate below 1e-8·D; geometric convergence (each step of
 //! 4 nodes gains at least a factor 10 until rounding); R_o/D grows with B/D; equilibrium of the
-//! contact pressure. `BOLTZONE_QUICK=1` runs a reduced set (the test suite does).
+//! contact pressure ("equil.", relative); the displacement integral flat on the contact zone
+//! ("flat": max |w(r,0) − w(R_o,0)| for r ≤ R_o per gap at 1.5 R_o). `BOLTZONE_QUICK=1` runs a reduced set (the test suite does).
 //!
 //! Literature: Keer, Dundurs & Tsai (1972, *J. Appl. Mech.* 39, 1115–1120) tabulate the
 //! contact radius of a layer on a half-space against the load radius; their values for a rigid
@@ -43,8 +44,18 @@ pub fn main() {
         "(1) disk load on r <= B, layer D thick on a frictionless rigid base (nu-independent)"
     );
     println!(
-        "{:>7} {:>14} {:>10} {:>10} {:>5} {:>7} {:>9} {:>9} {:>10}",
-        "B/D", "R_o/D", "R_o/B", "(R_o-B)/D", "n", "xi", "error", "solves", "time [ms]"
+        "{:>7} {:>14} {:>10} {:>10} {:>5} {:>7} {:>9} {:>9} {:>10} {:>9} {:>9}",
+        "B/D",
+        "R_o/D",
+        "R_o/B",
+        "(R_o-B)/D",
+        "n",
+        "xi",
+        "error",
+        "solves",
+        "time [ms]",
+        "equil.",
+        "flat"
     );
     let ratios: &[f64] = if quick() {
         &[0.25, 1.0, 4.0]
@@ -57,8 +68,14 @@ pub fn main() {
         let load = FaceLoad::uniform(0.0, b, 1.0).expect("disk load");
         let f = load.total_force();
         let c = solve(d, load, &params);
+        let eq = c.solution.total_force() / f - 1.0;
+        // w(r,0) − w(R_o,0) on the contact zone from the displacement integral, per gap(1.5 R_o)
+        let flat = (0..=20)
+            .map(|k| c.solution.lift(c.r_o * k as f64 / 20.0).abs())
+            .fold(0.0f64, f64::max)
+            / c.solution.gap(1.5 * c.r_o);
         println!(
-            "{:>7} {:>14.11} {:>10.6} {:>10.6} {:>5} {:>7} {:>9.1e} {:>9} {:>10.2}",
+            "{:>7} {:>14.11} {:>10.6} {:>10.6} {:>5} {:>7} {:>9.1e} {:>9} {:>10.2} {:>+9.1e} {:>9.1e}",
             bd,
             c.r_o / d,
             c.r_o / b,
@@ -67,7 +84,9 @@ pub fn main() {
             c.info.xi_nodes,
             c.info.error,
             c.info.solves,
-            1e3 * c.info.seconds
+            1e3 * c.info.seconds,
+            eq,
+            flat
         );
         assert!(
             c.info.error < 1e-8 * d,
@@ -75,8 +94,11 @@ pub fn main() {
             c.info.error
         );
         assert!(c.r_o > last, "R_o/D must grow with B/D");
-        let eq = c.solution.total_force() / f - 1.0;
         assert!(eq.abs() < 1e-9, "B/D = {bd}: equilibrium {eq:e}");
+        assert!(
+            flat < 1e-11,
+            "B/D = {bd}: not flat on the contact zone, {flat:e}"
+        );
         last = c.r_o;
     }
 

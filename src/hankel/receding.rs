@@ -207,13 +207,20 @@ impl ContactSolution {
     }
 
     /// Gap g(r) = w(r, 0) − w(c, 0) between the layer's bottom and the base for
-    /// c ≤ r ≤ 2c (zero inside the contact zone), in length units when E is in pressure units.
+    /// c < r ≤ 2c, zero inside the contact zone; in length units when E is in pressure units.
     pub fn gap(&self, r: f64) -> f64 {
-        let r = r.abs();
-        if r <= self.radius() {
+        if r.abs() <= self.radius() {
             return 0.0;
         }
-        self.compliance * self.system.gap_scaled(r.min(2.0 * self.radius()))
+        self.lift(r)
+    }
+
+    /// The lift w(r, 0) − w(c, 0) for 0 ≤ r ≤ 2c (clamped there) computed from the displacement
+    /// integral with the solved pressure, not from the contact condition: the gap beyond c, and
+    /// inside c a residual that must vanish (a check of the solution).
+    pub fn lift(&self, r: f64) -> f64 {
+        let r = r.abs().min(2.0 * self.radius());
+        self.compliance * self.system.lift_scaled(r)
     }
 
     /// The contact force 2π∫₀^c q r dr, by 40-point Gauss–Legendre in u with r = c(1 − u²)

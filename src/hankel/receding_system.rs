@@ -221,15 +221,23 @@ impl Nystrom {
             .sum()
     }
 
-    /// Gap g(r) = w(r, 0) − w(c, 0) divided by (1 − ν)/G, for c ≤ r ≤ 2c (the ξ-rule resolves
-    /// J₀(ξr) up to there).
-    pub(crate) fn gap_scaled(&self, r: f64) -> f64 {
+    /// Lift w(r, 0) − w(c, 0) divided by (1 − ν)/G, for 0 ≤ r ≤ 2c (the ξ-rule resolves
+    /// J₀(ξr) up to there), from the displacement integral itself: the half-space part
+    /// ∫q̄ J₀(ξr) dξ is ∫₀^r φ(t)/√(r² − t²) dt = ∫₀^(π/2) φ(r sin θ) dθ inside c and H(r)
+    /// beyond. Inside the contact zone it must vanish: a check of the Abel inversion and of the
+    /// discretisation that does not go through the Fredholm equation.
+    pub(crate) fn lift_scaled(&self, r: f64) -> f64 {
         let xi = &self.rule.xi;
         let c = self.c;
         let bessel: f64 = (0..xi.len())
             .map(|k| (self.h[k] - self.g[k]) * (libm::j0(xi[k] * r) - libm::j0(xi[k] * c)))
             .sum();
-        let h_r = self.abel(r);
+        let h_r = if r >= c {
+            self.abel(r)
+        } else {
+            integrate(0.0, FRAC_PI_2, FRAC_PI_2 / 8.0, |th| self.phi(r * th.sin()))
+        };
+        self.abel(c); // builds the θ-rule and H(c) on first use
         let h_c = self.abel_rule.get().map_or(0.0, |a| a.1);
         h_r - h_c + FRAC_PI_2 * bessel
     }
