@@ -33,7 +33,7 @@ impl XiRule {
     /// Nodes on [0, X/D] resolving cosines of angular frequency up to `omega`, with the tail
     /// beyond X/D below `tol` relative to the integrals' scale.
     pub(crate) fn new(d: f64, transform: &LoadTransform, omega: f64, tol: f64) -> Self {
-        // tail: |k₁|, M_p ≤ 2.5(1 + x)e^(−x) (slab bound of super::kernel); the cosine factors
+        // tail: |k₁|, M_p ≤ 2.5(1 + x)e^(−x) for x ≥ 30 (both → 2(1 + x)e^(−x)); the cosine factors
         // are ≤ 4 and the loads' transforms ≤ 2p̄(0), so ∫_X^∞ ≤ 20(2 + X)e^(−X)·p̄(0)/D,
         // against the integrals' scale p̄(0)/(ωD ∨ 1)/D.
         let scale = 20.0 * (omega * d).max(1.0);
