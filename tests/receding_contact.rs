@@ -184,6 +184,15 @@ fn bad_parameters_are_typed_errors() {
         Err(RecedingError::NotFound { .. })
     ));
     assert!(Layer::new(-1.0, Material::unit(0.3).unwrap(), disk(1.0, 1.0)).is_err());
+    // a plate far too thin for dense Nyström systems is refused, naming the size
+    let thin = layer(1e-3, disk(1.0, 1.0), 0.3).receding_contact(&RecedingParams::default());
+    assert!(matches!(
+        thin,
+        Err(RecedingError::Input(InputError::Parameter {
+            field: "Nystrom points n",
+            ..
+        }))
+    ));
     assert!(l.contact_over(0.0, &RecedingParams::default()).is_err());
 }
 
