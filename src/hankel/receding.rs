@@ -20,7 +20,7 @@
 //! so that ∫₀^∞ q̄ J₀(ξr) dξ = ∫₀^r φ(t)/√(r² − t²) dt (from ∫₀^∞ cos ξt J₀(ξr) dξ =
 //! H(r − t)/√(r² − t²)). The contact condition w = const on r ≤ c, inverted by Abel's formula
 //! (which maps J₀(ξr) to (2/π) cos ξt and a constant to a constant), becomes a Fredholm equation
-//! of the second kind ([`super::receding_system`]). The bending kernel is made integrable by
+//! of the second kind (module `receding_system`). The bending kernel is made integrable by
 //! equilibrium: with ∫₀^c φ dt = q̄(0) = p̄(0), the product M_p(q̄ − p̄) is used with J₀(ξr) − 1
 //! (displacements relative to the axis; the constant joins the unknown rigid translation C₀).
 //! φ(c) is the coefficient of the inverse-square-root edge singularity: a smooth receding
@@ -270,7 +270,7 @@ impl Layer {
     }
 
     /// The layer in bilateral contact over r ≤ `c` (no contact beyond), solved with
-    /// [`Self::nodes`] points: the building block of [`Self::receding_contact`].
+    /// [`nodes`]`(params, c/D)` points: the building block of [`Self::receding_contact`].
     pub fn contact_over(
         &self,
         c: f64,
