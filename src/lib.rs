@@ -8,8 +8,11 @@
 //!   symmetrically on both faces, with its own oscillatory quadrature and error estimates; the
 //!   single-plate separation radius R_o of Fernlund's substitution;
 //! - [`fem`]: an axisymmetric finite-element solver (the report's Appendices A and B);
+//! - [`contact`]: the report's two-plate model, unilateral contact found automatically, R_o
+//!   resolved below one element (`boltzone two`);
 //! - [`material`], [`load`], [`joint`]: the input types, validated with typed errors ([`error`]);
 //! - [`reference`]: the report's Tables 1 and 2 and the Chapter V table, as data.
+//! - [`rules`]: the 45° cone of Rötscher, the VDI 2230 deformation cone and other cone rules.
 //!
 //! Sign convention throughout: compression negative (σ_z = −p under a face pressure p > 0); z is
 //! measured from the midplane (single plate) or the interface (joint); lengths and stresses in
@@ -23,6 +26,7 @@
 //! ```
 #![warn(missing_docs)]
 
+pub mod contact;
 pub mod error;
 pub mod fem;
 pub mod hankel;
@@ -30,6 +34,7 @@ pub mod joint;
 pub mod load;
 pub mod material;
 pub mod reference;
+pub mod rules;
 
 pub use error::InputError;
 pub use joint::{Joint, OuterRadius, Plate, SinglePlate};

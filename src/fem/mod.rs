@@ -1,1 +1,110 @@
-//! Axisymmetric finite elements (report Appendices A and B).
+//! Axisymmetric finite elements (report Appendices A and B, rebuilt).
+//!
+//! Linear elasticity of solids of revolution under axisymmetric load, in the (r, z) half-plane:
+//! find u = (u_r, u_z) with ∫ ε(v)ᵀ D ε(u) 2πr dr dz = ∫ v·t 2πr ds for all admissible v
+//! (eqs. A.6–A.15), ε = (∂u/∂r, ∂w/∂z, u/r, ∂u/∂z + ∂w/∂r). Forces are whole-ring forces
+//! (2π × the report's per-radian forces); stresses are tension positive (a face pressure p > 0
+//! gives σ_z = −p); units are the caller's.
+//!
+//! The pipeline, one module per verb:
+//! - [`spacing`], [`mesh`]: graded structured meshes of one plate or a stack of plates;
+//! - [`element`]: the report's 4-CST quadrilateral, Q4 (and B-bar), Q9;
+//! - [`dofs`]: supports (rollers, fixed, prescribed, the report's skew rollers) and the
+//!   (node, component) → equation map;
+//! - [`loads`]: consistent nodal forces of face pressures and point loads;
+//! - [`assemble`](mod@assemble), [`ordering`], [`solve`]: sparse symmetric K with a fixed pattern, a
+//!   nested-dissection ordering of structured meshes, faer's sparse Cholesky (one symbolic
+//!   analysis, numeric refactorization, many right-hand sides);
+//! - [`recover`]: stresses at Gauss points, element centres and nodes; reactions; the traction
+//!   along a supported line;
+//! - [`single`]: the single-plate model (Fernlund's substitution) and its separation radius R_o;
+//! - [`lame`]: the Lamé cylinder, the closed-form check of the elements.
+//!
+//! For a contact model: build a stack with [`Mesh::structured`] (each plate has its own
+//! interface nodes, [`Mesh::top`]/[`Mesh::bottom`] sorted by r), constrain with [`Supports`],
+//! number with [`DofMap`], assemble once ([`Pattern`], [`assemble()`](fn@assemble)), factor once
+//! ([`Factorization`]), form flexibilities with [`Factorization::solve_many`], and read interface
+//! forces with [`reactions`] and tractions with [`line_traction`].
+//!
+//! ```
+//! use boltzone::fem::single::{single_plate_r_o, SingleParams};
+//! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+//! let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
+//! let plate = SinglePlate::new(0.1, OuterRadius::Finite(1.54), 0.1,
+//!                              Material::unit(0.3).unwrap(), load).unwrap();
+//! let params = SingleParams { levels: 3, ..SingleParams::default() };
+//! let (r_o, info) = single_plate_r_o(&plate, &params).unwrap();
+//! assert!(r_o > 0.31 && r_o < 0.6, "{r_o}");
+//! assert!(info.error_estimate < 0.01);
+//! ```
+
+pub mod assemble;
+pub mod dofs;
+pub mod element;
+pub mod lame;
+pub mod loads;
+pub mod mesh;
+pub mod ordering;
+pub mod recover;
+pub mod single;
+pub mod solve;
+pub mod spacing;
+
+pub use assemble::{assemble, Pattern, Stiffness};
+pub use dofs::{Component, DofMap, NodeSupport, Supports};
+pub use element::{ElementKind, ElementPoint, Stress};
+pub use loads::Loads;
+pub use mesh::{Mesh, PlateSpec};
+pub use ordering::nested_dissection;
+pub use recover::{
+    centre_stresses, gauss_stresses, internal_forces, line_traction, nodal_stresses, reactions,
+};
+pub use solve::{Factorization, SolveParams};
+pub use spacing::Spacing;
+
+use crate::error::InputError;
+
+/// Failures of the finite-element solver.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum FemError {
+    /// Bad input (names the field and value).
+    #[error(transparent)]
+    Input(#[from] InputError),
+    /// An element refers to a material that was not supplied.
+    #[error(
+        "element {element} uses material {material} but only {available} materials were given"
+    )]
+    MissingMaterial {
+        /// Element index.
+        element: usize,
+        /// Material index it refers to.
+        material: usize,
+        /// Number of materials given.
+        available: usize,
+    },
+    /// An element couples two equations the pattern does not hold (a pattern built for another
+    /// mesh or dof map).
+    #[error(
+        "entry ({row}, {col}) is not in the sparsity pattern (pattern of another mesh or dof map?)"
+    )]
+    PatternMismatch {
+        /// Row equation.
+        row: usize,
+        /// Column equation.
+        col: usize,
+    },
+    /// The pattern was built for a different number of equations.
+    #[error("the sparsity pattern has {pattern} equations but the dof map {equations}")]
+    PatternSize {
+        /// Equations of the pattern.
+        pattern: usize,
+        /// Equations of the dof map.
+        equations: usize,
+    },
+    /// K is not positive definite: usually a rigid-body motion left free by the supports.
+    #[error("stiffness matrix not positive definite (missing supports?): {0}")]
+    NotPositiveDefinite(String),
+    /// Any other failure of the sparse solver.
+    #[error("sparse solver: {0}")]
+    Solver(String),
+}
