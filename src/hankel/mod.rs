@@ -35,9 +35,13 @@
 pub mod field;
 pub mod hole;
 pub mod kernel;
+pub mod layer;
 pub mod midplane;
 pub mod quadrature;
 pub mod realspace;
+pub mod receding;
+mod receding_search;
+mod receding_system;
 pub mod separation;
 pub mod transform;
 
