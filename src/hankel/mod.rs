@@ -10,6 +10,11 @@
 //! - [`midplane`]: the midplane σ_z(r, 0) fast, on a node set shared by all radii, and the curve;
 //! - [`realspace`]: the midplane σ_z of thin slabs by a localised real-space point kernel;
 //! - [`separation`]: the separation radius R_o (first upward zero of σ_z(r, 0) beyond B).
+//! - [`root`]: the bracketed root finder (Brent) shared by every R_o search;
+//! - [`hole`]: the single plate with a hole (and a finite rim): Lamé and Papkovich–Fadle modes
+//!   fitted on r = A (and r = C), R_o with the hole residual as its error measure;
+//! - [`layer`], [`receding`]: the receding contact of a layer on a frictionless rigid base — the
+//!   two-plate model solved semi-analytically, an independent check of the FE contact solver.
 //!
 //! ## Routes, cost and range
 //!
@@ -42,6 +47,7 @@ pub mod realspace;
 pub mod receding;
 mod receding_search;
 mod receding_system;
+pub mod root;
 pub mod separation;
 pub mod transform;
 

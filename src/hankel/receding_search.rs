@@ -1,11 +1,12 @@
 //! The search for R_o of [`super::receding`]: a scan for the first sign change of the edge
 //! coefficient φ(c; c) from compressive to tensile (outward from the load's outer radius B, or
-//! inward when the contact zone is narrower than the load), the Illinois variant of regula falsi
-//! on the bracket, one ξ-rule shared by every solve, and the check of the unilateral conditions
+//! inward when the contact zone is narrower than the load), Brent's method
+//! ([`super::root::brent`]) on the bracket, one ξ-rule shared by every solve, and the check of the unilateral conditions
 //! on the solution found.
 
 use super::receding::{ContactSolution, Layer, RecedingError, RecedingParams};
 use super::receding_system::XiRule;
+use super::root::brent;
 
 /// Root of the scaled edge coefficient c·φ(c; c)/p̄(0) with n points; `near`: a guess to
 /// bracket first (the fine run's root, for the coarse run).
@@ -67,36 +68,9 @@ pub(super) fn root(
             }
         }
     }
-    let (mut a, mut fa, mut c, mut fc) =
-        bracket.ok_or(RecedingError::NotFound { from: b, to: end })?;
-    // Illinois regula falsi: superlinear, keeps the bracket
+    let (a, fa, c, fc) = bracket.ok_or(RecedingError::NotFound { from: b, to: end })?;
     let tol = params.rel_tol * layer.d;
-    let mut side = 0;
-    for _ in 0..params.max_iterations {
-        if c - a <= 2.0 * tol {
-            break;
-        }
-        let x = (a * fc - c * fa) / (fc - fa);
-        let x = x.clamp(a + 0.5 * tol, c - 0.5 * tol);
-        let fx = edge(x)?;
-        if fx > 0.0 {
-            (a, fa) = (x, fx);
-            if side == 1 {
-                fc *= 0.5;
-            }
-            side = 1;
-        } else {
-            (c, fc) = (x, fx);
-            if side == -1 {
-                fa *= 0.5;
-            }
-            side = -1;
-        }
-        if fx == 0.0 {
-            (a, c) = (x, x);
-        }
-    }
-    Ok(0.5 * (a + c))
+    Ok(brent(&mut edge, a, fa, c, fc, tol, params.max_iterations)?.x)
 }
 
 /// The ξ-rule shared by the solves of one R_o search, and their count.

@@ -22,6 +22,7 @@
 
 use super::field::Slab;
 use super::midplane::Midplane;
+use super::root::brent;
 use crate::error::{positive, InputError};
 use std::time::Instant;
 
@@ -138,15 +139,9 @@ impl Slab {
             k += 1;
         }
         let (a, fa, c, fc) = bracket.ok_or(SeparationError::NotFound { searched_to: r_end })?;
-        let root = brent(
-            &mut f,
-            a,
-            fa,
-            c,
-            fc,
-            params.rel_tol * b * 0.25,
-            params.max_iterations,
-        );
+        let mut g = |x: f64| Ok::<f64, std::convert::Infallible>(f(x));
+        let tol = params.rel_tol * b * 0.25;
+        let Ok(root) = brent(&mut g, a, fa, c, fc, tol, params.max_iterations);
         // slope by a central difference on the σ_z scale of the bracket
         let dr = (1e-4 * d).max(1e-6 * root.x);
         let slope = (f(root.x + dr) - f(root.x - dr)) / (2.0 * dr);
@@ -159,77 +154,5 @@ impl Slab {
             nodes: rule.nodes(),
             seconds: start.elapsed().as_secs_f64(),
         })
-    }
-}
-
-struct Root {
-    x: f64,
-    half_width: f64,
-}
-
-/// Brent's method on a bracket [a, b] with f(a)·f(b) ≤ 0, to half-width `tol`.
-fn brent<F: FnMut(f64) -> f64>(
-    f: &mut F,
-    mut a: f64,
-    mut fa: f64,
-    mut b: f64,
-    mut fb: f64,
-    tol: f64,
-    max_iter: usize,
-) -> Root {
-    let (mut c, mut fc) = (a, fa);
-    let (mut d, mut e) = (b - a, b - a);
-    for _ in 0..max_iter {
-        if (fb > 0.0) == (fc > 0.0) {
-            (c, fc) = (a, fa);
-            d = b - a;
-            e = d;
-        }
-        if fc.abs() < fb.abs() {
-            (a, fa, b, fb, c, fc) = (b, fb, c, fc, b, fb);
-        }
-        let tol1 = 2.0 * f64::EPSILON * b.abs() + 0.5 * tol;
-        let m = 0.5 * (c - b);
-        if m.abs() <= tol1 || fb == 0.0 {
-            return Root {
-                x: b,
-                half_width: m.abs().max(tol1),
-            };
-        }
-        if e.abs() >= tol1 && fa.abs() > fb.abs() {
-            // inverse quadratic interpolation (secant when a = c)
-            let s = fb / fa;
-            let (mut p, mut q);
-            if a == c {
-                p = 2.0 * m * s;
-                q = 1.0 - s;
-            } else {
-                let qa = fa / fc;
-                let r = fb / fc;
-                p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
-                q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
-            }
-            if p > 0.0 {
-                q = -q;
-            }
-            p = p.abs();
-            if 2.0 * p < (3.0 * m * q - (tol1 * q).abs()).min((e * q).abs()) {
-                e = d;
-                d = p / q;
-            } else {
-                d = m;
-                e = m;
-            }
-        } else {
-            d = m;
-            e = m;
-        }
-        (a, fa) = (b, fb);
-        b += if d.abs() > tol1 { d } else { tol1.copysign(m) };
-        fb = f(b);
-    }
-    Root {
-        x: b,
-        half_width: (c - b).abs(),
     }
 }

@@ -7,6 +7,7 @@
 use super::{HoleInfo, HoleParams, HolePlate};
 use crate::error::positive;
 use crate::hankel::midplane::MidplaneRule;
+use crate::hankel::root::{brent, Root};
 use crate::hankel::separation::{SeparationError, SeparationInfo, SeparationParams};
 use crate::joint::SinglePlate;
 use std::time::Instant;
@@ -59,7 +60,9 @@ pub fn single_plate_separation(
         };
         let bracket = first_upward_crossing(&mut scan, r_end)?;
         let tol = rel_tol * b * 0.25;
-        let (r_o, half_width) = illinois(&mut f, bracket.0, bracket.1, tol, sep.max_iterations);
+        let ((a, fa), (c, fc)) = bracket;
+        let mut g = |x: f64| Ok::<f64, std::convert::Infallible>(f(x));
+        let Ok(Root { x: r_o, half_width }) = brent(&mut g, a, fa, c, fc, tol, sep.max_iterations);
         let dr = (1e-4 * d).max(1e-6 * r_o);
         let slope = (f(r_o + dr) - f(r_o - dr)) / (2.0 * dr);
         let residual_max = holed.info().residual_max;
@@ -120,52 +123,4 @@ fn first_upward_crossing(
         lo = hi;
     }
     Err(SeparationError::NotFound { searched_to: r_end })
-}
-
-/// Illinois regula falsi on a bracket with f(a) ≤ 0 < f(b): returns the root and the final
-/// bracket half-width (≤ `tol` unless `max_iter` ran out).
-fn illinois(
-    f: &mut impl FnMut(f64) -> f64,
-    (mut a, mut fa): (f64, f64),
-    (mut b, mut fb): (f64, f64),
-    tol: f64,
-    max_iter: usize,
-) -> (f64, f64) {
-    let mut side = 0i8;
-    for _ in 0..max_iter {
-        if (b - a).abs() <= 2.0 * tol {
-            break;
-        }
-        let c = (a * fb - b * fa) / (fb - fa);
-        // keep the new point strictly inside; fall back to bisection on a degenerate step
-        let c = if c > a.min(b) && c < a.max(b) {
-            c
-        } else {
-            0.5 * (a + b)
-        };
-        let fc = f(c);
-        if fc == 0.0 {
-            return (c, 0.0);
-        }
-        if (fc > 0.0) == (fb > 0.0) {
-            (b, fb) = (c, fc);
-            if side == 1 {
-                fa *= 0.5;
-            }
-            side = 1;
-        } else {
-            (a, fa) = (c, fc);
-            if side == -1 {
-                fb *= 0.5;
-            }
-            side = -1;
-        }
-    }
-    let root = (a * fb - b * fa) / (fb - fa);
-    let root = if root.is_finite() && root >= a.min(b) && root <= a.max(b) {
-        root
-    } else {
-        0.5 * (a + b)
-    };
-    (root, 0.5 * (b - a).abs())
 }
