@@ -1,5 +1,6 @@
 //! Command-line front end: one module per command; errors are reported by `main`.
 
+mod args;
 mod single;
 mod slab;
 mod two;

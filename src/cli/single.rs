@@ -5,6 +5,7 @@
 //! [`boltzone::hankel::hole::single_plate_separation`] (infinite slab + hole correction, and a
 //! rim correction when `--c` is given).
 
+use super::args::{Element, Geometry};
 use boltzone::fem::single::{single_plate_r_o, Loading, SingleParams};
 use boltzone::fem::ElementKind;
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -16,17 +17,6 @@ pub enum Method {
     Fem,
     /// Hankel transforms with a hole correction.
     Hankel,
-}
-
-/// Element family for `--method fem`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum Element {
-    /// 9-node biquadratic quadrilateral.
-    Q9,
-    /// Bilinear quadrilateral, B-bar.
-    Q4bbar,
-    /// The report's quadrilateral of four constant-strain triangles.
-    Cst4,
 }
 
 /// How the bolt head loads the faces (fem).
@@ -41,21 +31,11 @@ pub enum Nut {
 /// Arguments of `boltzone single`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Hole radius A (0: no hole).
-    #[arg(long)]
-    a: f64,
-    /// Outer radius B of the loaded annulus.
-    #[arg(long)]
-    b: f64,
-    /// Thickness D of one plate (the substitute is 2D thick).
-    #[arg(long)]
-    d: f64,
+    #[command(flatten)]
+    geom: Geometry,
     /// Plate outer radius C (default: infinite, truncated at B + 30 D).
     #[arg(long)]
     c: Option<f64>,
-    /// Poisson's ratio.
-    #[arg(long, default_value_t = 0.3)]
-    nu: f64,
     /// Solver.
     #[arg(long, value_enum, default_value_t = Method::Fem)]
     method: Method,
@@ -76,8 +56,14 @@ pub struct Args {
 /// Runs the command.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let outer = args.c.map_or(OuterRadius::Infinite, OuterRadius::Finite);
-    let load = FaceLoad::uniform(args.a, args.b, 1.0)?;
-    let plate = SinglePlate::new(args.a, outer, args.d, Material::unit(args.nu)?, load)?;
+    let load = FaceLoad::uniform(args.geom.a, args.geom.b, 1.0)?;
+    let plate = SinglePlate::new(
+        args.geom.a,
+        outer,
+        args.geom.d,
+        Material::unit(args.geom.nu)?,
+        load,
+    )?;
     if args.method == Method::Hankel {
         if args.nut != Nut::Pressure {
             anyhow::bail!(
@@ -86,11 +72,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         }
         return run_hankel(&args, &plate);
     }
-    let kind = match args.element {
-        Element::Q9 => ElementKind::Q9,
-        Element::Q4bbar => ElementKind::Q4Bbar,
-        Element::Cst4 => ElementKind::Cst4,
-    };
+    let kind = ElementKind::from(args.element);
     let loading = match args.nut {
         Nut::Pressure => Loading::Pressure,
         Nut::Rigid => Loading::UniformDisplacement,
@@ -102,8 +84,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         ..SingleParams::default()
     };
     let (r_o, info) = single_plate_r_o(&plate, &params)?;
-    let r_o_over_a = if args.a > 0.0 {
-        Some(r_o / args.a)
+    let r_o_over_a = if args.geom.a > 0.0 {
+        Some(r_o / args.geom.a)
     } else {
         None
     };
@@ -125,11 +107,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     } else {
         println!(
             "single plate 2D thick, FE ({kind:?}), A = {}, B = {}, D = {}, C = {}, nu = {}",
-            args.a,
-            args.b,
-            args.d,
+            args.geom.a,
+            args.geom.b,
+            args.geom.d,
             outer.value(),
-            args.nu
+            args.geom.nu
         );
         println!("R_o      = {r_o:.6} ± {:.2e}", info.error_estimate);
         if let Some(q) = r_o_over_a {
@@ -152,7 +134,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<()> {
     use boltzone::hankel::hole::{single_plate_separation, HoleParams};
     let (sep, hole) = single_plate_separation(plate, &Default::default(), &HoleParams::default())?;
-    let r_o_over_a = (args.a > 0.0).then(|| sep.r_o / args.a);
+    let r_o_over_a = (args.geom.a > 0.0).then(|| sep.r_o / args.geom.a);
     if args.json {
         let v = serde_json::json!({
             "method": "hankel",
@@ -173,11 +155,11 @@ fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<()> {
     } else {
         println!(
             "single plate 2D thick with a hole, Hankel route, A = {}, B = {}, D = {}, C = {}, nu = {}",
-            args.a,
-            args.b,
-            args.d,
+            args.geom.a,
+            args.geom.b,
+            args.geom.d,
             plate.outer_radius().value(),
-            args.nu
+            args.geom.nu
         );
         println!("R_o      = {:.8} ± {:.2e}", sep.r_o, sep.error);
         if let Some(q) = r_o_over_a {

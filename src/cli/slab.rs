@@ -2,6 +2,7 @@
 //! hole) under a uniform face pressure on A ≤ r ≤ B, by Hankel transforms
 //! ([`boltzone::hankel::separation`]), and optionally the midplane σ_z/P curve as CSV.
 
+use super::args::Geometry;
 use anyhow::Context;
 use boltzone::hankel::{Midplane, MidplaneCurve, SeparationParams, Slab};
 use boltzone::{FaceLoad, Material};
@@ -11,18 +12,8 @@ use std::path::PathBuf;
 /// Arguments of `boltzone slab`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Inner radius of the load A (the hole radius), in inches.
-    #[arg(long)]
-    a: f64,
-    /// Outer radius of the load B, in inches.
-    #[arg(long)]
-    b: f64,
-    /// Thickness of ONE plate D, in inches (the slab is 2D thick).
-    #[arg(long)]
-    d: f64,
-    /// Poisson's ratio (the midplane σ_z, hence R_o, does not depend on it).
-    #[arg(long, default_value_t = 0.3)]
-    nu: f64,
+    #[command(flatten)]
+    geom: Geometry,
     /// Relative tolerance on R_o.
     #[arg(long, default_value_t = 1e-10)]
     tol: f64,
@@ -36,28 +27,29 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let material = Material::unit(args.nu)?;
-    let load = FaceLoad::uniform(args.a, args.b, 1.0)?;
-    if args.a <= 0.0 {
+    let material = Material::unit(args.geom.nu)?;
+    let load = FaceLoad::uniform(args.geom.a, args.geom.b, 1.0)?;
+    if args.geom.a <= 0.0 {
         anyhow::bail!(
             "hole radius A = {} must be positive (R_o is reported as R_o/A)",
-            args.a
+            args.geom.a
         );
     }
-    let slab = Slab::new(args.d, material, load)?;
+    let slab = Slab::new(args.geom.d, material, load)?;
     let params = SeparationParams {
         rel_tol: args.tol,
         ..Default::default()
     };
     let sep = slab.separation_radius(&params)?;
     if let Some(path) = &args.curve {
-        write_curve(&slab, args.a, path).with_context(|| format!("writing {}", path.display()))?;
+        write_curve(&slab, args.geom.a, path)
+            .with_context(|| format!("writing {}", path.display()))?;
     }
     if args.json {
         let v = serde_json::json!({
-            "a": args.a, "b": args.b, "d": args.d, "nu": args.nu,
+            "a": args.geom.a, "b": args.geom.b, "d": args.geom.d, "nu": args.geom.nu,
             "r_o": sep.r_o,
-            "r_o_over_a": sep.r_o / args.a,
+            "r_o_over_a": sep.r_o / args.geom.a,
             "r_o_error": sep.error,
             "evaluations": sep.evaluations,
             "seconds": sep.seconds,
@@ -67,13 +59,13 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     } else {
         println!(
             "infinite slab 2D thick (D = {} in), no hole, uniform load on {} ≤ r ≤ {} in",
-            args.d, args.a, args.b
+            args.geom.d, args.geom.a, args.geom.b
         );
         println!("R_o   = {:.12} in  ± {:.1e}", sep.r_o, sep.error);
         println!(
             "R_o/A = {:.12}  ± {:.1e}",
-            sep.r_o / args.a,
-            sep.error / args.a
+            sep.r_o / args.geom.a,
+            sep.error / args.geom.a
         );
         println!(
             "({} midplane evaluations, {:.2} ms)",

@@ -2,6 +2,7 @@
 //! [`boltzone::contact::two_plate`]: separation radius R_o with its error, and on request the
 //! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV.
 
+use super::args::{Element, Geometry};
 use anyhow::Context;
 use boltzone::contact::two_plate::{
     solve, EdgeSupport, InterfaceModel, Loading, TwoPlateParams, TwoPlateSolution,
@@ -33,40 +34,18 @@ pub enum Shape {
     PeakB,
 }
 
-/// Element type.
-#[derive(Debug, Clone, Copy, ValueEnum)]
-pub enum Element {
-    /// Biquadratic 9-node quadrilateral.
-    Q9,
-    /// Bilinear quadrilateral.
-    Q4,
-    /// Bilinear quadrilateral with B-bar.
-    Q4bbar,
-    /// The report's four-triangle quadrilateral.
-    Cst4,
-}
-
 /// Arguments of `boltzone two`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Hole radius A (in).
-    #[arg(long)]
-    a: f64,
-    /// Outer radius B of the bearing annulus (in).
-    #[arg(long)]
-    b: f64,
-    /// Thickness D of the upper plate (in); the lower plate too unless --d2 is given.
-    #[arg(long)]
-    d: f64,
+    /// A, B, D (the upper plate's thickness; the lower plate's too unless --d2 is given), ν.
+    #[command(flatten)]
+    geom: Geometry,
     /// Thickness of the lower plate (in).
     #[arg(long)]
     d2: Option<f64>,
     /// Outer radius C of the plates (in); infinite if omitted.
     #[arg(long)]
     c: Option<f64>,
-    /// Poisson's ratio.
-    #[arg(long, default_value_t = 0.3)]
-    nu: f64,
     /// Young's modulus E (psi; 304 steel by default).
     #[arg(long, default_value_t = 28.0e6)]
     e: f64,
@@ -111,31 +90,26 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let upper_mat = Material::new(args.e, args.nu)?;
-    let lower_mat = Material::new(args.e2.unwrap_or(args.e), args.nu2.unwrap_or(args.nu))?;
+    let upper_mat = Material::new(args.e, args.geom.nu)?;
+    let lower_mat = Material::new(args.e2.unwrap_or(args.e), args.nu2.unwrap_or(args.geom.nu))?;
     let p = match args.force {
-        Some(f) => f / (PI * (args.b * args.b - args.a * args.a)),
+        Some(f) => f / (PI * (args.geom.b * args.geom.b - args.geom.a * args.geom.a)),
         None => args.p,
     };
     let load = match args.load {
-        Shape::Uniform => FaceLoad::uniform(args.a, args.b, p)?,
-        Shape::PeakA => FaceLoad::triangular(args.a, args.b, p, Peak::AtA)?,
-        Shape::PeakB => FaceLoad::triangular(args.a, args.b, p, Peak::AtB)?,
+        Shape::Uniform => FaceLoad::uniform(args.geom.a, args.geom.b, p)?,
+        Shape::PeakA => FaceLoad::triangular(args.geom.a, args.geom.b, p, Peak::AtA)?,
+        Shape::PeakB => FaceLoad::triangular(args.geom.a, args.geom.b, p, Peak::AtB)?,
     };
     let joint = Joint::new(
-        args.a,
+        args.geom.a,
         args.c.map_or(OuterRadius::Infinite, OuterRadius::Finite),
-        Plate::new(args.d, upper_mat)?,
-        Plate::new(args.d2.unwrap_or(args.d), lower_mat)?,
+        Plate::new(args.geom.d, upper_mat)?,
+        Plate::new(args.d2.unwrap_or(args.geom.d), lower_mat)?,
         load,
     )?;
     let params = TwoPlateParams {
-        element: match args.element {
-            Element::Q9 => ElementKind::Q9,
-            Element::Q4 => ElementKind::Q4,
-            Element::Q4bbar => ElementKind::Q4Bbar,
-            Element::Cst4 => ElementKind::Cst4,
-        },
+        element: ElementKind::from(args.element),
         interface: match args.interface {
             Interface::Welded => InterfaceModel::Welded,
             Interface::Frictionless => InterfaceModel::Frictionless,
@@ -159,7 +133,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if args.json {
         let out = serde_json::json!({
             "r_o": s.r_o,
-            "r_o_over_a": s.r_o / args.a,
+            "r_o_over_a": s.r_o / args.geom.a,
             "r_o_error": s.r_o_error,
             "converged": s.info.converged,
             "interface": s.info.model,
@@ -176,7 +150,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "R_o = {:.6} ± {:.1e} in   (R_o/A = {:.5}, 2R_o = {:.5} in){}",
             s.r_o,
             s.r_o_error,
-            s.r_o / args.a,
+            s.r_o / args.geom.a,
             2.0 * s.r_o,
             if s.info.converged {
                 ""

@@ -1,0 +1,46 @@
+//! Arguments shared by the solver commands: the joint's geometry in the report's notation and
+//! the element family. Negative numbers are accepted by the parser so that the library's
+//! validation can name the field (`--d -1` → "plate thickness D = -1 must be positive").
+
+use boltzone::fem::ElementKind;
+
+/// Hole radius A, load radius B, plate thickness D and Poisson's ratio ν (lengths in inches).
+#[derive(Debug, Clone, clap::Args)]
+pub struct Geometry {
+    /// Hole radius A, the inner radius of the bearing annulus (in).
+    #[arg(long, allow_negative_numbers = true)]
+    pub a: f64,
+    /// Outer radius B of the bearing annulus (in).
+    #[arg(long, allow_negative_numbers = true)]
+    pub b: f64,
+    /// Thickness D of ONE plate (in); the single-plate substitute is 2D thick.
+    #[arg(long, allow_negative_numbers = true)]
+    pub d: f64,
+    /// Poisson's ratio ν (the no-hole slab's midplane σ_z, hence its R_o, does not depend on it).
+    #[arg(long, default_value_t = 0.3, allow_negative_numbers = true)]
+    pub nu: f64,
+}
+
+/// Finite-element family.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Element {
+    /// 9-node biquadratic quadrilateral (the default: its error estimates are the reliable ones).
+    Q9,
+    /// Bilinear quadrilateral (locks for ν near 0.5).
+    Q4,
+    /// Bilinear quadrilateral with B-bar.
+    Q4bbar,
+    /// The report's quadrilateral of four constant-strain triangles.
+    Cst4,
+}
+
+impl From<Element> for ElementKind {
+    fn from(e: Element) -> Self {
+        match e {
+            Element::Q9 => ElementKind::Q9,
+            Element::Q4 => ElementKind::Q4,
+            Element::Q4bbar => ElementKind::Q4Bbar,
+            Element::Cst4 => ElementKind::Cst4,
+        }
+    }
+}
