@@ -134,34 +134,49 @@ pub fn panel<F: FnMut(f64) -> f64>(rule: &[(f64, f64)], a: f64, b: f64, f: &mut 
 
 /// Wynn's ε algorithm on `s`: the highest even-column entry computable from the sequence.
 /// A vanishing difference means the sequence has converged: its last value is returned.
+/// Works in two buffers on the stack for up to 64 terms (it runs once per panel and component
+/// in [`integrate_oscillatory_vec`], so it must not allocate).
 pub fn wynn_epsilon(s: &[f64]) -> f64 {
+    const STACK: usize = 64;
     let n = s.len();
     if n < 3 {
         return *s.last().unwrap_or(&0.0);
     }
-    // prev = column k−1, cur = column k (entries indexed by starting element).
-    let mut prev = vec![0.0; n + 1];
-    let mut cur = s.to_vec();
-    let mut best = s[n - 1];
+    if n > STACK {
+        let (mut prev, mut cur) = (vec![0.0; n + 1], s.to_vec());
+        cur.push(0.0);
+        return wynn_in_place(s, &mut prev, &mut cur);
+    }
+    let (mut prev, mut cur) = ([0.0; STACK + 1], [0.0; STACK + 1]);
+    cur[..n].copy_from_slice(s);
+    wynn_in_place(s, &mut prev[..=n], &mut cur[..=n])
+}
+
+/// The ε table column by column: `cur` holds column k (its first `len` entries), `prev` column
+/// k − 1; column k + 1 is written over `prev` (entry i needs only prev[i + 1] and cur[i..=i+1],
+/// so increasing i never reads an overwritten entry), then the buffers swap roles.
+fn wynn_in_place(s: &[f64], prev: &mut [f64], cur: &mut [f64]) -> f64 {
+    let (mut prev, mut cur) = (prev, cur);
+    let mut len = s.len();
+    let mut best = s[len - 1];
     let mut k = 0;
-    while cur.len() > 1 {
-        let mut next = Vec::with_capacity(cur.len() - 1);
-        for i in 0..cur.len() - 1 {
+    while len > 1 {
+        for i in 0..len - 1 {
             let d = cur[i + 1] - cur[i];
             if d == 0.0 || !d.is_finite() {
-                return if k % 2 == 0 { cur[cur.len() - 1] } else { best };
+                return if k % 2 == 0 { cur[len - 1] } else { best };
             }
-            next.push(prev[i + 1] + 1.0 / d);
+            prev[i] = prev[i + 1] + 1.0 / d;
         }
+        std::mem::swap(&mut prev, &mut cur);
+        len -= 1;
         k += 1;
         if k % 2 == 0 {
-            if !next[next.len() - 1].is_finite() {
+            if !cur[len - 1].is_finite() {
                 return best;
             }
-            best = next[next.len() - 1];
+            best = cur[len - 1];
         }
-        prev = cur;
-        cur = next;
     }
     best
 }
@@ -249,15 +264,19 @@ pub fn integrate_oscillatory_vec<const N: usize, F: FnMut(f64) -> [f64; N]>(
             // from the first when the integrand beats with a slower frequency (products of
             // Bessel functions), where the half-period sums are not a clean alternation
             let sj = &sums[j];
-            let every_other: Vec<f64> = sj[sj.len().saturating_sub(2 * window)..]
-                .iter()
-                .rev()
-                .step_by(2)
-                .rev()
-                .copied()
-                .collect();
             let second = if params.products {
-                wynn_epsilon(&every_other)
+                // the last `window` whole-period sums, oldest first, in a stack buffer
+                let tail = &sj[sj.len().saturating_sub(2 * window)..];
+                let mut buf = [0.0; 64];
+                let count = tail.len().div_ceil(2).min(buf.len());
+                for (b, v) in buf[..count]
+                    .iter_mut()
+                    .rev()
+                    .zip(tail.iter().rev().step_by(2))
+                {
+                    *b = *v;
+                }
+                wynn_epsilon(&buf[..count])
             } else {
                 e[m - 1]
             };
