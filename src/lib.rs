@@ -24,6 +24,7 @@
 //! ```
 #![warn(missing_docs)]
 
+pub mod contact;
 pub mod error;
 pub mod fem;
 pub mod hankel;

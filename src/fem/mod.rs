@@ -1,1 +1,85 @@
-//! Axisymmetric finite elements (report Appendices A and B).
+//! Axisymmetric finite elements (report Appendices A and B, rebuilt).
+//!
+//! Linear elasticity of solids of revolution under axisymmetric load, in the (r, z) half-plane:
+//! find u = (u_r, u_z) with ∫ ε(v)ᵀ D ε(u) 2πr dr dz = ∫ v·t 2πr ds for all admissible v
+//! (eqs. A.6–A.15), ε = (∂u/∂r, ∂w/∂z, u/r, ∂u/∂z + ∂w/∂r). Forces are whole-ring forces
+//! (2π × the report's per-radian forces); stresses are tension positive (a face pressure p > 0
+//! gives σ_z = −p); units are the caller's.
+//!
+//! The pipeline, one module per verb:
+//! - [`spacing`], [`mesh`]: graded structured meshes of one plate or a stack of plates;
+//! - [`element`]: the report's 4-CST quadrilateral, Q4 (and B-bar), Q9;
+//! - [`dofs`]: supports (rollers, fixed, prescribed, the report's skew rollers) and the
+//!   (node, component) → equation map;
+//! - [`loads`]: consistent nodal forces of face pressures and point loads;
+//! - [`assemble`], [`solve`]: sparse symmetric K with a fixed pattern, faer's sparse Cholesky;
+//! - [`recover`]: stresses at Gauss points, element centres and nodes; reactions; the traction
+//!   along a supported line;
+//! - [`single`]: the single-plate model (Fernlund's substitution) and its separation radius R_o.
+//!
+//! ```
+//! use boltzone::fem::single::{single_plate_r_o, SingleParams};
+//! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+//! let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
+//! let plate = SinglePlate::new(0.1, OuterRadius::Finite(1.54), 0.1,
+//!                              Material::unit(0.3).unwrap(), load).unwrap();
+//! let params = SingleParams { levels: 3, coarse_size: 0.04, ..SingleParams::default() };
+//! let (r_o, info) = single_plate_r_o(&plate, &params).unwrap();
+//! assert!(r_o > 0.31 && r_o < 0.6, "{r_o}");
+//! assert!(info.error_estimate < 0.01);
+//! ```
+
+pub mod assemble;
+pub mod dofs;
+pub mod element;
+pub mod loads;
+pub mod mesh;
+pub mod recover;
+pub mod single;
+pub mod solve;
+pub mod spacing;
+
+pub use assemble::{assemble, Pattern, Stiffness};
+pub use dofs::{Component, DofMap, NodeSupport, Supports};
+pub use element::{ElementKind, ElementPoint, Stress};
+pub use loads::Loads;
+pub use mesh::{Mesh, PlateSpec};
+pub use recover::{gauss_stresses, internal_forces, line_traction, nodal_stresses, reactions};
+pub use solve::{Factorization, SolveParams};
+pub use spacing::Spacing;
+
+use crate::error::InputError;
+
+/// Failures of the finite-element solver.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum FemError {
+    /// Bad input (names the field and value).
+    #[error(transparent)]
+    Input(#[from] InputError),
+    /// An element refers to a material that was not supplied.
+    #[error(
+        "element {element} uses material {material} but only {available} materials were given"
+    )]
+    MissingMaterial {
+        /// Element index.
+        element: usize,
+        /// Material index it refers to.
+        material: usize,
+        /// Number of materials given.
+        available: usize,
+    },
+    /// The assembled values do not match the pattern (pattern built for another mesh or dof map).
+    #[error("assembly produced {found} values but the pattern has {expected}")]
+    PatternMismatch {
+        /// Values in the pattern.
+        expected: usize,
+        /// Values assembled.
+        found: usize,
+    },
+    /// K is not positive definite: usually a rigid-body motion left free by the supports.
+    #[error("stiffness matrix not positive definite (missing supports?): {0}")]
+    NotPositiveDefinite(String),
+    /// Any other failure of the sparse solver.
+    #[error("sparse solver: {0}")]
+    Solver(String),
+}

@@ -1,0 +1,299 @@
+//! One mesh level of the two-plate contact problem: mesh, factor once, Schur complement on the
+//! candidate interface points, LCP, recovery of p(r) and g(r).
+//!
+//! Interface points are split three ways. *Tied* points are closed for good: on a rigid plane
+//! their w is held at 0, between two plates the pair shares its w (and, welded, its u). At least
+//! one tied point removes the rigid axial motion (the "reference"); on finer levels every point
+//! well inside the previous level's contact zone is tied, so that only the few points near a
+//! contact boundary remain unknown. *Window* points are the LCP unknowns. Points beyond the
+//! window are taken open. After the solve the assumptions are checked — tied points must press
+//! (p ≥ 0), points beyond the window must not penetrate (g ≥ 0) — and the caller widens the
+//! window or unties points when they fail.
+//!
+//! With K the reduced stiffness, f the load and Bⱼ the unit pair force of window point j
+//! (+1 on the upper plate's w, −1 on the lower plate's), one multi-right-hand-side solve gives
+//! X = K⁻¹[f | B], the gaps under the load g⁰ = Bᵀ X₀ and the flexibility F = Bᵀ X_B; the contact
+//! forces λ solve the LCP of [`super::lcp`] and the displacements are X₀ + X_B λ.
+//! Contact forces are read back as the upper plate's internal nodal forces on its interface
+//! nodes, pressures as force / tributary area ∫N_i 2πr dr. Forces are totals (2π included), z up.
+//! The mesh, elements, supports, assembly and factorization are those of [`crate::fem`]; ties
+//! between plates go through [`super::tie`].
+
+use super::lcp::{solve_lcp, Lcp, LcpInfo, LcpParams};
+use super::tie::Ties;
+use super::ContactError;
+use crate::fem::{
+    assemble, Component, DofMap, Factorization, FemError, Loads, Mesh, Pattern, SolveParams,
+    Supports,
+};
+use crate::load::FaceLoad;
+use crate::material::Material;
+use faer::Mat;
+use nalgebra::{DMatrix, DVector};
+use std::time::{Duration, Instant};
+
+/// The meshed joint: a fem mesh of one plate (on a rigid plane) or two plates, and which is which.
+#[derive(Debug, Clone)]
+pub struct Model {
+    /// The mesh (plates stacked bottom to top).
+    pub mesh: Mesh,
+    /// Materials, indexed by the plates' material indices.
+    pub materials: Vec<Material>,
+    /// Plate index of the upper plate (its bottom face is the interface).
+    pub upper: usize,
+    /// Plate index of the lower plate, None for a rigid plane.
+    pub lower: Option<usize>,
+}
+
+impl Model {
+    /// Interface node of the upper plate at radial line `i` and its partner below (if any).
+    pub fn pair(&self, i: usize) -> (usize, Option<usize>) {
+        let low = self.lower.map(|l| self.mesh.top(l)[i]);
+        (self.mesh.bottom(self.upper)[i], low)
+    }
+}
+
+/// What the level needs to know besides the mesh.
+#[derive(Debug, Clone)]
+pub struct LevelSetup<'a> {
+    /// Radial lines of tied interface points (non-empty).
+    pub tied: &'a [usize],
+    /// Radial lines of the LCP unknowns.
+    pub window: &'a [usize],
+    /// Whether to tie u as well as w for tied points and solve the welded LCP (two plates).
+    pub welded: bool,
+    /// Whether an axial support is still needed to remove the stack's rigid motion.
+    pub fix_rigid: bool,
+    /// LCP knobs.
+    pub lcp: LcpParams,
+    /// Loaded annulus (A, B) of the upper plate's top face, for the deflection under the nut.
+    pub nut: (f64, f64),
+}
+
+/// The state of the interface after one level.
+#[derive(Debug, Clone)]
+pub struct LevelSolution {
+    /// Interface node radii.
+    pub radius: Vec<f64>,
+    /// Contact force on the upper plate at each interface node (total, axial, > 0 compression;
+    /// 0 at nodes held by an edge support, whose reaction is the support's).
+    pub force: Vec<f64>,
+    /// Interface pressure: force / tributary area.
+    pub pressure: Vec<f64>,
+    /// Gap w_upper − w_lower (rigid plane: w_upper).
+    pub gap: Vec<f64>,
+    /// Whether each interface node is closed (tied or active).
+    pub closed: Vec<bool>,
+    /// Mean axial displacement of the upper plate's top face over the loaded annulus, weighted
+    /// by area (the deflection under the nut; negative = toward the interface).
+    pub nut_deflection: f64,
+    /// The LCP record.
+    pub lcp: LcpInfo,
+    /// Reduced unknowns.
+    pub dofs: usize,
+    /// Assembly + factorization + the load solve.
+    pub time_linear: Duration,
+    /// Flexibility solves + LCP + recovery.
+    pub time_contact: Duration,
+}
+
+/// Ties, numbers, assembles, factors and solves the level (module docs). `supports` adds the
+/// edge supports and prescribed nut displacements; `loads` are the external nodal forces.
+pub fn solve_level(
+    model: &Model,
+    setup: &LevelSetup<'_>,
+    supports: &Supports,
+    loads: &Loads,
+) -> Result<LevelSolution, ContactError> {
+    let t0 = Instant::now();
+    let mesh = &model.mesh;
+    let nr = mesh.radial_nodes().len();
+    let mut sup = supports.clone();
+    let mut pairs = Vec::new();
+    for (k, &i) in setup.tied.iter().enumerate() {
+        match model.pair(i) {
+            (up, None) => sup.roller_z(up),
+            (up, Some(low)) => {
+                if k == 0 && setup.fix_rigid {
+                    sup.roller_z(up);
+                    sup.roller_z(low);
+                } else {
+                    pairs.push((up, low, Component::Z));
+                }
+                if setup.welded {
+                    pairs.push((up, low, Component::R));
+                }
+            }
+        }
+    }
+    let dofs = DofMap::new(&sup);
+    let eq_pairs: Vec<(usize, usize)> = pairs
+        .iter()
+        .filter_map(|&(a, b, c)| Some((dofs.equation(a, c)?, dofs.equation(b, c)?)))
+        .collect();
+    let ties = Ties::new(dofs.n_equations(), &eq_pairs);
+    let stiff = assemble(mesh, &model.materials, &dofs, &Pattern::new(mesh, &dofs)).map_err(fe)?;
+    let k = ties.matrix(&stiff.matrix).map_err(fe)?;
+    let solver = Factorization::new(&k, &SolveParams { parallel: false }).map_err(fe)?;
+    let mut f = dofs.gather(loads.forces());
+    for (fi, pi) in f.iter_mut().zip(&stiff.prescribed_load) {
+        *fi += pi;
+    }
+    let x0 = solver.solve(&ties.restrict(&f));
+    let time_linear = t0.elapsed();
+
+    let t1 = Instant::now();
+    let comps: &[Component] = if setup.welded {
+        &[Component::Z, Component::R]
+    } else {
+        &[Component::Z]
+    };
+    let cols: Vec<Vec<(usize, f64)>> = comps
+        .iter()
+        .flat_map(|&c| setup.window.iter().map(move |&i| (c, i)))
+        .map(|(c, i)| pair_vector(model, &dofs, &ties, i, c))
+        .collect();
+    let mut b = Mat::<f64>::zeros(ties.n(), cols.len());
+    for (k, col) in cols.iter().enumerate() {
+        for &(e, v) in col {
+            b[(e, k)] += v;
+        }
+    }
+    let xb = solver.solve_many(b.as_ref());
+    let dot = |col: &[(usize, f64)], x: &dyn Fn(usize) -> f64| {
+        col.iter().map(|&(e, v)| v * x(e)).sum::<f64>()
+    };
+    let m = cols.len();
+    let g0 = DVector::from_fn(m, |k, _| dot(&cols[k], &|e| x0[e]));
+    let flex = DMatrix::from_fn(m, m, |a, c| dot(&cols[a], &|e| xb[(e, c)]));
+    let lcp = Lcp {
+        flexibility: (&flex + flex.transpose()) * 0.5,
+        gap0: g0,
+        welded: setup.welded,
+    };
+    let sol = solve_lcp(&lcp, &setup.lcp)?;
+    let mut y = x0;
+    for (k, l) in sol.force.iter().enumerate() {
+        if *l != 0.0 {
+            for (i, yi) in y.iter_mut().enumerate() {
+                *yi += xb[(i, k)] * l;
+            }
+        }
+    }
+    let u = dofs.expand(&ties.prolong(&y));
+    let line = mesh.bottom(model.upper);
+    let mut force = line_forces(model, &u, &line)?;
+    // A node held by an edge support transmits that support's reaction, not contact.
+    for (i, f) in force.iter_mut().enumerate() {
+        let (up, low) = model.pair(i);
+        if std::iter::once(up)
+            .chain(low)
+            .any(|n| supports.get(n).fixed[1].is_some())
+        {
+            *f = 0.0;
+        }
+    }
+    let areas = face_weights(
+        mesh,
+        &line,
+        -1.0,
+        &FaceLoad::uniform(mesh.radial_nodes()[0], mesh.radial_nodes()[nr - 1], 1.0)?,
+    )?;
+    let mut closed = vec![false; nr];
+    for &i in setup.tied {
+        closed[i] = true;
+    }
+    for (k, &i) in setup.window.iter().enumerate() {
+        closed[i] = sol.active[k];
+    }
+    let gap: Vec<f64> = (0..nr)
+        .map(|i| {
+            let (up, low) = model.pair(i);
+            u[up][1] - low.map_or(0.0, |l| u[l][1])
+        })
+        .collect();
+    let (a, bb) = setup.nut;
+    let top = mesh.top(model.upper);
+    let w = face_weights(mesh, &top, 1.0, &FaceLoad::uniform(a, bb, 1.0)?)?;
+    let nut_deflection =
+        top.iter().zip(&w).map(|(&n, wi)| u[n][1] * wi).sum::<f64>() / w.iter().sum::<f64>();
+    Ok(LevelSolution {
+        radius: mesh.radial_nodes().to_vec(),
+        pressure: force.iter().zip(&areas).map(|(f, a)| f / a).collect(),
+        force,
+        gap,
+        closed,
+        nut_deflection,
+        lcp: sol.info,
+        dofs: ties.n(),
+        time_linear,
+        time_contact: t1.elapsed(),
+    })
+}
+
+fn fe(e: FemError) -> ContactError {
+    ContactError::Factorization(e.to_string())
+}
+
+/// The unit pair force of component `c` at radial line `i` in tied unknowns: +1 on the upper
+/// node, −1 on the lower one (free equations only).
+fn pair_vector(
+    model: &Model,
+    dofs: &DofMap,
+    ties: &Ties,
+    i: usize,
+    c: Component,
+) -> Vec<(usize, f64)> {
+    let (up, low) = model.pair(i);
+    let mut v = Vec::new();
+    if let Some(e) = dofs.equation(up, c) {
+        v.push((ties.of(e), 1.0));
+    }
+    if let Some(e) = low.and_then(|l| dofs.equation(l, c)) {
+        v.push((ties.of(e), -1.0));
+    }
+    v
+}
+
+/// ∫ q N_i 2πr dr along a face `line` (as positive weights), from the fem consistent loads.
+fn face_weights(
+    mesh: &Mesh,
+    line: &[usize],
+    outward_z: f64,
+    q: &FaceLoad,
+) -> Result<Vec<f64>, ContactError> {
+    let mut l = Loads::new(mesh.n_nodes());
+    l.add_face_pressure(mesh, line, outward_z, q)?;
+    Ok(line
+        .iter()
+        .map(|&n| -outward_z * l.forces()[n][1])
+        .collect())
+}
+
+/// Axial internal forces K u of the upper plate at its interface nodes `line` (only the
+/// elements touching the line are visited): the contact forces on the upper plate.
+fn line_forces(model: &Model, u: &[[f64; 2]], line: &[usize]) -> Result<Vec<f64>, ContactError> {
+    let mesh = &model.mesh;
+    let mut pos = vec![usize::MAX; mesh.n_nodes()];
+    for (k, &n) in line.iter().enumerate() {
+        pos[n] = k;
+    }
+    let mut f = vec![0.0; line.len()];
+    for e in 0..mesh.n_elements() {
+        let nodes = mesh.element_nodes(e);
+        if nodes.iter().all(|&n| pos[n] == usize::MAX) {
+            continue;
+        }
+        let mat = model.materials[mesh.element_material(e)];
+        let k = mesh.kind().stiffness(&mesh.element_coords(e), &mat);
+        let ue: Vec<f64> = nodes.iter().flat_map(|&n| u[n]).collect();
+        let nd = ue.len();
+        for (a, &n) in nodes.iter().enumerate() {
+            if pos[n] != usize::MAX {
+                let row = 2 * a + 1;
+                f[pos[n]] += (0..nd).map(|j| k[row * nd + j] * ue[j]).sum::<f64>();
+            }
+        }
+    }
+    Ok(f)
+}

@@ -1,0 +1,30 @@
+//! Unilateral contact of bolted plates: the report's two-plate model (Chapter II.B).
+//!
+//! Two plates pressed together by a bolt touch only near the bolt, for A ≤ r ≤ R_o. The contact
+//! zone is unknown; it follows from the Signorini conditions on the interface (report eq. 2.7):
+//! gap g ≥ 0, interface pressure p ≥ 0, g·p = 0. Sign convention: p > 0 is compression
+//! (σ_z = −p on the interface), g > 0 an open gap.
+//!
+//! - [`lcp`]: the interface LCP g = g⁰ + Fλ solved by primal–dual active sets (semismooth Newton)
+//!   with a Murty fallback; [`pgs`]: projected Gauss–Seidel as an independent check;
+//! - [`separation`]: R_o finer than one element from the √(R_o − r) pressure and the
+//!   (r − R_o)^{3/2} gap of a smooth separation.
+//!
+//! ```
+//! use boltzone::contact::{solve_lcp, Lcp, LcpParams};
+//! use nalgebra::{DMatrix, DVector};
+//! let lcp = Lcp::frictionless(DMatrix::identity(1, 1), DVector::from_vec(vec![-2.0]));
+//! assert_eq!(solve_lcp(&lcp, &LcpParams::default()).unwrap().force[0], 2.0);
+//! ```
+
+mod error;
+pub mod lcp;
+pub mod level;
+pub mod pgs;
+pub mod separation;
+pub mod tie;
+pub mod two_plate;
+
+pub use error::ContactError;
+pub use lcp::{solve_lcp, solve_lcp_from, Lcp, LcpInfo, LcpParams, LcpSolution};
+pub use pgs::projected_gauss_seidel;

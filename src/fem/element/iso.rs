@@ -1,0 +1,164 @@
+//! Isoparametric machinery shared by Q4 and Q9: map a parent point (ξ, η) ∈ [−1, 1]² to (r, z),
+//! form B, integrate k = ∑ w_g 2π r_g det J_g Bᵀ D B over a tensor Gauss rule.
+//!
+//! B-bar (Hughes 1980, mean dilatation): the volumetric part (1/3)(ε_r + ε_z + ε_θ) of each
+//! normal-strain row is replaced by its element average ∫ θ dV / V, which removes volumetric
+//! locking of the bilinear element.
+
+use super::{add_btdb, apply_d, strain, ElementPoint, Stress};
+use std::f64::consts::PI;
+
+/// A parent element: shape functions and their (ξ, η) derivatives, and a Gauss rule.
+pub(crate) trait Parent {
+    /// Shape functions N and ∂N/∂(ξ, η) at `p`.
+    fn eval(&self, p: [f64; 2]) -> (Vec<f64>, Vec<[f64; 2]>);
+    /// 1D Gauss rule used in each direction.
+    fn rule(&self) -> &'static [(f64, f64)];
+}
+
+/// A mapped point: position, area Jacobian, B columns and the volumetric row.
+pub(crate) struct Mapped {
+    pub r: f64,
+    pub z: f64,
+    pub det: f64,
+    pub n: Vec<f64>,
+    pub b: Vec<[f64; 4]>,
+}
+
+pub(crate) fn map(el: &dyn Parent, x: &[[f64; 2]], p: [f64; 2]) -> Mapped {
+    let (n, dn) = el.eval(p);
+    let (mut r, mut z) = (0.0, 0.0);
+    let mut j = [[0.0; 2]; 2]; // j[a][b] = ∂x_a/∂ξ_b
+    for (k, xk) in x.iter().enumerate() {
+        r += n[k] * xk[0];
+        z += n[k] * xk[1];
+        for a in 0..2 {
+            for b in 0..2 {
+                j[a][b] += xk[a] * dn[k][b];
+            }
+        }
+    }
+    let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+    // ∂ξ/∂x = J⁻¹
+    let inv = [
+        [j[1][1] / det, -j[0][1] / det],
+        [-j[1][0] / det, j[0][0] / det],
+    ];
+    let mut b = Vec::with_capacity(2 * n.len());
+    for (k, d) in dn.iter().enumerate() {
+        let dr = d[0] * inv[0][0] + d[1] * inv[1][0];
+        let dz = d[0] * inv[0][1] + d[1] * inv[1][1];
+        // hoop strain N/r; on the axis its limit ∂N/∂r (valid because u = 0 there)
+        let hoop = if r > 1e-14 * (1.0 + z.abs()) {
+            n[k] / r
+        } else {
+            dr
+        };
+        b.push([dr, 0.0, hoop, dz]);
+        b.push([0.0, dz, 0.0, dr]);
+    }
+    Mapped { r, z, det, n, b }
+}
+
+/// Gauss points of the tensor rule with their parent weights.
+fn gauss(el: &dyn Parent) -> impl Iterator<Item = ([f64; 2], f64)> + '_ {
+    let rule = el.rule();
+    rule.iter()
+        .flat_map(move |&(xi, wi)| rule.iter().map(move |&(eta, wj)| ([xi, eta], wi * wj)))
+}
+
+/// Element average of the volumetric row (ε_r + ε_z + ε_θ per dof).
+fn mean_dilatation(el: &dyn Parent, x: &[[f64; 2]]) -> Vec<f64> {
+    let nd = 2 * x.len();
+    let (mut acc, mut vol) = (vec![0.0; nd], 0.0);
+    for (p, w) in gauss(el) {
+        let m = map(el, x, p);
+        let dv = w * 2.0 * PI * m.r * m.det;
+        vol += dv;
+        for (a, bc) in acc.iter_mut().zip(&m.b) {
+            *a += dv * (bc[0] + bc[1] + bc[2]);
+        }
+    }
+    acc.iter().map(|a| a / vol).collect()
+}
+
+/// Replaces the volumetric part of the B columns by the element mean.
+fn bbar(b: &mut [[f64; 4]], mean: &[f64]) {
+    for (bc, m) in b.iter_mut().zip(mean) {
+        let shift = (m - (bc[0] + bc[1] + bc[2])) / 3.0;
+        for c in bc.iter_mut().take(3) {
+            *c += shift;
+        }
+    }
+}
+
+pub(crate) fn stiffness(el: &dyn Parent, x: &[[f64; 2]], d: &[[f64; 4]; 4], bb: bool) -> Vec<f64> {
+    let nd = 2 * x.len();
+    let mean = if bb {
+        mean_dilatation(el, x)
+    } else {
+        Vec::new()
+    };
+    let mut k = vec![0.0; nd * nd];
+    for (p, w) in gauss(el) {
+        let mut m = map(el, x, p);
+        if bb {
+            bbar(&mut m.b, &mean);
+        }
+        add_btdb(&mut k, &m.b, d, w * 2.0 * PI * m.r * m.det);
+    }
+    k
+}
+
+fn point(m: &Mapped, d: &[[f64; 4]; 4], u: &[f64], weight: f64) -> ElementPoint {
+    let mut disp = [0.0; 2];
+    for (k, nk) in m.n.iter().enumerate() {
+        disp[0] += nk * u[2 * k];
+        disp[1] += nk * u[2 * k + 1];
+    }
+    ElementPoint {
+        r: m.r,
+        z: m.z,
+        weight,
+        displacement: disp,
+        stress: Stress::from_array(apply_d(d, &strain(&m.b, u))),
+    }
+}
+
+pub(crate) fn gauss_points(
+    el: &dyn Parent,
+    x: &[[f64; 2]],
+    d: &[[f64; 4]; 4],
+    u: &[f64],
+    bb: bool,
+) -> Vec<ElementPoint> {
+    let mean = if bb {
+        mean_dilatation(el, x)
+    } else {
+        Vec::new()
+    };
+    gauss(el)
+        .map(|(p, w)| {
+            let mut m = map(el, x, p);
+            if bb {
+                bbar(&mut m.b, &mean);
+            }
+            point(&m, d, u, w * 2.0 * PI * m.r * m.det)
+        })
+        .collect()
+}
+
+pub(crate) fn at_parent(
+    el: &dyn Parent,
+    x: &[[f64; 2]],
+    d: &[[f64; 4]; 4],
+    u: &[f64],
+    p: [f64; 2],
+    bb: bool,
+) -> ElementPoint {
+    let mut m = map(el, x, p);
+    if bb {
+        bbar(&mut m.b, &mean_dilatation(el, x));
+    }
+    point(&m, d, u, 0.0)
+}

@@ -1,0 +1,278 @@
+//! The single-plate model by finite elements (Fernlund's substitution, report Chapter II.A and
+//! Table 1's "single plate" column): a plate 2D thick with a hole of radius A (A = 0: none), outer
+//! radius C, both faces pressed by p(r) over A..B. By symmetry only the upper half 0 ≤ z ≤ D is
+//! meshed, with a roller on the midplane (w = 0, u free, τ_rz = 0), a free hole and a free rim.
+//!
+//! R_o is the smallest radius beyond the load (r ≥ B) where the midplane σ_z turns tensile.
+//! σ_z on the midplane is recovered from the roller reactions ([`super::line_traction`]:
+//! σ_z = −t_z); the crossing is located inside the element edge where the nodal values change
+//! sign, by linear (Q4, Cst4) or quadratic (Q9) interpolation of the nodal values.
+//!
+//! Error estimate: the mesh is refined by halving every element `levels` times (nested meshes);
+//! with R_l on level l, the observed order p = log₂((R_{L−3} − R_{L−2})/(R_{L−2} − R_{L−1})) and
+//! the Richardson value R = R_{L−1} + (R_{L−1} − R_{L−2})/(2^p − 1) are returned; the error
+//! estimate is |R − R_{L−1}| (the finest mesh's own error, an upper bound for the
+//! extrapolated value's when the rate is stable). If the observed p is not in [1, 8], no
+//! extrapolation is made and the estimate is |R_{L−1} − R_{L−2}|.
+//!
+//! An infinite plate is truncated at C = B + 30 D (the midplane stress decays like e^(−r/D)·…;
+//! beyond a few D the rim is invisible to R_o at the 10⁻⁶ level).
+
+use super::assemble::{assemble, Pattern};
+use super::dofs::{DofMap, Supports};
+use super::element::ElementKind;
+use super::loads::Loads;
+use super::mesh::{Mesh, PlateSpec};
+use super::recover::{line_traction, reactions};
+use super::solve::{Factorization, SolveParams};
+use super::spacing::Spacing;
+use super::FemError;
+use crate::error::InputError;
+use crate::joint::SinglePlate;
+use std::time::Instant;
+
+/// Parameters of the single-plate R_o study.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SingleParams {
+    /// Element kind (default Q9).
+    pub kind: ElementKind,
+    /// Coarsest element size at the hole and load edges, as a fraction of D (default 0.5).
+    pub coarse_size: f64,
+    /// Growth ratio of element sizes away from A and B (default 1.15).
+    pub growth: f64,
+    /// Number of nested refinement levels, ≥ 3 for the Richardson estimate (default 4).
+    pub levels: usize,
+    /// Sparse solver parameters.
+    pub solve: SolveParams,
+}
+
+impl Default for SingleParams {
+    fn default() -> Self {
+        Self {
+            kind: ElementKind::Q9,
+            coarse_size: 0.5,
+            growth: 1.15,
+            levels: 4,
+            solve: SolveParams::default(),
+        }
+    }
+}
+
+/// What the R_o study did.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SingleInfo {
+    /// R_o on each level, coarse to fine.
+    pub levels: Vec<f64>,
+    /// Observed convergence order (None if it could not be measured).
+    pub observed_order: Option<f64>,
+    /// Estimated error of the returned R_o (see the module docs).
+    pub error_estimate: f64,
+    /// Nodes of the finest mesh.
+    pub nodes: usize,
+    /// Equations of the finest mesh.
+    pub dofs: usize,
+    /// Wall-clock seconds for all levels.
+    pub seconds: f64,
+}
+
+/// The midplane of one solved single-plate mesh.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Midplane {
+    /// Radii of the midplane nodes.
+    pub r: Vec<f64>,
+    /// σ_z at those nodes (compression negative).
+    pub sigma_z: Vec<f64>,
+    /// Edge order (1 or 2) for interpolation.
+    pub order: usize,
+    /// Number of nodes of the mesh.
+    pub nodes: usize,
+    /// Number of equations.
+    pub dofs: usize,
+}
+
+/// The radial spacing used on the coarsest level for `plate` (knots at the load's knots).
+pub fn coarse_radial_spacing(
+    plate: &SinglePlate,
+    params: &SingleParams,
+) -> Result<Spacing, InputError> {
+    let d = plate.half_thickness();
+    let (a, b) = (plate.hole_radius(), plate.load().outer());
+    let c = plate.outer_radius().value().min(b + 30.0 * d);
+    let h = params.coarse_size * d;
+    Spacing::graded(
+        a,
+        c,
+        plate.load().knots(),
+        &[a, b],
+        h,
+        params.growth,
+        4.0 * d,
+    )
+}
+
+/// Solves the half plate on the mesh `radial` × `nz` uniform axial elements.
+pub fn solve_midplane(
+    plate: &SinglePlate,
+    kind: ElementKind,
+    radial: &Spacing,
+    nz: usize,
+    solve: &SolveParams,
+) -> Result<Midplane, FemError> {
+    let z = Spacing::uniform(0.0, plate.half_thickness(), nz)?;
+    let mesh = Mesh::structured(kind, radial, &[PlateSpec { z, material: 0 }])?;
+    let mut s = Supports::new(mesh.n_nodes());
+    let mid = mesh.bottom(0);
+    for &n in &mid {
+        s.roller_z(n);
+    }
+    if plate.hole_radius() == 0.0 {
+        for n in mesh.inner(0) {
+            s.roller_r(n);
+        }
+    }
+    let mut loads = Loads::new(mesh.n_nodes());
+    loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, plate.load())?;
+    let mats = [plate.material()];
+    let dofs = DofMap::new(&s);
+    let k = assemble(&mesh, &mats, &dofs, &Pattern::new(&mesh, &dofs))?;
+    let mut rhs = dofs.gather(loads.forces());
+    for (a, b) in rhs.iter_mut().zip(&k.prescribed_load) {
+        *a += b;
+    }
+    let x = Factorization::new(&k.matrix, solve)?.solve(&rhs);
+    let u = dofs.expand(&x);
+    let reac = reactions(&mesh, &mats, &u, &loads)?;
+    let rz: Vec<f64> = mid.iter().map(|&n| reac[n][1]).collect();
+    let t = line_traction(&mesh, &mid, &rz)?;
+    Ok(Midplane {
+        r: mid.iter().map(|&n| mesh.nodes()[n][0]).collect(),
+        sigma_z: t.iter().map(|t| -t).collect(),
+        order: kind.order(),
+        nodes: mesh.n_nodes(),
+        dofs: dofs.n_equations(),
+    })
+}
+
+impl Midplane {
+    /// The first radius ≥ `from` where σ_z goes from ≤ 0 to > 0, interpolated within the element
+    /// edge (linear or quadratic); None if σ_z never turns tensile.
+    pub fn first_tensile_crossing(&self, from: f64) -> Option<f64> {
+        let o = self.order;
+        let start = self
+            .r
+            .partition_point(|&r| r < from - 1e-12 * (1.0 + from.abs()));
+        let first = start - start % o; // edge boundary at or before `from`
+        let mut i = first;
+        while i + o < self.r.len() {
+            let (s0, s1) = (self.sigma_z[i], self.sigma_z[i + o]);
+            let mid = if o == 2 { self.sigma_z[i + 1] } else { s0 };
+            if s1 > 0.0 || (o == 2 && mid > 0.0) {
+                let root = if o == 1 {
+                    self.r[i] + (self.r[i + 1] - self.r[i]) * (-s0) / (s1 - s0)
+                } else {
+                    quadratic_root(self.r[i], self.r[i + 2], s0, mid, s1)
+                };
+                if root >= from || s0 <= 0.0 {
+                    return Some(root.max(from.min(root)));
+                }
+            }
+            i += o;
+        }
+        None
+    }
+}
+
+/// The smallest root in [x0, x2] of the quadratic through (x0, f0), (mid, fm), (x2, f2), f0 ≤ 0.
+fn quadratic_root(x0: f64, x2: f64, f0: f64, fm: f64, f2: f64) -> f64 {
+    // in s ∈ [0, 1]: f = f0 + b s + a s², with f(1/2) = fm, f(1) = f2
+    let a = 2.0 * (f2 - 2.0 * fm + f0);
+    let b = f2 - f0 - a;
+    let s = if a.abs() < 1e-14 * (f0.abs() + fm.abs() + f2.abs()) {
+        -f0 / b
+    } else {
+        let disc = (b * b - 4.0 * a * f0).max(0.0).sqrt();
+        // numerically stable roots; pick the smallest one in [0, 1]
+        let q = -0.5 * (b + b.signum() * disc);
+        let mut roots = [q / a, f0 / q];
+        roots.sort_by(f64::total_cmp);
+        roots
+            .into_iter()
+            .find(|s| (-1e-12..=1.0 + 1e-12).contains(s))
+            .unwrap_or(0.5)
+    };
+    x0 + s.clamp(0.0, 1.0) * (x2 - x0)
+}
+
+/// R_o of `plate` with a Richardson error estimate over nested refinements.
+pub fn single_plate_r_o(
+    plate: &SinglePlate,
+    params: &SingleParams,
+) -> Result<(f64, SingleInfo), FemError> {
+    if params.levels < 2 || params.levels > 12 {
+        return Err(InputError::Parameter {
+            field: "refinement levels",
+            value: params.levels as f64,
+            reason: "must lie in 2..=12",
+        }
+        .into());
+    }
+    crate::error::positive("coarse element size", params.coarse_size)?;
+    let t0 = Instant::now();
+    let coarse = coarse_radial_spacing(plate, params)?;
+    let nz0 = (1.0 / params.coarse_size).ceil().max(1.0) as usize;
+    let b = plate.load().outer();
+    let mut values = Vec::new();
+    let (mut nodes, mut dofs) = (0, 0);
+    for l in 0..params.levels {
+        let k = 1 << l;
+        let m = solve_midplane(
+            plate,
+            params.kind,
+            &coarse.refined(k),
+            nz0 * k,
+            &params.solve,
+        )?;
+        let r = m.first_tensile_crossing(b).ok_or(FemError::Solver(
+            "the midplane stress never turns tensile inside the plate".into(),
+        ))?;
+        values.push(r);
+        (nodes, dofs) = (m.nodes, m.dofs);
+    }
+    let (r_o, order, err) = richardson(&values);
+    Ok((
+        r_o,
+        SingleInfo {
+            levels: values,
+            observed_order: order,
+            error_estimate: err,
+            nodes,
+            dofs,
+            seconds: t0.elapsed().as_secs_f64(),
+        },
+    ))
+}
+
+/// Richardson extrapolation of a sequence on meshes halved each time: (value, order, error).
+pub fn richardson(v: &[f64]) -> (f64, Option<f64>, f64) {
+    let n = v.len();
+    let last = v[n - 1];
+    if n < 3 {
+        return (
+            last,
+            None,
+            if n == 2 {
+                (v[1] - v[0]).abs()
+            } else {
+                f64::INFINITY
+            },
+        );
+    }
+    let (d1, d2) = (v[n - 2] - v[n - 3], last - v[n - 2]);
+    let p = (d1 / d2).abs().log2();
+    if d1 * d2 > 0.0 && (1.0..=8.0).contains(&p) {
+        let extra = last + d2 / (2f64.powf(p) - 1.0);
+        (extra, Some(p), (extra - last).abs())
+    } else {
+        (last, p.is_finite().then_some(p), d2.abs())
+    }
+}

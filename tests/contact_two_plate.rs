@@ -1,0 +1,336 @@
+//! The two-plate model: equilibrium, complementarity, load-scale invariance, the two-plate mesh
+//! against the symmetric half model, unequal plates, the report's load variants, and the observed
+//! convergence rate of R_o.
+
+use boltzone::contact::two_plate::{
+    solve, EdgeSupport, InterfaceModel, Loading, TwoPlateParams, TwoPlateSolution,
+};
+use boltzone::{FaceLoad, Joint, Material, OuterRadius, Peak, Plate};
+
+fn joint(b: f64, d1: f64, d2: f64, load: Option<FaceLoad>) -> Joint {
+    let m = Material::unit(0.3).unwrap();
+    let load = load.unwrap_or_else(|| FaceLoad::uniform(0.1, b, 1.0).unwrap());
+    Joint::new(
+        0.1,
+        OuterRadius::Finite(1.54),
+        Plate::new(d1, m).unwrap(),
+        Plate::new(d2, m).unwrap(),
+        load,
+    )
+    .unwrap()
+}
+
+fn loose() -> TwoPlateParams {
+    TwoPlateParams {
+        tolerance: 5e-3,
+        ..Default::default()
+    }
+}
+
+/// Σ contact forces = applied force; p ≥ 0 where closed, no force where open; g ≥ 0 everywhere
+/// and g = 0 where closed.
+fn assert_signorini(name: &str, s: &TwoPlateSolution, applied: Option<f64>) {
+    let fmax = s.force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
+    let gmax = s.gap.iter().fold(0.0f64, |m, g| m.max(g.abs()));
+    if let Some(applied) = applied {
+        let total: f64 = s.force.iter().sum();
+        // Round-off of K u summed over the interface: far below 1e-8 (the issue's bound).
+        assert!(
+            (total - applied).abs() <= 1e-8 * applied,
+            "{name}: Σf = {total}, applied {applied}"
+        );
+    }
+    for i in 0..s.radius.len() {
+        let closed = s.pressure[i] > 0.0;
+        // 1e-9 relative: the LCP's sign tolerance (1e-10) with the flexibility's round-off.
+        assert!(
+            s.gap[i] >= -1e-9 * gmax,
+            "{name}: penetration {} at r = {}",
+            s.gap[i],
+            s.radius[i]
+        );
+        assert!(
+            s.force[i] >= -1e-9 * fmax,
+            "{name}: tension {} at r = {}",
+            s.force[i],
+            s.radius[i]
+        );
+        if closed {
+            assert!(
+                s.gap[i].abs() <= 1e-9 * gmax,
+                "{name}: closed node open at r = {}",
+                s.radius[i]
+            );
+        } else {
+            assert!(
+                s.force[i].abs() <= 1e-9 * fmax,
+                "{name}: force on open node at r = {}",
+                s.radius[i]
+            );
+        }
+    }
+    // The discrete contact edge lies between the last closed and the first open node; the
+    // estimate of R_o extrapolates the gap and may stray from that interval by its own error,
+    // O(h²) ≪ one node interval: accept one interval either side.
+    let last = s.pressure.iter().rposition(|&p| p > 0.0).unwrap();
+    assert!(
+        s.radius[last - 1] <= s.r_o && s.r_o <= s.radius[last + 2],
+        "{name}: R_o = {} not near the discrete edge {}..{}",
+        s.r_o,
+        s.radius[last],
+        s.radius[last + 1]
+    );
+}
+
+#[test]
+fn equilibrium_and_complementarity_symmetric() {
+    let j = joint(0.31, 0.1, 0.1, None);
+    let s = solve(&j, &loose()).unwrap();
+    assert!(s.info.converged && s.info.levels.len() >= 3);
+    assert_signorini("A/D=1 B/A=3.1", &s, Some(j.load().total_force()));
+}
+
+#[test]
+fn r_o_does_not_depend_on_the_load_magnitude() {
+    let base = joint(0.22, 0.1333, 0.1333, None);
+    let s0 = solve(&base, &loose()).unwrap();
+    for k in [1e-3, 1e3] {
+        let j = base
+            .clone()
+            .with_load(base.load().scaled(k).unwrap())
+            .unwrap();
+        let s = solve(&j, &loose()).unwrap();
+        // Same meshes, a linear problem and scale-free LCP tolerances: only round-off differs.
+        assert!(
+            ((s.r_o - s0.r_o) / s0.r_o).abs() < 1e-10,
+            "scale {k}: {} vs {}",
+            s.r_o,
+            s0.r_o
+        );
+        assert!(((s.gap_at(1.0) / k - s0.gap_at(1.0)) / s0.gap_at(1.0)).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn two_plate_mesh_reproduces_the_symmetric_model() {
+    // Two equal plates meshed as a stack must give the half model's R_o on every level (the
+    // lower plate's mesh mirrors the upper one; welded and frictionless coincide by symmetry).
+    let j = joint(0.16, 0.1, 0.1, None);
+    let half = solve(&j, &loose()).unwrap();
+    for m in [InterfaceModel::Frictionless, InterfaceModel::Welded] {
+        let p = TwoPlateParams {
+            both_plates: true,
+            interface: m,
+            ..loose()
+        };
+        let s = solve(&j, &p).unwrap();
+        assert_eq!(s.info.levels.len(), half.info.levels.len());
+        for (a, b) in s.info.levels.iter().zip(&half.info.levels) {
+            // Mirror-image meshes agree to round-off of the graded spacing and the solves.
+            assert!(
+                (a.r_o - b.r_o).abs() < 1e-9 * b.r_o,
+                "{m:?}: {} vs {}",
+                a.r_o,
+                b.r_o
+            );
+        }
+        assert_signorini("stack", &s, Some(j.load().total_force()));
+        assert!((s.gap_at(1.0) - half.gap_at(1.0)).abs() < 1e-8 * half.gap_at(1.0));
+    }
+}
+
+#[test]
+fn unequal_plates_welded_and_frictionless() {
+    // Table 2 case 5 scaled to Table 1's hole: 0.124 on 0.257 (A = 0.1285, B = 0.211).
+    let m = Material::steel_304_psi();
+    let j = Joint::new(
+        0.1285,
+        OuterRadius::Finite(2.0),
+        Plate::new(0.124, m).unwrap(),
+        Plate::new(0.257, m).unwrap(),
+        FaceLoad::uniform(0.1285, 0.211, 1.0).unwrap(),
+    )
+    .unwrap();
+    let mut r = Vec::new();
+    for model in [InterfaceModel::Welded, InterfaceModel::Frictionless] {
+        let s = solve(
+            &j,
+            &TwoPlateParams {
+                interface: model,
+                ..loose()
+            },
+        )
+        .unwrap();
+        assert!(s.info.converged);
+        assert_eq!(
+            s.info.model,
+            if model == InterfaceModel::Welded {
+                "welded"
+            } else {
+                "frictionless"
+            }
+        );
+        assert_signorini("case 5", &s, Some(j.load().total_force()));
+        r.push(s.r_o);
+    }
+    // Swapping the plates mirrors the problem: R_o must not change.
+    let swapped = Joint::new(
+        0.1285,
+        OuterRadius::Finite(2.0),
+        j.lower(),
+        j.upper(),
+        j.load().clone(),
+    )
+    .unwrap();
+    let s = solve(
+        &swapped,
+        &TwoPlateParams {
+            interface: InterfaceModel::Welded,
+            ..loose()
+        },
+    )
+    .unwrap();
+    assert!(
+        (s.r_o - r[0]).abs() < 5e-3 * r[0],
+        "swapped: {} vs {}",
+        s.r_o,
+        r[0]
+    );
+}
+
+#[test]
+fn report_load_variants() {
+    let b = 0.211;
+    let base = joint(b, 0.1, 0.1, None);
+    let uniform = solve(&base, &loose()).unwrap();
+    for peak in [Peak::AtA, Peak::AtB] {
+        let j = base
+            .clone()
+            .with_load(FaceLoad::triangular(0.1, b, 1.0, peak).unwrap())
+            .unwrap();
+        let s = solve(&j, &loose()).unwrap();
+        assert_signorini("triangular", &s, Some(j.load().total_force()));
+        // A load nearer the hole bends the plate less outward: a smaller contact zone.
+        match peak {
+            Peak::AtA => assert!(s.r_o < uniform.r_o),
+            Peak::AtB => assert!(s.r_o > uniform.r_o),
+        }
+    }
+    // Uniform displacement under the nut: R_o independent of its size.
+    let mut rs = Vec::new();
+    for delta in [1e-3, 1.0] {
+        let p = TwoPlateParams {
+            loading: Loading::NutDisplacement(delta),
+            ..loose()
+        };
+        let s = solve(&base, &p).unwrap();
+        assert_signorini("nut displacement", &s, None);
+        assert!((s.nut_deflection + delta).abs() < 1e-12 * delta);
+        rs.push(s.r_o);
+    }
+    assert!((rs[0] - rs[1]).abs() < 1e-10 * rs[1]);
+    // Fixed outer edge (Fig. 20(c)): the report found the effect "within the resolution of the
+    // finite element grid size" (0.015 in); clamping the rim to the plane adds contact.
+    let p = TwoPlateParams {
+        edge: EdgeSupport::Fixed,
+        ..loose()
+    };
+    let s = solve(&base, &p).unwrap();
+    assert_signorini("fixed edge", &s, None);
+    assert!(
+        s.r_o > uniform.r_o && s.r_o - uniform.r_o < 0.015,
+        "{} vs {}",
+        s.r_o,
+        uniform.r_o
+    );
+}
+
+#[test]
+fn r_o_converges_at_the_observed_rate() {
+    // Five levels regardless of tolerance: fit the log-log slope of successive changes.
+    let p = TwoPlateParams {
+        tolerance: 1e-12,
+        min_levels: 5,
+        max_levels: 5,
+        ..Default::default()
+    };
+    let s = solve(&joint(0.31, 0.1, 0.1, None), &p).unwrap();
+    assert!(!s.info.converged);
+    let l = &s.info.levels;
+    let pts: Vec<(f64, f64)> = l
+        .windows(2)
+        .map(|w| (w[1].h.ln(), (w[1].r_o - w[0].r_o).abs().ln()))
+        .collect();
+    let n = pts.len() as f64;
+    let (mx, my) = (
+        pts.iter().map(|p| p.0).sum::<f64>() / n,
+        pts.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let slope = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>()
+        / pts.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+    // The gap estimator is second order, Q9 displacements third: expect 2..3.5.
+    assert!((1.8..3.8).contains(&slope), "observed rate {slope}");
+    assert!(s.r_o_error < 1e-4 * s.r_o);
+}
+
+#[test]
+fn error_estimate_bounds_the_actual_error() {
+    // Reference: the same geometry converged 100 times tighter.
+    for (b, d) in [(0.31, 0.1), (0.13, 0.2)] {
+        let j = joint(b, d, d, None);
+        let fine = solve(
+            &j,
+            &TwoPlateParams {
+                tolerance: 5e-6,
+                max_levels: 10,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        assert!(fine.info.converged);
+        let s = solve(
+            &j,
+            &TwoPlateParams {
+                tolerance: 5e-4,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let actual = (s.r_o - fine.r_o).abs();
+        assert!(
+            actual <= s.r_o_error + fine.r_o_error,
+            "B={b} D={d}: error {actual:e} > estimate {:e}",
+            s.r_o_error
+        );
+        assert!(
+            actual <= 5e-4 * fine.r_o,
+            "B={b} D={d}: tolerance missed ({actual:e})"
+        );
+    }
+}
+
+#[test]
+fn bad_parameters_are_typed_errors() {
+    let j = joint(0.31, 0.1, 0.1, None);
+    for p in [
+        TwoPlateParams {
+            tolerance: 0.0,
+            ..Default::default()
+        },
+        TwoPlateParams {
+            coarse: -1.0,
+            ..Default::default()
+        },
+        TwoPlateParams {
+            min_levels: 4,
+            max_levels: 3,
+            ..Default::default()
+        },
+        TwoPlateParams {
+            loading: Loading::NutDisplacement(f64::NAN),
+            ..Default::default()
+        },
+    ] {
+        assert!(solve(&j, &p).is_err());
+    }
+}
