@@ -1,10 +1,124 @@
-//! `boltzone single`: see the module docs of the solver it calls.
+//! `boltzone single`: the single-plate model (Fernlund's substitution, a plate 2D thick with a
+//! hole, loaded on both faces by a uniform pressure over A..B) and its separation radius R_o.
+//! `--method fem` runs [`boltzone::fem::single::single_plate_r_o`] (nested refinements with a
+//! Richardson error estimate); `--method hankel` is the Hankel-transform route (not built yet).
+
+use boltzone::fem::single::{single_plate_r_o, SingleParams};
+use boltzone::fem::ElementKind;
+use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+
+/// Which solver computes R_o.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Method {
+    /// Axisymmetric finite elements.
+    Fem,
+    /// Hankel transforms with a hole correction.
+    Hankel,
+}
+
+/// Element family for `--method fem`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Element {
+    /// 9-node biquadratic quadrilateral.
+    Q9,
+    /// Bilinear quadrilateral, B-bar.
+    Q4bbar,
+    /// The report's quadrilateral of four constant-strain triangles.
+    Cst4,
+}
 
 /// Arguments of `boltzone single`.
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Hole radius A (0: no hole).
+    #[arg(long)]
+    a: f64,
+    /// Outer radius B of the loaded annulus.
+    #[arg(long)]
+    b: f64,
+    /// Thickness D of one plate (the substitute is 2D thick).
+    #[arg(long)]
+    d: f64,
+    /// Plate outer radius C (default: infinite, truncated at B + 30 D).
+    #[arg(long)]
+    c: Option<f64>,
+    /// Poisson's ratio.
+    #[arg(long, default_value_t = 0.3)]
+    nu: f64,
+    /// Solver.
+    #[arg(long, value_enum, default_value_t = Method::Fem)]
+    method: Method,
+    /// Element family (fem).
+    #[arg(long, value_enum, default_value_t = Element::Q9)]
+    element: Element,
+    /// Nested refinement levels (fem, ≥ 3 for an error estimate).
+    #[arg(long, default_value_t = 5)]
+    levels: usize,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    json: bool,
+}
 
 /// Runs the command.
-pub fn run(_args: Args) -> anyhow::Result<()> {
-    anyhow::bail!("the 'single' command is not built yet")
+pub fn run(args: Args) -> anyhow::Result<()> {
+    let outer = args.c.map_or(OuterRadius::Infinite, OuterRadius::Finite);
+    let load = FaceLoad::uniform(args.a, args.b, 1.0)?;
+    let plate = SinglePlate::new(args.a, outer, args.d, Material::unit(args.nu)?, load)?;
+    if args.method == Method::Hankel {
+        anyhow::bail!("--method hankel is not available yet (the Hankel single-plate solver is being built); use --method fem");
+    }
+    let kind = match args.element {
+        Element::Q9 => ElementKind::Q9,
+        Element::Q4bbar => ElementKind::Q4Bbar,
+        Element::Cst4 => ElementKind::Cst4,
+    };
+    let params = SingleParams {
+        kind,
+        levels: args.levels,
+        ..SingleParams::default()
+    };
+    let (r_o, info) = single_plate_r_o(&plate, &params)?;
+    let r_o_over_a = if args.a > 0.0 {
+        Some(r_o / args.a)
+    } else {
+        None
+    };
+    if args.json {
+        let v = serde_json::json!({
+            "method": "fem",
+            "element": format!("{kind:?}"),
+            "r_o": r_o,
+            "r_o_over_a": r_o_over_a,
+            "r_o_error": info.error_estimate,
+            "levels": info.levels,
+            "observed_order": info.observed_order,
+            "nodes": info.nodes,
+            "dofs": info.dofs,
+            "seconds": info.seconds,
+        });
+        println!("{}", serde_json::to_string_pretty(&v)?);
+    } else {
+        println!(
+            "single plate 2D thick, FE ({kind:?}), A = {}, B = {}, D = {}, C = {}, nu = {}",
+            args.a,
+            args.b,
+            args.d,
+            outer.value(),
+            args.nu
+        );
+        println!("R_o      = {r_o:.6} ± {:.2e}", info.error_estimate);
+        if let Some(q) = r_o_over_a {
+            println!("R_o / A  = {q:.5}");
+        }
+        println!(
+            "levels   = {:?}\norder    = {}\nmesh     = {} nodes, {} dofs (finest), {:.2} s",
+            info.levels,
+            info.observed_order
+                .map_or("-".into(), |p| format!("{p:.2}")),
+            info.nodes,
+            info.dofs,
+            info.seconds
+        );
+    }
+    Ok(())
 }

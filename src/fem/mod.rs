@@ -32,8 +32,10 @@
 pub mod assemble;
 pub mod dofs;
 pub mod element;
+pub mod lame;
 pub mod loads;
 pub mod mesh;
+pub mod ordering;
 pub mod recover;
 pub mod single;
 pub mod solve;
@@ -44,7 +46,10 @@ pub use dofs::{Component, DofMap, NodeSupport, Supports};
 pub use element::{ElementKind, ElementPoint, Stress};
 pub use loads::Loads;
 pub use mesh::{Mesh, PlateSpec};
-pub use recover::{gauss_stresses, internal_forces, line_traction, nodal_stresses, reactions};
+pub use ordering::nested_dissection;
+pub use recover::{
+    centre_stresses, gauss_stresses, internal_forces, line_traction, nodal_stresses, reactions,
+};
 pub use solve::{Factorization, SolveParams};
 pub use spacing::Spacing;
 

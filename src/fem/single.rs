@@ -23,6 +23,7 @@ use super::dofs::{DofMap, Supports};
 use super::element::ElementKind;
 use super::loads::Loads;
 use super::mesh::{Mesh, PlateSpec};
+use super::ordering::nested_dissection;
 use super::recover::{line_traction, reactions};
 use super::solve::{Factorization, SolveParams};
 use super::spacing::Spacing;
@@ -139,7 +140,8 @@ pub fn solve_midplane(
     for (a, b) in rhs.iter_mut().zip(&k.prescribed_load) {
         *a += b;
     }
-    let x = Factorization::new(&k.matrix, solve)?.solve(&rhs);
+    let order = nested_dissection(&mesh, &dofs);
+    let x = Factorization::with_ordering(&k.matrix, Some(&order), solve)?.solve(&rhs);
     let u = dofs.expand(&x);
     let reac = reactions(&mesh, &mats, &u, &loads)?;
     let rz: Vec<f64> = mid.iter().map(|&n| reac[n][1]).collect();

@@ -23,12 +23,14 @@
 use super::FemError;
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
+use faer::perm::PermRef;
 use faer::sparse::linalg::cholesky::{
     factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymmetricOrdering,
 };
 use faer::sparse::SparseColMat;
 use faer::{Conj, Mat, MatRef, Par, Side};
 use std::sync::Arc;
+use std::time::Instant;
 
 /// Parameters of the sparse solve.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -44,18 +46,46 @@ pub struct Factorization {
     symbolic: Arc<SymbolicCholesky<usize>>,
     values: Vec<f64>,
     par: Par,
+    seconds: [f64; 2],
 }
 
 impl Factorization {
-    /// Symbolic and numeric factorization of the lower triangle `k`.
+    /// Symbolic and numeric factorization of the lower triangle `k` (AMD ordering).
     pub fn new(k: &SparseColMat<usize, f64>, params: &SolveParams) -> Result<Self, FemError> {
-        let symbolic = factorize_symbolic_cholesky(
-            k.symbolic(),
-            Side::Lower,
-            SymmetricOrdering::Amd,
-            Default::default(),
-        )
-        .map_err(|e| FemError::Solver(format!("symbolic Cholesky: {e:?}")))?;
+        Self::with_ordering(k, None, params)
+    }
+
+    /// As [`Factorization::new`] with a caller's elimination order (`order[k]` = the equation
+    /// eliminated k-th, e.g. [`super::nested_dissection`]); None: AMD.
+    pub fn with_ordering(
+        k: &SparseColMat<usize, f64>,
+        order: Option<&[usize]>,
+        params: &SolveParams,
+    ) -> Result<Self, FemError> {
+        let t0 = Instant::now();
+        let inverse: Vec<usize>;
+        let ord = match order {
+            None => SymmetricOrdering::Amd,
+            Some(fwd) => {
+                let n = k.nrows();
+                let mut inv = vec![usize::MAX; n];
+                for (new, &old) in fwd.iter().enumerate() {
+                    if old < n && new < n {
+                        inv[old] = new;
+                    }
+                }
+                if fwd.len() != n || inv.contains(&usize::MAX) {
+                    return Err(FemError::Solver(format!(
+                        "the ordering is not a permutation of 0..{n}"
+                    )));
+                }
+                inverse = inv;
+                SymmetricOrdering::Custom(PermRef::new_checked(fwd, &inverse, n))
+            }
+        };
+        let symbolic =
+            factorize_symbolic_cholesky(k.symbolic(), Side::Lower, ord, Default::default())
+                .map_err(|e| FemError::Solver(format!("symbolic Cholesky: {e:?}")))?;
         let par = if params.parallel {
             Par::rayon(0)
         } else {
@@ -65,6 +95,7 @@ impl Factorization {
             symbolic: Arc::new(symbolic),
             values: Vec::new(),
             par,
+            seconds: [t0.elapsed().as_secs_f64(), 0.0],
         };
         f.refactor(k)?;
         Ok(f)
@@ -72,6 +103,7 @@ impl Factorization {
 
     /// Numeric factorization of new values with the same pattern (the symbolic step is reused).
     pub fn refactor(&mut self, k: &SparseColMat<usize, f64>) -> Result<(), FemError> {
+        let t0 = Instant::now();
         let sym = &*self.symbolic;
         self.values.clear();
         self.values.resize(sym.len_val(), 0.0);
@@ -87,12 +119,18 @@ impl Factorization {
             Default::default(),
         )
         .map_err(|e| FemError::NotPositiveDefinite(format!("{e:?}")))?;
+        self.seconds[1] = t0.elapsed().as_secs_f64();
         Ok(())
     }
 
     /// Number of equations.
     pub fn n(&self) -> usize {
         self.symbolic.nrows()
+    }
+
+    /// Wall-clock seconds of the symbolic analysis and of the last numeric factorization.
+    pub fn seconds(&self) -> [f64; 2] {
+        self.seconds
     }
 
     /// Stored entries of L (a measure of fill and memory: 8 bytes each).

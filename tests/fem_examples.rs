@@ -1,0 +1,19 @@
+//! Runs the FE examples on small sizes so they cannot go stale (their full runs are studies).
+
+#[allow(dead_code)]
+#[path = "../examples/02_lame_convergence.rs"]
+mod ex02;
+#[allow(dead_code)]
+#[path = "../examples/03_single_plate_table1.rs"]
+mod ex03;
+
+#[test]
+fn lame_convergence_example_runs() {
+    ex02::run(16).unwrap();
+}
+
+#[test]
+fn table1_example_runs_on_two_rows() {
+    // 4 levels reach 0.05 % on the first rows (measured 0.01 %)
+    ex03::run(4, 2, 0.05).unwrap();
+}
