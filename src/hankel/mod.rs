@@ -19,6 +19,7 @@
 //! ```
 
 pub mod field;
+pub mod hole;
 pub mod kernel;
 pub mod midplane;
 pub mod quadrature;

@@ -1,0 +1,152 @@
+//! The single plate with a hole by Hankel transforms: the infinite slab's solution corrected so
+//! that the hole r = A is free of traction, and the plate's separation radius R_o.
+//!
+//! **Problem.** The plate r ≥ A, −D ≤ z ≤ D, pressed by p(r) on both faces, with a traction-free
+//! hole: σ_r(A, z) = τ_rz(A, z) = 0. The infinite slab ([`crate::hankel::Slab`]) satisfies the
+//! face conditions but leaves σ_r and τ_rz on r = A; Fernlund superposed their negatives (report
+//! Fig. 3(d)–(e)). Here the correction is a field that is homogeneous in r ≥ A (faces free,
+//! symmetric in z, decaying as r → ∞) whose traction on r = A cancels the slab's.
+//!
+//! **Representation (and why).** Every such field is a combination of the Lamé field
+//! u = c/r (σ_r = −σ_θ ∝ 1/r², σ_z = τ_rz = 0) and the symmetric Papkovich–Fadle eigenfunctions
+//! of the layer, K₀/K₁(λ_k r) times trigonometric functions of λ_k z with sin 2λ_kD + 2λ_kD = 0
+//! (Fadle 1941; Little & Childs, *Q. Appl. Math.* 25 (1967) 261; Gregory, *J. Elasticity* 10
+//! (1980) 57): [`eigen`]. They are closed forms — one complex K₀, K₁ pair ([`bessel_k`]) per mode
+//! and point, no quadrature — so the fit and the midplane sum cost microseconds, which is why
+//! they were chosen over ring loads of the slab's Green's function (each a Hankel integral per
+//! collocation point, and a notoriously ill-conditioned basis). Their weak point, slow
+//! convergence for data that are singular at the corner (A, ±D), is removed by the second half
+//! of the correction: the fictitious slab is loaded by p continued smoothly into the hole
+//! ([`plate::extended_load`]), so the data to cancel are smooth. The amplitudes come from
+//! least-squares collocation on r = A ([`fit`]); the convergence parameter is the number of
+//! modes N (doubled until the residual target is met), and the error measure is the residual
+//! traction on the hole, measured on twice as many heights as were fitted.
+//!
+//! **Outputs.** [`HolePlate`] (fields at any (r, z), r ≥ A) and [`single_plate_separation`]:
+//! R_o, the first upward zero of the midplane σ_z beyond B, with an error estimate that adds the
+//! hole residual's effect (|δσ_z| ≤ max residual traction, a conservative bound: the error field
+//! is the response to that traction, whose self-equilibrated part decays away from the hole and
+//! whose net radial force is carried by the Lamé field, which has no σ_z) to the slab
+//! quadrature's. The plate's outer radius is taken as infinite: a rim at C changes midplane σ_z
+//! only through exponentially decaying modes, ≈ e^(−2.1(C − R_o)/D) (the Lamé and uniform
+//! in-plane states that a rim adds have no σ_z).
+//!
+//! Sign convention: compression negative; residuals relative to the mean pressure P.
+//!
+//! ```
+//! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+//! use boltzone::hankel::hole::{single_plate_separation, HoleParams};
+//! let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
+//! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3).unwrap(), load).unwrap();
+//! let (sep, hole) = single_plate_separation(&plate, &Default::default(), &HoleParams::default()).unwrap();
+//! assert!(hole.residual_max <= 1e-6);
+//! assert!(sep.r_o > 0.31 && sep.error < 1e-4);
+//! ```
+
+pub mod bessel_k;
+pub mod eigen;
+pub mod fit;
+pub mod plate;
+mod separation;
+
+pub use plate::HolePlate;
+pub use separation::single_plate_separation;
+
+use crate::error::{positive, InputError};
+
+/// Knobs of the hole correction.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HoleParams {
+    /// Target of the largest residual traction on the hole, relative to P (default 1e-6).
+    pub residual_target: f64,
+    /// A fixed number of Papkovich–Fadle modes N; `None` (default) doubles N from
+    /// `start_terms` until the target is met or `max_terms` is reached.
+    pub terms: Option<usize>,
+    /// First N of the doubling (default 4).
+    pub start_terms: usize,
+    /// Largest N of the doubling (default 64).
+    pub max_terms: usize,
+    /// Absolute tolerance of the slab's hole tractions, relative to P (default 1e-9).
+    pub slab_tolerance: f64,
+    /// [`single_plate_separation`] stops doubling N when R_o changes by less than this
+    /// fraction of R_o (default 1e-6), or when the residual target is met.
+    pub r_o_tolerance: f64,
+}
+
+impl Default for HoleParams {
+    fn default() -> Self {
+        Self {
+            residual_target: 1e-6,
+            terms: None,
+            start_terms: 4,
+            max_terms: 64,
+            slab_tolerance: 1e-9,
+            r_o_tolerance: 1e-6,
+        }
+    }
+}
+
+impl HoleParams {
+    fn check(&self) -> Result<(), InputError> {
+        positive("hole residual target", self.residual_target)?;
+        positive("hole slab tolerance", self.slab_tolerance)?;
+        positive("hole R_o tolerance", self.r_o_tolerance)?;
+        let bad = |field, v: usize| InputError::Parameter {
+            field,
+            value: v as f64,
+            reason: "must lie in 1..=512",
+        };
+        if let Some(n) = self.terms {
+            if n == 0 || n > 512 {
+                return Err(bad("hole terms", n));
+            }
+        }
+        if self.start_terms == 0 || self.start_terms > 512 {
+            return Err(bad("hole start_terms", self.start_terms));
+        }
+        if self.max_terms > 512 {
+            return Err(bad("hole max_terms", self.max_terms));
+        }
+        Ok(())
+    }
+}
+
+/// One step of the doubling of N.
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
+pub struct HoleLevel {
+    /// Papkovich–Fadle modes N.
+    pub terms: usize,
+    /// Collocation heights on 0 ≤ z ≤ D.
+    pub collocation_points: usize,
+    /// Largest residual traction on the hole, relative to P.
+    pub residual_max: f64,
+    /// RMS residual traction (Chebyshev measure in z), relative to P.
+    pub residual_rms: f64,
+    /// Condition number of the column-scaled collocation matrix.
+    pub condition: f64,
+}
+
+/// What the hole correction did and how well.
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize)]
+pub struct HoleInfo {
+    /// Papkovich–Fadle modes N of the accepted fit (0 when there is no hole).
+    pub terms: usize,
+    /// Collocation heights of the accepted fit.
+    pub collocation_points: usize,
+    /// Heights the residual was measured on (collocation + check points).
+    pub check_points: usize,
+    /// Largest residual traction |(σ_r, τ_rz)| on the hole, relative to P.
+    pub residual_max: f64,
+    /// RMS residual traction, relative to P.
+    pub residual_rms: f64,
+    /// Condition number of the column-scaled collocation matrix.
+    pub condition: f64,
+    /// Largest quadrature error estimate of the slab's hole tractions, relative to P.
+    pub slab_error: f64,
+    /// Integrand evaluations spent on the slab's hole tractions.
+    pub slab_evaluations: usize,
+    /// Every N tried, in order.
+    pub history: Vec<HoleLevel>,
+    /// Wall-clock seconds of the correction.
+    pub seconds: f64,
+}
