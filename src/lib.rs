@@ -26,8 +26,8 @@
 //! ```
 #![warn(missing_docs)]
 
-pub mod contact;
 pub mod compare;
+pub mod contact;
 pub mod error;
 pub mod fem;
 pub mod hankel;

@@ -81,6 +81,8 @@ pub trait Figure {
 
 /// Writes `fig` as SVG or PNG (by `path`'s extension) of `size` pixels, atomically.
 pub fn write_figure<F: Figure>(fig: &F, path: &Path, size: (u32, u32)) -> Result<(), PlotError> {
+    // Both backends measure text with the registered font (SVG for layout, PNG to draw).
+    register_font();
     match path.extension().and_then(|e| e.to_str()) {
         Some("svg") => {
             let mut s = String::new();
@@ -92,7 +94,6 @@ pub fn write_figure<F: Figure>(fig: &F, path: &Path, size: (u32, u32)) -> Result
             write_atomic(path, s.as_bytes())
         }
         Some("png") => {
-            register_font();
             let tmp = temp_path(path);
             {
                 let root = BitMapBackend::new(&tmp, size).into_drawing_area();
@@ -173,12 +174,18 @@ impl Figure for CurveFigure {
             .draw()
             .map_err(pe)?;
         chart
-            .draw_series(LineSeries::new([(x0, 0.0), (x1, 0.0)], BLACK.stroke_width(1)))
+            .draw_series(LineSeries::new(
+                [(x0, 0.0), (x1, 0.0)],
+                BLACK.stroke_width(1),
+            ))
             .map_err(pe)?;
         for c in &self.curves {
             let col = rgb(c.color);
             chart
-                .draw_series(LineSeries::new(c.points.iter().copied(), col.stroke_width(2)))
+                .draw_series(LineSeries::new(
+                    c.points.iter().copied(),
+                    col.stroke_width(2),
+                ))
                 .map_err(pe)?
                 .label(&c.label)
                 .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], col.stroke_width(2)));
@@ -201,7 +208,7 @@ impl Figure for CurveFigure {
             .label_font(("sans-serif", 15))
             .background_style(WHITE.mix(0.9))
             .border_style(BLACK)
-            .position(SeriesLabelPosition::LowerRight)
+            .position(SeriesLabelPosition::UpperRight)
             .draw()
             .map_err(pe)
     }
@@ -316,7 +323,7 @@ impl Figure for HeatMapFigure {
                 .disable_mesh()
                 .disable_x_axis()
                 .label_style(("sans-serif", 12))
-                .y_label_formatter(&|v: &f64| format!("{v:.3}"))
+                .y_label_formatter(&|v: &f64| format!("{v:.1}"))
                 .draw()
                 .map_err(pe)?;
             let steps = 64;

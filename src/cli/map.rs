@@ -58,7 +58,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         args.tol
     );
     let range = |f: &dyn Fn(&boltzone::compare::Comparison) -> f64| {
-        map.points.iter().map(f).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)))
+        map.points
+            .iter()
+            .map(f)
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            })
     };
     let (d0, d1) = range(&|c| c.discrepancy_percent.value);
     let (r0, r1) = range(&|c| c.rules[0].error_percent.value);
@@ -85,9 +90,15 @@ fn figure(map: &DesignMap) -> HeatMapFigure {
         y_label: "B/A".into(),
         panels: vec![
             panel("two-plate R_o/A", &|c| c.over_a(c.two).value),
-            panel("single-plate vs two-plate R_o, %", &|c| c.discrepancy_percent.value),
-            panel("45° rule vs two-plate R_o, %", &|c| c.rules[0].error_percent.value),
-            panel("VDI 2230 cone vs two-plate R_o, %", &|c| c.rules[1].error_percent.value),
+            panel("single-plate vs two-plate R_o, %", &|c| {
+                c.discrepancy_percent.value
+            }),
+            panel("45° rule vs two-plate R_o, %", &|c| {
+                c.rules[0].error_percent.value
+            }),
+            panel("VDI 2230 cone vs two-plate R_o, %", &|c| {
+                c.rules[1].error_percent.value
+            }),
         ],
     }
 }

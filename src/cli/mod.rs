@@ -58,7 +58,9 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
 /// A progress bar on stderr (indicatif draws nothing when stderr is not a terminal).
 fn progress(len: u64, what: &str) -> ProgressBar {
     let bar = ProgressBar::new(len);
-    if let Ok(style) = ProgressStyle::with_template("{msg} {bar:40} {pos}/{len} [{elapsed} < {eta}]") {
+    if let Ok(style) =
+        ProgressStyle::with_template("{msg} {bar:40} {pos}/{len} [{elapsed} < {eta}]")
+    {
         bar.set_style(style);
     }
     bar.set_message(what.to_string());
@@ -103,10 +105,25 @@ fn default_case() -> anyhow::Result<()> {
             v.value, v.error, r.value, r.error
         );
     };
-    line("two-plate model (the answer)", c.two, Some(report.two), c.info.seconds_two);
-    line("single-plate substitution (FE, C)", c.single, Some(report.single), c.info.seconds_single);
+    line(
+        "two-plate model (the answer)",
+        c.two,
+        Some(report.two),
+        c.info.seconds_two,
+    );
+    line(
+        "single-plate substitution (FE, C)",
+        c.single,
+        Some(report.single),
+        c.info.seconds_single,
+    );
     if let Some(h) = c.single_hankel {
-        line("single plate, Hankel + hole (C = inf)", h, None, c.info.seconds_hankel);
+        line(
+            "single plate, Hankel + hole (C = inf)",
+            h,
+            None,
+            c.info.seconds_hankel,
+        );
     }
     println!(
         "  discrepancy (single - two)/two: {:.2} ± {:.2} % [{} %]; in contact area: {:.1} ± {:.1} %",

@@ -39,7 +39,10 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         println!("{}", serde_json::to_string_pretty(&rows)?);
     } else {
         print!("{}", table2::text(&rows));
-        let name = args.interface.to_possible_value().map(|v| v.get_name().to_string());
+        let name = args
+            .interface
+            .to_possible_value()
+            .map(|v| v.get_name().to_string());
         println!(
             "\nunequal pairs: {} interface; 7 cases in {:.2} s",
             name.unwrap_or_default(),

@@ -29,7 +29,12 @@ pub fn compute(params: &CompareParams, tick: &(dyn Fn() + Sync)) -> Result<Vec<R
     compare_all(&geometries, params, tick)
         .into_iter()
         .zip(reference::table1())
-        .map(|(ours, report)| Ok(Row { ours: ours?, report }))
+        .map(|(ours, report)| {
+            Ok(Row {
+                ours: ours?,
+                report,
+            })
+        })
         .collect()
 }
 
@@ -68,7 +73,13 @@ pub fn csv_fields(c: &Comparison) -> String {
         f.push(r.error_percent.value);
     }
     f.iter()
-        .map(|x| if x.is_nan() { String::new() } else { format!("{x:.6}") })
+        .map(|x| {
+            if x.is_nan() {
+                String::new()
+            } else {
+                format!("{x:.6}")
+            }
+        })
         .collect::<Vec<_>>()
         .join(",")
 }

@@ -78,7 +78,10 @@ pub fn compute(
         .into_par_iter()
         .map(|case| {
             let s = solve(&joint(&case)?, &params).map_err(|source| CompareError::Two {
-                geometry: format!("Table 2 case {} (d1 = {}, d2 = {})", case.case, case.d1, case.d2),
+                geometry: format!(
+                    "Table 2 case {} (d1 = {}, d2 = {})",
+                    case.case, case.d1, case.d2
+                ),
                 source,
             })?;
             tick();
@@ -186,7 +189,8 @@ pub fn csv(rows: &[Row]) -> String {
             o(m.map(|m| m.max)),
             o(m.map(|m| m.average)),
             r.discrepancy_rubbing_percent,
-            o(r.discrepancy_autoradiographic_percent.map(|v| (v * 1e4).round() / 1e4)),
+            o(r.discrepancy_autoradiographic_percent
+                .map(|v| (v * 1e4).round() / 1e4)),
             c.discrepancy_rubbing_percent,
             o(c.discrepancy_autoradiographic_percent),
         );
