@@ -6,6 +6,9 @@
 use boltzone::compare::map::{compute, log_spaced, MapParams};
 use boltzone::compare::{Comparison, Value};
 
+/// Picks one model's R_o from a comparison.
+type Pick = fn(&Comparison) -> Value;
+
 #[test]
 fn coarse_map_is_smooth_and_monotone() {
     let n = 6;
@@ -17,8 +20,7 @@ fn coarse_map_is_smooth_and_monotone() {
     };
     let m = compute(&p, &|| ()).unwrap();
     assert_eq!(m.points.len(), n * n);
-    let models: [(&str, fn(&Comparison) -> Value); 2] =
-        [("single", |c| c.single), ("two", |c| c.two)];
+    let models: [(&str, Pick); 2] = [("single", |c| c.single), ("two", |c| c.two)];
     for (name, f) in models {
         let at = |i: usize, j: usize| f(m.at(i, j));
         for i in 0..n {

@@ -110,14 +110,14 @@ impl Geometry {
     pub fn new(a: f64, b: f64, d: f64, c: f64, nu: f64) -> Result<Self, InputError> {
         positive("hole radius A", a)?;
         positive("plate thickness D", d)?;
-        if !(b > a) || !b.is_finite() {
+        if !b.is_finite() || b <= a {
             return Err(InputError::Parameter {
                 field: "load outer radius B",
                 value: b,
                 reason: "must be finite and exceed the hole radius A",
             });
         }
-        if !(c > b) || !c.is_finite() {
+        if !c.is_finite() || c <= b {
             return Err(InputError::OuterRadius { b, c });
         }
         Material::unit(nu)?;

@@ -42,6 +42,8 @@ pub struct FemStudy {
 /// Single-plate R_o by FE to relative accuracy `tolerance` (module docs).
 pub fn single_fem(plate: &SinglePlate, tolerance: f64) -> Result<(Value, FemStudy), FemError> {
     crate::error::positive("single-plate tolerance", tolerance)?;
+    // The FE defaults (first element 0.5 D at A and B, growth 1.15) were the cheapest for
+    // 0.1 % over the map's range among coarse sizes 0.35/0.5/0.7 and growths 1.15/1.3.
     let params = SingleParams::default();
     let coarse = coarse_radial_spacing(plate, &params)?;
     let nz0 = (1.0 / params.coarse_size).ceil() as usize;
