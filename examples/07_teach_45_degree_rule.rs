@@ -13,17 +13,17 @@
 //! - marked: the load edge B, the two-plate separation radius R_o, the single plate's zero of
 //!   σ_z, and Rötscher's 45° radius B + D.
 //!
-//! **What it teaches.** The bearing pressure spreads as it passes through the plate, but not
-//! along a cone with a sharp edge: it is carried by a bell-shaped pressure that has already
-//! fallen to a small fraction of P well inside the 45° radius. Beyond the bell's edge each plate
-//! bends away from its partner (it dishes under the ring load), and because the interface cannot
-//! pull, the plates simply open there. The single-plate substitute cannot open: its midplane is
-//! held flat everywhere (that is what the symmetry w = 0 means), so where two real plates would
-//! part it transmits tension, and that tension props up compression farther out — its zero lies
-//! 10–40 % beyond the true R_o (Table 1). The 45° cone ignores both the bell shape and the
+//! **What it teaches.** The bearing pressure spreads as it passes through the plate, but not along
+//! a cone with a sharp edge: it is carried by a bell-shaped pressure that has already fallen to a
+//! small fraction of P well inside the 45° radius. Beyond the bell's edge each plate bends away
+//! from its partner (it dishes under the ring load), and because the interface cannot pull, the
+//! plates simply open there. The single-plate substitute cannot open: its midplane is held flat
+//! everywhere (that is what the symmetry w = 0 means), so where two real plates would part it
+//! transmits tension, and that tension props up compression farther out — its zero lies 15–41 %
+//! beyond the true R_o (Table 1 recomputed). The 45° cone ignores both the bell shape and the
 //! bending; it sits near the single plate's zero, not at the true edge of contact, and so
-//! overpredicts the contact radius (here by about 16 %, the contact area by about 40 %); a
-//! narrower cone (30°, or VDI 2230's ≈ 29° for this plate) lands closer.
+//! overpredicts the contact radius (here by about 16 %, the contact area by about 40 %); a narrower
+//! cone (30°, or VDI 2230's ≈ 29° for this plate) lands closer.
 //!
 //! Checks (the example fails if any does not hold): the two-plate interface force and the
 //! single plate's midplane force each equal the applied force πP(B² − A²) (equilibrium);

@@ -285,7 +285,7 @@ impl Figure for HeatMapFigure {
                 });
             let span = if hi > lo { hi - lo } else { 1.0 };
             let w = area.dim_in_pixel().0;
-            let (main, bar) = area.split_horizontally(w.saturating_sub(80));
+            let (main, bar) = area.split_horizontally(w.saturating_sub(90));
             let mut chart = ChartBuilder::on(&main)
                 .caption(&panel.title, ("sans-serif", 16))
                 .margin(8)
@@ -312,11 +312,12 @@ impl Figure for HeatMapFigure {
                     )
                 }))
                 .map_err(pe)?;
+            // Colour bar with its scale on the right.
             let mut cb = ChartBuilder::on(&bar)
-                .margin_top(30)
+                .margin_top(32)
                 .margin_bottom(48)
-                .margin_right(8)
-                .y_label_area_size(50)
+                .margin_left(4)
+                .right_y_label_area_size(55)
                 .build_cartesian_2d(0.0..1.0, lo..lo + span)
                 .map_err(pe)?;
             cb.configure_mesh()
