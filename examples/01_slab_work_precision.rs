@@ -1,7 +1,8 @@
 //! Work–precision of the infinite-slab solver (no hole): R_o for Table 1's geometries and the
 //! midplane curve at 1000 radii, for requested tolerances 1e-4 … 1e-12, against a run at
-//! 1e-14. Prints tolerance, error achieved, error estimate, evaluations and time; checks that
-//! every achieved error is below its estimate (exit code 1 otherwise).
+//! 1e-14. Prints tolerance, error achieved, error estimate, evaluations and time; then the
+//! extremes of the solver's range (thin slabs take the real-space route). Checks that every
+//! achieved error is below its estimate (exit code 1 otherwise). Timings are per call.
 //! Run: cargo run --release --example 01_slab_work_precision [repeats]
 
 use boltzone::hankel::{MidplaneCurve, SeparationParams, Slab};
@@ -89,6 +90,33 @@ fn main() -> anyhow::Result<()> {
             "{tol:>8.0e} {worst:>10.1e} {:>10.1e} {:>9} {ms:>10.2}",
             curve.max_error(),
             curve.evaluations()
+        );
+    }
+    println!("\nExtremes of the range (A = 1): route, R_o/A, error, time");
+    println!(
+        "{:>7} {:>7} {:>11} {:>20} {:>9} {:>9}",
+        "D/A", "B/A", "route", "R_o/A", "error", "time/ms"
+    );
+    for &(da, ba) in &[
+        (1e-3, 1.001),
+        (1e-3, 1e3),
+        (1e3, 1.001),
+        (1e3, 1e3),
+        (1.0, 1e3),
+    ] {
+        let slab = Slab::new(da, Material::unit(0.3)?, FaceLoad::uniform(1.0, ba, 1.0)?)?;
+        let t = Instant::now();
+        let s = slab.separation_radius(&SeparationParams::default())?;
+        let ms = 1e3 * t.elapsed().as_secs_f64();
+        let route = if s.nodes == 0 {
+            "real-space"
+        } else {
+            "xi-rule"
+        };
+        ok &= s.r_o.is_finite() && s.error < 1e-9 * s.r_o;
+        println!(
+            "{da:>7.0e} {ba:>7} {route:>11} {:>20.12} {:>9.1e} {ms:>9.2}",
+            s.r_o, s.error
         );
     }
     if !ok {

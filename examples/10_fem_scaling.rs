@@ -7,7 +7,7 @@
 //! Run: `cargo run --release --example 10_fem_scaling [dofs…]` (default 1e4 1e5 1e6). For the
 //! peak memory of one size alone, run that size by itself. Environment: FEM_ORDER=amd uses faer's
 //! AMD instead of the mesh's nested dissection; FEM_THICKNESS=0.1 a plate-shaped section;
-//! FEM_PARALLEL=1 faer's threads.
+//! FEM_PARALLEL=1 faer's threads; FEM_ELEMENT=q4 or q9 only one element kind.
 
 use boltzone::fem::*;
 use boltzone::{FaceLoad, Material};
@@ -139,7 +139,14 @@ fn main() -> anyhow::Result<()> {
         "peak MiB",
         "residual"
     );
+    let only = std::env::var("FEM_ELEMENT").ok();
     for kind in [ElementKind::Q4, ElementKind::Q9] {
+        if only
+            .as_ref()
+            .is_some_and(|k| !k.eq_ignore_ascii_case(&format!("{kind:?}")))
+        {
+            continue;
+        }
         let runs: Vec<(usize, f64)> = sizes
             .iter()
             .map(|&d| run_size(kind, d, thickness, par))

@@ -8,6 +8,8 @@
 //!   symmetrically on both faces, with its own oscillatory quadrature and error estimates; the
 //!   single-plate separation radius R_o of Fernlund's substitution;
 //! - [`fem`]: an axisymmetric finite-element solver (the report's Appendices A and B);
+//! - [`contact`]: the report's two-plate model, unilateral contact found automatically, R_o
+//!   resolved below one element (`boltzone two`);
 //! - [`material`], [`load`], [`joint`]: the input types, validated with typed errors ([`error`]);
 //! - [`reference`]: the report's Tables 1 and 2 and the Chapter V table, as data.
 //! - [`compare`]: single- vs two-plate R_o and the rules of thumb: Tables 1 and 2 recomputed,

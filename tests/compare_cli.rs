@@ -54,6 +54,27 @@ fn map_writes_csv_and_figures() {
 }
 
 #[test]
+fn map_takes_your_own_points() {
+    // Table 1's first geometry through the map command: the same R_o/A as the default case.
+    let o = boltzone(&[
+        "map",
+        "--a-over-d",
+        "1",
+        "--b-over-a",
+        "3.1",
+        "--csv",
+        "/dev/stdout",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s = String::from_utf8(o.stdout).unwrap();
+    assert!(s.contains("design map 1 x 1"), "{s}");
+    assert!(
+        s.lines().any(|l| l.starts_with("1.000000,3.100000,")),
+        "{s}"
+    );
+}
+
+#[test]
 fn bad_arguments_are_named() {
     let o = boltzone(&["map", "--n", "1"]);
     assert!(!o.status.success());
@@ -64,6 +85,9 @@ fn bad_arguments_are_named() {
     let o = boltzone(&["table1", "--tol=-1"]);
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("tolerance"));
+    let o = boltzone(&["map", "--a-over-d", "1,-2", "--b-over-a", "2"]);
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("A/D"));
     let o = boltzone(&["table2", "--interface", "glued"]);
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("glued"));

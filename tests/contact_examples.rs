@@ -10,3 +10,21 @@ fn example_04_two_plate_tables_quick() {
     std::env::set_var("BOLTZONE_QUICK", "1");
     ex04::main();
 }
+
+#[path = "../examples/15_two_plate_variants.rs"]
+mod ex15;
+
+#[test]
+fn example_15_two_plate_variants_quick() {
+    std::env::set_var("BOLTZONE_QUICK", "1");
+    ex15::main();
+}
+
+#[path = "../examples/16_report_mesh.rs"]
+mod ex16;
+
+#[test]
+fn example_16_report_mesh_quick() {
+    std::env::set_var("BOLTZONE_QUICK", "1");
+    ex16::main();
+}

@@ -76,6 +76,7 @@ fn enumerate(lcp: &Lcp) -> Vec<DVector<f64>> {
 fn matches_enumeration_on_random_problems() {
     let mut rng = Lcg(7);
     let mut welded_missed = 0;
+    let mut welded_fallback = 0;
     for trial in 0..200 {
         let m = 1 + trial % 9;
         let welded = trial % 3 == 2;
@@ -89,20 +90,26 @@ fn matches_enumeration_on_random_problems() {
         };
         let all = enumerate(&lcp);
         let res = solve_lcp(&lcp, &LcpParams::default());
-        if welded && all.is_empty() {
-            // A random welded problem may have no solution at all: the solver must say so.
-            assert!(
-                res.is_err(),
-                "trial {trial}: a solution where enumeration found none"
-            );
-            continue;
+        let res = res.unwrap_or_else(|e| panic!("trial {trial}: {e}"));
+        if res.info.prefix {
+            // Pivoting found no solution (none may exist): the report's rule — a contact zone
+            // from the first point on, all normal forces compressive, the longest such.
+            assert!(welded, "trial {trial}: fallback on a frictionless problem");
+            let k = res.info.active;
+            assert!(res.active.iter().enumerate().all(|(i, &a)| a == (i < k)));
+            assert!((0..k).all(|i| res.force[i] >= -1e-10 * res.force.amax()));
+            welded_fallback += 1;
+            if all.is_empty() {
+                continue;
+            }
+            // A solution exists but the pivoting missed it: the fallback must be it if it is a
+            // contiguous zone; otherwise count the miss.
+            if res.info.residual > 1e-9 {
+                welded_missed += 1;
+                continue;
+            }
         }
-        if welded && res.is_err() {
-            // The welded model is no P-matrix LCP: pivoting may miss an existing solution.
-            welded_missed += 1;
-            continue;
-        }
-        let s = res.unwrap_or_else(|e| panic!("trial {trial} ({} solutions): {e}", all.len()));
+        let s = res;
         // For SPD F the frictionless LCP has exactly one solution (enumeration checks it below).
         assert!(
             !all.is_empty(),
@@ -131,7 +138,10 @@ fn matches_enumeration_on_random_problems() {
             s.info.residual
         );
     }
-    eprintln!("welded random problems with a solution the pivoting missed: {welded_missed}");
+    eprintln!(
+        "welded random problems: {welded_fallback} fell back to the contiguous rule, \
+         {welded_missed} of them although a Signorini solution exists"
+    );
 }
 
 #[test]

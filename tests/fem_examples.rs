@@ -17,3 +17,21 @@ fn table1_example_runs_on_two_rows() {
     // 4 levels reach 0.05 % on the first rows (measured 0.01 %)
     ex03::run(4, 2, 0.05).unwrap();
 }
+
+#[allow(dead_code)]
+#[path = "../examples/11_rigid_nut.rs"]
+mod ex11;
+
+#[test]
+fn rigid_nut_example_runs() {
+    ex11::run(3).unwrap();
+}
+
+#[allow(dead_code)]
+#[path = "../examples/12_report_mesh.rs"]
+mod ex12;
+
+#[test]
+fn report_mesh_example_runs() {
+    ex12::run(1).unwrap();
+}

@@ -7,7 +7,7 @@
 //! carries the applied force.
 
 use boltzone::fem::single::{
-    coarse_radial_spacing, single_plate_r_o, solve_midplane, SingleParams,
+    coarse_radial_spacing, single_plate_r_o, solve_midplane, Loading, SingleParams,
 };
 use boltzone::fem::{ElementKind, SolveParams};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -74,7 +74,15 @@ fn midplane_traction_carries_the_applied_force() {
     let plate = table1_plate(1.0, 2.2);
     let params = SingleParams::default();
     let radial = coarse_radial_spacing(&plate, &params).unwrap().refined(2);
-    let m = solve_midplane(&plate, ElementKind::Q9, &radial, 4, &SolveParams::default()).unwrap();
+    let m = solve_midplane(
+        &plate,
+        Loading::Pressure,
+        ElementKind::Q9,
+        &radial,
+        4,
+        &SolveParams::default(),
+    )
+    .unwrap();
     // ∫ σ_z 2πr dr over the midplane = −F; integrate the nodal values with the edges' Simpson
     // rule (σ_z·r is a cubic on each edge: Simpson is exact)
     let mut total = 0.0;

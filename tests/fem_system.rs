@@ -6,6 +6,7 @@
 //! References: exact uniform-stress solutions (σ_z = −p in every plate whatever its E, u = ν p r/E)
 //! and Maxwell–Betti reciprocity (a flexibility matrix of a symmetric K is symmetric).
 
+use boltzone::fem::FemError;
 use boltzone::fem::*;
 use boltzone::{FaceLoad, Material};
 use faer::Mat;
@@ -230,4 +231,58 @@ fn prescribed_displacement_under_a_flat_punch_gives_exact_reactions_and_axis_is_
             );
         }
     }
+}
+
+#[test]
+fn a_pattern_of_another_dof_map_is_a_named_error() {
+    let mesh = stack(ElementKind::Q4);
+    let mats = [
+        Material::new(1.0, 0.3).unwrap(),
+        Material::new(3.0, 0.2).unwrap(),
+    ];
+    let mut s = Supports::new(mesh.n_nodes());
+    s.fix(0);
+    let other = DofMap::new(&Supports::new(mesh.n_nodes()));
+    let dofs = DofMap::new(&s);
+    let err = assemble(&mesh, &mats, &dofs, &Pattern::new(&mesh, &other)).unwrap_err();
+    assert!(matches!(err, FemError::PatternSize { .. }), "{err}");
+    // same size, other constrained component: an entry is missing from the pattern
+    let mut s2 = Supports::new(mesh.n_nodes());
+    s2.fix(mesh.n_nodes() - 1);
+    let err = assemble(&mesh, &mats, &dofs, &Pattern::new(&mesh, &DofMap::new(&s2))).unwrap_err();
+    assert!(matches!(err, FemError::PatternMismatch { .. }), "{err}");
+    let err = assemble(&mesh, &mats[..1], &dofs, &Pattern::new(&mesh, &dofs)).unwrap_err();
+    assert!(err.to_string().contains("material 1"), "{err}");
+}
+
+#[test]
+fn parallel_and_sequential_factorizations_agree() {
+    let mesh = stack(ElementKind::Q9);
+    let mats = [
+        Material::new(1.0, 0.3).unwrap(),
+        Material::new(3.0, 0.2).unwrap(),
+    ];
+    let mut s = Supports::new(mesh.n_nodes());
+    for n in [mesh.bottom(0), mesh.bottom(1)].concat() {
+        s.roller_z(n);
+    }
+    let dofs = DofMap::new(&s);
+    let k = assemble(&mesh, &mats, &dofs, &Pattern::new(&mesh, &dofs)).unwrap();
+    let b: Vec<f64> = (0..dofs.n_equations()).map(|i| (i as f64).cos()).collect();
+    let seq = Factorization::new(&k.matrix, &SolveParams { parallel: false })
+        .unwrap()
+        .solve(&b);
+    let nd = nested_dissection(&mesh, &dofs);
+    let par = Factorization::with_ordering(&k.matrix, Some(&nd), &SolveParams { parallel: true })
+        .unwrap()
+        .solve(&b);
+    let xm = seq.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    // two orderings, two round-off histories: agreement to cond(K)·ε (~1e-10 here)
+    assert!(seq
+        .iter()
+        .zip(&par)
+        .all(|(a, c)| (a - c).abs() <= 1e-9 * xm));
+    assert!(
+        Factorization::with_ordering(&k.matrix, Some(&nd[1..]), &SolveParams::default()).is_err()
+    );
 }

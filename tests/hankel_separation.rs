@@ -156,3 +156,39 @@ fn bad_input_is_named() {
         .to_string()
         .contains("R_o relative tolerance"));
 }
+
+#[test]
+fn point_kernel_matches_mpmath() {
+    // g(x) = (1/2π)∫ t K(t) J₀(tx) dt by mpmath 1.3 (quad / quadosc, 30 digits)
+    for (x, want) in [
+        (0.0, 0.822_520_724_830_781_4),
+        (2.0, -0.006_000_936_701_794_124),
+    ] {
+        let g = realspace::point_kernel(x);
+        assert!(
+            (g - want).abs() <= realspace::point_kernel_error(),
+            "g({x}) = {g} vs {want}"
+        );
+    }
+    assert!(realspace::point_kernel_error() < 1e-13);
+}
+
+#[test]
+fn triangular_loads_separate_beyond_the_load() {
+    // report Figs. 19–20: the peak at A concentrates the load inward, so R_o is smaller than
+    // for the peak at B (same force); both across the thickness range
+    for &da in &[1e-3, 0.1, 1.0, 1e3] {
+        let r_o = |peak| {
+            let load = FaceLoad::triangular(1.0, 3.1, 1.0, peak).unwrap();
+            let s = Slab::new(da, Material::unit(0.3).unwrap(), load).unwrap();
+            let sep = s.separation_radius(&SeparationParams::default()).unwrap();
+            assert!(
+                sep.r_o > 3.1 && sep.error < 1e-9 * sep.r_o,
+                "D/A {da}: {sep:?}"
+            );
+            sep.r_o
+        };
+        let (at_a, at_b) = (r_o(boltzone::Peak::AtA), r_o(boltzone::Peak::AtB));
+        assert!(at_a < at_b, "D/A {da}: {at_a} vs {at_b}");
+    }
+}

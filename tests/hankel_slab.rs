@@ -318,3 +318,136 @@ fn load_transform_obeys_its_bounds_and_small_argument_limit() {
         );
     }
 }
+
+#[test]
+fn field_error_estimates_cover_the_actual_error() {
+    // default tolerance (1e-12) and a looser one against a reference with 20-point panels at
+    // 1e-14: every component's actual error is within its estimate, on the face, inside,
+    // across the load's edges and far out
+    let s = Slab::new(
+        0.1,
+        Material::unit(0.3).unwrap(),
+        FaceLoad::triangular(0.1, 0.31, 1.0, Peak::AtB).unwrap(),
+    )
+    .unwrap();
+    let reference = QuadParams {
+        rel_tol: 1e-14,
+        order: 20,
+        ..Default::default()
+    };
+    let mut failures = Vec::new();
+    for params in [
+        QuadParams::default(),
+        QuadParams {
+            rel_tol: 1e-7,
+            ..Default::default()
+        },
+    ] {
+        for &r in &[0.0, 0.05, 0.1, 0.2, 0.31, 0.4, 1.0, 3.0] {
+            for &z in &[0.0, 0.03, 0.07, 0.095, 0.1] {
+                let (a, b) = (s.stress(r, z, &params), s.stress(r, z, &reference));
+                let (c, d) = (
+                    s.displacement(r, z, &params),
+                    s.displacement(r, z, &reference),
+                );
+                let pairs = [
+                    ("σ_r", a.sigma_r, b.sigma_r),
+                    ("σ_θ", a.sigma_theta, b.sigma_theta),
+                    ("σ_z", a.sigma_z, b.sigma_z),
+                    ("τ", a.tau_rz, b.tau_rz),
+                    ("u", c.u, d.u),
+                    ("w", c.w, d.w),
+                ];
+                for (name, x, y) in pairs {
+                    if (x.value - y.value).abs() > x.error + y.error {
+                        failures.push(format!(
+                            "{name} ({r},{z}) tol {:e}: {:e} ± {:.1e} vs {:e} ± {:.1e}",
+                            params.rel_tol, x.value, x.error, y.value, y.error
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+#[test]
+fn surface_integral_matches_the_boussinesq_disk_deflection() {
+    // W(r) = ∫ p̄ J₀ dξ for a uniform disk (radius a): (2pa/π)E(r²/a²) for r ≤ a and
+    // (2pa/π)(r/a)[E(a²/r²) − (1 − a²/r²)K(a²/r²)] beyond (Timoshenko & Goodier § 138);
+    // elliptic integrals (parameter m) from mpmath 1.3 at 30 digits.
+    let t =
+        boltzone::hankel::transform::LoadTransform::new(&FaceLoad::uniform(0.0, 1.0, 1.0).unwrap());
+    let pi = std::f64::consts::PI;
+    let cases = [
+        (0.0, 1.0),
+        (0.5, 2.0 / pi * 1.467_462_209_339_427), // E(0.25)
+        (0.9, 2.0 / pi * 1.1716970527816141),    // E(0.81)
+        (1.0, 2.0 / pi),                         // E(1) = 1
+        (2.0, 0.258_657_904_611_341_7),          // r/a = 2
+    ];
+    for (r, want) in cases {
+        let e = t.surface_integral(r, 1e-14);
+        assert!(
+            (e.value - want).abs() <= e.error.max(4.0 * f64::EPSILON),
+            "r={r}: {e:?} vs {want}"
+        );
+        assert!(e.error < 1e-12, "r={r}: {e:?}");
+    }
+}
+
+#[test]
+fn ring_loads_superpose_to_the_annulus() {
+    // ∫_A^B p(ρ₀) (ring-load field at ρ₀) dρ₀ = the annular-load field: Gauss–Legendre in ρ₀
+    // (panels of D/2 at an interior point ≥ D/2 from the faces: the ring field is analytic in
+    // ρ₀ there) against the Slab's direct transform
+    let (a, b, d) = (0.1, 0.31, 0.1);
+    let m = Material::unit(0.3).unwrap();
+    let s = Slab::new(d, m, FaceLoad::triangular(a, b, 1.0, Peak::AtA).unwrap()).unwrap();
+    let p = QuadParams {
+        rel_tol: 1e-13,
+        ..Default::default()
+    };
+    let g = gauss_legendre(20);
+    for &(r, z) in &[(0.2, 0.04), (0.5, 0.0), (0.05, -0.03)] {
+        let n = ((b - a) / (0.5 * d)).ceil() as usize;
+        let h = (b - a) / n as f64;
+        let mut acc = [0.0; 6];
+        for k in 0..n {
+            for &(x, w) in g.iter() {
+                let rho = a + (k as f64 + 0.5 + 0.5 * x) * h;
+                let (st, u) = boltzone::hankel::ring_load(d, m, rho, r, z, &p);
+                let f = 0.5 * h * w * s.load().pressure_at(rho);
+                let v = [
+                    st.sigma_r.value,
+                    st.sigma_theta.value,
+                    st.sigma_z.value,
+                    st.tau_rz.value,
+                    u.u.value,
+                    u.w.value,
+                ];
+                for i in 0..6 {
+                    acc[i] += f * v[i];
+                }
+            }
+        }
+        let (st, u) = (s.stress(r, z, &p), s.displacement(r, z, &p));
+        let want = [
+            st.sigma_r.value,
+            st.sigma_theta.value,
+            st.sigma_z.value,
+            st.tau_rz.value,
+            u.u.value,
+            u.w.value,
+        ];
+        for i in 0..6 {
+            assert!(
+                (acc[i] - want[i]).abs() < 1e-10,
+                "({r},{z}) component {i}: {} vs {}",
+                acc[i],
+                want[i]
+            );
+        }
+    }
+}

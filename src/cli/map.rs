@@ -19,6 +19,12 @@ pub struct Args {
     /// C/A of the plates (Table 1's: 15.4).
     #[arg(long, default_value_t = 15.4)]
     c_over_a: f64,
+    /// Your own A/D values instead of the log-spaced axis (comma-separated; sorted).
+    #[arg(long, value_delimiter = ',', value_name = "LIST")]
+    a_over_d: Vec<f64>,
+    /// Your own B/A values instead of the log-spaced axis (comma-separated; sorted).
+    #[arg(long, value_delimiter = ',', value_name = "LIST")]
+    b_over_a: Vec<f64>,
     /// Write the map as CSV to FILE.
     #[arg(long, value_name = "FILE")]
     csv: Option<PathBuf>,
@@ -35,23 +41,41 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if !(2..=400).contains(&args.n) {
         anyhow::bail!("--n = {}: must lie in 2..=400", args.n);
     }
+    let axis = |own: &[f64], lo: f64, hi: f64| {
+        if own.is_empty() {
+            log_spaced(lo, hi, args.n)
+        } else {
+            let mut v = own.to_vec();
+            v.sort_by(f64::total_cmp);
+            v.dedup();
+            v
+        }
+    };
     let params = MapParams {
-        a_over_d: log_spaced(0.2, 5.0, args.n),
-        b_over_a: log_spaced(1.1, 5.0, args.n),
+        a_over_d: axis(&args.a_over_d, 0.2, 5.0),
+        b_over_a: axis(&args.b_over_a, 1.1, 5.0),
         c_over_a: args.c_over_a,
         tolerance: args.tol,
         ..MapParams::default()
     };
-    let bar = progress((args.n * args.n) as u64, "map");
+    let bar = progress(
+        (params.a_over_d.len() * params.b_over_a.len()) as u64,
+        "map",
+    );
     let map = compute(&params, &|| bar.inc(1))?;
     bar.finish_and_clear();
     let (es, et) = map.max_relative_error();
     println!(
-        "design map {n} x {n} (A/D 0.2..5, B/A 1.1..5, C/A = {}, nu = 0.3): {:.1} s on {} threads",
+        "design map {} x {} (A/D {}..{}, B/A {}..{}, C/A = {}, nu = 0.3): {:.1} s on {} threads",
+        map.a_over_d.len(),
+        map.b_over_a.len(),
+        map.a_over_d[0],
+        map.a_over_d[map.a_over_d.len() - 1],
+        map.b_over_a[0],
+        map.b_over_a[map.b_over_a.len() - 1],
         args.c_over_a,
         map.seconds,
-        rayon::current_num_threads(),
-        n = args.n
+        rayon::current_num_threads()
     );
     println!(
         "largest estimated relative error of R_o: single {es:.1e}, two-plate {et:.1e} (tolerance {:e})",

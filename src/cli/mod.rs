@@ -95,7 +95,11 @@ fn default_case() -> anyhow::Result<()> {
         "Built-in default case = Table 1's first geometry (Gould & Mikic 1970): two equal plates\n\
          D = {} in thick, hole radius A = {} in, bearing face to B = {} in, plate radius C = {} in,\n\
          nu = {}, uniform bearing pressure. Contact for A <= r <= R_o. Ours ± error estimate [report].\n",
-        g.d, g.a, g.b, g.c, g.nu
+        short(g.d),
+        short(g.a),
+        short(g.b),
+        short(g.c),
+        g.nu
     );
     let line = |name: &str, v: Value, rep: Option<f64>, secs: f64| {
         let r = c.over_a(v);
@@ -150,6 +154,11 @@ fn default_case() -> anyhow::Result<()> {
         c.info.seconds
     );
     Ok(())
+}
+
+/// A length without binary round-off noise (0.31, not 0.31000000000000005).
+fn short(x: f64) -> String {
+    format!("{}", (x * 1e9).round() / 1e9)
 }
 
 /// A rule's display name ("30° cone" for the extra cone).

@@ -1,9 +1,11 @@
 //! `boltzone single`: the single-plate model (Fernlund's substitution, a plate 2D thick with a
 //! hole, loaded on both faces by a uniform pressure over A..B) and its separation radius R_o.
 //! `--method fem` runs [`boltzone::fem::single::single_plate_r_o`] (nested refinements with a
-//! Richardson error estimate); `--method hankel` is the Hankel-transform route (not built yet).
+//! Richardson error estimate); `--method hankel` runs
+//! [`boltzone::hankel::hole::single_plate_separation`] (infinite slab + hole correction, and a
+//! rim correction when `--c` is given).
 
-use boltzone::fem::single::{single_plate_r_o, SingleParams};
+use boltzone::fem::single::{single_plate_r_o, Loading, SingleParams};
 use boltzone::fem::ElementKind;
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
@@ -25,6 +27,15 @@ pub enum Element {
     Q4bbar,
     /// The report's quadrilateral of four constant-strain triangles.
     Cst4,
+}
+
+/// How the bolt head loads the faces (fem).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Nut {
+    /// Uniform bearing pressure over A..B (Table 1).
+    Pressure,
+    /// Rigid frictionless nut: uniform displacement over A..B (report Fig. 21).
+    Rigid,
 }
 
 /// Arguments of `boltzone single`.
@@ -51,6 +62,9 @@ pub struct Args {
     /// Element family (fem).
     #[arg(long, value_enum, default_value_t = Element::Q9)]
     element: Element,
+    /// Face loading (fem).
+    #[arg(long, value_enum, default_value_t = Nut::Pressure)]
+    nut: Nut,
     /// Nested refinement levels (fem, ≥ 3 for an error estimate).
     #[arg(long, default_value_t = 5)]
     levels: usize,
@@ -65,14 +79,24 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let load = FaceLoad::uniform(args.a, args.b, 1.0)?;
     let plate = SinglePlate::new(args.a, outer, args.d, Material::unit(args.nu)?, load)?;
     if args.method == Method::Hankel {
-        anyhow::bail!("--method hankel is not available yet (the Hankel single-plate solver is being built); use --method fem");
+        if args.nut != Nut::Pressure {
+            anyhow::bail!(
+                "--nut rigid needs --method fem (the Hankel route loads the faces by a pressure)"
+            );
+        }
+        return run_hankel(&args, &plate);
     }
     let kind = match args.element {
         Element::Q9 => ElementKind::Q9,
         Element::Q4bbar => ElementKind::Q4Bbar,
         Element::Cst4 => ElementKind::Cst4,
     };
+    let loading = match args.nut {
+        Nut::Pressure => Loading::Pressure,
+        Nut::Rigid => Loading::UniformDisplacement,
+    };
     let params = SingleParams {
+        loading,
         kind,
         levels: args.levels,
         ..SingleParams::default()
@@ -87,6 +111,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         let v = serde_json::json!({
             "method": "fem",
             "element": format!("{kind:?}"),
+            "loading": format!("{loading:?}"),
             "r_o": r_o,
             "r_o_over_a": r_o_over_a,
             "r_o_error": info.error_estimate,
@@ -119,6 +144,56 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             info.dofs,
             info.seconds
         );
+    }
+    Ok(())
+}
+
+/// `--method hankel`: R_o of the plate with its hole made traction-free (Hankel route).
+fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<()> {
+    use boltzone::hankel::hole::{single_plate_separation, HoleParams};
+    let (sep, hole) = single_plate_separation(plate, &Default::default(), &HoleParams::default())?;
+    let r_o_over_a = (args.a > 0.0).then(|| sep.r_o / args.a);
+    if args.json {
+        let v = serde_json::json!({
+            "method": "hankel",
+            "r_o": sep.r_o,
+            "r_o_over_a": r_o_over_a,
+            "r_o_error": sep.error,
+            "outer_radius": args.c,
+            "hole_terms": hole.terms,
+            "hole_residual_max": hole.residual_max,
+            "hole_residual_rms": hole.residual_rms,
+            "rim_residual_max": hole.rim_residual_max,
+            "hole_condition": hole.condition,
+            "hole_history": hole.history,
+            "evaluations": sep.evaluations + hole.slab_evaluations,
+            "seconds": sep.seconds,
+        });
+        println!("{}", serde_json::to_string_pretty(&v)?);
+    } else {
+        println!(
+            "single plate 2D thick with a hole, Hankel route, A = {}, B = {}, D = {}, C = {}, nu = {}",
+            args.a,
+            args.b,
+            args.d,
+            plate.outer_radius().value(),
+            args.nu
+        );
+        println!("R_o      = {:.8} ± {:.2e}", sep.r_o, sep.error);
+        if let Some(q) = r_o_over_a {
+            println!("R_o / A  = {q:.7}");
+        }
+        println!(
+            "hole     = {} modes, residual traction max {:.2e} P, rms {:.2e} P, condition {:.1e}",
+            hole.terms, hole.residual_max, hole.residual_rms, hole.condition
+        );
+        if args.c.is_some() {
+            println!(
+                "rim      = residual traction max {:.2e} P",
+                hole.rim_residual_max
+            );
+        }
+        println!("time     = {:.2} ms", 1e3 * sep.seconds);
     }
     Ok(())
 }

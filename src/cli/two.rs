@@ -1,6 +1,6 @@
 //! `boltzone two`: the two-plate model (report Chapter II.B), solved by
 //! [`boltzone::contact::two_plate`]: separation radius R_o with its error, and on request the
-//! interface pressure p(r) and gap g(r) as CSV.
+//! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV.
 
 use anyhow::Context;
 use boltzone::contact::two_plate::{
@@ -94,13 +94,14 @@ pub struct Args {
     /// Interface model for unequal or dissimilar plates (equal plates are exact either way).
     #[arg(long, value_enum, default_value_t = Interface::Welded)]
     interface: Interface,
-    /// Element type.
+    /// Element type (q9: the only one whose R_o error estimate is reliable; the linear ones are
+    /// cheaper but can miss the tolerance by a factor of three).
     #[arg(long, value_enum, default_value_t = Element::Q9)]
     element: Element,
     /// Wanted relative error of R_o.
     #[arg(long, default_value_t = 5e-4)]
     tol: f64,
-    /// Write r, p(r), g(r) of the finest mesh to this CSV file.
+    /// Write r, p(r), g(r), τ(r) of the finest mesh to this CSV file.
     #[arg(long)]
     curve: Option<PathBuf>,
     /// Print the result as JSON.
@@ -209,11 +210,12 @@ fn write_curve(path: &Path, s: &TwoPlateSolution) -> anyhow::Result<()> {
         )?;
         writeln!(
             f,
-            "# r = radius, p = interface pressure (compression > 0), g = gap between the plates"
+            "# r = radius, p = interface pressure (compression > 0), g = gap between the plates, \
+             tau = interface shear stress on the upper plate (welded model; 0 otherwise)"
         )?;
-        writeln!(f, "r,p,g")?;
-        for ((r, p), g) in s.radius.iter().zip(&s.pressure).zip(&s.gap) {
-            writeln!(f, "{r:.10e},{p:.10e},{g:.10e}")?;
+        writeln!(f, "r,p,g,tau")?;
+        for (((r, p), g), t) in s.radius.iter().zip(&s.pressure).zip(&s.gap).zip(&s.shear) {
+            writeln!(f, "{r:.10e},{p:.10e},{g:.10e},{t:.10e}")?;
         }
         f.flush()?;
     }

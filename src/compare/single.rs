@@ -52,7 +52,14 @@ pub fn single_fem(plate: &SinglePlate, tolerance: f64) -> Result<(Value, FemStud
     let mut values: Vec<f64> = Vec::new();
     for l in 0..MAX_FEM_LEVELS {
         let k = 1 << l;
-        let m = solve_midplane(plate, params.kind, &coarse.refined(k), nz0 * k, &solve)?;
+        let m = solve_midplane(
+            plate,
+            params.loading,
+            params.kind,
+            &coarse.refined(k),
+            nz0 * k,
+            &solve,
+        )?;
         let dofs = m.dofs;
         values.push(m.first_tensile_crossing(b).ok_or_else(|| {
             FemError::Solver("the midplane stress never turns tensile inside the plate".into())

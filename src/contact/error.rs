@@ -7,6 +7,7 @@
 //! ```
 
 use crate::error::InputError;
+use crate::fem::FemError;
 use thiserror::Error;
 
 /// A contact computation that could not deliver a solution.
@@ -31,9 +32,9 @@ pub enum ContactError {
         /// Size of the restricted matrix.
         size: usize,
     },
-    /// The sparse factorization of the stiffness matrix failed (a support is missing).
-    #[error("sparse Cholesky factorization of the stiffness matrix failed: {0}")]
-    Factorization(String),
+    /// The finite-element model failed (assembly or factorization: e.g. a support is missing).
+    #[error(transparent)]
+    Fem(#[from] FemError),
     /// The reference contact node, held down to remove the rigid motion, pulls on the plane.
     #[error("the reference contact node at r = {radius} carries a tensile reaction {reaction}; the load does not press the plates together there")]
     ReferenceInTension {

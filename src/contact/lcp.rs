@@ -25,7 +25,10 @@
 //! longer changes. Block pivoting usually converges in a handful of steps; should an active set
 //! repeat (a cycle), the iteration switches to Murty's least-index single pivoting, which is
 //! finite for any P-matrix (and an SPD matrix is one). The welded problem is not an LCP of that
-//! kind and need not have a solution: a repeated set under Murty's rule ends the iteration. Both are bounded by
+//! kind and need not have a solution (plates of different materials welded together have no
+//! sign-consistent contact edge): a repeated set under Murty's rule ends the pivoting, and the
+//! welded problem then falls back to the report's own rule, the longest contact zone from the
+//! inside out without tension ([`LcpInfo::prefix`]). Both are bounded by
 //! [`LcpParams::max_iterations`]; beyond it the solver returns [`ContactError::NotConverged`].
 //!
 //! ```
@@ -146,6 +149,9 @@ pub struct LcpInfo {
     pub changes: usize,
     /// Whether the least-index (Murty) fallback was needed.
     pub murty: bool,
+    /// Whether the welded problem fell back to the report's contiguous-zone rule (module docs);
+    /// then `residual` tells how far the Signorini conditions are from holding.
+    pub prefix: bool,
     /// Largest relative violation at the solution: max over points of the negative parts of
     /// λ/max|λ| and g/max|g⁰|, and of |λ g|/(max|λ| max|g⁰|).
     pub residual: f64,
@@ -182,6 +188,20 @@ pub fn solve_lcp_from(
     warm: Option<&[bool]>,
 ) -> Result<LcpSolution, ContactError> {
     let start = Instant::now();
+    match active_set(lcp, params, warm, start) {
+        Err(ContactError::NotConverged { iterations, .. }) if lcp.welded => {
+            prefix_scan(lcp, params, iterations, start)
+        }
+        other => other,
+    }
+}
+
+fn active_set(
+    lcp: &Lcp,
+    params: &LcpParams,
+    warm: Option<&[bool]>,
+    start: Instant,
+) -> Result<LcpSolution, ContactError> {
     lcp.check()?;
     if !(params.tolerance.is_finite() && params.tolerance > 0.0 && params.tolerance < 1.0) {
         return Err(InputError::Parameter {
@@ -262,6 +282,57 @@ pub fn solve_lcp_from(
     Err(ContactError::NotConverged {
         iterations: params.max_iterations,
         violations: m,
+    })
+}
+
+/// The report's rule for the welded model when pivoting finds no solution (dissimilar
+/// materials welded together have no sign-consistent contact edge): the contact zone is the
+/// longest run of points from the inside out (points are ordered by radius) whose normal forces
+/// are all compressive; among those runs the first, scanning from the longest, whose open points
+/// do not penetrate is taken if there is one.
+fn prefix_scan(
+    lcp: &Lcp,
+    params: &LcpParams,
+    iterations: usize,
+    start: Instant,
+) -> Result<LcpSolution, ContactError> {
+    let m = lcp.points();
+    let g_scale = lcp.gap0.amax().max(f64::MIN_POSITIVE);
+    let mut info = LcpInfo {
+        iterations,
+        prefix: true,
+        murty: true,
+        ..Default::default()
+    };
+    let mut best: Option<(Vec<bool>, DVector<f64>, DVector<f64>)> = None;
+    for k in (0..=m).rev() {
+        info.iterations += 1;
+        let active: Vec<bool> = (0..m).map(|i| i < k).collect();
+        let (force, gap) = solve_on(lcp, &active)?;
+        let tol_l = params.tolerance * force.amax().max(f64::MIN_POSITIVE);
+        if (0..k).any(|i| force[i] < -tol_l) {
+            continue;
+        }
+        let tight = (k..m).all(|i| gap[i] >= -params.tolerance * g_scale);
+        if tight || best.is_none() {
+            best = Some((active, force, gap));
+        }
+        if tight {
+            break;
+        }
+    }
+    let (active, force, gap) = best.ok_or(ContactError::NotConverged {
+        iterations: info.iterations,
+        violations: m,
+    })?;
+    info.residual = residual(lcp, &force, &gap, g_scale);
+    info.active = active.iter().filter(|&&a| a).count();
+    info.time = start.elapsed();
+    Ok(LcpSolution {
+        force,
+        gap,
+        active,
+        info,
     })
 }
 

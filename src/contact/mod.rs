@@ -8,7 +8,11 @@
 //! - [`lcp`]: the interface LCP g = g⁰ + Fλ solved by primal–dual active sets (semismooth Newton)
 //!   with a Murty fallback; [`pgs`]: projected Gauss–Seidel as an independent check;
 //! - [`separation`]: R_o finer than one element from the √(R_o − r) pressure and the
-//!   (r − R_o)^{3/2} gap of a smooth separation.
+//!   (r − R_o)^{3/2} gap of a smooth separation;
+//! - [`two_plate`]: the model (symmetric pair on a rigid plane, unequal or dissimilar pairs
+//!   welded or frictionless, the report's load variants), level after level of a mesh refined at
+//!   R_o; [`level`]: one mesh level on [`crate::fem`] (one factorization, a Schur complement on
+//!   the interface window, the LCP); [`tie`]: tied unknowns of closed pairs.
 //!
 //! ```
 //! use boltzone::contact::{solve_lcp, Lcp, LcpParams};
@@ -21,6 +25,7 @@ mod error;
 pub mod lcp;
 pub mod level;
 pub mod pgs;
+mod refine;
 pub mod separation;
 pub mod tie;
 pub mod two_plate;

@@ -95,13 +95,14 @@ pub fn estimate(data: &NodalInterface<'_>) -> Option<SeparationEstimate> {
     })
 }
 
-/// Observed convergence of a sequence of estimates on meshes refined by a constant factor:
-/// returns (rate, error estimate of the last value) from the last three values, with
-/// rate = log(|x₁ − x₀| / |x₂ − x₁|) / log(factor) and the Richardson error
-/// |x₂ − x₁| / (factor^p − 1), p = min(rate, `max_rate`). Conservative on purpose: when the two
-/// differences change sign (not yet asymptotic) or the rate is below 1, the error is the last
-/// change |x₂ − x₁| itself, and a rate above `max_rate` (the expected asymptotic order) is not
-/// trusted beyond it. None if fewer than three values or a difference vanishes.
+/// Observed convergence of a sequence of estimates on meshes refined by a constant factor f:
+/// returns (rate, error estimate of the last value) from the last three values x₀, x₁, x₂, with
+/// rate = log(|x₁ − x₀| / |x₂ − x₁|) / log f. The error is a Richardson estimate made
+/// conservative on purpose: with d = max(|x₂ − x₁|, |x₁ − x₀| / f^`max_rate`) (a last change
+/// that is accidentally small cannot hide the one before, shrunk at the largest rate expected),
+/// the error is d / (f^p − 1), p = min(rate, `max_rate`), when the two changes have one sign and
+/// rate ≥ 1, and d itself otherwise (not yet asymptotic). None if fewer than three values or a
+/// change vanishes exactly.
 pub fn observed_rate(values: &[f64], factor: f64, max_rate: f64) -> Option<(f64, f64)> {
     let n = values.len();
     if n < 3 {
@@ -113,10 +114,31 @@ pub fn observed_rate(values: &[f64], factor: f64, max_rate: f64) -> Option<(f64,
         return None;
     }
     let rate = (d1 / d2).ln() / factor.ln();
+    let d = d2.max(d1 / factor.powf(max_rate));
     let err = if rate >= 1.0 && s1.signum() == s2.signum() {
-        d2 / (factor.powf(rate.min(max_rate)) - 1.0)
+        d / (factor.powf(rate.min(max_rate)) - 1.0)
     } else {
-        d2
+        d
     };
     Some((rate, err))
+}
+
+/// Convergence rate fitted to a whole sequence on meshes refined by the factor f: the
+/// least-squares slope of log |x_{k+1} − x_k| against k log f. None with fewer than two changes
+/// or a change that vanishes exactly.
+pub fn fitted_rate(values: &[f64], factor: f64) -> Option<f64> {
+    let pts: Vec<(f64, f64)> = values
+        .windows(2)
+        .enumerate()
+        .map(|(k, w)| (k as f64 * factor.ln(), (w[1] - w[0]).abs().ln()))
+        .collect();
+    if pts.len() < 2 || pts.iter().any(|p| !p.1.is_finite()) {
+        return None;
+    }
+    let n = pts.len() as f64;
+    let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
+    let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    Some(-sxy / sxx)
 }

@@ -4,7 +4,7 @@
 //! the welded model, its radial one). With T the 0/1 matrix that maps the tied unknowns to the
 //! FE equations (one 1 per row), the tied system is Tᵀ K T y = Tᵀ f and x = T y: Tᵀ K T is K
 //! with rows and columns of tied equations summed, Tᵀ f sums their loads. On the lower triangle
-//! that [`crate::fem::assemble`] returns, an off-diagonal entry whose two equations are tied to
+//! that [`crate::fem::assemble()`] returns, an off-diagonal entry whose two equations are tied to
 //! the same unknown lands on the diagonal twice (as K_ij and K_ji). Units and signs: those of K.
 //!
 //! (A thin layer the FE dof map could absorb as a `tie` support.)

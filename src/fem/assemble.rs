@@ -3,8 +3,9 @@
 //! Q* = −K_ab u_b (eq. A.20).
 //!
 //! The sparsity pattern ([`Pattern`]) depends only on the mesh and on which components are
-//! free; it is built once (faer's `SymbolicSparseColMat` with the order of the assembled values)
-//! and every later assembly with other materials or prescribed values only fills values. Skew
+//! free; it is built once from the mesh's node adjacency (faer's `SymbolicSparseColMat`, rows
+//! sorted in each column, entries located by binary search) and every later assembly with other
+//! materials or prescribed values only fills values. Skew
 //! nodes enter through kₑ' = Tᵀ kₑ T with T the node's rotation (s, n) → (r, z).
 //!
 //! ```
@@ -25,14 +26,13 @@ use super::dofs::{Component, DofMap};
 use super::mesh::Mesh;
 use super::FemError;
 use crate::material::Material;
-use faer::sparse::{Argsort, Pair, SparseColMat, SymbolicSparseColMat};
+use faer::sparse::{SparseColMat, SymbolicSparseColMat};
 
-/// The fixed sparsity pattern of the lower triangle and the order of assembled values.
+/// The fixed sparsity pattern of the lower triangle (columns sorted), built from the node
+/// adjacency of the mesh.
 #[derive(Debug, Clone)]
 pub struct Pattern {
     symbolic: SymbolicSparseColMat<usize>,
-    argsort: Argsort<usize>,
-    n_values: usize,
 }
 
 /// An assembled system: K (lower triangle stored) and the load of the prescribed components.
@@ -58,32 +58,60 @@ fn element_equations(mesh: &Mesh, dofs: &DofMap, e: usize) -> Vec<Option<usize>>
 }
 
 impl Pattern {
-    /// The pattern of K for `mesh` with the free components of `dofs`.
+    /// The pattern of K for `mesh` with the free components of `dofs`: column j holds every
+    /// equation i ≥ j of a node that shares an element with j's node.
     pub fn new(mesh: &Mesh, dofs: &DofMap) -> Self {
-        let mut idx = Vec::new();
+        // neighbours q ≥ p of every node p (sorted, unique)
+        let mut adj: Vec<Vec<u32>> = vec![Vec::new(); mesh.n_nodes()];
         for e in 0..mesh.n_elements() {
-            let eqs = element_equations(mesh, dofs, e);
-            for &a in eqs.iter().flatten() {
-                for &b in eqs.iter().flatten() {
-                    if a >= b {
-                        idx.push(Pair::new(a, b));
-                    }
-                }
+            let nodes = mesh.element_nodes(e);
+            for &p in nodes {
+                adj[p].extend(nodes.iter().filter(|&&q| q >= p).map(|&q| q as u32));
             }
         }
         let n = dofs.n_equations();
-        let (symbolic, argsort) = SymbolicSparseColMat::try_new_from_indices(n, n, &idx)
-            .expect("indices are in range by construction");
+        let mut col_ptr = Vec::with_capacity(n + 1);
+        col_ptr.push(0);
+        let mut row_idx = Vec::new();
+        let mut col = Vec::new();
+        for (p, list) in adj.iter_mut().enumerate() {
+            list.sort_unstable();
+            list.dedup();
+            for c in [Component::R, Component::Z] {
+                let Some(j) = dofs.equation(p, c) else {
+                    continue;
+                };
+                col.clear();
+                for &q in list.iter() {
+                    for cq in [Component::R, Component::Z] {
+                        if let Some(i) = dofs.equation(q as usize, cq) {
+                            if i >= j {
+                                col.push(i);
+                            }
+                        }
+                    }
+                }
+                col.sort_unstable();
+                row_idx.extend_from_slice(&col);
+                col_ptr.push(row_idx.len());
+            }
+            *list = Vec::new();
+        }
         Self {
-            symbolic,
-            argsort,
-            n_values: idx.len(),
+            symbolic: SymbolicSparseColMat::new_checked(n, n, col_ptr, None, row_idx),
         }
     }
 
     /// The symbolic lower-triangular structure.
     pub fn symbolic(&self) -> &SymbolicSparseColMat<usize> {
         &self.symbolic
+    }
+
+    /// Position of entry (i, j), i ≥ j, in the value array.
+    fn position(&self, i: usize, j: usize) -> Option<usize> {
+        let range = self.symbolic.col_range(j);
+        let rows = &self.symbolic.row_idx()[range.clone()];
+        rows.binary_search(&i).ok().map(|k| range.start + k)
     }
 }
 
@@ -129,7 +157,13 @@ pub fn assemble(
     dofs: &DofMap,
     pattern: &Pattern,
 ) -> Result<Stiffness, FemError> {
-    let mut values = Vec::with_capacity(pattern.n_values);
+    if pattern.symbolic.nrows() != dofs.n_equations() {
+        return Err(FemError::PatternSize {
+            pattern: pattern.symbolic.nrows(),
+            equations: dofs.n_equations(),
+        });
+    }
+    let mut values = vec![0.0; pattern.symbolic.row_idx().len()];
     let mut load = vec![0.0; dofs.n_equations()];
     for e in 0..mesh.n_elements() {
         let k = element_matrix(mesh, materials, dofs, e)?;
@@ -140,7 +174,12 @@ pub fn assemble(
             let Some(a) = *a else { continue };
             for (j, b) in eqs.iter().enumerate() {
                 match *b {
-                    Some(b) if a >= b => values.push(k[i * nd + j]),
+                    Some(b) if a >= b => {
+                        let pos = pattern
+                            .position(a, b)
+                            .ok_or(FemError::PatternMismatch { row: a, col: b })?;
+                        values[pos] += k[i * nd + j];
+                    }
                     Some(_) => {}
                     None => {
                         let c = if j % 2 == 0 {
@@ -155,15 +194,7 @@ pub fn assemble(
             }
         }
     }
-    if values.len() != pattern.n_values {
-        return Err(FemError::PatternMismatch {
-            expected: pattern.n_values,
-            found: values.len(),
-        });
-    }
-    let matrix =
-        SparseColMat::new_from_argsort(pattern.symbolic.clone(), &pattern.argsort, &values)
-            .map_err(|e| FemError::Solver(format!("{e:?}")))?;
+    let matrix = SparseColMat::new(pattern.symbolic.clone(), values);
     Ok(Stiffness {
         matrix,
         prescribed_load: load,

@@ -12,10 +12,19 @@
 //! - [`dofs`]: supports (rollers, fixed, prescribed, the report's skew rollers) and the
 //!   (node, component) → equation map;
 //! - [`loads`]: consistent nodal forces of face pressures and point loads;
-//! - [`assemble`], [`solve`]: sparse symmetric K with a fixed pattern, faer's sparse Cholesky;
+//! - [`assemble`](mod@assemble), [`ordering`], [`solve`]: sparse symmetric K with a fixed pattern, a
+//!   nested-dissection ordering of structured meshes, faer's sparse Cholesky (one symbolic
+//!   analysis, numeric refactorization, many right-hand sides);
 //! - [`recover`]: stresses at Gauss points, element centres and nodes; reactions; the traction
 //!   along a supported line;
-//! - [`single`]: the single-plate model (Fernlund's substitution) and its separation radius R_o.
+//! - [`single`]: the single-plate model (Fernlund's substitution) and its separation radius R_o;
+//! - [`lame`]: the Lamé cylinder, the closed-form check of the elements.
+//!
+//! For a contact model: build a stack with [`Mesh::structured`] (each plate has its own
+//! interface nodes, [`Mesh::top`]/[`Mesh::bottom`] sorted by r), constrain with [`Supports`],
+//! number with [`DofMap`], assemble once ([`Pattern`], [`assemble()`](fn@assemble)), factor once
+//! ([`Factorization`]), form flexibilities with [`Factorization::solve_many`], and read interface
+//! forces with [`reactions`] and tractions with [`line_traction`].
 //!
 //! ```
 //! use boltzone::fem::single::{single_plate_r_o, SingleParams};
@@ -23,7 +32,7 @@
 //! let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
 //! let plate = SinglePlate::new(0.1, OuterRadius::Finite(1.54), 0.1,
 //!                              Material::unit(0.3).unwrap(), load).unwrap();
-//! let params = SingleParams { levels: 3, coarse_size: 0.04, ..SingleParams::default() };
+//! let params = SingleParams { levels: 3, ..SingleParams::default() };
 //! let (r_o, info) = single_plate_r_o(&plate, &params).unwrap();
 //! assert!(r_o > 0.31 && r_o < 0.6, "{r_o}");
 //! assert!(info.error_estimate < 0.01);
@@ -73,13 +82,24 @@ pub enum FemError {
         /// Number of materials given.
         available: usize,
     },
-    /// The assembled values do not match the pattern (pattern built for another mesh or dof map).
-    #[error("assembly produced {found} values but the pattern has {expected}")]
+    /// An element couples two equations the pattern does not hold (a pattern built for another
+    /// mesh or dof map).
+    #[error(
+        "entry ({row}, {col}) is not in the sparsity pattern (pattern of another mesh or dof map?)"
+    )]
     PatternMismatch {
-        /// Values in the pattern.
-        expected: usize,
-        /// Values assembled.
-        found: usize,
+        /// Row equation.
+        row: usize,
+        /// Column equation.
+        col: usize,
+    },
+    /// The pattern was built for a different number of equations.
+    #[error("the sparsity pattern has {pattern} equations but the dof map {equations}")]
+    PatternSize {
+        /// Equations of the pattern.
+        pattern: usize,
+        /// Equations of the dof map.
+        equations: usize,
     },
     /// K is not positive definite: usually a rigid-body motion left free by the supports.
     #[error("stiffness matrix not positive definite (missing supports?): {0}")]

@@ -17,9 +17,24 @@
 //!
 //! An infinite plate is truncated at C = B + 30 D (the midplane stress decays like e^(−r/D)·…;
 //! beyond a few D the rim is invisible to R_o at the 10⁻⁶ level).
+//!
+//! Units: any consistent set; R_o in the length unit of A, B, D. Sign: compression negative.
+//!
+//! ```
+//! use boltzone::fem::single::{single_plate_r_o, Loading, SingleParams};
+//! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+//! let load = FaceLoad::uniform(0.1, 0.22, 1.0).unwrap();
+//! let plate = SinglePlate::new(0.1, OuterRadius::Finite(1.54), 0.1,
+//!                              Material::unit(0.3).unwrap(), load).unwrap();
+//! let (r_o, info) = single_plate_r_o(&plate, &SingleParams::default()).unwrap();
+//! assert!((r_o / 0.1 - 3.3).abs() < 0.2); // Table 1 (A/D = 1, B/A = 2.2): 3.3 ± its 0.15 grid
+//! assert_eq!(info.levels.len(), 4);
+//! let nut = SingleParams { loading: Loading::UniformDisplacement, ..SingleParams::default() };
+//! assert!(single_plate_r_o(&plate, &nut).unwrap().0 > r_o); // a rigid nut reaches further
+//! ```
 
 use super::assemble::{assemble, Pattern};
-use super::dofs::{DofMap, Supports};
+use super::dofs::{Component, DofMap, Supports};
 use super::element::ElementKind;
 use super::loads::Loads;
 use super::mesh::{Mesh, PlateSpec};
@@ -29,12 +44,25 @@ use super::solve::{Factorization, SolveParams};
 use super::spacing::Spacing;
 use super::FemError;
 use crate::error::InputError;
-use crate::joint::SinglePlate;
+use crate::joint::{OuterRadius, SinglePlate};
 use std::time::Instant;
+
+/// How the bolt head (and nut) load the faces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Loading {
+    /// The face pressure p(r) of the plate's [`crate::FaceLoad`] (Table 1).
+    #[default]
+    Pressure,
+    /// A rigid, frictionless nut: a uniform axial displacement of the face over the load's
+    /// annulus (report Fig. 21), radial motion free; R_o does not depend on its magnitude.
+    UniformDisplacement,
+}
 
 /// Parameters of the single-plate R_o study.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SingleParams {
+    /// Face pressure or rigid-nut displacement (default pressure).
+    pub loading: Loading,
     /// Element kind (default Q9).
     pub kind: ElementKind,
     /// Coarsest element size at the hole and load edges, as a fraction of D (default 0.5).
@@ -50,6 +78,7 @@ pub struct SingleParams {
 impl Default for SingleParams {
     fn default() -> Self {
         Self {
+            loading: Loading::Pressure,
             kind: ElementKind::Q9,
             coarse_size: 0.5,
             growth: 1.15,
@@ -98,32 +127,47 @@ pub fn coarse_radial_spacing(
 ) -> Result<Spacing, InputError> {
     let d = plate.half_thickness();
     let (a, b) = (plate.hole_radius(), plate.load().outer());
-    let c = plate.outer_radius().value().min(b + 30.0 * d);
+    let c = match plate.outer_radius() {
+        OuterRadius::Infinite => b + 30.0 * d,
+        OuterRadius::Finite(c) => c,
+    };
     let h = params.coarse_size * d;
-    Spacing::graded(
-        a,
-        c,
-        plate.load().knots(),
-        &[a, b],
-        h,
-        params.growth,
-        4.0 * d,
-    )
+    let foci = [a, plate.load().inner(), b];
+    Spacing::graded(a, c, plate.load().knots(), &foci, h, params.growth, 4.0 * d)
 }
 
-/// Solves the half plate on the mesh `radial` × `nz` uniform axial elements.
-pub fn solve_midplane(
+/// A solved half plate: mesh, supports, loads and nodal displacements (global frame).
+#[derive(Debug, Clone)]
+pub struct HalfPlate {
+    /// The mesh (one plate, 0 ≤ z ≤ D).
+    pub mesh: Mesh,
+    /// The equation map (midplane rollers, axis, rigid-nut displacements).
+    pub dofs: DofMap,
+    /// Applied nodal forces.
+    pub loads: Loads,
+    /// Nodal displacements (u, w).
+    pub u: Vec<[f64; 2]>,
+}
+
+/// Solves the upper half plate on the mesh `radial` × `axial` (0 ≤ z ≤ D).
+pub fn solve_half_plate(
     plate: &SinglePlate,
+    loading: Loading,
     kind: ElementKind,
     radial: &Spacing,
-    nz: usize,
+    axial: &Spacing,
     solve: &SolveParams,
-) -> Result<Midplane, FemError> {
-    let z = Spacing::uniform(0.0, plate.half_thickness(), nz)?;
-    let mesh = Mesh::structured(kind, radial, &[PlateSpec { z, material: 0 }])?;
+) -> Result<HalfPlate, FemError> {
+    let mesh = Mesh::structured(
+        kind,
+        radial,
+        &[PlateSpec {
+            z: axial.clone(),
+            material: 0,
+        }],
+    )?;
     let mut s = Supports::new(mesh.n_nodes());
-    let mid = mesh.bottom(0);
-    for &n in &mid {
+    for n in mesh.bottom(0) {
         s.roller_z(n);
     }
     if plate.hole_radius() == 0.0 {
@@ -132,10 +176,27 @@ pub fn solve_midplane(
         }
     }
     let mut loads = Loads::new(mesh.n_nodes());
-    loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, plate.load())?;
-    let mats = [plate.material()];
+    match loading {
+        Loading::Pressure => loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, plate.load())?,
+        Loading::UniformDisplacement => {
+            let (a, b) = (plate.load().inner(), plate.load().outer());
+            let tol = 1e-12 * b;
+            for n in mesh.top(0) {
+                let r = mesh.nodes()[n][0];
+                if r >= a - tol && r <= b + tol {
+                    // δ = D/1000 of a unit-modulus plate: stresses of order 1e-3
+                    s.prescribe(n, Component::Z, -1e-3 * plate.half_thickness());
+                }
+            }
+        }
+    }
     let dofs = DofMap::new(&s);
-    let k = assemble(&mesh, &mats, &dofs, &Pattern::new(&mesh, &dofs))?;
+    let k = assemble(
+        &mesh,
+        &[plate.material()],
+        &dofs,
+        &Pattern::new(&mesh, &dofs),
+    )?;
     let mut rhs = dofs.gather(loads.forces());
     for (a, b) in rhs.iter_mut().zip(&k.prescribed_load) {
         *a += b;
@@ -143,15 +204,36 @@ pub fn solve_midplane(
     let order = nested_dissection(&mesh, &dofs);
     let x = Factorization::with_ordering(&k.matrix, Some(&order), solve)?.solve(&rhs);
     let u = dofs.expand(&x);
-    let reac = reactions(&mesh, &mats, &u, &loads)?;
+    Ok(HalfPlate {
+        mesh,
+        dofs,
+        loads,
+        u,
+    })
+}
+
+/// Solves the half plate on the mesh `radial` × `nz` uniform axial elements and recovers the
+/// midplane σ_z from the roller reactions.
+pub fn solve_midplane(
+    plate: &SinglePlate,
+    loading: Loading,
+    kind: ElementKind,
+    radial: &Spacing,
+    nz: usize,
+    solve: &SolveParams,
+) -> Result<Midplane, FemError> {
+    let z = Spacing::uniform(0.0, plate.half_thickness(), nz)?;
+    let h = solve_half_plate(plate, loading, kind, radial, &z, solve)?;
+    let mid = h.mesh.bottom(0);
+    let reac = reactions(&h.mesh, &[plate.material()], &h.u, &h.loads)?;
     let rz: Vec<f64> = mid.iter().map(|&n| reac[n][1]).collect();
-    let t = line_traction(&mesh, &mid, &rz)?;
+    let t = line_traction(&h.mesh, &mid, &rz)?;
     Ok(Midplane {
-        r: mid.iter().map(|&n| mesh.nodes()[n][0]).collect(),
+        r: mid.iter().map(|&n| h.mesh.nodes()[n][0]).collect(),
         sigma_z: t.iter().map(|t| -t).collect(),
         order: kind.order(),
-        nodes: mesh.n_nodes(),
-        dofs: dofs.n_equations(),
+        nodes: h.mesh.n_nodes(),
+        dofs: h.dofs.n_equations(),
     })
 }
 
@@ -163,20 +245,19 @@ impl Midplane {
         let start = self
             .r
             .partition_point(|&r| r < from - 1e-12 * (1.0 + from.abs()));
-        let first = start - start % o; // edge boundary at or before `from`
-        let mut i = first;
+        let mut i = start - start % o; // the edge that contains `from`
+        if self.sigma_z.get(i).is_some_and(|&s| s > 0.0) {
+            return Some(self.r[i]); // already tensile where the search starts
+        }
         while i + o < self.r.len() {
             let (s0, s1) = (self.sigma_z[i], self.sigma_z[i + o]);
-            let mid = if o == 2 { self.sigma_z[i + 1] } else { s0 };
-            if s1 > 0.0 || (o == 2 && mid > 0.0) {
-                let root = if o == 1 {
+            let mid = self.sigma_z[i + o / 2];
+            if s1 > 0.0 || mid > 0.0 {
+                return Some(if o == 1 {
                     self.r[i] + (self.r[i + 1] - self.r[i]) * (-s0) / (s1 - s0)
                 } else {
                     quadratic_root(self.r[i], self.r[i + 2], s0, mid, s1)
-                };
-                if root >= from || s0 <= 0.0 {
-                    return Some(root.max(from.min(root)));
-                }
+                });
             }
             i += o;
         }
@@ -229,6 +310,7 @@ pub fn single_plate_r_o(
         let k = 1 << l;
         let m = solve_midplane(
             plate,
+            params.loading,
             params.kind,
             &coarse.refined(k),
             nz0 * k,
@@ -276,5 +358,51 @@ pub fn richardson(v: &[f64]) -> (f64, Option<f64>, f64) {
         (extra, Some(p), (extra - last).abs())
     } else {
         (last, p.is_finite().then_some(p), d2.abs())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn mid(r: Vec<f64>, s: Vec<f64>, order: usize) -> Midplane {
+        Midplane {
+            r,
+            sigma_z: s,
+            order,
+            nodes: 0,
+            dofs: 0,
+        }
+    }
+
+    #[test]
+    fn crossing_is_interpolated_inside_the_edge() {
+        // σ = (r − 0.7)(r + 1): quadratic interpolation is exact, linear gives the chord's root
+        let r: Vec<f64> = (0..=10).map(|i| i as f64 * 0.1).collect();
+        let s: Vec<f64> = r.iter().map(|r| (r - 0.7) * (r + 1.0)).collect();
+        let q = mid(r.clone(), s.clone(), 2)
+            .first_tensile_crossing(0.2)
+            .unwrap();
+        assert!((q - 0.7).abs() < 1e-14, "{q}");
+        let l = mid(r, s, 1).first_tensile_crossing(0.2).unwrap();
+        assert!((l - 0.7).abs() < 1e-12, "{l}"); // 0.7 is a node: linear is exact there too
+                                                 // a crossing below `from` is ignored; never tensile: None
+        let r: Vec<f64> = (0..=4).map(|i| i as f64).collect();
+        let m = mid(r.clone(), vec![1.0, -1.0, -2.0, 1.0, 2.0], 1);
+        assert!((m.first_tensile_crossing(1.0).unwrap() - (2.0 + 2.0 / 3.0)).abs() < 1e-14);
+        assert_eq!(mid(r, vec![-1.0; 5], 1).first_tensile_crossing(0.0), None);
+    }
+
+    #[test]
+    fn richardson_recovers_a_known_limit() {
+        // v_l = 1 + 0.3·2^(−3l): order 3, limit 1
+        let v: Vec<f64> = (0..4).map(|l| 1.0 + 0.3 * 2f64.powi(-3 * l)).collect();
+        let (x, p, e) = richardson(&v);
+        assert!((x - 1.0).abs() < 1e-14 && (p.unwrap() - 3.0).abs() < 1e-12);
+        assert!((e - 0.3 * 2f64.powi(-9)).abs() < 1e-14);
+        // oscillating sequence: no extrapolation, the last difference as the estimate
+        let (x, _, e) = richardson(&[1.0, 1.1, 1.05]);
+        assert_eq!(x, 1.05);
+        assert!((e - 0.05).abs() < 1e-15);
     }
 }

@@ -161,3 +161,43 @@ fn check_interval(x0: f64, x1: f64) -> Result<(), InputError> {
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn graded_spacing_hits_knots_and_grades_smoothly() {
+        let (h, q) = (0.01, 1.2);
+        let s = Spacing::graded(0.1, 1.54, &[0.22, 0.31], &[0.1, 0.31], h, q, 0.2).unwrap();
+        let p = s.points();
+        assert_eq!((p[0], *p.last().unwrap()), (0.1, 1.54));
+        assert!(p.contains(&0.22) && p.contains(&0.31));
+        let sizes: Vec<f64> = p.windows(2).map(|w| w[1] - w[0]).collect();
+        // sizes never exceed h_max, never fall below h_min by more than the ceil() rounding
+        // (n = ⌈φ⌉ elements on a piece of stretched length φ ≥ 1 shrink sizes by at most 1/2)
+        assert!(sizes
+            .iter()
+            .all(|&d| d <= 0.2 * (1.0 + 1e-12) && d >= 0.5 * h));
+        // neighbours differ by at most the growth ratio (plus the same rounding at knots)
+        for w in sizes.windows(2) {
+            assert!(w[1] / w[0] < 2.0 * q && w[0] / w[1] < 2.0 * q, "{w:?}");
+        }
+        assert!(sizes[0] < 1.01 * h); // at the focus A
+        let r = s.refined(3);
+        assert_eq!(r.elements(), 3 * s.elements());
+        assert!(s.points().iter().all(|x| r.points().contains(x)));
+    }
+
+    #[test]
+    fn bad_spacings_are_named() {
+        assert!(Spacing::uniform(1.0, 1.0, 3)
+            .unwrap_err()
+            .to_string()
+            .contains("interval end"));
+        assert!(Spacing::uniform(0.0, 1.0, 0).is_err());
+        let e = Spacing::graded(0.0, 1.0, &[], &[], 0.1, 0.9, 1.0).unwrap_err();
+        assert!(e.to_string().contains("grading ratio"));
+        assert!(Spacing::from_points(vec![0.0, 0.0]).is_err());
+    }
+}

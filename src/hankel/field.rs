@@ -8,7 +8,9 @@
 //! kernels (the half-space surface values) are integrated analytically:
 //! σ_z = −p(r), τ_rz = 0, σ_r = −p + (1−2ν)m(r)/r², σ_θ = −2νp − (1−2ν)m(r)/r²,
 //! u = −(1−2ν)m(r)/(2G r) with m(r) = ∫₀^r p ρ dρ, and only exponentially decaying remainders are
-//! integrated numerically (w keeps a slowly decaying ∫ p̄ J₀ dξ, left to the extrapolation).
+//! integrated numerically. w keeps the half-space surface deflection ∫ p̄ J₀ dξ, which decays
+//! only like ξ^(−2) at a load edge; it is evaluated in real space with the elliptic kernel
+//! ([`super::transform::LoadTransform::surface_integral`]).
 //! Compression negative; stresses in the load's pressure units, displacements in length units
 //! when E is in pressure units.
 //!
@@ -107,6 +109,15 @@ impl Slab {
         r + self.transform.outer()
     }
 
+    /// Whether r sits on a knot of the load (where p may jump or kink): there the beat
+    /// frequency of J(ξr)·p̄(ξ) vanishes and the integrands have a non-oscillating tail.
+    fn at_load_edge(&self, r: f64) -> bool {
+        self.load
+            .knots()
+            .iter()
+            .any(|&k| (r - k).abs() <= 1e-3 * self.d)
+    }
+
     /// Checks (r, z) and returns (r, |z| clamped to D, sign of z).
     fn point(&self, r: f64, z: f64) -> (f64, f64, f64) {
         let sign = if z < 0.0 { -1.0 } else { 1.0 };
@@ -118,52 +129,31 @@ impl Slab {
         let (r, az, sign) = self.point(r, z);
         let nu = self.material.poisson_ratio();
         let face = az >= self.d;
-        let (d, tr) = (self.d, &self.transform);
-        let [iz, itau, ir, im, inn] = integrate_oscillatory_vec(
-            |xi| {
-                let k = if face {
-                    face_remainders(xi * d, nu)
-                } else {
-                    Kernels::at(xi * d, xi * az, nu)
-                };
-                let x = xi * r;
-                let (j0, j1) = (libm::j0(x), libm::j1(x));
-                let q = xi * tr.eval(xi);
-                [
-                    q * k.z * j0,
-                    q * k.tau * j1,
-                    q * k.r * j0,
-                    q * k.m * j1_over_x(x),
-                    q * k.n * j0,
-                ]
-            },
-            self.omega(r),
-            1.0 / d,
-            &QuadParams {
-                products: true,
-                ..*params
-            },
-        );
-        let (mut sz, mut tau, mut sr, mut st) = (
-            iz.scale(-1.0),
-            itau.scale(-sign),
-            ir.scale(-1.0).plus(im),
-            inn.scale(-1.0).plus(im.scale(-1.0)),
+        let tr = &self.transform;
+        let params = QuadParams {
+            algebraic_tail: self.at_load_edge(r),
+            ..*params
+        };
+        let mut s = stress_integrals(
+            self.d,
+            nu,
+            |xi| tr.eval(xi),
+            tr.outer(),
+            r,
+            az,
+            sign,
+            face,
+            &params,
         );
         if face {
             let p = tr.pressure(r);
             let m = (1.0 - 2.0 * nu) * tr.moment_within_over_r2(r);
-            sz.value -= p;
-            tau.value = 0.0;
-            sr.value += -p + m;
-            st.value += -2.0 * nu * p - m;
+            s.sigma_z.value -= p;
+            s.tau_rz.value = 0.0;
+            s.sigma_r.value += -p + m;
+            s.sigma_theta.value += -2.0 * nu * p - m;
         }
-        Stress {
-            sigma_r: sr,
-            sigma_theta: st,
-            sigma_z: sz,
-            tau_rz: tau,
-        }
+        s
     }
 
     /// σ_z at (r, z) with its error estimate.
@@ -186,39 +176,188 @@ impl Slab {
         let (r, az, sign) = self.point(r, z);
         let nu = self.material.poisson_ratio();
         let face = az >= self.d;
-        let (d, tr) = (self.d, &self.transform);
-        let [iu, iw, iw0] = integrate_oscillatory_vec(
-            |xi| {
-                let k = if face {
-                    face_remainders(xi * d, nu)
-                } else {
-                    Kernels::at(xi * d, xi * az, nu)
-                };
-                let x = xi * r;
-                let q = tr.eval(xi);
-                let j0 = libm::j0(x);
-                [
-                    q * k.m * libm::j1(x),
-                    q * k.w * j0,
-                    if face { q * j0 } else { 0.0 },
-                ]
-            },
-            self.omega(r),
-            1.0 / d,
-            &QuadParams {
-                products: true,
-                ..*params
-            },
+        let tr = &self.transform;
+        let params = QuadParams {
+            algebraic_tail: self.at_load_edge(r),
+            ..*params
+        };
+        let g = self.material.shear_modulus();
+        let mut out = displacement_integrals(
+            self.d,
+            nu,
+            g,
+            |xi| tr.eval(xi),
+            tr.outer(),
+            r,
+            az,
+            sign,
+            face,
+            &params,
         );
-        let c = -1.0 / (2.0 * self.material.shear_modulus());
-        let mut u = iu.scale(c);
-        let mut w = iw.plus(iw0.scale(2.0 * (1.0 - nu))).scale(c * sign);
         if face {
-            u.value += c * (1.0 - 2.0 * nu) * r * tr.moment_within_over_r2(r);
+            let c = -1.0 / (2.0 * g);
+            // the slowly decaying half-space part of w, in real space (elliptic kernel)
+            let w0 = tr.surface_integral(r, params.rel_tol.max(1e-15));
+            out.w = out.w.plus(w0.scale(c * sign * 2.0 * (1.0 - nu)));
+            out.u.value += c * (1.0 - 2.0 * nu) * r * tr.moment_within_over_r2(r);
         }
-        if az == 0.0 {
-            w = Estimate::default(); // odd in z
-        }
-        Displacement { u, w }
+        out
+    }
+}
+
+/// Stresses at an interior point (|z| < D) of the slab of half-thickness `d` and Poisson's
+/// ratio `nu` under ANY axisymmetric load on both faces given by its transform `pbar`
+/// (p̄(ξ) = ∫ p(ρ) J₀(ξρ) ρ dρ) whose oscillation frequency is at most `load_radius`: the
+/// building block for ring loads ([`ring_load`]) and hole corrections. On a face (|z| = D)
+/// the integrals do not decay and generally do not converge: use [`Slab`] there.
+pub fn stress_for_transform<P: Fn(f64) -> f64>(
+    d: f64,
+    nu: f64,
+    pbar: P,
+    load_radius: f64,
+    r: f64,
+    z: f64,
+    params: &QuadParams,
+) -> Stress {
+    let sign = if z < 0.0 { -1.0 } else { 1.0 };
+    let az = z.abs().min(d);
+    stress_integrals(d, nu, pbar, load_radius, r.abs(), az, sign, false, params)
+}
+
+/// Displacements at an interior point for a load given by its transform (see
+/// [`stress_for_transform`]); `g` is the shear modulus.
+#[allow(clippy::too_many_arguments)]
+pub fn displacement_for_transform<P: Fn(f64) -> f64>(
+    d: f64,
+    nu: f64,
+    g: f64,
+    pbar: P,
+    load_radius: f64,
+    r: f64,
+    z: f64,
+    params: &QuadParams,
+) -> Displacement {
+    let sign = if z < 0.0 { -1.0 } else { 1.0 };
+    let az = z.abs().min(d);
+    displacement_integrals(
+        d,
+        nu,
+        g,
+        pbar,
+        load_radius,
+        r.abs(),
+        az,
+        sign,
+        false,
+        params,
+    )
+}
+
+/// Stress and displacement at an interior point (|z| < D) due to a ring load of unit intensity
+/// (force per unit length of circumference, total force 2πρ₀ per face) at radius `rho0` on
+/// both faces: p̄(ξ) = ρ₀ J₀(ξρ₀). Superposing rings over ρ₀ with weight p(ρ₀) gives the
+/// face-load fields (checked in the tests).
+pub fn ring_load(
+    d: f64,
+    material: Material,
+    rho0: f64,
+    r: f64,
+    z: f64,
+    params: &QuadParams,
+) -> (Stress, Displacement) {
+    let nu = material.poisson_ratio();
+    let pbar = |xi: f64| rho0 * libm::j0(xi * rho0);
+    (
+        stress_for_transform(d, nu, pbar, rho0, r, z, params),
+        displacement_for_transform(d, nu, material.shear_modulus(), pbar, rho0, r, z, params),
+    )
+}
+
+/// The stress integrals; on a face (`face`) with the face kernels' limits removed.
+#[allow(clippy::too_many_arguments)]
+fn stress_integrals<P: Fn(f64) -> f64>(
+    d: f64,
+    nu: f64,
+    pbar: P,
+    load_radius: f64,
+    r: f64,
+    az: f64,
+    sign: f64,
+    face: bool,
+    params: &QuadParams,
+) -> Stress {
+    let [iz, itau, ir, im, inn] = integrate_oscillatory_vec(
+        |xi| {
+            let k = if face {
+                face_remainders(xi * d, nu)
+            } else {
+                Kernels::at(xi * d, xi * az, nu)
+            };
+            let x = xi * r;
+            let (j0, j1) = (libm::j0(x), libm::j1(x));
+            let q = xi * pbar(xi);
+            [
+                q * k.z * j0,
+                q * k.tau * j1,
+                q * k.r * j0,
+                q * k.m * j1_over_x(x),
+                q * k.n * j0,
+            ]
+        },
+        r + load_radius,
+        1.0 / d,
+        &QuadParams {
+            products: true,
+            ..*params
+        },
+    );
+    Stress {
+        sigma_r: ir.scale(-1.0).plus(im),
+        sigma_theta: inn.scale(-1.0).plus(im.scale(-1.0)),
+        sigma_z: iz.scale(-1.0),
+        tau_rz: itau.scale(-sign),
+    }
+}
+
+/// The displacement integrals (w = 0 on the midplane by symmetry).
+#[allow(clippy::too_many_arguments)]
+fn displacement_integrals<P: Fn(f64) -> f64>(
+    d: f64,
+    nu: f64,
+    g: f64,
+    pbar: P,
+    load_radius: f64,
+    r: f64,
+    az: f64,
+    sign: f64,
+    face: bool,
+    params: &QuadParams,
+) -> Displacement {
+    let [iu, iw] = integrate_oscillatory_vec(
+        |xi| {
+            let k = if face {
+                face_remainders(xi * d, nu)
+            } else {
+                Kernels::at(xi * d, xi * az, nu)
+            };
+            let x = xi * r;
+            let q = pbar(xi);
+            [q * k.m * libm::j1(x), q * k.w * libm::j0(x)]
+        },
+        r + load_radius,
+        1.0 / d,
+        &QuadParams {
+            products: true,
+            ..*params
+        },
+    );
+    let c = -1.0 / (2.0 * g);
+    Displacement {
+        u: iu.scale(c),
+        w: if az == 0.0 {
+            Estimate::default()
+        } else {
+            iw.scale(c * sign)
+        },
     }
 }

@@ -1,19 +1,20 @@
 //! The midplane stress σ_z(r, 0) = −∫₀^∞ ξ p̄(ξ) K(ξD) J₀(ξr) dξ fast, for many radii.
 //!
 //! K(t) = 2(sinh t + t cosh t)/(sinh 2t + 2t) ≤ 2.5(1 + t)e^(−t) ([`super::kernel`]), and
-//! |p̄| ≤ min(M, C₁/ξ) with M = ∫|p| r dr ([`super::transform::LoadTransform::decay_constant`] gives C₁), so the
-//! tail beyond ξ = T/D is at most 2.5 e^(−T) min(M(T² + 3T + 3)/D², C₁(T + 2)/D):
-//! [`MidplaneRule`] truncates there with T chosen from the tolerance, cuts [0, T/D] into panels no wider than five half-periods of the fastest
-//! oscillation (r_max + B) and no wider than 1.5/D (the kernel's scale), and puts a 20-point
-//! Gauss–Legendre rule on each (Gauss's error bound for cos ωξ on 5 half-periods with 20
-//! points: (5π)^41 (20!)^4/(41·(40!)^3) ≈ 2e-23 of the amplitude; the kernel's poles at
-//! Im ξ ≈ 1.1/D give a Bernstein ellipse ρ ≈ 3.3 on panels of 1.5/D, ρ^(−40) ≈ 2e-21). The weights w_i ξ_i p̄(ξ_i) K(ξ_i D) are computed once, so
-//! σ_z(r, 0) = −Σ c_i J₀(ξ_i r) for every r ≤ r_max. Error estimate: the tail bound plus a
-//! rounding floor 50ε Σ|c_i| (the Gauss rule's own error, ≈ 1e-25 of the amplitude, is
-//! checked in the tests against a rule of twice the density).
+//! |p̄| ≤ min(M, C₁/ξ) with M = ∫|p| r dr and C₁ from
+//! [`super::transform::LoadTransform::decay_constant`], so the tail beyond ξ = T/D is at most
+//! 2.5 e^(−T) min(M(T² + 3T + 3)/D², C₁(T + 2)/D). [`MidplaneRule`] truncates there with T
+//! chosen from the tolerance, cuts [0, T/D] into panels no wider than five half-periods of the
+//! fastest oscillation (r_max + B) and no wider than 1.5/D (the kernel's scale), and puts a
+//! 20-point Gauss–Legendre rule on each (Gauss's error bound for cos ωξ on 5 half-periods:
+//! (5π)^41 (20!)^4/(41·(40!)^3) ≈ 2e-23 of the amplitude; the kernel's poles at Im ξ ≈ 1.1/D
+//! give a Bernstein ellipse ρ ≈ 3.3 on panels of 1.5/D, ρ^(−40) ≈ 2e-21). The weights
+//! c_i = w_i ξ_i p̄(ξ_i) K(ξ_i D) are computed once, so σ_z(r, 0) = −Σ c_i J₀(ξ_i r) for every
+//! r ≤ r_max. Error estimate: the tail bound plus a rounding floor 50ε Σ|c_i|; the tests check
+//! the rule against the adaptive quadrature of [`Slab::sigma_z`] and the real-space route.
 //!
 //! σ_z(r, 0) is real-analytic in r (the load is a distance D away): [`MidplaneCurve`]
-//! interpolates it by Chebyshev polynomials on panels no wider than D, with the last
+//! interpolates it by Chebyshev polynomials on panels no wider than 2D, with the last
 //! coefficients as the error estimate, so a curve of 1000 radii costs a few dozen rule
 //! evaluations per panel.
 //!
@@ -41,7 +42,7 @@ pub const MAX_NODES: usize = 400_000;
 /// (one real-space evaluation costs about as much as 50 000 nodes).
 pub const SWITCH_NODES: usize = 50_000;
 
-/// Largest number of panels (of width D) a [`MidplaneCurve`] may have.
+/// Largest number of panels (of width 2D) a [`MidplaneCurve`] may have.
 pub const MAX_CURVE_PANELS: usize = 20_000;
 
 /// σ_z(r, 0) by whichever route is cheaper: a shared ξ-rule, or for thin slabs the real-space
@@ -197,13 +198,14 @@ impl MidplaneRule {
 /// Chebyshev points per panel of a [`MidplaneCurve`] for an absolute tolerance `tol` relative
 /// to the curve's scale: σ_z(r, 0) is analytic in the strip |Im r| < D (the ξ-integrand is
 /// bounded by e^(−ξD)·e^(ξ|Im r|)), so on panels of width D the Chebyshev coefficients fall
-/// like ρ^(−n) with ρ = 2 + √5 (Bernstein ellipse of semi-minor axis D over half-width D/2).
+/// like ρ^(−n) with ρ = 1 + √2 on panels of width 2D (Bernstein ellipse of semi-minor axis D
+/// over half-width D; wider panels with more points cost about the same, narrower ones more).
 fn cheb_points(tol: f64) -> usize {
-    let rho = 2.0 + 5f64.sqrt();
-    (((1e3 / tol.clamp(1e-16, 1e-2)).ln() / rho.ln()).ceil() as usize).clamp(8, 40)
+    let rho = 1.0 + 2f64.sqrt();
+    (((1e3 / tol.clamp(1e-16, 1e-2)).ln() / rho.ln()).ceil() as usize).clamp(8, 56)
 }
 
-/// Piecewise Chebyshev interpolant of σ_z(r, 0) on [r₀, r₁].
+/// Piecewise Chebyshev interpolant of σ_z(r, 0) on [r₀, r₁], panels of width ≤ 2D.
 #[derive(Debug, Clone)]
 pub struct MidplaneCurve {
     breaks: Vec<f64>,
@@ -214,19 +216,19 @@ pub struct MidplaneCurve {
 
 impl MidplaneCurve {
     /// Interpolates σ_z(r, 0) of `slab` on [r0, r1] (0 ≤ r0 < r1) to absolute tolerance
-    /// `abs_tol`, with panels no wider than D.
+    /// `abs_tol`, with panels no wider than 2D.
     pub fn new(slab: &Slab, r0: f64, r1: f64, abs_tol: f64) -> Result<Self, InputError> {
         crate::error::non_negative("curve start radius", r0)?;
         positive("curve length", r1 - r0)?;
         let rule = Midplane::new(slab, r1, abs_tol / 4.0)?;
         let mut evaluations = 0;
         let d = slab.half_thickness();
-        let panels = ((r1 - r0) / d).ceil().max(1.0);
+        let panels = ((r1 - r0) / (2.0 * d)).ceil().max(1.0);
         if panels > MAX_CURVE_PANELS as f64 {
             return Err(InputError::Parameter {
-                field: "midplane curve panels (length / D)",
+                field: "midplane curve panels (length / 2D)",
                 value: panels,
-                reason: "too many panels of width D: evaluate the radii directly with Midplane",
+                reason: "too many panels of width 2D: evaluate the radii directly with Midplane",
             });
         }
         let n = panels as usize;

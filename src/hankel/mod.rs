@@ -11,6 +11,20 @@
 //! - [`realspace`]: the midplane σ_z of thin slabs by a localised real-space point kernel;
 //! - [`separation`]: the separation radius R_o (first upward zero of σ_z(r, 0) beyond B).
 //!
+//! ## Routes, cost and range
+//!
+//! - Any field at any (r, z): one adaptive partition–extrapolation per point ([`Slab::stress`],
+//!   [`Slab::displacement`]); cost grows with (r + B)·(decay length)⁻¹, and when the panel
+//!   budget ([`QuadParams::max_panels`]) runs out the value comes back with an error estimate
+//!   that includes the gap between extrapolation and plain partial sum — large, never silent.
+//! - Midplane σ_z at many radii ([`Midplane`]): a shared ξ-node rule ([`MidplaneRule`]; a few
+//!   hundred to 50 000 nodes, cost ∝ (r_max + B)/D), or, for thin slabs where that would need
+//!   more, the real-space superposition of a point kernel localised within 18D ([`realspace`]),
+//!   whose cost does not grow with B/D or r/D. The two routes agree to ~1e-15 where both run
+//!   (tests/hankel_separation.rs). This keeps D/A ∈ [1e-3, 1e3], B/A ∈ [1.001, 1e3] and
+//!   r ≤ 10³B finite and accurate.
+//! - R_o ([`Slab::separation_radius`]): only midplane σ_z, on one [`Midplane`] evaluator.
+//!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{Slab, SeparationParams}};
 //! let slab = Slab::new(0.1, Material::unit(0.3).unwrap(), FaceLoad::uniform(0.1, 0.31, 1.0).unwrap()).unwrap();
@@ -21,13 +35,19 @@
 pub mod field;
 pub mod hole;
 pub mod kernel;
+pub mod layer;
 pub mod midplane;
 pub mod quadrature;
 pub mod realspace;
+pub mod receding;
+mod receding_search;
+mod receding_system;
 pub mod separation;
 pub mod transform;
 
-pub use field::{Displacement, Slab, Stress};
+pub use field::{
+    displacement_for_transform, ring_load, stress_for_transform, Displacement, Slab, Stress,
+};
 pub use midplane::{Midplane, MidplaneCurve, MidplaneRule};
 pub use quadrature::{Estimate, QuadParams};
 pub use separation::{SeparationInfo, SeparationParams};

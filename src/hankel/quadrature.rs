@@ -15,9 +15,11 @@
 //!    a sliding window of the last [`QuadParams::window`] sums, and the estimate is accepted
 //!    when two successive extrapolations agree within the tolerance.
 //!
-//! The error estimate is the sum of the last two changes of the extrapolated value plus a
-//! rounding floor 50·ε·Σ|w f| (the sum of absolute values of the terms, QUADPACK's `resabs`);
-//! the tests check it is never below the actual error on closed-form Hankel pairs.
+//! The error estimate is the largest distance between the latest extrapolated value and the four
+//! before it, plus the last change, plus (for products of oscillations, [`QuadParams::products`])
+//! the distance to an extrapolation of whole-period sums, plus a rounding floor 50·ε·Σ|w f| (the
+//! sum of absolute values of the terms, QUADPACK's `resabs`); the tests check it is never below
+//! the actual error on closed-form Hankel pairs and on the slab's fields.
 //!
 //! ```
 //! use boltzone::hankel::quadrature::{integrate_oscillatory, QuadParams};
@@ -48,6 +50,11 @@ pub struct QuadParams {
     /// half-period sums do not resolve: the error estimate then also includes the distance to
     /// a second extrapolation from whole-period sums (default false; pessimistic but honest).
     pub products: bool,
+    /// The integrand may have a non-oscillating algebraic tail (e.g. J₀(ξr)·J₁(ξB) at r = B,
+    /// where the beat frequency r − B vanishes): Wynn's ε does not accelerate such tails
+    /// reliably, so the distance between the extrapolation and the plain partial sum joins
+    /// the error estimate (default false).
+    pub algebraic_tail: bool,
 }
 
 impl Default for QuadParams {
@@ -59,6 +66,7 @@ impl Default for QuadParams {
             order: 10,
             window: 13,
             products: false,
+            algebraic_tail: false,
         }
     }
 }
@@ -227,7 +235,7 @@ pub fn integrate_oscillatory_vec<const N: usize, F: FnMut(f64) -> [f64; N]>(
             let from = sums[j].len().saturating_sub(window);
             extrapolated[j].push(wynn_epsilon(&sums[j][from..]));
         }
-        if k < 5 {
+        if k < 6 {
             continue;
         }
         let mut out = [Estimate::default(); N];
@@ -253,10 +261,18 @@ pub fn integrate_oscillatory_vec<const N: usize, F: FnMut(f64) -> [f64; N]>(
             } else {
                 e[m - 1]
             };
-            let err = (e[m - 1] - e[m - 2]).abs()
-                + (e[m - 2] - e[m - 3]).abs()
-                + (e[m - 1] - second).abs()
-                + floor;
+            // spread of the last five extrapolations: a sequence that only seems to settle
+            // (several incommensurate frequencies, slow decay) keeps a wide spread
+            let spread = (m.saturating_sub(5)..m - 1)
+                .map(|i| (e[m - 1] - e[i]).abs())
+                .fold(0.0, f64::max);
+            let gap = if params.algebraic_tail {
+                (e[m - 1] - total[j]).abs()
+            } else {
+                0.0
+            };
+            let err =
+                spread + (e[m - 1] - e[m - 2]).abs() + (e[m - 1] - second).abs() + gap + floor;
             finite &= e[m - 1].is_finite() && err.is_finite();
             scale = scale.max(params.rel_tol * e[m - 1].abs()).max(2.0 * floor);
             out[j] = Estimate {

@@ -22,7 +22,8 @@
 //!
 //! ```
 //! use boltzone::hankel::realspace::point_kernel;
-//! assert!((point_kernel(0.0) - 0.8225207248307822).abs() < 1e-13);
+//! // g(0) = 0.82252072483078143… (mpmath)
+//! assert!((point_kernel(0.0) - 0.822_520_724_830_781_4).abs() < 1e-13);
 //! ```
 
 use super::kernel::midplane;

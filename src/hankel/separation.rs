@@ -73,6 +73,12 @@ pub enum SeparationError {
     /// Bad parameters or a slab outside the solver's range.
     #[error(transparent)]
     Input(#[from] InputError),
+    /// σ_z(B, 0) is already tensile: the midplane opens inside the loaded annulus.
+    #[error("midplane sigma_z at the load's outer radius B is already tensile ({sigma_z}): no separation radius beyond the load")]
+    TensileAtLoadEdge {
+        /// σ_z(B, 0).
+        sigma_z: f64,
+    },
     /// σ_z(r, 0) stayed compressive up to `searched_to`.
     #[error("midplane sigma_z stays compressive from B to r = {searched_to}: no separation found")]
     NotFound {
@@ -113,6 +119,12 @@ impl Slab {
         };
         let h = params.step * d;
         let (mut lo, mut f_lo) = (b, f(b));
+        if f_lo > 0.0 {
+            // the contact would end inside the load: not the situation R_o describes
+            return Err(SeparationError::TensileAtLoadEdge {
+                sigma_z: sign * f_lo,
+            });
+        }
         let mut bracket = None;
         let mut k = 1;
         while lo < r_end {

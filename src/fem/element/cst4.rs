@@ -19,7 +19,7 @@
 //! assert_eq!(k.len(), 64);
 //! ```
 
-use super::{add_btdb, apply_d, strain, ElementPoint, Stress};
+use super::{add_btdb, apply_d, mirror_upper, strain, ElementPoint, Stress};
 use std::f64::consts::PI;
 
 /// One triangle: its three local dof-node indices (4 = centre), centroid, area, B columns.
@@ -75,6 +75,7 @@ fn full_stiffness(tris: &[Tri], d: &[[f64; 4]; 4]) -> Vec<f64> {
     for t in tris {
         let mut kt = vec![0.0; 36];
         add_btdb(&mut kt, &t.b, d, 2.0 * PI * t.r * t.area);
+        mirror_upper(&mut kt, 6);
         let dofs: Vec<usize> = t.nodes.iter().flat_map(|&n| [2 * n, 2 * n + 1]).collect();
         for (a, &ga) in dofs.iter().enumerate() {
             for (b, &gb) in dofs.iter().enumerate() {

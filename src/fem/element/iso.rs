@@ -5,7 +5,7 @@
 //! normal-strain row is replaced by its element average ∫ θ dV / V, which removes volumetric
 //! locking of the bilinear element.
 
-use super::{add_btdb, apply_d, strain, ElementPoint, Stress};
+use super::{add_btdb, apply_d, mirror_upper, strain, ElementPoint, Stress};
 use std::f64::consts::PI;
 
 /// A parent element: shape functions and their (ξ, η) derivatives, and a Gauss rule.
@@ -107,6 +107,7 @@ pub(crate) fn stiffness(el: &dyn Parent, x: &[[f64; 2]], d: &[[f64; 4]; 4], bb: 
         }
         add_btdb(&mut k, &m.b, d, w * 2.0 * PI * m.r * m.det);
     }
+    mirror_upper(&mut k, nd);
     k
 }
 

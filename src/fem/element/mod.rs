@@ -113,14 +113,24 @@ pub(crate) fn apply_d(d: &[[f64; 4]; 4], e: &[f64; 4]) -> [f64; 4] {
     s
 }
 
-/// Adds w·Bᵀ D B to the (nd × nd, row-major) matrix `k`, B given by columns (4 strains per dof).
+/// Adds w·Bᵀ D B to the upper triangle (i ≤ j) of the (nd × nd, row-major) matrix `k`, B given
+/// by columns (4 strains per dof); call [`mirror_upper`] once after the last point.
 pub(crate) fn add_btdb(k: &mut [f64], b: &[[f64; 4]], d: &[[f64; 4]; 4], w: f64) {
     let nd = b.len();
     for j in 0..nd {
         let db = apply_d(d, &b[j]);
-        for i in 0..nd {
+        for i in 0..=j {
             let bi = &b[i];
             k[i * nd + j] += w * (bi[0] * db[0] + bi[1] * db[1] + bi[2] * db[2] + bi[3] * db[3]);
+        }
+    }
+}
+
+/// Copies the upper triangle of the (nd × nd, row-major) `k` into the lower one.
+pub(crate) fn mirror_upper(k: &mut [f64], nd: usize) {
+    for i in 0..nd {
+        for j in 0..i {
+            k[i * nd + j] = k[j * nd + i];
         }
     }
 }

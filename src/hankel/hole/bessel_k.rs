@@ -32,14 +32,14 @@ use num_complex::Complex64;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// |z| at and beyond which the asymptotic series is used.
-const ASYMPTOTIC_FROM: f64 = 20.0;
+pub(super) const ASYMPTOTIC_FROM: f64 = 20.0;
 /// Exponent of the trapezoid rule's target error, e^(−42) ≈ 6e-19.
 const TRAPEZOID_DIGITS: f64 = 42.0;
 
 /// (e^z K₀(z), e^z K₁(z)) for Re z > 0 (principal branch). Returns NaN components for
 /// Re z ≤ 0 or a non-finite z, which the eigenfunctions never produce.
 pub fn k01_scaled(z: Complex64) -> (Complex64, Complex64) {
-    if !(z.re > 0.0) || !z.im.is_finite() || !z.re.is_finite() {
+    if z.re.is_nan() || z.re <= 0.0 || !z.im.is_finite() || !z.re.is_finite() {
         let nan = Complex64::new(f64::NAN, f64::NAN);
         return (nan, nan);
     }
@@ -52,29 +52,36 @@ pub fn k01_scaled(z: Complex64) -> (Complex64, Complex64) {
 
 fn asymptotic(z: Complex64) -> (Complex64, Complex64) {
     let pref = (Complex64::new(FRAC_PI_2, 0.0) / z).sqrt();
-    let inv = z.inv();
-    let series = |nu: f64| {
-        let mu = 4.0 * nu * nu;
-        let mut term = Complex64::new(1.0, 0.0);
-        let mut sum = term;
-        let mut last = f64::INFINITY;
-        for k in 1..200 {
-            let kf = k as f64;
-            let next = term * inv * ((mu - (2.0 * kf - 1.0).powi(2)) / (8.0 * kf));
-            let size = next.norm();
-            if size >= last || size < 1e-18 * sum.norm() {
-                if size < last {
-                    sum += next;
-                }
-                break;
+    (
+        pref * asymptotic_series(z, 0.0, false),
+        pref * asymptotic_series(z, 1.0, false),
+    )
+}
+
+/// Σ_k (±1)^k a_k(ν)/z^k of the Hankel expansions (DLMF 10.40.1–2), a_k = a_{k−1}(4ν² −
+/// (2k−1)²)/(8k), summed to its smallest term or to 1e-18 of the sum; `alternating` gives
+/// the signs (−1)^k of I_ν's expansion.
+pub(super) fn asymptotic_series(z: Complex64, nu: f64, alternating: bool) -> Complex64 {
+    let mu = 4.0 * nu * nu;
+    let inv = if alternating { -z.inv() } else { z.inv() };
+    let mut term = Complex64::new(1.0, 0.0);
+    let mut sum = term;
+    let mut last = f64::INFINITY;
+    for k in 1..200 {
+        let kf = k as f64;
+        let next = term * inv * ((mu - (2.0 * kf - 1.0).powi(2)) / (8.0 * kf));
+        let size = next.norm();
+        if size >= last || size < 1e-18 * sum.norm() {
+            if size < last {
+                sum += next;
             }
-            last = size;
-            term = next;
-            sum += term;
+            break;
         }
-        sum
-    };
-    (pref * series(0.0), pref * series(1.0))
+        last = size;
+        term = next;
+        sum += term;
+    }
+    sum
 }
 
 fn trapezoid(z: Complex64) -> (Complex64, Complex64) {

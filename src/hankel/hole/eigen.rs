@@ -42,6 +42,7 @@
 //! assert!(f.sigma_z.norm() < 1e-13 && f.tau_rz.norm() < 1e-13);
 //! ```
 
+use super::bessel_i::i01_scaled;
 use super::bessel_k::k01_scaled;
 use num_complex::Complex64;
 use std::f64::consts::PI;
@@ -84,16 +85,19 @@ pub struct ModeField<T> {
     pub w: T,
 }
 
-/// One symmetric Papkovich–Fadle mode of the layer −D ≤ z ≤ D outside r = A.
+/// One symmetric Papkovich–Fadle mode of the layer −D ≤ z ≤ D: decaying outward (K₀, K₁,
+/// normalised on the hole r = A) or growing outward (I₀, I₁, normalised on a rim r = C).
 #[derive(Debug, Clone, Copy)]
 pub struct Mode {
     lam: Complex64,
     alpha: Complex64,
     nu: f64,
+    /// The radius the mode is normalised on (A, or C for a growing mode).
     a: f64,
     two_g: f64,
-    /// e^{λA}K₁(λA), the scaled normaliser.
+    /// e^{λA}K₁(λA) (decaying) or e^{−λC}I₁(λC) (growing), the scaled normaliser.
     k1a: Complex64,
+    growing: bool,
 }
 
 impl Mode {
@@ -110,6 +114,23 @@ impl Mode {
             a,
             two_g: 2.0 * g,
             k1a,
+            growing: false,
+        }
+    }
+
+    /// The mode of root `x` growing outward, normalised on the rim r = `c`: K₀ → I₀ and
+    /// K₁ → −I₁ in every formula (d/dx K₀ = −K₁ but d/dx I₀ = I₁), for r ≤ C.
+    pub fn growing(x: Complex64, c: f64, d: f64, nu: f64, g: f64) -> Self {
+        let lam = x / d;
+        let (_, i1c) = i01_scaled(lam * c);
+        Self {
+            lam,
+            alpha: (1.0 - 2.0 * nu) + x * x.tan(),
+            nu,
+            a: c,
+            two_g: 2.0 * g,
+            k1a: i1c,
+            growing: true,
         }
     }
 
@@ -118,16 +139,33 @@ impl Mode {
         self.lam
     }
 
-    /// Radial factors (R₀, R₁) at r ≥ A.
-    fn radial(&self, r: f64) -> (Complex64, Complex64) {
-        let (k0, k1) = k01_scaled(self.lam * r);
-        let e = (-self.lam * (r - self.a)).exp() / self.k1a;
-        (k0 * e, k1 * e)
+    /// Radial factors (R₀, R₁) at r (r ≥ A for a decaying mode, r ≤ C for a growing one): the
+    /// costly part of a field, shared by every height at that radius (see [`Self::field_at`]).
+    pub fn radial(&self, r: f64) -> (Complex64, Complex64) {
+        if self.growing {
+            let (i0, i1) = i01_scaled(self.lam * r);
+            let e = (self.lam * (r - self.a)).exp() / self.k1a;
+            (i0 * e, -i1 * e)
+        } else {
+            let (k0, k1) = k01_scaled(self.lam * r);
+            let e = (-self.lam * (r - self.a)).exp() / self.k1a;
+            (k0 * e, k1 * e)
+        }
     }
 
-    /// σ_r and τ_rz on the hole r = A at height z (the traction the fit matches).
-    pub fn hole_traction(&self, z: f64) -> (Complex64, Complex64) {
-        let f = self.field(self.a, z);
+    /// σ_r and τ_rz on the cylinder of radius r at height z (the traction the fit matches).
+    pub fn traction(&self, r: f64, z: f64) -> (Complex64, Complex64) {
+        self.traction_at(self.radial(r), r, z)
+    }
+
+    /// [`Self::traction`] with the radial factors of r given.
+    pub fn traction_at(
+        &self,
+        radial: (Complex64, Complex64),
+        r: f64,
+        z: f64,
+    ) -> (Complex64, Complex64) {
+        let f = self.field_at(radial, r, z);
         (f.sigma_r, f.tau_rz)
     }
 
@@ -139,7 +177,16 @@ impl Mode {
 
     /// Every field at (r, z), r ≥ A, |z| ≤ D.
     pub fn field(&self, r: f64, z: f64) -> ModeField<Complex64> {
-        let (r0, r1) = self.radial(r);
+        self.field_at(self.radial(r), r, z)
+    }
+
+    /// [`Self::field`] with the radial factors `(r0, r1)` = [`Self::radial`]`(r)` given.
+    pub fn field_at(
+        &self,
+        (r0, r1): (Complex64, Complex64),
+        r: f64,
+        z: f64,
+    ) -> ModeField<Complex64> {
         let (nu, al, lam) = (self.nu, self.alpha, self.lam);
         let zz = lam * z;
         let (s, c) = (zz.sin(), zz.cos());
@@ -167,5 +214,19 @@ pub fn lame_field(a: f64, g: f64, r: f64) -> ModeField<f64> {
         tau_rz: 0.0,
         u: q * r / (2.0 * g),
         w: 0.0,
+    }
+}
+
+/// The uniform in-plane state σ_r = σ_θ = 1, σ_z = τ_rz = 0 (a free rim's Lamé companion), with
+/// u = (1 − ν)r/E, w = −2νz/E, E = 2G(1 + ν).
+pub fn uniform_field(nu: f64, g: f64, r: f64, z: f64) -> ModeField<f64> {
+    let e = 2.0 * g * (1.0 + nu);
+    ModeField {
+        sigma_r: 1.0,
+        sigma_theta: 1.0,
+        sigma_z: 0.0,
+        tau_rz: 0.0,
+        u: (1.0 - nu) * r / e,
+        w: -2.0 * nu * z / e,
     }
 }

@@ -10,7 +10,8 @@
 //!
 //! **System.** Unknowns: the Lamé amplitude c₀ and (α_k, β_k) with mode k entering as
 //! α_k Re F_k + β_k Im F_k; equations: σ_r and τ_rz at every z_j, 2(M + 1) rows for 2N + 1
-//! unknowns (twofold oversampling). Columns are scaled to unit norm and the system is solved by
+//! unknowns (twofold oversampling). With a rim r = C the same heights are used there too, and the
+//! unknowns add the uniform in-plane state and N modes growing outward. Columns are scaled to unit norm and the system is solved by
 //! the SVD (singular values below 1e-14 of the largest dropped); the condition number of the
 //! scaled matrix is reported.
 //!
@@ -19,7 +20,7 @@
 //!
 //! ```
 //! use boltzone::hankel::hole::fit::heights;
-//! let z = heights(0.1, 4);
+//! let z = heights(0.1, 8);
 //! assert_eq!(z.len(), 9);
 //! assert!((z[0] - 0.1).abs() < 1e-17 && z[8].abs() < 1e-17);
 //! ```
@@ -54,11 +55,24 @@ pub struct HoleData {
     pub tau_rz: f64,
 }
 
+/// The slab's traction on one cylinder (the hole r = A, or a rim r = C) at the fitted heights.
+#[derive(Debug, Clone, Copy)]
+pub struct Boundary<'a> {
+    /// Radius of the cylinder.
+    pub r: f64,
+    /// Slab traction at heights from the face down to the midplane.
+    pub data: &'a [HoleData],
+}
+
 /// Fitted amplitudes and the quality of the fit.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Fit {
-    /// Lamé amplitude c₀ (σ_r(A) = −c₀).
+    /// Hole radius A of the Lamé field.
+    pub a: f64,
+    /// Lamé amplitude c₀ (σ_r = −c₀ (A/r)²).
     pub lame: f64,
+    /// Amplitude of the uniform state σ_r = σ_θ (0 without a rim).
+    pub uniform: f64,
     /// Complex amplitudes c_k: mode k contributes Re(c_k F_k).
     pub modes: Vec<Complex64>,
     /// Condition number of the column-scaled collocation matrix.
@@ -67,27 +81,37 @@ pub struct Fit {
     pub dropped: usize,
 }
 
-/// The least-squares amplitudes cancelling `data` with `modes` (plus the Lamé field).
-pub fn fit(modes: &[Mode], data: &[HoleData]) -> Fit {
-    let n = 1 + 2 * modes.len();
-    let rows = 2 * data.len();
-    let mut a = DMatrix::<f64>::zeros(rows, n);
-    let mut b = DVector::<f64>::zeros(rows);
-    for (i, p) in data.iter().enumerate() {
-        a[(2 * i, 0)] = -1.0; // Lamé σ_r(A) = −1, τ = 0
-        b[2 * i] = -p.sigma_r;
-        b[2 * i + 1] = -p.tau_rz;
-        for (k, m) in modes.iter().enumerate() {
-            let (sr, tau) = m.hole_traction(p.z);
-            a[(2 * i, 1 + 2 * k)] = sr.re;
-            a[(2 * i, 2 + 2 * k)] = sr.im;
-            a[(2 * i + 1, 1 + 2 * k)] = tau.re;
-            a[(2 * i + 1, 2 + 2 * k)] = tau.im;
+/// The least-squares amplitudes cancelling the slab's traction on every boundary with `modes`,
+/// the Lamé field of the hole radius `a`, and (if `uniform`) the uniform in-plane state.
+pub fn fit(modes: &[Mode], a: f64, uniform: bool, boundaries: &[Boundary]) -> Fit {
+    let extra = 1 + usize::from(uniform);
+    let n = extra + 2 * modes.len();
+    let rows = 2 * boundaries.iter().map(|b| b.data.len()).sum::<usize>();
+    let mut m = DMatrix::<f64>::zeros(rows, n);
+    let mut rhs = DVector::<f64>::zeros(rows);
+    let mut i = 0;
+    for bd in boundaries {
+        let radial: Vec<_> = modes.iter().map(|md| md.radial(bd.r)).collect();
+        for p in bd.data {
+            m[(i, 0)] = -(a / bd.r) * (a / bd.r); // Lamé σ_r, τ = 0
+            if uniform {
+                m[(i, 1)] = 1.0;
+            }
+            rhs[i] = -p.sigma_r;
+            rhs[i + 1] = -p.tau_rz;
+            for (k, (md, rad)) in modes.iter().zip(&radial).enumerate() {
+                let (sr, tau) = md.traction_at(*rad, bd.r, p.z);
+                m[(i, extra + 2 * k)] = sr.re;
+                m[(i, extra + 2 * k + 1)] = sr.im;
+                m[(i + 1, extra + 2 * k)] = tau.re;
+                m[(i + 1, extra + 2 * k + 1)] = tau.im;
+            }
+            i += 2;
         }
     }
     let scale: Vec<f64> = (0..n)
         .map(|j| {
-            let s = a.column(j).norm();
+            let s = m.column(j).norm();
             if s > 0.0 {
                 1.0 / s
             } else {
@@ -96,51 +120,67 @@ pub fn fit(modes: &[Mode], data: &[HoleData]) -> Fit {
         })
         .collect();
     for (j, s) in scale.iter().enumerate() {
-        a.column_mut(j).scale_mut(*s);
+        m.column_mut(j).scale_mut(*s);
     }
-    let svd = a.svd(true, true);
+    let svd = m.svd(true, true);
     let smax = svd.singular_values.max();
     let cut = 1e-14 * smax;
-    let kept: Vec<f64> = svd
+    let kept = svd.singular_values.iter().filter(|&&s| s > cut).count();
+    let smin = svd
         .singular_values
         .iter()
         .copied()
         .filter(|&s| s > cut)
-        .collect();
-    let dropped = n - kept.len();
-    let smin = kept.iter().copied().fold(f64::INFINITY, f64::min);
-    let x = svd.solve(&b, cut).unwrap_or_else(|_| DVector::zeros(n));
+        .fold(f64::INFINITY, f64::min);
+    let x = svd.solve(&rhs, cut).unwrap_or_else(|_| DVector::zeros(n));
     let c: Vec<f64> = (0..n).map(|j| x[j] * scale[j]).collect();
     Fit {
+        a,
         lame: c[0],
+        uniform: if uniform { c[1] } else { 0.0 },
         modes: (0..modes.len())
-            .map(|k| Complex64::new(c[1 + 2 * k], -c[2 + 2 * k]))
+            .map(|k| Complex64::new(c[extra + 2 * k], -c[extra + 2 * k + 1]))
             .collect(),
         condition: smax / smin,
-        dropped,
+        dropped: n - kept,
     }
 }
 
 impl Fit {
-    /// The correction's traction (σ_r, τ_rz) on the hole at height z.
-    pub fn hole_traction(&self, modes: &[Mode], z: f64) -> (f64, f64) {
-        modes
-            .iter()
-            .zip(&self.modes)
-            .fold((-self.lame, 0.0), |(sr, tau), (m, c)| {
-                let (ms, mt) = m.hole_traction(z);
-                (sr + (c * ms).re, tau + (c * mt).re)
-            })
+    /// The correction's traction (σ_r, τ_rz) on the cylinder of radius r at height z.
+    pub fn traction(&self, modes: &[Mode], r: f64, z: f64) -> (f64, f64) {
+        let radial: Vec<_> = modes.iter().map(|m| m.radial(r)).collect();
+        self.traction_at(modes, &radial, r, z)
     }
 
-    /// Max and RMS of the residual traction |(σ_r, τ_rz)| of slab + correction over `data`
+    /// [`Self::traction`] with every mode's radial factors at r given.
+    fn traction_at(
+        &self,
+        modes: &[Mode],
+        radial: &[(Complex64, Complex64)],
+        r: f64,
+        z: f64,
+    ) -> (f64, f64) {
+        let q = (self.a / r) * (self.a / r);
+        modes.iter().zip(radial).zip(&self.modes).fold(
+            (-self.lame * q + self.uniform, 0.0),
+            |(sr, tau), ((m, rad), c)| {
+                let (ms, mt) = m.traction_at(*rad, r, z);
+                (sr + (c * ms).re, tau + (c * mt).re)
+            },
+        )
+    }
+
+    /// Max and RMS of the residual traction |(σ_r, τ_rz)| of slab + correction on `boundary`
     /// (heights on a θ-grid from the face to the midplane, as [`heights`] gives them), absolute.
-    pub fn residual(&self, modes: &[Mode], data: &[HoleData]) -> (f64, f64) {
+    pub fn residual(&self, modes: &[Mode], boundary: &Boundary) -> (f64, f64) {
         let mut max = 0.0f64;
         let mut sum = 0.0;
+        let data = boundary.data;
         let last = data.len() - 1;
+        let radial: Vec<_> = modes.iter().map(|m| m.radial(boundary.r)).collect();
         for (i, p) in data.iter().enumerate() {
-            let (sr, tau) = self.hole_traction(modes, p.z);
+            let (sr, tau) = self.traction_at(modes, &radial, boundary.r, p.z);
             let r = (p.sigma_r + sr).hypot(p.tau_rz + tau);
             max = max.max(r);
             let w = if i == 0 || i == last { 0.5 } else { 1.0 };

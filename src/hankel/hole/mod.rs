@@ -1,5 +1,6 @@
 //! The single plate with a hole by Hankel transforms: the infinite slab's solution corrected so
-//! that the hole r = A is free of traction, and the plate's separation radius R_o.
+//! that the hole r = A (and a finite rim r = C) is free of traction, and the plate's separation
+//! radius R_o.
 //!
 //! **Problem.** The plate r ≥ A, −D ≤ z ≤ D, pressed by p(r) on both faces, with a traction-free
 //! hole: σ_r(A, z) = τ_rz(A, z) = 0. The infinite slab ([`crate::hankel::Slab`]) satisfies the
@@ -14,22 +15,39 @@
 //! (1980) 57): [`eigen`]. They are closed forms — one complex K₀, K₁ pair ([`bessel_k`]) per mode
 //! and point, no quadrature — so the fit and the midplane sum cost microseconds, which is why
 //! they were chosen over ring loads of the slab's Green's function (each a Hankel integral per
-//! collocation point, and a notoriously ill-conditioned basis). Their weak point, slow
-//! convergence for data that are singular at the corner (A, ±D), is removed by the second half
-//! of the correction: the fictitious slab is loaded by p continued smoothly into the hole
-//! ([`plate::extended_load`]), so the data to cancel are smooth. The amplitudes come from
-//! least-squares collocation on r = A ([`fit`]); the convergence parameter is the number of
-//! modes N (doubled until the residual target is met), and the error measure is the residual
-//! traction on the hole, measured on twice as many heights as were fitted.
+//! collocation point, and a notoriously ill-conditioned basis). The data to cancel would be
+//! logarithmically singular at the corner (A, ±D) when the load starts at the hole edge; the
+//! second half of the correction removes that: the fictitious slab is loaded by p continued
+//! smoothly into the hole ([`plate::extended_load`]), so its traction on r = A is smooth. The
+//! amplitudes come from least-squares collocation on r = A ([`fit`]; the slab's tractions at all
+//! heights by [`traction`]); the convergence parameter is the number of modes N (doubled until
+//! the target is met), and the error measure is the residual traction on the hole, measured on
+//! twice as many heights as were fitted.
+//!
+//! **Convergence.** The residual falls algebraically, like N^(−1.74): the true solution has a
+//! Williams singularity at the 90° corner where the free hole meets the loaded face, stresses
+//! ~ ρ^(λ−1) with sin(λπ/2) = −λ, λ = 2.7396 + 1.1190i (Williams, *J. Appl. Mech.* 19 (1952)
+//! 526), which smooth modes resolve only down to a height ~D/N. Measured (example 05): max
+//! residual 6.0e-6 P at N = 64 and 5.4e-7 P at N = 256 for A/D = 1, B/A = 3.1; 9.5e-4 P at N = 64
+//! for A/D = 0.5, B/A = 1.3. The residual is self-equilibrated and confined to the corner layer,
+//! so R_o, a few D away, converges much faster (1e-10 A at N = 64 for the first, 3e-5 A for the
+//! second) and agrees with the finite-element single plate to < 0.005 % on Table 1. Reaching
+//! 1e-6 P for every geometry needs the corner singularity in the basis (e.g. normal and shear
+//! face loads ∝ (A − r)^(λ−1) inside the hole), which is not built.
 //!
 //! **Outputs.** [`HolePlate`] (fields at any (r, z), r ≥ A) and [`single_plate_separation`]:
 //! R_o, the first upward zero of the midplane σ_z beyond B, with an error estimate that adds the
-//! hole residual's effect (|δσ_z| ≤ max residual traction, a conservative bound: the error field
-//! is the response to that traction, whose self-equilibrated part decays away from the hole and
-//! whose net radial force is carried by the Lamé field, which has no σ_z) to the slab
-//! quadrature's. The plate's outer radius is taken as infinite: a rim at C changes midplane σ_z
-//! only through exponentially decaying modes, ≈ e^(−2.1(C − R_o)/D) (the Lamé and uniform
-//! in-plane states that a rim adds have no σ_z).
+//! hole's share — the larger of the last two changes of R_o as N doubled, or with a fixed N the
+//! bound max residual·P/slope (|δσ_z| ≤ max residual traction: the error field is the response
+//! to that traction, whose self-equilibrated part decays away from the hole and whose net radial
+//! force is carried by the Lamé field, which has no σ_z) — to the slab quadrature's.
+//!
+//! **Finite rim.** With `OuterRadius::Finite(C)` the same treatment frees r = C: N modes growing
+//! outward (I₀, I₁(λ_k r), [`bessel_i`]) and the uniform in-plane state σ_r = σ_θ join the
+//! unknowns, and the fit collocates on both cylinders. A rim changes the midplane σ_z only
+//! through the modes, ≈ e^(−2.1(C − R_o)/D) (the Lamé and uniform states have no σ_z): nothing
+//! for the report's C = 1.54 in, 3 % of R_o for a rim 1.3D beyond the load (checked against the
+//! finite-element plate in `tests/hole_fem_agreement.rs`).
 //!
 //! Sign convention: compression negative; residuals relative to the mean pressure P.
 //!
@@ -39,15 +57,18 @@
 //! let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
 //! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3).unwrap(), load).unwrap();
 //! let (sep, hole) = single_plate_separation(&plate, &Default::default(), &HoleParams::default()).unwrap();
-//! assert!(hole.residual_max <= 1e-6);
-//! assert!(sep.r_o > 0.31 && sep.error < 1e-4);
+//! // R_o converged (two changes below 1e-6 R_o) long before the corner-limited residual
+//! assert!(hole.residual_max < 1e-3 && sep.error < 1e-6 * sep.r_o);
+//! assert!((sep.r_o / 0.1 - 4.03183).abs() < 1e-5);
 //! ```
 
+pub mod bessel_i;
 pub mod bessel_k;
 pub mod eigen;
 pub mod fit;
 pub mod plate;
 mod separation;
+pub mod traction;
 
 pub use plate::HolePlate;
 pub use separation::single_plate_separation;
@@ -66,10 +87,11 @@ pub struct HoleParams {
     pub start_terms: usize,
     /// Largest N of the doubling (default 64).
     pub max_terms: usize,
-    /// Absolute tolerance of the slab's hole tractions, relative to P (default 1e-9).
+    /// Absolute tolerance of the slab's hole tractions, relative to P (default 1e-8: a hundredth
+    /// of the residual target, and below every residual the modes reach at N ≤ 256).
     pub slab_tolerance: f64,
-    /// [`single_plate_separation`] stops doubling N when R_o changes by less than this
-    /// fraction of R_o (default 1e-6), or when the residual target is met.
+    /// [`single_plate_separation`] stops doubling N when two successive changes of R_o are
+    /// below this fraction of R_o (default 1e-6), or when the residual target is met.
     pub r_o_tolerance: f64,
 }
 
@@ -80,7 +102,7 @@ impl Default for HoleParams {
             terms: None,
             start_terms: 4,
             max_terms: 64,
-            slab_tolerance: 1e-9,
+            slab_tolerance: 1e-8,
             r_o_tolerance: 1e-6,
         }
     }
@@ -122,6 +144,8 @@ pub struct HoleLevel {
     pub residual_max: f64,
     /// RMS residual traction (Chebyshev measure in z), relative to P.
     pub residual_rms: f64,
+    /// Largest residual traction on the rim r = C, relative to P (0 for an infinite plate).
+    pub rim_residual_max: f64,
     /// Condition number of the column-scaled collocation matrix.
     pub condition: f64,
 }
@@ -139,6 +163,8 @@ pub struct HoleInfo {
     pub residual_max: f64,
     /// RMS residual traction, relative to P.
     pub residual_rms: f64,
+    /// Largest residual traction on the rim r = C, relative to P (0 for an infinite plate).
+    pub rim_residual_max: f64,
     /// Condition number of the column-scaled collocation matrix.
     pub condition: f64,
     /// Largest quadrature error estimate of the slab's hole tractions, relative to P.

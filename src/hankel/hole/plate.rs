@@ -15,17 +15,22 @@
 //! use boltzone::hankel::hole::{HoleParams, HolePlate};
 //! let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
 //! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3).unwrap(), load).unwrap();
-//! let holed = HolePlate::new(&plate, &HoleParams::default()).unwrap();
-//! assert!(holed.info().residual_max <= 1e-6);
+//! let holed = HolePlate::new(&plate, &HoleParams { terms: Some(16), ..Default::default() }).unwrap();
+//! let info = holed.info();
+//! assert!(info.residual_max < 1e-4 && info.history.len() == 1);
+//! // the hole is (nearly) free: σ_r(A, z) = slab + correction
+//! let s = holed.stress(0.1, 0.05, &Default::default());
+//! assert!(s.sigma_r.value.abs() < 1e-4);
 //! ```
 
-use super::eigen::{lame_field, symmetric_roots, Mode, ModeField};
-use super::fit::{fit, heights, Fit, HoleData};
+use super::eigen::{lame_field, symmetric_roots, uniform_field, Mode, ModeField};
+use super::fit::{fit, heights, Boundary, Fit, HoleData};
+use super::traction::hole_tractions;
 use super::{HoleInfo, HoleLevel, HoleParams};
 use crate::error::InputError;
 use crate::hankel::field::{Slab, Stress};
 use crate::hankel::quadrature::QuadParams;
-use crate::joint::SinglePlate;
+use crate::joint::{OuterRadius, SinglePlate};
 use crate::load::FaceLoad;
 use std::time::Instant;
 
@@ -68,8 +73,12 @@ pub struct HolePlate {
     roots: Vec<num_complex::Complex64>,
     modes: Vec<Mode>,
     fit: Option<Fit>,
-    /// Slab hole traction on the heights of 4N intervals (collocation + check points).
+    /// Rim radius C (None: infinite plate).
+    rim: Option<f64>,
+    /// Slab traction on the hole (and the rim) at the heights of 4N intervals (collocation +
+    /// check points).
     grid: Vec<HoleData>,
+    rim_grid: Vec<HoleData>,
     quad: QuadParams,
     nu: f64,
     g: f64,
@@ -79,9 +88,9 @@ pub struct HolePlate {
 }
 
 impl HolePlate {
-    /// Solves the hole correction of `plate` (its outer radius is taken as infinite): N from
-    /// `params.terms`, or doubled from `params.start_terms` until the residual target is met or
-    /// `params.max_terms` is reached.
+    /// Solves the hole correction of `plate` (and frees its rim r = C if the outer radius is
+    /// finite): N from `params.terms`, or doubled from `params.start_terms` until the residual
+    /// target is met or `params.max_terms` is reached.
     pub fn new(plate: &SinglePlate, params: &HoleParams) -> Result<Self, InputError> {
         let mut holed =
             Self::with_terms(plate, params, params.terms.unwrap_or(params.start_terms))?;
@@ -101,7 +110,10 @@ impl HolePlate {
         params.check()?;
         let (a, d) = (plate.hole_radius(), plate.half_thickness());
         let mat = plate.material();
-        let p_ref = plate.load().mean_pressure().abs();
+        // P (a zero load has nothing to correct: measure its residuals absolutely)
+        let p_ref = Some(plate.load().mean_pressure().abs())
+            .filter(|p| *p > 0.0)
+            .unwrap_or(1.0);
         let ext = extended_load(plate.load(), a, d)?;
         let slab = Slab::new(d, mat, ext.unwrap_or_else(|| plate.load().clone()))?;
         let mut holed = Self {
@@ -110,10 +122,16 @@ impl HolePlate {
             roots: Vec::new(),
             modes: Vec::new(),
             fit: None,
+            rim: match plate.outer_radius() {
+                OuterRadius::Finite(c) if a > 0.0 => Some(c),
+                _ => None,
+            },
             grid: Vec::new(),
+            rim_grid: Vec::new(),
             quad: QuadParams {
-                rel_tol: 1e-14,
+                rel_tol: 1e-10,
                 abs_tol: params.slab_tolerance * p_ref,
+                window: 9,
                 ..QuadParams::default()
             },
             nu: mat.poisson_ratio(),
@@ -142,28 +160,49 @@ impl HolePlate {
         true
     }
 
+    /// Slab traction at radius `r` on the heights `z` of 4N intervals, reusing `old` (the grid of
+    /// 2N intervals) when nested.
+    fn sample(&mut self, r: f64, old: Vec<HoleData>, z: &[f64]) -> Vec<HoleData> {
+        let nested = !old.is_empty() && old.len() * 2 - 1 == z.len();
+        // heights not sampled yet: all, or the odd-numbered ones of a nested refinement
+        let fresh: Vec<f64> = z
+            .iter()
+            .enumerate()
+            .filter(|(j, _)| !nested || j % 2 == 1)
+            .map(|(_, &zj)| zj)
+            .collect();
+        let (values, evaluations) = hole_tractions(&self.slab, r, &fresh, &self.quad);
+        self.info.slab_evaluations += evaluations;
+        for v in &values {
+            self.info.slab_error = self.info.slab_error.max(v.error / self.p_ref);
+        }
+        let mut old = old.into_iter();
+        let mut new = fresh.iter().zip(&values);
+        (0..z.len())
+            .map(|j| {
+                if nested && j % 2 == 0 {
+                    old.next().expect("nested grid")
+                } else {
+                    let (&z, v) = new.next().expect("one value per fresh height");
+                    HoleData {
+                        z,
+                        sigma_r: v.sigma_r,
+                        tau_rz: v.tau_rz,
+                    }
+                }
+            })
+            .collect()
+    }
+
     /// Fits N = `n` modes: samples the slab on the new heights, solves, measures the residual.
     fn solve(&mut self, n: usize) {
         let d = self.slab.half_thickness();
         let z = heights(d, 4 * n);
-        let nested = !self.grid.is_empty() && self.grid.len() * 2 - 1 == z.len();
-        let mut old = std::mem::take(&mut self.grid).into_iter();
-        let mut grid = Vec::with_capacity(z.len());
-        for (j, &zj) in z.iter().enumerate() {
-            match (nested && j % 2 == 0).then(|| old.next()).flatten() {
-                Some(p) => grid.push(p),
-                None => {
-                    let s = self.slab.stress(self.a, zj, &self.quad);
-                    self.info.slab_evaluations += s.sigma_r.evaluations;
-                    let err = s.sigma_r.error.hypot(s.tau_rz.error) / self.p_ref;
-                    self.info.slab_error = self.info.slab_error.max(err);
-                    grid.push(HoleData {
-                        z: zj,
-                        sigma_r: s.sigma_r.value,
-                        tau_rz: s.tau_rz.value,
-                    });
-                }
-            }
+        let old = std::mem::take(&mut self.grid);
+        self.grid = self.sample(self.a, old, &z);
+        if let Some(c) = self.rim {
+            let old = std::mem::take(&mut self.rim_grid);
+            self.rim_grid = self.sample(c, old, &z);
         }
         if self.roots.len() < n {
             self.roots = symmetric_roots(n);
@@ -173,25 +212,64 @@ impl HolePlate {
             .iter()
             .map(|x| Mode::new(*x, a, d, nu, g))
             .collect();
-        let colloc: Vec<HoleData> = grid.iter().step_by(2).copied().collect();
-        let f = fit(&self.modes, &colloc);
-        let (rmax, rrms) = f.residual(&self.modes, &grid);
+        if let Some(c) = self.rim {
+            let growing = self.roots[..n]
+                .iter()
+                .map(|x| Mode::growing(*x, c, d, nu, g));
+            self.modes.extend(growing);
+        }
+        let colloc: Vec<HoleData> = self.grid.iter().step_by(2).copied().collect();
+        let rim_colloc: Vec<HoleData> = self.rim_grid.iter().step_by(2).copied().collect();
+        let mut bounds = vec![Boundary {
+            r: a,
+            data: &colloc,
+        }];
+        if let Some(c) = self.rim {
+            bounds.push(Boundary {
+                r: c,
+                data: &rim_colloc,
+            });
+        }
+        let f = fit(&self.modes, a, self.rim.is_some(), &bounds);
+        let (rmax, rrms) = f.residual(
+            &self.modes,
+            &Boundary {
+                r: a,
+                data: &self.grid,
+            },
+        );
+        let rim_residual = self.rim.map_or(0.0, |c| {
+            f.residual(
+                &self.modes,
+                &Boundary {
+                    r: c,
+                    data: &self.rim_grid,
+                },
+            )
+            .0 / self.p_ref
+        });
         let level = HoleLevel {
             terms: n,
             collocation_points: colloc.len(),
             residual_max: rmax / self.p_ref,
             residual_rms: rrms / self.p_ref,
+            rim_residual_max: rim_residual,
             condition: f.condition,
         };
         self.info.history.push(level);
         self.info.terms = n;
         self.info.collocation_points = level.collocation_points;
-        self.info.check_points = grid.len();
+        self.info.check_points = self.grid.len();
         self.info.residual_max = level.residual_max;
         self.info.residual_rms = level.residual_rms;
+        self.info.rim_residual_max = rim_residual;
         self.info.condition = level.condition;
-        self.grid = grid;
         self.fit = Some(f);
+    }
+
+    /// The rim radius C whose traction the correction cancels (None: infinite plate).
+    pub fn rim(&self) -> Option<f64> {
+        self.rim
     }
 
     /// The fit's sizes, residual and cost.
@@ -215,13 +293,14 @@ impl HolePlate {
             return ModeField::default();
         };
         let l = lame_field(self.a, self.g, r);
+        let s = uniform_field(self.nu, self.g, r, z);
         let mut out = ModeField {
-            sigma_r: f.lame * l.sigma_r,
-            sigma_theta: f.lame * l.sigma_theta,
+            sigma_r: f.lame * l.sigma_r + f.uniform * s.sigma_r,
+            sigma_theta: f.lame * l.sigma_theta + f.uniform * s.sigma_theta,
             sigma_z: 0.0,
             tau_rz: 0.0,
-            u: f.lame * l.u,
-            w: 0.0,
+            u: f.lame * l.u + f.uniform * s.u,
+            w: f.uniform * s.w,
         };
         for (m, c) in self.modes.iter().zip(&f.modes) {
             let v = m.field(r, z);

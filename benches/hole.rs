@@ -1,0 +1,46 @@
+//! Time of the single plate with a hole by the Hankel route: R_o with N doubled until R_o is
+//! converged to 1e-6 (two successive changes), for the easiest and the hardest of Table 1's
+//! geometries, and the hole fit alone at N = 16.
+use boltzone::hankel::hole::{single_plate_separation, HoleParams, HolePlate};
+use boltzone::hankel::SeparationParams;
+use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+use criterion::{criterion_group, criterion_main, Criterion};
+
+fn plate(a_over_d: f64, b_over_a: f64) -> SinglePlate {
+    let a = 0.1;
+    let load = FaceLoad::uniform(a, a * b_over_a, 1.0).unwrap();
+    SinglePlate::new(
+        a,
+        OuterRadius::Infinite,
+        a / a_over_d,
+        Material::unit(0.3).unwrap(),
+        load,
+    )
+    .unwrap()
+}
+
+fn bench(c: &mut Criterion) {
+    let mut g = c.benchmark_group("hole");
+    g.sample_size(10);
+    for (ad, ba) in [(1.0, 3.1), (0.5, 1.3)] {
+        let p = plate(ad, ba);
+        g.bench_function(format!("R_o to 1e-6, A/D = {ad}, B/A = {ba}"), |b| {
+            b.iter(|| {
+                single_plate_separation(&p, &SeparationParams::default(), &HoleParams::default())
+                    .unwrap()
+            })
+        });
+    }
+    let p = plate(1.0, 3.1);
+    let fixed = HoleParams {
+        terms: Some(16),
+        ..HoleParams::default()
+    };
+    g.bench_function("fit N = 16, A/D = 1, B/A = 3.1", |b| {
+        b.iter(|| HolePlate::new(&p, &fixed).unwrap())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

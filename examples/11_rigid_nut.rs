@@ -1,0 +1,61 @@
+//! The single plate under a rigid, frictionless nut (report Fig. 21: a uniform displacement of
+//! the face over A..B) against the uniform bearing pressure of Table 1: R_o/A for Table 1's
+//! geometries with A/D = 1, both by Q9 finite elements with the Richardson estimate. A rigid nut
+//! concentrates the bearing pressure at the load's edges (square-root singular at r = B), which
+//! moves R_o outward; the estimate converges more slowly (the singularity is stronger).
+//!
+//! Run: `cargo run --release --example 11_rigid_nut [levels]` (default 5).
+
+use boltzone::fem::single::{single_plate_r_o, Loading, SingleParams};
+use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+
+fn main() -> anyhow::Result<()> {
+    let levels: usize = std::env::args()
+        .nth(1)
+        .map(|s| s.parse())
+        .transpose()?
+        .unwrap_or(5);
+    run(levels)
+}
+
+/// The comparison with `levels` refinements.
+pub fn run(levels: usize) -> anyhow::Result<()> {
+    let a = 0.1;
+    println!(
+        "{:>5} | {:>18} | {:>18} | {:>7}",
+        "B/A", "pressure R_o/A", "rigid nut R_o/A", "shift"
+    );
+    for row in boltzone::reference::table1()
+        .into_iter()
+        .filter(|r| r.a_over_d == 1.0)
+    {
+        let load = FaceLoad::uniform(a, row.b(), 1.0)?;
+        let plate = SinglePlate::new(
+            a,
+            OuterRadius::Finite(1.54),
+            row.d(),
+            Material::unit(0.3)?,
+            load,
+        )?;
+        let mut res = Vec::new();
+        for loading in [Loading::Pressure, Loading::UniformDisplacement] {
+            let params = SingleParams {
+                loading,
+                levels,
+                ..SingleParams::default()
+            };
+            let (r, info) = single_plate_r_o(&plate, &params)?;
+            res.push((r / a, info.error_estimate / a));
+        }
+        println!(
+            "{:>5} | {:>9.4} ± {:<6.4} | {:>9.4} ± {:<6.4} | {:>+7.3}",
+            row.b_over_a,
+            res[0].0,
+            res[0].1,
+            res[1].0,
+            res[1].1,
+            res[1].0 - res[0].0
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,277 @@
+//! One level of the two-plate study, adapted to the previous one: the mesh graded at A, B and
+//! the estimated R_o; the choice of tied points (well inside the last contact zone) and of the
+//! LCP window (near its edges); the supports and loads; and the checks that revise that choice.
+//!
+//! A tied point must press (p ≥ 0) and a point beyond the window must not penetrate (g ≥ 0);
+//! when either fails the level is solved again with one reference point tied and a window from
+//! A to B + 3D (doubled in length while the gap beyond is negative); a reference that
+//! pulls is replaced by the point pressing hardest. Without a hole (A = 0) the axis nodes have
+//! u = 0. Units as in [`super::two_plate`].
+//!
+//! ```
+//! use boltzone::contact::two_plate::{solve, TwoPlateParams};
+//! use boltzone::{Joint, Material, OuterRadius};
+//! let j = Joint::symmetric(0.1, 0.2, 0.1, Material::unit(0.3).unwrap()).unwrap()
+//!     .with_outer_radius(OuterRadius::Finite(1.0)).unwrap();
+//! let s = solve(&j, &TwoPlateParams { tolerance: 1e-2, ..Default::default() }).unwrap();
+//! // After the first level only a few points near the edge remain LCP unknowns.
+//! assert!(s.info.levels[1..].iter().all(|l| l.window < 40 && l.attempts == 1));
+//! ```
+
+use super::level::{solve_level, LevelSetup, LevelSolution, Model};
+use super::two_plate::{EdgeSupport, Loading, TwoPlateParams};
+use super::ContactError;
+use crate::fem::{Component, ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
+use crate::joint::Joint;
+
+/// Radii and thicknesses of the joint as meshed.
+pub(crate) struct Geometry {
+    pub a: f64,
+    pub b: f64,
+    pub c: f64,
+    pub d: [f64; 2],
+    pub two: bool,
+    pub welded: bool,
+}
+
+/// The mesh of one level: radial grading at A, B and the estimate of R_o, axial grading at the
+/// interface and the outer faces; materials by plate.
+pub(crate) fn mesh(
+    joint: &Joint,
+    g: &Geometry,
+    kind: ElementKind,
+    h: f64,
+    r_est: Option<f64>,
+) -> Result<Model, ContactError> {
+    let q = 1.25;
+    let mut foci = vec![g.a, g.b];
+    foci.extend(r_est.filter(|&r| r > g.a && r < g.c));
+    let r = Spacing::graded(g.a, g.c, &foci[1..], &foci, h, q, (g.c - g.a) / 10.0)?;
+    // Axially the fields vary more slowly than radially near R_o: a faster growth (1.5) away
+    // from the interface and the loaded face halves the node count at no measurable cost in R_o.
+    let zs = |z0: f64, z1: f64| Spacing::graded(z0, z1, &[], &[z0, z1], h, 1.5, (z1 - z0) / 3.0);
+    let upper_mat = joint.upper().material();
+    let model = if g.two {
+        let plates = [
+            PlateSpec {
+                z: zs(-g.d[1], 0.0)?,
+                material: 0,
+            },
+            PlateSpec {
+                z: zs(0.0, g.d[0])?,
+                material: 1,
+            },
+        ];
+        Model {
+            mesh: Mesh::structured(kind, &r, &plates)?,
+            materials: vec![joint.lower().material(), upper_mat],
+            upper: 1,
+            lower: Some(0),
+        }
+    } else {
+        let plates = [PlateSpec {
+            z: zs(0.0, g.d[0])?,
+            material: 0,
+        }];
+        Model {
+            mesh: Mesh::structured(kind, &r, &plates)?,
+            materials: vec![upper_mat],
+            upper: 0,
+            lower: None,
+        }
+    };
+    Ok(model)
+}
+
+/// Solves one level, choosing tied and window points from the previous level and widening the
+/// window or untying points when the solution shows the choice was wrong.
+pub(crate) fn solve_adaptive(
+    model: &Model,
+    joint: &Joint,
+    g: &Geometry,
+    params: &TwoPlateParams,
+    prev: Option<&(LevelSolution, f64, f64)>,
+) -> Result<(LevelSolution, usize, usize), ContactError> {
+    let r = model.mesh.radial_nodes().to_vec();
+    let load = joint.load();
+    let (supports, loads) = boundary(model, joint, g, params)?;
+    let held: Vec<bool> = (0..r.len())
+        .map(|i| {
+            let (up, low) = model.pair(i);
+            std::iter::once(up)
+                .chain(low)
+                .any(|n| supports.get(n).fixed[1].is_some())
+        })
+        .collect();
+    // First choice: from the previous level; fallback: one reference point under the load.
+    let mut plan = prev.and_then(|p| refined_plan(&r, p));
+    let mut reference = nearest(&r, centroid(load));
+    let mut r_win = (g.b + params.window * g.d[0].max(g.d[1])).min(g.c);
+    let mut tries = 0;
+    loop {
+        tries += 1;
+        let (mut tied, mut window) = match &plan {
+            Some(p) => p.clone(),
+            None => (
+                vec![reference],
+                (0..r.len())
+                    .filter(|&i| i != reference && r[i] <= r_win)
+                    .collect(),
+            ),
+        };
+        // Interface nodes held by an edge support are no contact points.
+        tied.retain(|&i| !held[i]);
+        window.retain(|&i| !held[i]);
+        let setup = LevelSetup {
+            tied: &tied,
+            window: &window,
+            welded: g.welded,
+            fix_rigid: params.edge == EdgeSupport::Free && params.loading == Loading::Pressure,
+            lcp: params.lcp,
+            nut: (g.a, g.b),
+        };
+        let sol = solve_level(model, &setup, &supports, &loads)?;
+        let fmax = sol.force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
+        let gmax = sol.gap.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        // Round-off level of the checks: the LCP's own tolerance.
+        let tol = params.lcp.tolerance;
+        let pulls = tied.iter().copied().find(|&i| sol.force[i] < -tol * fmax);
+        let wmax = window.iter().map(|&i| r[i]).fold(0.0, f64::max);
+        // (A welded zone chosen by the report's rule admits penetration anyway: no widening.)
+        let penetrates = !sol.lcp.prefix
+            && (0..r.len()).any(|i| r[i] > wmax && !tied.contains(&i) && sol.gap[i] < -tol * gmax);
+        if tries > 12 {
+            return Err(ContactError::NotConverged {
+                iterations: tries,
+                violations: 1,
+            });
+        }
+        match (pulls, penetrates) {
+            (None, false) => return Ok((sol, window.len(), tries)),
+            (Some(i), _) if plan.is_none() => {
+                // The reference pulls: take the point pressing hardest instead.
+                let best = (0..r.len())
+                    .filter(|&j| sol.closed[j])
+                    .max_by(|&x, &y| sol.force[x].total_cmp(&sol.force[y]));
+                match best {
+                    Some(j) if j != reference => reference = j,
+                    _ => {
+                        return Err(ContactError::ReferenceInTension {
+                            radius: r[i],
+                            reaction: sol.force[i],
+                        })
+                    }
+                }
+            }
+            (Some(_), _) => plan = None,
+            (None, true) => {
+                if plan.is_some() {
+                    plan = None;
+                } else if r_win >= g.c {
+                    return Err(ContactError::WindowExhausted { radius: g.c });
+                } else {
+                    r_win = (g.a + 2.0 * (r_win - g.a)).min(g.c);
+                }
+            }
+        }
+    }
+}
+
+/// Ties and window from the previous level: points closed there and farther than three old
+/// elements from every contact boundary are tied; the rest up to R_o + 6 old elements are unknown.
+fn refined_plan(r: &[f64], prev: &(LevelSolution, f64, f64)) -> Option<(Vec<usize>, Vec<usize>)> {
+    let (s, r_o, h) = prev;
+    let margin = 3.0 * h;
+    let mut bounds: Vec<f64> = s
+        .closed
+        .windows(2)
+        .zip(s.radius.windows(2))
+        .filter(|(c, _)| c[0] != c[1])
+        .map(|(_, x)| 0.5 * (x[0] + x[1]))
+        .collect();
+    bounds.push(*r_o);
+    let closed_at = |x: f64| s.closed[nearest(&s.radius, x)];
+    let tied: Vec<usize> = (0..r.len())
+        .filter(|&i| {
+            closed_at(r[i]) && r[i] < *r_o && bounds.iter().all(|b| (r[i] - b).abs() > margin)
+        })
+        .collect();
+    let window: Vec<usize> = (0..r.len())
+        .filter(|&i| !tied.contains(&i) && r[i] <= r_o + 2.0 * margin)
+        .collect();
+    (!tied.is_empty()).then_some((tied, window))
+}
+
+/// Index of the radius closest to `x`.
+fn nearest(r: &[f64], x: f64) -> usize {
+    (0..r.len())
+        .min_by(|&i, &j| (r[i] - x).abs().total_cmp(&(r[j] - x).abs()))
+        .expect("non-empty grid")
+}
+
+/// Force centroid ∫p r² dr / ∫p r dr of the load.
+fn centroid(load: &crate::load::FaceLoad) -> f64 {
+    let n = 64;
+    let (a, b) = (load.inner(), load.outer());
+    let (mut m1, mut m2) = (0.0, 0.0);
+    for i in 0..n {
+        let r = a + (b - a) * (i as f64 + 0.5) / n as f64;
+        let p = load.pressure_at(r);
+        m1 += p * r;
+        m2 += p * r * r;
+    }
+    if m1 > 0.0 {
+        m2 / m1
+    } else {
+        0.5 * (a + b)
+    }
+}
+
+/// Edge supports, prescribed nut displacements and face loads.
+fn boundary(
+    model: &Model,
+    joint: &Joint,
+    g: &Geometry,
+    params: &TwoPlateParams,
+) -> Result<(Supports, Loads), ContactError> {
+    let mesh = &model.mesh;
+    let plates: Vec<usize> = std::iter::once(model.upper).chain(model.lower).collect();
+    let mut s = Supports::new(mesh.n_nodes());
+    if g.a == 0.0 {
+        // No hole: the axis r = 0, where u = 0 by symmetry.
+        for &p in &plates {
+            for n in mesh.inner(p) {
+                s.roller_r(n);
+            }
+        }
+    }
+    if params.edge == EdgeSupport::Fixed {
+        for &p in &plates {
+            for n in mesh.outer(p) {
+                s.fix(n);
+            }
+        }
+    }
+    let mut loads = Loads::new(mesh.n_nodes());
+    match params.loading {
+        Loading::NutDisplacement(delta) => {
+            let eps = 1e-12 * g.b;
+            let under = |n: &usize| mesh.nodes()[*n][0] <= g.b + eps;
+            for n in mesh.top(model.upper).into_iter().filter(under) {
+                s.prescribe(n, Component::Z, -delta);
+            }
+            if let Some(l) = model.lower {
+                for n in mesh.bottom(l).into_iter().filter(under) {
+                    s.prescribe(n, Component::Z, delta);
+                }
+            }
+        }
+        Loading::Pressure => {
+            loads.add_face_pressure(mesh, &mesh.top(model.upper), 1.0, joint.load())?;
+            if let Some(l) = model.lower {
+                loads.add_face_pressure(mesh, &mesh.bottom(l), -1.0, joint.load())?;
+            }
+        }
+    }
+    Ok((s, loads))
+}

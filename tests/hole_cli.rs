@@ -1,0 +1,48 @@
+//! `boltzone single --method hankel`: JSON keys and the same R_o as the library.
+
+use boltzone::hankel::hole::{single_plate_separation, HoleParams};
+use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+use std::process::Command;
+
+#[test]
+fn single_hankel_json_matches_the_library() {
+    let out = Command::new(env!("CARGO_BIN_EXE_boltzone"))
+        .args([
+            "single", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--method", "hankel", "--json",
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    for key in [
+        "r_o",
+        "r_o_over_a",
+        "r_o_error",
+        "hole_terms",
+        "hole_residual_max",
+        "hole_residual_rms",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}: {v}");
+    }
+    let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
+    let plate = SinglePlate::new(
+        0.1,
+        OuterRadius::Infinite,
+        0.1,
+        Material::unit(0.3).unwrap(),
+        load,
+    )
+    .unwrap();
+    let (sep, hole) =
+        single_plate_separation(&plate, &Default::default(), &HoleParams::default()).unwrap();
+    // the same deterministic computation: equal to the printed digits
+    assert_eq!(v["r_o"].as_f64().unwrap(), sep.r_o);
+    assert_eq!(v["hole_terms"].as_u64().unwrap() as usize, hole.terms);
+    assert!(
+        (v["r_o_over_a"].as_f64().unwrap() - sep.r_o / 0.1).abs() < 1e-15 * sep.r_o / 0.1 + 1e-15
+    );
+}
