@@ -38,7 +38,9 @@ fn table1_end_to_end() {
             s.error <= TOL * s.value && t.error <= TOL * t.value,
             "{c:?}"
         );
-        // Second method for the single plate (C = ∞ vs C = 1.54: the rim moves σ_z by
+        // Second method for the single plate (regression: at A/D = 1, B/A = 1.3 a Richardson
+        // step on three irregular FE levels once put the FE value 2.8e-3 A off with an estimate
+        // of 1.6e-3 A; see `last_level_estimate`) (C = ∞ vs C = 1.54: the rim moves σ_z by
         // ~e^(−2.1(C − R_o)/D) ≲ 3e-5 P here, below 0.05 % in R_o, the FE model's specification).
         let h = c.single_hankel.expect("hankel check on");
         assert!(
@@ -120,4 +122,25 @@ fn table2_end_to_end() {
     let theirs = mean(&|r| r.report.discrepancy_rubbing_percent);
     assert!(ours <= theirs, "ours {ours} vs report {theirs}");
     assert_eq!(table2::csv(&rows).lines().count(), 8);
+}
+
+#[test]
+fn fe_level_estimate_covers_an_overshooting_sequence() {
+    use boltzone::compare::single::last_level_estimate;
+    // R_o of the single plate at A/D = 1, B/A = 1.3 on six nested FE levels (`boltzone single
+    // --a 0.1 --b 0.13 --d 0.1 --c 1.54 --method fem --levels 6`): level 3 overshoots.
+    let v = [
+        0.2187422957887426,
+        0.22188580030771213,
+        0.2223531555972396,
+        0.22225093895667167,
+        0.22222990043359356,
+        0.2222266274861499,
+    ];
+    let limit = v[5];
+    for n in 3..=5 {
+        let e = last_level_estimate(&v[..n]).unwrap();
+        assert!((e.value - limit).abs() <= e.error, "{n} levels: {e:?}");
+    }
+    assert!(last_level_estimate(&v[..2]).is_none());
 }
