@@ -12,6 +12,8 @@
 //!   resolved below one element (`boltzone two`);
 //! - [`material`], [`load`], [`joint`]: the input types, validated with typed errors ([`error`]);
 //! - [`reference`]: the report's Tables 1 and 2 and the Chapter V table, as data.
+//! - [`compare`]: single- vs two-plate R_o and the rules of thumb: Tables 1 and 2 recomputed,
+//!   the design map; [`plot`]: SVG/PNG figures.
 //! - [`rules`]: the 45° cone of Rötscher, the VDI 2230 deformation cone and other cone rules.
 //!
 //! Sign convention throughout: compression negative (σ_z = −p under a face pressure p > 0); z is
@@ -26,6 +28,7 @@
 //! ```
 #![warn(missing_docs)]
 
+pub mod compare;
 pub mod contact;
 pub mod error;
 pub mod fem;
@@ -33,6 +36,7 @@ pub mod hankel;
 pub mod joint;
 pub mod load;
 pub mod material;
+pub mod plot;
 pub mod reference;
 pub mod rules;
 

@@ -1,11 +1,18 @@
 //! Command-line front end: one module per command; errors are reported by `main`.
 
 mod args;
+mod map;
 mod single;
 mod slab;
+mod table1;
+mod table2;
 mod two;
 
+use boltzone::compare::{compare, CompareParams, Geometry, Value};
+use boltzone::reference::{self, TABLE1_HOLE_RADIUS, TABLE1_OUTER_RADIUS, TABLE1_POISSON};
 use clap::{Parser, Subcommand};
+use indicatif::{ProgressBar, ProgressStyle};
+use std::path::Path;
 
 /// Contact zone and interface pressure of bolted plates (Gould & Mikic, MIT 1970, rebuilt).
 ///
@@ -25,6 +32,12 @@ enum Command {
     Single(single::Args),
     /// Two plates in unilateral contact (the report's two-plate model): R_o and interface pressure.
     Two(two::Args),
+    /// Table 1 recomputed: single- vs two-plate R_o/A and the rules of thumb, report beside.
+    Table1(table1::Args),
+    /// Table 2 recomputed: two-plate 2R_o of the test joints beside the report's and the tests.
+    Table2(table2::Args),
+    /// Design map over A/D x B/A: both models and the rules' errors, as CSV and heat maps.
+    Map(map::Args),
     /// Print the report's tables as stored in reference/ (data, not results).
     Reference,
 }
@@ -36,13 +49,126 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Some(Command::Slab(a)) => slab::run(a),
         Some(Command::Single(a)) => single::run(a),
         Some(Command::Two(a)) => two::run(a),
+        Some(Command::Table1(a)) => table1::run(a),
+        Some(Command::Table2(a)) => table2::run(a),
+        Some(Command::Map(a)) => map::run(a),
         Some(Command::Reference) => reference(),
     }
 }
 
-/// The built-in default case: Table 1's first geometry (A = D = 0.1 in, B = 0.31 in, ν = 0.3).
+/// A progress bar on stderr (indicatif draws nothing when stderr is not a terminal).
+fn progress(len: u64, what: &str) -> ProgressBar {
+    let bar = ProgressBar::new(len);
+    if let Ok(style) =
+        ProgressStyle::with_template("{msg} {bar:40} {pos}/{len} [{elapsed} < {eta}]")
+    {
+        bar.set_style(style);
+    }
+    bar.set_message(what.to_string());
+    bar
+}
+
+/// Writes `text` to `path` through a temporary file renamed into place.
+fn write_output(path: &Path, text: &str) -> anyhow::Result<()> {
+    boltzone::plot::write_atomic(path, text.as_bytes())?;
+    eprintln!("wrote {}", path.display());
+    Ok(())
+}
+
+/// The built-in default case: Table 1's first geometry (A = D = 0.1 in, B = 0.31 in,
+/// C = 1.54 in, ν = 0.3): both models' R_o, the rules of thumb, the report's values beside.
 fn default_case() -> anyhow::Result<()> {
-    reference()
+    let report = reference::table1()[0];
+    let g = Geometry::from_ratios(
+        TABLE1_HOLE_RADIUS,
+        report.a_over_d,
+        report.b_over_a,
+        TABLE1_OUTER_RADIUS,
+        TABLE1_POISSON,
+    )?;
+    let params = CompareParams {
+        hankel_check: true,
+        ..CompareParams::default()
+    };
+    let c = compare(&g, &params)?;
+    println!("boltzone: where do two bolted plates stay in contact?");
+    println!(
+        "Built-in default case = Table 1's first geometry (Gould & Mikic 1970): two equal plates\n\
+         D = {} in thick, hole radius A = {} in, bearing face to B = {} in, plate radius C = {} in,\n\
+         nu = {}, uniform bearing pressure. Contact for A <= r <= R_o. Ours ± error estimate [report].\n",
+        short(g.d),
+        short(g.a),
+        short(g.b),
+        short(g.c),
+        g.nu
+    );
+    let line = |name: &str, v: Value, rep: Option<f64>, secs: f64| {
+        let r = c.over_a(v);
+        let rep = rep.map(|x| format!("[{x}]")).unwrap_or_default();
+        println!(
+            "  {name:<38} R_o = {:.5} ± {:.1e} in   R_o/A = {:.4} ± {:.4} {rep:>6}  {secs:.3} s",
+            v.value, v.error, r.value, r.error
+        );
+    };
+    line(
+        "two-plate model (the answer)",
+        c.two,
+        Some(report.two),
+        c.info.seconds_two,
+    );
+    line(
+        "single-plate substitution (FE, C)",
+        c.single,
+        Some(report.single),
+        c.info.seconds_single,
+    );
+    if let Some(h) = c.single_hankel {
+        line(
+            "single plate, Hankel + hole (C = inf)",
+            h,
+            None,
+            c.info.seconds_hankel,
+        );
+    }
+    println!(
+        "  discrepancy (single - two)/two: {:.2} ± {:.2} % [{} %]; in contact area: {:.1} ± {:.1} %",
+        c.discrepancy_percent.value,
+        c.discrepancy_percent.error,
+        report.discrepancy_percent,
+        c.area_discrepancy_percent.value,
+        c.area_discrepancy_percent.error
+    );
+    println!("\nRules of thumb (contact radius R, error against the two-plate R_o):");
+    for r in &c.rules {
+        println!(
+            "  {:<16} half-angle {:>5.2}°   R = {:.4} in   R/A = {:.3}   {:+.1} ± {:.1} %",
+            rule_name(r.name, r.half_angle_degrees),
+            r.half_angle_degrees,
+            r.radius,
+            r.radius / g.a,
+            r.error_percent.value,
+            r.error_percent.error
+        );
+    }
+    println!(
+        "\nTotal {:.2} s. More: boltzone table1 | table2 | map | two | single --help",
+        c.info.seconds
+    );
+    Ok(())
+}
+
+/// A length without binary round-off noise (0.31, not 0.31000000000000005).
+fn short(x: f64) -> String {
+    format!("{}", (x * 1e9).round() / 1e9)
+}
+
+/// A rule's display name ("30° cone" for the extra cone).
+fn rule_name(name: &str, degrees: f64) -> String {
+    if name == "cone" {
+        format!("{degrees:.0}° cone")
+    } else {
+        name.to_string()
+    }
 }
 
 fn reference() -> anyhow::Result<()> {

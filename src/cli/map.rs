@@ -1,0 +1,128 @@
+//! `boltzone map`: the design map of [`boltzone::compare::map`] over A/D × B/A, as CSV and as
+//! heat maps (SVG or PNG): R_o/A of both models, the substitution's discrepancy, and the 45° and
+//! VDI rules' errors against the two-plate answer.
+
+use super::{progress, write_output};
+use boltzone::compare::map::{compute, log_spaced, DesignMap, MapParams};
+use boltzone::plot::{write_figure, HeatMapFigure, HeatPanel};
+use std::path::PathBuf;
+
+/// Arguments of `boltzone map`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// Points per axis (A/D ∈ [0.2, 5], B/A ∈ [1.1, 5], log spaced).
+    #[arg(long, default_value_t = 40)]
+    n: usize,
+    /// Relative tolerance of each R_o.
+    #[arg(long, default_value_t = 1e-3)]
+    tol: f64,
+    /// C/A of the plates (Table 1's: 15.4).
+    #[arg(long, default_value_t = 15.4)]
+    c_over_a: f64,
+    /// Your own A/D values instead of the log-spaced axis (comma-separated; sorted).
+    #[arg(long, value_delimiter = ',', value_name = "LIST")]
+    a_over_d: Vec<f64>,
+    /// Your own B/A values instead of the log-spaced axis (comma-separated; sorted).
+    #[arg(long, value_delimiter = ',', value_name = "LIST")]
+    b_over_a: Vec<f64>,
+    /// Write the map as CSV to FILE.
+    #[arg(long, value_name = "FILE")]
+    csv: Option<PathBuf>,
+    /// Draw the map as SVG to FILE.
+    #[arg(long, value_name = "FILE")]
+    svg: Option<PathBuf>,
+    /// Draw the map as PNG to FILE.
+    #[arg(long, value_name = "FILE")]
+    png: Option<PathBuf>,
+}
+
+/// Runs `boltzone map`.
+pub fn run(args: Args) -> anyhow::Result<()> {
+    if !(2..=400).contains(&args.n) {
+        anyhow::bail!("--n = {}: must lie in 2..=400", args.n);
+    }
+    let axis = |own: &[f64], lo: f64, hi: f64| {
+        if own.is_empty() {
+            log_spaced(lo, hi, args.n)
+        } else {
+            let mut v = own.to_vec();
+            v.sort_by(f64::total_cmp);
+            v.dedup();
+            v
+        }
+    };
+    let params = MapParams {
+        a_over_d: axis(&args.a_over_d, 0.2, 5.0),
+        b_over_a: axis(&args.b_over_a, 1.1, 5.0),
+        c_over_a: args.c_over_a,
+        tolerance: args.tol,
+        ..MapParams::default()
+    };
+    let bar = progress(
+        (params.a_over_d.len() * params.b_over_a.len()) as u64,
+        "map",
+    );
+    let map = compute(&params, &|| bar.inc(1))?;
+    bar.finish_and_clear();
+    let (es, et) = map.max_relative_error();
+    println!(
+        "design map {} x {} (A/D {}..{}, B/A {}..{}, C/A = {}, nu = 0.3): {:.1} s on {} threads",
+        map.a_over_d.len(),
+        map.b_over_a.len(),
+        map.a_over_d[0],
+        map.a_over_d[map.a_over_d.len() - 1],
+        map.b_over_a[0],
+        map.b_over_a[map.b_over_a.len() - 1],
+        args.c_over_a,
+        map.seconds,
+        rayon::current_num_threads()
+    );
+    println!(
+        "largest estimated relative error of R_o: single {es:.1e}, two-plate {et:.1e} (tolerance {:e})",
+        args.tol
+    );
+    let range = |f: &dyn Fn(&boltzone::compare::Comparison) -> f64| {
+        map.points
+            .iter()
+            .map(f)
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            })
+    };
+    let (d0, d1) = range(&|c| c.discrepancy_percent.value);
+    let (r0, r1) = range(&|c| c.rules[0].error_percent.value);
+    println!("single-plate discrepancy {d0:.1} .. {d1:.1} %; 45° rule error {r0:.1} .. {r1:.1} %");
+    if let Some(p) = &args.csv {
+        write_output(p, &map.csv())?;
+    }
+    for p in [&args.svg, &args.png].into_iter().flatten() {
+        write_figure(&figure(&map), p, (1200, 1000))?;
+    }
+    Ok(())
+}
+
+/// Four heat maps: two-plate R_o/A, single-plate discrepancy, 45° and VDI errors.
+fn figure(map: &DesignMap) -> HeatMapFigure {
+    let panel = |title: &str, f: &dyn Fn(&boltzone::compare::Comparison) -> f64| HeatPanel {
+        title: title.into(),
+        z: map.points.iter().map(f).collect(),
+    };
+    HeatMapFigure {
+        x: map.a_over_d.clone(),
+        y: map.b_over_a.clone(),
+        x_label: "A/D".into(),
+        y_label: "B/A".into(),
+        panels: vec![
+            panel("two-plate R_o/A", &|c| c.over_a(c.two).value),
+            panel("single-plate vs two-plate R_o, %", &|c| {
+                c.discrepancy_percent.value
+            }),
+            panel("45° rule vs two-plate R_o, %", &|c| {
+                c.rules[0].error_percent.value
+            }),
+            panel("VDI 2230 cone vs two-plate R_o, %", &|c| {
+                c.rules[1].error_percent.value
+            }),
+        ],
+    }
+}

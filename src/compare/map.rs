@@ -1,0 +1,150 @@
+//! A design map: R_o/A of the single-plate substitution and of the two-plate model, and each
+//! rule of thumb's error against the two-plate answer, over a grid of A/D × B/A (default
+//! A/D ∈ [0.2, 5] × B/A ∈ [1.1, 5], 40 × 40, logarithmically spaced), at fixed C/A (default
+//! Table 1's 15.4) and ν (0.3). Each point is one [`super::compare`], run in parallel with
+//! rayon; each model's R_o meets the relative tolerance `tolerance` (default 1e-3 = 0.1 %) by its
+//! own error estimate, which the CSV carries beside each value.
+//!
+//! ```
+//! use boltzone::compare::map::{compute, log_spaced, MapParams};
+//! let p = MapParams { a_over_d: vec![1.0], b_over_a: log_spaced(1.3, 3.1, 2), tolerance: 2e-3,
+//!                     ..MapParams::default() };
+//! let m = compute(&p, &|| ()).unwrap();
+//! assert!(m.at(0, 1).two.value > m.at(0, 0).two.value); // wider load, wider contact
+//! ```
+
+use super::{compare_all, CompareError, CompareParams, Comparison, Geometry};
+use crate::error::{positive, InputError};
+use std::time::Instant;
+
+/// Knobs of [`compute`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct MapParams {
+    /// A/D values (rows).
+    pub a_over_d: Vec<f64>,
+    /// B/A values (columns).
+    pub b_over_a: Vec<f64>,
+    /// Hole radius A (any unit; R_o/A depends only on the ratios).
+    pub a: f64,
+    /// C/A (default 15.4, Table 1's plates).
+    pub c_over_a: f64,
+    /// Poisson's ratio (default 0.3).
+    pub nu: f64,
+    /// Relative tolerance of each R_o (default 1e-3).
+    pub tolerance: f64,
+}
+
+impl Default for MapParams {
+    fn default() -> Self {
+        Self {
+            a_over_d: log_spaced(0.2, 5.0, 40),
+            b_over_a: log_spaced(1.1, 5.0, 40),
+            a: 0.1,
+            c_over_a: 15.4,
+            nu: 0.3,
+            tolerance: 1e-3,
+        }
+    }
+}
+
+/// `n` values from `lo` to `hi` with constant ratio (n = 1: `lo`).
+pub fn log_spaced(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    if n == 1 {
+        return vec![lo];
+    }
+    (0..n)
+        .map(|i| {
+            if i + 1 == n {
+                hi
+            } else {
+                lo * (hi / lo).powf(i as f64 / (n - 1) as f64)
+            }
+        })
+        .collect()
+}
+
+/// The computed map.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DesignMap {
+    /// A/D values (rows).
+    pub a_over_d: Vec<f64>,
+    /// B/A values (columns).
+    pub b_over_a: Vec<f64>,
+    /// Comparisons, row-major: point (i, j) at i·len(b_over_a) + j.
+    pub points: Vec<Comparison>,
+    /// Wall-clock seconds.
+    pub seconds: f64,
+}
+
+impl DesignMap {
+    /// The point at A/D index `i`, B/A index `j`.
+    pub fn at(&self, i: usize, j: usize) -> &Comparison {
+        &self.points[i * self.b_over_a.len() + j]
+    }
+
+    /// Largest relative error estimate of the single- and two-plate R_o over the map.
+    pub fn max_relative_error(&self) -> (f64, f64) {
+        self.points.iter().fold((0.0, 0.0), |(s, t), p| {
+            (
+                f64::max(s, p.single.error / p.single.value),
+                f64::max(t, p.two.error / p.two.value),
+            )
+        })
+    }
+
+    /// The map as CSV, one line per point (columns of [`super::table1::CSV_HEADER`] without the
+    /// report's).
+    pub fn csv(&self) -> String {
+        let header = super::table1::CSV_HEADER
+            .split(',')
+            .take_while(|h| !h.starts_with("report"))
+            .collect::<Vec<_>>()
+            .join(",");
+        let mut s = format!("{header}\n");
+        for p in &self.points {
+            s += &super::table1::csv_fields(p);
+            s.push('\n');
+        }
+        s
+    }
+}
+
+/// Computes the map (module docs); `tick` is called once per finished point.
+pub fn compute(params: &MapParams, tick: &(dyn Fn() + Sync)) -> Result<DesignMap, CompareError> {
+    let start = Instant::now();
+    positive("hole radius A", params.a)?;
+    positive("C/A", params.c_over_a)?;
+    if params.a_over_d.is_empty() || params.b_over_a.is_empty() {
+        return Err(InputError::Parameter {
+            field: "map size",
+            value: 0.0,
+            reason: "both axes need at least one value",
+        }
+        .into());
+    }
+    let mut geometries = Vec::new();
+    for &ad in &params.a_over_d {
+        for &ba in &params.b_over_a {
+            geometries.push(Geometry::from_ratios(
+                params.a,
+                ad,
+                ba,
+                params.a * params.c_over_a,
+                params.nu,
+            )?);
+        }
+    }
+    let cp = CompareParams {
+        tolerance: params.tolerance,
+        ..CompareParams::default()
+    };
+    let points = compare_all(&geometries, &cp, tick)
+        .into_iter()
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(DesignMap {
+        a_over_d: params.a_over_d.clone(),
+        b_over_a: params.b_over_a.clone(),
+        points,
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}

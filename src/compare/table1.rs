@@ -1,0 +1,152 @@
+//! The report's Table 1 recomputed: R_o/A of the single-plate substitution and of the two-plate
+//! model for its twelve geometries (A = 0.1 in, C = 1.54 in, ν = 0.3, D = A/(A/D),
+//! B = A·(B/A)), the discrepancy (single − two)/two·100, the contact-area discrepancy and the
+//! rules of thumb — every number computed by [`super::compare`]; the report's R_o/A and
+//! discrepancy stand beside ours, read from [`crate::reference::table1`].
+//!
+//! ```no_run
+//! use boltzone::compare::{table1, CompareParams};
+//! let rows = table1::compute(&CompareParams::default(), &|| ()).unwrap();
+//! print!("{}", table1::text(&rows));
+//! ```
+
+use super::{compare_all, CompareError, CompareParams, Comparison, Geometry};
+use crate::reference::{self, Table1Row};
+use serde::Serialize;
+
+/// One row: ours and the report's.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Row {
+    /// Our comparison.
+    pub ours: Comparison,
+    /// The report's printed row.
+    pub report: Table1Row,
+}
+
+/// Computes all twelve rows in parallel (`tick` once per finished row).
+pub fn compute(params: &CompareParams, tick: &(dyn Fn() + Sync)) -> Result<Vec<Row>, CompareError> {
+    let geometries = Geometry::table1();
+    compare_all(&geometries, params, tick)
+        .into_iter()
+        .zip(reference::table1())
+        .map(|(ours, report)| {
+            Ok(Row {
+                ours: ours?,
+                report,
+            })
+        })
+        .collect()
+}
+
+/// Column names of [`csv`], one line.
+pub const CSV_HEADER: &str = "a_over_d,b_over_a,single_r_o_over_a,single_error,\
+single_hankel_r_o_over_a,single_hankel_error,two_r_o_over_a,two_error,discrepancy_percent,\
+discrepancy_error,area_discrepancy_percent,area_discrepancy_error,roetscher_r_over_a,\
+roetscher_error_percent,vdi_r_over_a,vdi_half_angle_deg,vdi_error_percent,cone_r_over_a,\
+cone_half_angle_deg,cone_error_percent,report_single,report_two,report_discrepancy_percent";
+
+/// The comparison's numbers as one CSV line (no newline) in the column order of [`CSV_HEADER`]
+/// minus its last three columns.
+pub fn csv_fields(c: &Comparison) -> String {
+    let a = c.geometry.a;
+    let (s, t) = (c.over_a(c.single), c.over_a(c.two));
+    let h = c.single_hankel.map(|v| c.over_a(v));
+    let mut f = vec![
+        c.geometry.a_over_d(),
+        c.geometry.b_over_a(),
+        s.value,
+        s.error,
+        h.map_or(f64::NAN, |v| v.value),
+        h.map_or(f64::NAN, |v| v.error),
+        t.value,
+        t.error,
+        c.discrepancy_percent.value,
+        c.discrepancy_percent.error,
+        c.area_discrepancy_percent.value,
+        c.area_discrepancy_percent.error,
+    ];
+    for (k, r) in c.rules.iter().enumerate() {
+        f.push(r.radius / a);
+        if k > 0 {
+            f.push(r.half_angle_degrees);
+        }
+        f.push(r.error_percent.value);
+    }
+    f.iter()
+        .map(|x| {
+            if x.is_nan() {
+                String::new()
+            } else {
+                format!("{x:.6}")
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+/// The table as CSV (header + 12 lines).
+pub fn csv(rows: &[Row]) -> String {
+    let mut out = format!("{CSV_HEADER}\n");
+    for r in rows {
+        out += &format!(
+            "{},{},{},{}\n",
+            csv_fields(&r.ours),
+            r.report.single,
+            r.report.two,
+            r.report.discrepancy_percent
+        );
+    }
+    out
+}
+
+/// The table as text: ours ± error beside the report's, then the rules of thumb.
+pub fn text(rows: &[Row]) -> String {
+    let mut s = String::from(
+        "Table 1 recomputed (Gould & Mikic 1970): R_o/A, single-plate substitution vs two-plate model\n\
+         A = 0.1 in, C = 1.54 in, nu = 0.3; single plate 2D thick (FE, finite C); two plates D thick each\n\
+         (one on a frictionless rigid plane); ours ± error estimate [report's value]\n\n",
+    );
+    s += &format!(
+        "{:>5} {:>5}  {:>18} {:>18} {:>16}  {:>15}  {:>15}\n",
+        "A/D", "B/A", "single R_o/A", "two R_o/A", "disc. %", "area disc. %", "Hankel single"
+    );
+    for r in rows {
+        let c = &r.ours;
+        let (si, tw) = (c.over_a(c.single), c.over_a(c.two));
+        let h = c
+            .single_hankel
+            .map(|v| format!("{:.4}", c.over_a(v).value))
+            .unwrap_or_else(|| "-".into());
+        s += &format!(
+            "{:>5} {:>5}  {:>7.4}±{:<6.4} [{:.1}] {:>7.4}±{:<6.4} [{:.1}] {:>6.2}±{:<4.2} [{:.1}]  {:>7.2}±{:<6.2}  {:>15}\n",
+            r.report.a_over_d, r.report.b_over_a, si.value, si.error, r.report.single,
+            tw.value, tw.error, r.report.two, c.discrepancy_percent.value,
+            c.discrepancy_percent.error, r.report.discrepancy_percent,
+            c.area_discrepancy_percent.value, c.area_discrepancy_percent.error, h
+        );
+    }
+    s += "\nRules of thumb: R/A, and error against the two-plate R_o in % (cone half-angle)\n";
+    s += &format!(
+        "{:>5} {:>5}  {:>18}  {:>24}  {:>18}\n",
+        "A/D", "B/A", "45° (Rötscher)", "VDI 2230 (D'_A = 2C)", "cone"
+    );
+    for r in rows {
+        let c = &r.ours;
+        let a = c.geometry.a;
+        let [q, v, k] = &c.rules;
+        s += &format!(
+            "{:>5} {:>5}  {:>7.3} {:>+8.1}%  {:>7.3} {:>+8.1}% ({:>4.1}°)  {:>7.3} {:>+6.1}% ({:.0}°)\n",
+            r.report.a_over_d,
+            r.report.b_over_a,
+            q.radius / a,
+            q.error_percent.value,
+            v.radius / a,
+            v.error_percent.value,
+            v.half_angle_degrees,
+            k.radius / a,
+            k.error_percent.value,
+            k.half_angle_degrees
+        );
+    }
+    s
+}

@@ -1,0 +1,199 @@
+//! The report's Table 2 recomputed: the two-plate separation diameter 2R_o of the test joints
+//! (type 304 steel, A = 0.1285 in, C = 2.0 in, B = 0.211 in under 1/4-20 nuts or 0.5 in under
+//! washers; plate thicknesses d1 (under the head) and d2 from the specimen list), beside the
+//! report's computed 2R_o and the measured ranges and averages ("rubbing" and autoradiographic
+//! tests). Our discrepancy against a test average is computed the report's way:
+//! |computed − tested|/computed·100.
+//!
+//! Equal plates use the symmetric model (one plate on a rigid frictionless plane; exact for any
+//! interface). Unequal pairs (every case with d1 ≠ d2: case 5's 0.124/0.257 in, and the
+//! nominally equal pairs whose measured thicknesses differ by a few thousandths) mesh both plates
+//! with the chosen [`InterfaceModel`]: welded inside the contact zone is the report's model.
+//!
+//! ```no_run
+//! use boltzone::compare::table2;
+//! use boltzone::contact::two_plate::InterfaceModel;
+//! let rows = table2::compute(InterfaceModel::Welded, 5e-4, &|| ()).unwrap();
+//! print!("{}", table2::text(&rows));
+//! ```
+
+use super::{CompareError, Value};
+use crate::contact::two_plate::{solve, InterfaceModel, TwoPlateParams};
+use crate::error::positive;
+use crate::joint::{Joint, OuterRadius, Plate};
+use crate::load::FaceLoad;
+use crate::material::Material;
+use crate::reference::{self, Table2Row, TABLE2_HOLE_RADIUS, TABLE2_OUTER_RADIUS};
+use rayon::prelude::*;
+use serde::Serialize;
+
+/// One case: ours and the report's.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Row {
+    /// Our two-plate 2R_o, inches, with its error estimate.
+    pub two_r_o: Value,
+    /// The model that ran ("symmetric …", "welded", "frictionless").
+    pub model: &'static str,
+    /// |ours − rubbing average|/ours·100.
+    pub discrepancy_rubbing_percent: f64,
+    /// |ours − autoradiographic average|/ours·100, where tested.
+    pub discrepancy_autoradiographic_percent: Option<f64>,
+    /// Seconds of the two-plate solve.
+    pub seconds: f64,
+    /// The report's row (geometry, tests, its computed 2R_o and discrepancies).
+    pub report: Table2Row,
+}
+
+/// The test joint of one case (unit pressure: R_o does not depend on the bolt force).
+pub fn joint(case: &Table2Row) -> Result<Joint, CompareError> {
+    let steel = Material::steel_304_psi();
+    let a = TABLE2_HOLE_RADIUS;
+    Ok(Joint::new(
+        a,
+        OuterRadius::Finite(TABLE2_OUTER_RADIUS),
+        Plate::new(case.d1, steel)?,
+        Plate::new(case.d2, steel)?,
+        FaceLoad::uniform(a, case.two_b / 2.0, 1.0)?,
+    )?)
+}
+
+/// |computed − tested|/computed·100 (the report's definition).
+pub fn discrepancy(computed: f64, tested: f64) -> f64 {
+    (computed - tested).abs() / computed * 100.0
+}
+
+/// Computes the seven cases in parallel with relative tolerance `tolerance` on R_o.
+pub fn compute(
+    interface: InterfaceModel,
+    tolerance: f64,
+    tick: &(dyn Fn() + Sync),
+) -> Result<Vec<Row>, CompareError> {
+    positive("comparison tolerance", tolerance)?;
+    let params = TwoPlateParams {
+        tolerance,
+        interface,
+        ..Default::default()
+    };
+    reference::table2()
+        .into_par_iter()
+        .map(|case| {
+            let s = solve(&joint(&case)?, &params).map_err(|source| CompareError::Two {
+                geometry: format!(
+                    "Table 2 case {} (d1 = {}, d2 = {})",
+                    case.case, case.d1, case.d2
+                ),
+                source,
+            })?;
+            tick();
+            let two = 2.0 * s.r_o;
+            Ok(Row {
+                two_r_o: Value {
+                    value: two,
+                    error: 2.0 * s.r_o_error,
+                },
+                model: s.info.model,
+                discrepancy_rubbing_percent: discrepancy(two, case.rubbing.average),
+                discrepancy_autoradiographic_percent: case
+                    .autoradiographic
+                    .map(|m| discrepancy(two, m.average)),
+                seconds: s.info.time,
+                report: case,
+            })
+        })
+        .collect()
+}
+
+/// The table as text.
+pub fn text(rows: &[Row]) -> String {
+    let mut s = String::from(
+        "Table 2 recomputed (Gould & Mikic 1970): separation diameter 2R_o, inches\n\
+         304 steel, A = 0.1285 in, C = 2.0 in; ours ± error estimate; report's computed value;\n\
+         tests min-max (average); discrepancy |computed - tested|/computed in %, ours [report's]\n\n",
+    );
+    s += &format!(
+        "{:>4} {:>11} {:>5}  {:>16} {:>7}  {:>17} {:>17}  {:>13} {:>13}  {}\n",
+        "case",
+        "d1/d2",
+        "2B",
+        "ours 2R_o",
+        "report",
+        "rubbing",
+        "autoradiogr.",
+        "disc. rub %",
+        "disc. rad %",
+        "model"
+    );
+    for r in rows {
+        let c = &r.report;
+        let rad = c
+            .autoradiographic
+            .map(|m| format!("{:.2}-{:.2} ({:.2})", m.min, m.max, m.average))
+            .unwrap_or_else(|| "-".into());
+        let drad = match (
+            r.discrepancy_autoradiographic_percent,
+            c.discrepancy_autoradiographic_percent,
+        ) {
+            (Some(o), Some(p)) => format!("{o:.1} [{p:.1}]"),
+            _ => "-".into(),
+        };
+        s += &format!(
+            "{:>4} {:>5}/{:<5} {:>5}  {:>7.4}±{:<8.1e} {:>7.3}  {:>17} {:>17}  {:>13} {:>13}  {}\n",
+            c.case,
+            c.d1,
+            c.d2,
+            c.two_b,
+            r.two_r_o.value,
+            r.two_r_o.error,
+            c.computed,
+            format!(
+                "{:.2}-{:.2} ({:.2})",
+                c.rubbing.min, c.rubbing.max, c.rubbing.average
+            ),
+            rad,
+            format!(
+                "{:.1} [{:.1}]",
+                r.discrepancy_rubbing_percent, c.discrepancy_rubbing_percent
+            ),
+            drad,
+            r.model
+        );
+    }
+    s
+}
+
+/// The table as CSV.
+pub fn csv(rows: &[Row]) -> String {
+    let mut s = String::from(
+        "case,d1,d2,two_b,two_r_o,two_r_o_error,model,report_computed,rub_min,rub_max,rub_avg,\
+         rad_min,rad_max,rad_avg,disc_rub_percent,disc_rad_percent,report_disc_rub_percent,\
+         report_disc_rad_percent\n",
+    );
+    let o = |x: Option<f64>| x.map(|v| format!("{v}")).unwrap_or_default();
+    for r in rows {
+        let c = &r.report;
+        let m = c.autoradiographic;
+        s += &format!(
+            "{},{},{},{},{:.6},{:.2e},{},{},{},{},{},{},{},{},{:.4},{},{},{}\n",
+            c.case,
+            c.d1,
+            c.d2,
+            c.two_b,
+            r.two_r_o.value,
+            r.two_r_o.error,
+            r.model,
+            c.computed,
+            c.rubbing.min,
+            c.rubbing.max,
+            c.rubbing.average,
+            o(m.map(|m| m.min)),
+            o(m.map(|m| m.max)),
+            o(m.map(|m| m.average)),
+            r.discrepancy_rubbing_percent,
+            o(r.discrepancy_autoradiographic_percent
+                .map(|v| (v * 1e4).round() / 1e4)),
+            c.discrepancy_rubbing_percent,
+            o(c.discrepancy_autoradiographic_percent),
+        );
+    }
+    s
+}
