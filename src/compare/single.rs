@@ -20,8 +20,8 @@
 //! ```
 
 use super::Value;
-use crate::fem::single::{coarse_radial_spacing, solve_midplane, SingleParams};
-use crate::fem::{FemError, SolveParams};
+use crate::fem::single::{crossing_levels, SingleParams};
+use crate::fem::FemError;
 use crate::hankel::hole::{single_plate_separation, HoleParams};
 use crate::hankel::separation::{SeparationError, SeparationParams};
 use crate::joint::SinglePlate;
@@ -44,32 +44,20 @@ pub fn single_fem(plate: &SinglePlate, tolerance: f64) -> Result<(Value, FemStud
     // The FE defaults (first element 0.5 D at A and B, growth 1.15) were the cheapest for
     // 0.1 % over the map's range among coarse sizes 0.35/0.5/0.7 and growths 1.15/1.3.
     let params = SingleParams::default();
-    let coarse = coarse_radial_spacing(plate, &params)?;
-    let nz0 = (1.0 / params.coarse_size).ceil() as usize;
-    let b = plate.load().outer();
-    let solve = SolveParams { parallel: false };
     let mut values: Vec<f64> = Vec::new();
-    for l in 0..MAX_FEM_LEVELS {
-        let k = 1 << l;
-        let m = solve_midplane(
-            plate,
-            params.loading,
-            params.kind,
-            &coarse.refined(k),
-            nz0 * k,
-            &solve,
-        )?;
-        let dofs = m.dofs;
-        values.push(m.first_tensile_crossing(b).ok_or_else(|| {
-            FemError::Solver("the midplane stress never turns tensile inside the plate".into())
-        })?);
+    for (l, level) in crossing_levels(plate, &params)?
+        .take(MAX_FEM_LEVELS)
+        .enumerate()
+    {
+        let level = level?;
+        values.push(level.r_o);
         if let Some(v) = last_level_estimate(&values) {
             if v.error <= tolerance * v.value || l + 1 == MAX_FEM_LEVELS {
                 return Ok((
                     v,
                     FemStudy {
                         levels: values.len(),
-                        dofs,
+                        dofs: level.dofs,
                     },
                 ));
             }

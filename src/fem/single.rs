@@ -286,6 +286,74 @@ fn quadratic_root(x0: f64, x2: f64, f0: f64, fm: f64, f2: f64) -> f64 {
     x0 + s.clamp(0.0, 1.0) * (x2 - x0)
 }
 
+/// The discrete crossing R_o of one mesh level, and that mesh's size.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LevelCrossing {
+    /// First upward zero of the recovered midplane σ_z beyond B on this mesh.
+    pub r_o: f64,
+    /// Nodes of the mesh.
+    pub nodes: usize,
+    /// Equations of the mesh.
+    pub dofs: usize,
+}
+
+/// The crossings of nested meshes, level l with every element of the coarse mesh split 2^l
+/// times each way: an endless iterator, so callers choose how many levels and when to stop
+/// ([`single_plate_r_o`] takes `params.levels` and extrapolates; the comparison module stops at
+/// a tolerance).
+pub struct CrossingLevels<'a> {
+    plate: &'a SinglePlate,
+    params: &'a SingleParams,
+    coarse: Spacing,
+    nz0: usize,
+    level: u32,
+}
+
+/// Nested refinement levels of the single-plate model (see [`CrossingLevels`]).
+pub fn crossing_levels<'a>(
+    plate: &'a SinglePlate,
+    params: &'a SingleParams,
+) -> Result<CrossingLevels<'a>, FemError> {
+    crate::error::positive("coarse element size", params.coarse_size)?;
+    Ok(CrossingLevels {
+        plate,
+        params,
+        coarse: coarse_radial_spacing(plate, params)?,
+        nz0: (1.0 / params.coarse_size).ceil().max(1.0) as usize,
+        level: 0,
+    })
+}
+
+impl Iterator for CrossingLevels<'_> {
+    type Item = Result<LevelCrossing, FemError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        let k = 1usize << self.level;
+        self.level += 1;
+        let p = self.params;
+        let solved = solve_midplane(
+            self.plate,
+            p.loading,
+            p.kind,
+            &self.coarse.refined(k),
+            self.nz0 * k,
+            &p.solve,
+        );
+        Some(solved.and_then(|m| {
+            let r_o =
+                m.first_tensile_crossing(self.plate.load().outer())
+                    .ok_or(FemError::Solver(
+                        "the midplane stress never turns tensile inside the plate".into(),
+                    ))?;
+            Ok(LevelCrossing {
+                r_o,
+                nodes: m.nodes,
+                dofs: m.dofs,
+            })
+        }))
+    }
+}
+
 /// R_o of `plate` with a Richardson error estimate over nested refinements.
 pub fn single_plate_r_o(
     plate: &SinglePlate,
@@ -299,28 +367,13 @@ pub fn single_plate_r_o(
         }
         .into());
     }
-    crate::error::positive("coarse element size", params.coarse_size)?;
     let t0 = Instant::now();
-    let coarse = coarse_radial_spacing(plate, params)?;
-    let nz0 = (1.0 / params.coarse_size).ceil().max(1.0) as usize;
-    let b = plate.load().outer();
     let mut values = Vec::new();
     let (mut nodes, mut dofs) = (0, 0);
-    for l in 0..params.levels {
-        let k = 1 << l;
-        let m = solve_midplane(
-            plate,
-            params.loading,
-            params.kind,
-            &coarse.refined(k),
-            nz0 * k,
-            &params.solve,
-        )?;
-        let r = m.first_tensile_crossing(b).ok_or(FemError::Solver(
-            "the midplane stress never turns tensile inside the plate".into(),
-        ))?;
-        values.push(r);
-        (nodes, dofs) = (m.nodes, m.dofs);
+    for level in crossing_levels(plate, params)?.take(params.levels) {
+        let level = level?;
+        values.push(level.r_o);
+        (nodes, dofs) = (level.nodes, level.dofs);
     }
     let (r_o, order, err) = richardson(&values);
     Ok((
