@@ -36,7 +36,7 @@ use boltzone::contact::two_plate::{solve, TwoPlateParams};
 use boltzone::fem::single::{coarse_radial_spacing, solve_midplane, Loading, SingleParams};
 use boltzone::fem::{ElementKind, SolveParams};
 use boltzone::plot::{write_figure, Curve, CurveFigure, Marker};
-use boltzone::reference::{self, TABLE1_HOLE_RADIUS, TABLE1_OUTER_RADIUS, TABLE1_POISSON};
+use boltzone::reference;
 use boltzone::OuterRadius;
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
@@ -67,13 +67,7 @@ fn ring_integral(r: &[f64], f: &[f64]) -> f64 {
 pub fn run(out: &Path) -> anyhow::Result<Summary> {
     let t0 = Instant::now();
     let report = reference::table1()[0];
-    let g = Geometry::from_ratios(
-        TABLE1_HOLE_RADIUS,
-        report.a_over_d,
-        report.b_over_a,
-        TABLE1_OUTER_RADIUS,
-        TABLE1_POISSON,
-    )?;
+    let g = Geometry::table1()[0];
     let a = g.a;
     let c = compare(&g, &CompareParams::default())?;
     let force = PI * (g.b * g.b - g.a * g.a); // P = 1

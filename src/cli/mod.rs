@@ -9,7 +9,7 @@ mod table2;
 mod two;
 
 use boltzone::compare::{compare, CompareParams, Geometry, Value};
-use boltzone::reference::{self, TABLE1_HOLE_RADIUS, TABLE1_OUTER_RADIUS, TABLE1_POISSON};
+use boltzone::reference;
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::Path;
@@ -79,13 +79,7 @@ fn write_output(path: &Path, text: &str) -> anyhow::Result<()> {
 /// C = 1.54 in, ν = 0.3): both models' R_o, the rules of thumb, the report's values beside.
 fn default_case() -> anyhow::Result<()> {
     let report = reference::table1()[0];
-    let g = Geometry::from_ratios(
-        TABLE1_HOLE_RADIUS,
-        report.a_over_d,
-        report.b_over_a,
-        TABLE1_OUTER_RADIUS,
-        TABLE1_POISSON,
-    )?;
+    let g = Geometry::table1()[0];
     let params = CompareParams {
         hankel_check: true,
         ..CompareParams::default()
