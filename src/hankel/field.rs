@@ -118,22 +118,24 @@ impl Slab {
             .any(|&k| (r - k).abs() <= 1e-3 * self.d)
     }
 
-    /// Checks (r, z) and returns (r, |z| clamped to D, sign of z).
-    fn point(&self, r: f64, z: f64) -> (f64, f64, f64) {
+    /// Checks (r, z) and returns (r, |z| clamped to D, sign of z, whether on a face, and the
+    /// quadrature parameters for the point: cautious at a load edge, whose integrand decays only
+    /// algebraically).
+    fn setup(&self, r: f64, z: f64, params: &QuadParams) -> (f64, f64, f64, bool, QuadParams) {
         let sign = if z < 0.0 { -1.0 } else { 1.0 };
-        (r.abs(), z.abs().min(self.d), sign)
-    }
-
-    /// σ_r, σ_θ, σ_z, τ_rz at (r, z), |z| ≤ D (larger |z| is clamped to the face).
-    pub fn stress(&self, r: f64, z: f64, params: &QuadParams) -> Stress {
-        let (r, az, sign) = self.point(r, z);
-        let nu = self.material.poisson_ratio();
-        let face = az >= self.d;
-        let tr = &self.transform;
+        let (r, az) = (r.abs(), z.abs().min(self.d));
         let params = QuadParams {
             algebraic_tail: self.at_load_edge(r),
             ..*params
         };
+        (r, az, sign, az >= self.d, params)
+    }
+
+    /// σ_r, σ_θ, σ_z, τ_rz at (r, z), |z| ≤ D (larger |z| is clamped to the face).
+    pub fn stress(&self, r: f64, z: f64, params: &QuadParams) -> Stress {
+        let (r, az, sign, face, params) = self.setup(r, z, params);
+        let nu = self.material.poisson_ratio();
+        let tr = &self.transform;
         let mut s = stress_integrals(
             self.d,
             nu,
@@ -173,14 +175,9 @@ impl Slab {
 
     /// u and w at (r, z), |z| ≤ D.
     pub fn displacement(&self, r: f64, z: f64, params: &QuadParams) -> Displacement {
-        let (r, az, sign) = self.point(r, z);
+        let (r, az, sign, face, params) = self.setup(r, z, params);
         let nu = self.material.poisson_ratio();
-        let face = az >= self.d;
         let tr = &self.transform;
-        let params = QuadParams {
-            algebraic_tail: self.at_load_edge(r),
-            ..*params
-        };
         let g = self.material.shear_modulus();
         let mut out = displacement_integrals(
             self.d,
