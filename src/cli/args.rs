@@ -3,6 +3,7 @@
 //! validation can name the field (`--d -1` → "plate thickness D = -1 must be positive").
 
 use boltzone::fem::ElementKind;
+use std::path::PathBuf;
 
 /// Hole radius A, load radius B, plate thickness D and Poisson's ratio ν (lengths in inches).
 #[derive(Debug, Clone, clap::Args)]
@@ -43,4 +44,18 @@ impl From<Element> for ElementKind {
             Element::Cst4 => ElementKind::Cst4,
         }
     }
+}
+
+/// Output and accuracy of the table commands.
+#[derive(Debug, Clone, clap::Args)]
+pub struct TableOutput {
+    /// Print one JSON array (ours and the report's per row) instead of the text table.
+    #[arg(long)]
+    pub json: bool,
+    /// Also write the table as CSV to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+    /// Relative tolerance of each R_o (each meets it by its own error estimate).
+    #[arg(long, default_value_t = 5e-4)]
+    pub tol: f64,
 }

@@ -2,22 +2,15 @@
 //! single-plate and two-plate R_o/A, the discrepancies and the rules of thumb for its twelve
 //! geometries, the report's values beside ours.
 
+use super::args::TableOutput;
 use super::{progress, write_output};
 use boltzone::compare::{table1, CompareParams};
-use std::path::PathBuf;
 
 /// Arguments of `boltzone table1`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Print one JSON array (ours and the report's per row) instead of the text table.
-    #[arg(long)]
-    json: bool,
-    /// Also write the table as CSV to FILE.
-    #[arg(long, value_name = "FILE")]
-    csv: Option<PathBuf>,
-    /// Relative tolerance of each R_o.
-    #[arg(long, default_value_t = 5e-4)]
-    tol: f64,
+    #[command(flatten)]
+    out: TableOutput,
     /// Skip the second single-plate method (Hankel transforms with the hole correction, C = ∞).
     #[arg(long)]
     no_hankel: bool,
@@ -26,7 +19,7 @@ pub struct Args {
 /// Runs `boltzone table1`.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let params = CompareParams {
-        tolerance: args.tol,
+        tolerance: args.out.tol,
         hankel_check: !args.no_hankel,
         ..Default::default()
     };
@@ -34,7 +27,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let bar = progress(12, "Table 1");
     let rows = table1::compute(&params, &|| bar.inc(1))?;
     bar.finish_and_clear();
-    if args.json {
+    if args.out.json {
         println!("{}", serde_json::to_string_pretty(&rows)?);
     } else {
         print!("{}", table1::text(&rows));
@@ -42,10 +35,10 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "\n{} geometries in {:.2} s (relative tolerance {:e} per R_o)",
             rows.len(),
             t.elapsed().as_secs_f64(),
-            args.tol
+            args.out.tol
         );
     }
-    if let Some(path) = &args.csv {
+    if let Some(path) = &args.out.csv {
         write_output(path, &table1::csv(&rows))?;
     }
     Ok(())

@@ -1,25 +1,18 @@
 //! `boltzone table2`: the report's Table 2 recomputed ([`boltzone::compare::table2`]): our
 //! two-plate 2R_o of the seven test joints beside the report's and the measured ranges.
 
+use super::args::TableOutput;
 use super::two::Interface;
 use super::{progress, write_output};
 use boltzone::compare::table2;
 use boltzone::contact::two_plate::InterfaceModel;
 use clap::ValueEnum;
-use std::path::PathBuf;
 
 /// Arguments of `boltzone table2`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Print one JSON array instead of the text table.
-    #[arg(long)]
-    json: bool,
-    /// Also write the table as CSV to FILE.
-    #[arg(long, value_name = "FILE")]
-    csv: Option<PathBuf>,
-    /// Relative tolerance of each R_o.
-    #[arg(long, default_value_t = 5e-4)]
-    tol: f64,
+    #[command(flatten)]
+    out: TableOutput,
     /// Interface model of unequal pairs (welded is the report's).
     #[arg(long, value_enum, default_value_t = Interface::Welded)]
     interface: Interface,
@@ -33,9 +26,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     };
     let t = std::time::Instant::now();
     let bar = progress(7, "Table 2");
-    let rows = table2::compute(model, args.tol, &|| bar.inc(1))?;
+    let rows = table2::compute(model, args.out.tol, &|| bar.inc(1))?;
     bar.finish_and_clear();
-    if args.json {
+    if args.out.json {
         println!("{}", serde_json::to_string_pretty(&rows)?);
     } else {
         print!("{}", table2::text(&rows));
@@ -49,7 +42,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             t.elapsed().as_secs_f64()
         );
     }
-    if let Some(path) = &args.csv {
+    if let Some(path) = &args.out.csv {
         write_output(path, &table2::csv(&rows))?;
     }
     Ok(())
