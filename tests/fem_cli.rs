@@ -1,13 +1,9 @@
 //! `boltzone single --method fem`: JSON keys, agreement with the library, named errors.
 
-use std::process::Command;
+mod common;
 
 fn single(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_boltzone"))
-        .arg("single")
-        .args(args)
-        .output()
-        .unwrap()
+    common::boltzone(&[&["single"], args].concat())
 }
 
 #[test]
@@ -15,12 +11,7 @@ fn json_has_the_slab_keys_and_mesh_size() {
     let out = single(&[
         "--a", "0.1", "--b", "0.31", "--d", "0.1", "--c", "1.54", "--levels", "3", "--json",
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let v = common::json_of(&out);
     for key in [
         "r_o",
         "r_o_over_a",

@@ -4,14 +4,8 @@
 use boltzone::hankel::{realspace, Midplane, MidplaneRule, QuadParams, SeparationParams, Slab};
 use boltzone::{FaceLoad, Material};
 
-fn slab(a: f64, b: f64, d: f64) -> Slab {
-    Slab::new(
-        d,
-        Material::unit(0.3).unwrap(),
-        FaceLoad::uniform(a, b, 1.0).unwrap(),
-    )
-    .unwrap()
-}
+mod common;
+use common::uniform_slab as slab;
 
 #[test]
 fn r_o_is_the_first_upward_zero_of_direct_midplane_stress() {

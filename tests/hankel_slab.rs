@@ -8,14 +8,8 @@ use boltzone::hankel::quadrature::gauss_legendre;
 use boltzone::hankel::{MidplaneCurve, MidplaneRule, QuadParams, Slab};
 use boltzone::{FaceLoad, Material, Peak};
 
-fn slab(a: f64, b: f64, d: f64) -> Slab {
-    Slab::new(
-        d,
-        Material::unit(0.3).unwrap(),
-        FaceLoad::uniform(a, b, 1.0).unwrap(),
-    )
-    .unwrap()
-}
+mod common;
+use common::uniform_slab as slab;
 
 #[test]
 fn kernels_meet_the_face_conditions_and_bound() {

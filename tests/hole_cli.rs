@@ -2,22 +2,15 @@
 
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
-use std::process::Command;
+
+mod common;
 
 #[test]
 fn single_hankel_json_matches_the_library() {
-    let out = Command::new(env!("CARGO_BIN_EXE_boltzone"))
-        .args([
-            "single", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--method", "hankel", "--json",
-        ])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let out = common::boltzone(&[
+        "single", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--method", "hankel", "--json",
+    ]);
+    let v = common::json_of(&out);
     for key in [
         "r_o",
         "r_o_over_a",

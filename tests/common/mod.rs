@@ -1,0 +1,35 @@
+//! Helpers shared by the integration tests (each test file includes this with `mod common;`
+//! and uses what it needs).
+#![allow(dead_code)]
+
+use boltzone::hankel::Slab;
+use boltzone::{FaceLoad, Material};
+use std::process::{Command, Output};
+
+/// The no-hole slab of half-thickness `d` under unit uniform pressure on `a ≤ r ≤ b`, ν = 0.3.
+pub fn uniform_slab(a: f64, b: f64, d: f64) -> Slab {
+    Slab::new(
+        d,
+        Material::unit(0.3).unwrap(),
+        FaceLoad::uniform(a, b, 1.0).unwrap(),
+    )
+    .unwrap()
+}
+
+/// Runs the `boltzone` binary with `args`.
+pub fn boltzone(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_boltzone"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+/// The JSON object a successful run printed (panics with its stderr otherwise).
+pub fn json_of(out: &Output) -> serde_json::Value {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
