@@ -7,7 +7,7 @@
 //! carries the applied force.
 
 use boltzone::fem::single::{
-    coarse_radial_spacing, single_plate_r_o, solve_midplane, Loading, SingleParams,
+    coarse_radial_spacing, single_plate_r_o, solve_midplane, Loading, Refinement, SingleParams,
 };
 use boltzone::fem::{ElementKind, SolveParams};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -54,6 +54,7 @@ fn table1_row_converges_and_matches_the_report_within_its_mesh_spacing() {
     for kind in [ElementKind::Cst4, ElementKind::Q4Bbar] {
         let p = SingleParams {
             kind,
+            refinement: Refinement::Uniform,
             levels: 5,
             coarse_size: 0.5,
             ..SingleParams::default()
