@@ -42,8 +42,9 @@ pub struct FemStudy {
 pub fn single_fem(plate: &SinglePlate, tolerance: f64) -> Result<(Value, FemStudy), FemError> {
     crate::error::positive("single-plate tolerance", tolerance)?;
     // The FE defaults (first elements 0.5 D at the foci, growth 1.25 radially and 1.5 axially)
-    // were the cheapest for 0.1 % over the map's range among first sizes 0.35/0.5, radial
-    // growths 1.15/1.25/1.35 and axial growths 1.3/1.5 (examples/17_map_speed.rs).
+    // were the cheapest for 0.1 % over 68 map points among first sizes 0.35/0.5, radial
+    // growths 1.15/1.25/1.35 and axial growths 1.3/1.5 (mean 10 ms, worst actual error 1.5e-4
+    // against nested uniform references; the rate 1.35 needed a fifth level at 10 points).
     let params = SingleParams::default();
     let mut values: Vec<f64> = Vec::new();
     for (l, level) in crossing_levels(plate, &params)?

@@ -12,20 +12,21 @@
 //! h_l = `coarse_size`·D/2^l at the foci — the hole edge A, the load's knots, the load edge B and,
 //! from level 1 on, the previous level's R_o — growing away from them by the ratio `growth`
 //! (radially, up to 4D) and `axial_growth` (from both faces, up to D/2). Only the element size
-//! at the foci halves from level to level, so the number of unknowns grows about 1.5–2.5× per
-//! level instead of the 4× of halving every element; the meshes are not nested. Over the design
-//! map's range (A/D ∈ [0.2, 5], B/A ∈ [1.1, 5], C = 15.4 A) level 3 (h = D/16 at the foci) was
-//! within 1.5e-4 relative of reference values on nested uniform refinements to 4 halvings
-//! (measured with `examples/17_map_speed.rs`), at about a tenth of their cost; at levels 4–5
-//! the graded and the uniform references agree to ~2e-5, so the far field left coarse biases
-//! R_o by no more than that.
+//! at the foci halves from level to level, so the number of unknowns grows 1.5–2.8× (mean 2×) per
+//! level instead of the 4× of halving every element; the meshes are not nested
+//! ([`Refinement::Graded`], the default for Q9; [`Refinement::Uniform`], nested halving of
+//! every element, is the default for the linear elements, whose error away from the foci the
+//! graded levels do not reduce). At 68 points over the design map's range (A/D ∈ [0.2, 5],
+//! B/A ∈ [1.1, 5], C = 15.4 A) graded level 5 (h = D/64 at the foci) and nested uniform level 4
+//! agreed within 3.3e-5 relative, the size of the uniform level's own last change: the far
+//! field left coarse does not bias R_o at that level.
 //!
 //! Error estimate ([`level_estimate`]): the level-to-level changes of R_o are irregular (the
-//! crossing moves through the elements; ratios of successive changes from −10 to 30 were
-//! measured), so the last value is not extrapolated and its error is estimated as the larger
-//! of the last change and a quarter of the change before, max(|d₂|, |d₁|/4). Against tight
-//! references at 72 map points its actual error stayed below it (worst 0.8 of the estimate at
-//! the level where a tolerance of 1e-3 was met).
+//! crossing moves through the elements; at many points the changes alternate in sign), so the
+//! last value is not extrapolated and its error is estimated as the larger of the last change
+//! and a quarter of the change before, max(|d₂|, |d₁|/4). At 76 map points at tolerance 1e-3
+//! (`examples/17_map_speed.rs`, references converged 50 times tighter) the actual error was at
+//! most 0.72 of the estimate and 1.3e-4 relative, after 3.8 levels on average.
 //!
 //! An infinite plate is truncated at C = B + 30 D (the midplane stress decays like e^(−r/D)·…;
 //! beyond a few D the rim is invisible to R_o at the 10⁻⁶ level).
@@ -74,14 +75,29 @@ pub enum Loading {
 /// How the meshes of successive refinement levels are made (module docs).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Refinement {
-    /// Element size halved at the foci and at the previous level's R_o, grading kept (not
-    /// nested; cheap). Validated for Q9, whose far-field error is negligible on such meshes.
+    /// Graded for Q9, uniform for the linear elements (the default).
     #[default]
+    Auto,
+    /// Element size halved at the foci and at the previous level's R_o, grading kept (not
+    /// nested; cheap). Validated for Q9, whose error away from the foci is negligible on such
+    /// meshes; for Cst4 at Table 1's A/D = 0.5, B/A = 2.2 the graded levels settled 0.25 %
+    /// away from the converged R_o.
     Graded,
     /// Every element of level 0 split into 2^l × 2^l (nested meshes, 4× the unknowns per
     /// level): for the linear elements (Q4, B-bar, Cst4), whose error away from the foci the
     /// graded levels do not reduce.
     Uniform,
+}
+
+impl Refinement {
+    /// The refinement used for element `kind` (resolves [`Refinement::Auto`]).
+    pub fn for_element(self, kind: ElementKind) -> Self {
+        match (self, kind) {
+            (Self::Auto, ElementKind::Q9) => Self::Graded,
+            (Self::Auto, _) => Self::Uniform,
+            (r, _) => r,
+        }
+    }
 }
 
 /// Parameters of the single-plate R_o study.
@@ -91,7 +107,7 @@ pub struct SingleParams {
     pub loading: Loading,
     /// Element kind (default Q9).
     pub kind: ElementKind,
-    /// Graded (default) or uniform refinement levels.
+    /// Graded or uniform refinement levels (default: graded for Q9, uniform otherwise).
     pub refinement: Refinement,
     /// Element size at the foci (A, the load's knots, B, the previous R_o) on level 0, as a
     /// fraction of D (default 0.5); halved on each further level.
@@ -113,7 +129,7 @@ impl Default for SingleParams {
         Self {
             loading: Loading::Pressure,
             kind: ElementKind::Q9,
-            refinement: Refinement::Graded,
+            refinement: Refinement::Auto,
             coarse_size: 0.5,
             growth: 1.25,
             axial_growth: 1.5,
@@ -177,7 +193,8 @@ pub fn level_spacings(
     r_focus: Option<f64>,
 ) -> Result<(Spacing, Spacing), InputError> {
     crate::error::positive("coarse element size", params.coarse_size)?;
-    if params.refinement == Refinement::Uniform && level > 0 {
+    let refinement = params.refinement.for_element(params.kind);
+    if refinement == Refinement::Uniform && level > 0 {
         let (r, z) = level_spacings(plate, params, 0, None)?;
         let k = 1usize << level.min(20);
         return Ok((r.refined(k), z.refined(k)));
@@ -192,8 +209,8 @@ pub fn level_spacings(
     let mut foci = vec![a, plate.load().inner(), b];
     foci.extend(r_focus.filter(|&r| r > a && r < c));
     let radial = Spacing::graded(a, c, plate.load().knots(), &foci, h, params.growth, 4.0 * d)?;
-    let axial = match params.refinement {
-        Refinement::Graded => {
+    let axial = match refinement {
+        Refinement::Graded | Refinement::Auto => {
             Spacing::graded(0.0, d, &[], &[0.0, d], h, params.axial_growth, 0.5 * d)?
         }
         Refinement::Uniform => {
@@ -511,6 +528,18 @@ mod tests {
         let m = mid(r.clone(), vec![1.0, -1.0, -2.0, 1.0, 2.0], 1);
         assert!((m.first_tensile_crossing(1.0).unwrap() - (2.0 + 2.0 / 3.0)).abs() < 1e-14);
         assert_eq!(mid(r, vec![-1.0; 5], 1).first_tensile_crossing(0.0), None);
+    }
+
+    #[test]
+    fn auto_refinement_is_graded_for_q9_only() {
+        assert_eq!(
+            Refinement::Auto.for_element(ElementKind::Q9),
+            Refinement::Graded
+        );
+        for k in [ElementKind::Q4, ElementKind::Q4Bbar, ElementKind::Cst4] {
+            assert_eq!(Refinement::Auto.for_element(k), Refinement::Uniform);
+            assert_eq!(Refinement::Graded.for_element(k), Refinement::Graded);
+        }
     }
 
     #[test]
