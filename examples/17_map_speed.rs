@@ -6,7 +6,7 @@
 //! estimate against a reference converged 50 times tighter:
 //!
 //! - single plate: [`boltzone::compare::single::single_fem`] (graded refinement levels, error
-//!   max(|d₂|, |d₁|/4) of the last two level changes, no extrapolation);
+//!   max(|d₃|, |d₂|/4, |d₁|/16) of the last three level changes, no extrapolation);
 //! - two plates: [`boltzone::contact::two_plate::solve`] (same estimate).
 //!
 //! For each point it prints CPU milliseconds (this thread's, from /proc/thread-self/schedstat

@@ -3,8 +3,8 @@
 //! - [`single_fem`]: the FE model of [`crate::fem::single`] (Q9, half plate with a midplane
 //!   roller, finite rim C) on its refinement levels (element size halved at A, B and the
 //!   previous R_o) until the error estimate of [`crate::fem::single::level_estimate`] (the
-//!   larger of the last change and a quarter of the one before; no extrapolation) falls below
-//!   the tolerance; at least three levels. [`crate::fem::single::single_plate_r_o`] runs the
+//!   largest of the last three changes shrunk at rate 2 per level; no extrapolation) falls
+//!   below the tolerance; at least three levels. [`crate::fem::single::single_plate_r_o`] runs the
 //!   same levels and estimate with a fixed number of levels.
 //! - [`single_hankel`]: the Hankel-transform plate with the hole correction
 //!   ([`crate::hankel::hole::single_plate_separation`]), an infinite plate: R_o with the error
@@ -43,8 +43,8 @@ pub fn single_fem(plate: &SinglePlate, tolerance: f64) -> Result<(Value, FemStud
     crate::error::positive("single-plate tolerance", tolerance)?;
     // The FE defaults (first elements 0.5 D at the foci, growth 1.25 radially and 1.5 axially)
     // were the cheapest for 0.1 % over 68 map points among first sizes 0.35/0.5, radial
-    // growths 1.15/1.25/1.35 and axial growths 1.3/1.5 (mean 10 ms, worst actual error 1.5e-4
-    // against nested uniform references; the rate 1.35 needed a fifth level at 10 points).
+    // growths 1.15/1.25/1.35 and axial growths 1.3/1.5 (worst actual error 1.5e-4 against
+    // nested uniform references; the growth 1.35 needed a fifth level at 10 points).
     let params = SingleParams::default();
     let mut values: Vec<f64> = Vec::new();
     for (l, level) in crossing_levels(plate, &params)?

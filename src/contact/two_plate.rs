@@ -18,13 +18,13 @@
 //! estimated R_o (and at A and B) and ties every point well inside the contact zone, so only a
 //! handful of points near the edge stay unknown. Levels continue (at least three) until the
 //! error estimate of R_o falls below the tolerance: the last level's value, not extrapolated,
-//! with the error max(|d₂|, |d₁|/4) of the last two changes ([`crate::fem::single::level_estimate`],
-//! shared with the single-plate model). A Richardson step with the rate capped at 2 (the
-//! estimate used before) was up to 1.5 times optimistic over the design map (68 geometries,
-//! A/D ∈ [0.2, 5], B/A ∈ [1.1, 5], C = 15.4 A, at tolerance 1e-3 against runs converged to
-//! 3e-6); with this estimate the actual error was at most 0.55 of it at 76 map points
-//! (`examples/17_map_speed.rs`, references converged 50 times tighter), after 4.3 levels on
-//! average.
+//! with the error max(|d₃|, |d₂|/4, |d₁|/16) of the last three changes
+//! ([`crate::fem::single::level_estimate`], shared with the single-plate model). A Richardson
+//! step with the rate capped at 2 (the estimate used before) was up to 1.5 times optimistic over
+//! the design map (68 geometries, A/D ∈ [0.2, 5], B/A ∈ [1.1, 5], C = 15.4 A, at tolerance 1e-3
+//! against runs converged to 3e-6); with this estimate no actual error exceeded it there at
+//! tolerances from 2e-3 to 1e-4 (at most 0.57 of it; `examples/17_map_speed.rs` repeats the
+//! check point by point).
 //! Welded dissimilar plates may have no sign-consistent contact edge; the level record then says
 //! that the report's rule decided ([`TwoPlateLevel::report_rule`]).
 //!
@@ -191,7 +191,7 @@ pub struct TwoPlateInfo {
 pub struct TwoPlateSolution {
     /// Separation radius.
     pub r_o: f64,
-    /// Its estimated absolute error (max(|d₂|, |d₁|/4) of the last two level changes).
+    /// Its estimated absolute error ([`crate::fem::single::level_estimate`] of the levels).
     pub r_o_error: f64,
     /// Interface node radii of the finest level.
     pub radius: Vec<f64>,
