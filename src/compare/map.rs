@@ -14,8 +14,9 @@
 //! use boltzone::compare::map::{compute, log_spaced, MapParams};
 //! let p = MapParams { a_over_d: vec![1.0], b_over_a: log_spaced(1.3, 3.1, 2), tolerance: 2e-3,
 //!                     ..MapParams::default() };
-//! let m = compute(&p, &|| ()).unwrap();
+//! let m = compute(&p, &|| ())?;
 //! assert!(m.at(0, 1).two.value > m.at(0, 0).two.value); // wider load, wider contact
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::{compare_all, CompareError, CompareParams, Comparison, Geometry};

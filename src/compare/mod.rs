@@ -24,11 +24,12 @@
 //!
 //! ```
 //! use boltzone::compare::{compare, CompareParams, Geometry};
-//! let g = Geometry::from_ratios(0.1, 1.0, 3.1, 1.54, 0.3).unwrap(); // Table 1, first row
-//! let c = compare(&g, &CompareParams { tolerance: 2e-3, ..Default::default() }).unwrap();
+//! let g = Geometry::from_ratios(0.1, 1.0, 3.1, 1.54, 0.3)?; // Table 1, first row
+//! let c = compare(&g, &CompareParams { tolerance: 2e-3, ..Default::default() })?;
 //! assert!(c.single.value > c.two.value);                 // the substitution overpredicts
 //! assert!(c.rules[0].radius > c.two.value);              // so does the 45° cone
 //! assert!(c.two.error <= 2e-3 * c.two.value);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 pub mod map;

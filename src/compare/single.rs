@@ -13,9 +13,10 @@
 //! ```
 //! use boltzone::compare::{single::single_fem, Geometry};
 //! use boltzone::OuterRadius;
-//! let g = Geometry::from_ratios(0.1, 1.0, 3.1, 1.54, 0.3).unwrap();
-//! let (r, info) = single_fem(&g.single_plate(OuterRadius::Finite(1.54)).unwrap(), 1e-3).unwrap();
+//! let g = Geometry::from_ratios(0.1, 1.0, 3.1, 1.54, 0.3)?;
+//! let (r, info) = single_fem(&g.single_plate(OuterRadius::Finite(1.54))?, 1e-3)?;
 //! assert!(r.error <= 1e-3 * r.value && info.levels >= 3);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::Value;

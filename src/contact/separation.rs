@@ -23,8 +23,9 @@
 //! let r_o = 0.2713;
 //! let p: Vec<f64> = r.iter().map(|&x| if x < r_o { (r_o - x).sqrt() } else { 0.0 }).collect();
 //! let g: Vec<f64> = r.iter().map(|&x| if x > r_o { (x - r_o).powf(1.5) } else { 0.0 }).collect();
-//! let e = estimate(&NodalInterface { radius: &r, pressure: &p, gap: &g }).unwrap();
+//! let e = estimate(&NodalInterface { radius: &r, pressure: &p, gap: &g }).ok_or("no separation")?;
 //! assert!((e.r_o - r_o).abs() < 1e-14);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 /// Nodal values along the interface, ordered by increasing radius.

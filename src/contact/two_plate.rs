@@ -34,13 +34,12 @@
 //! ```
 //! use boltzone::contact::two_plate::{solve, TwoPlateParams};
 //! use boltzone::{Joint, Material, OuterRadius};
-//! let joint = Joint::symmetric(0.1, 0.31, 0.1, Material::unit(0.3).unwrap())
-//!     .unwrap()
-//!     .with_outer_radius(OuterRadius::Finite(1.54))
-//!     .unwrap();
+//! let joint = Joint::symmetric(0.1, 0.31, 0.1, Material::unit(0.3)?)?
+//!     .with_outer_radius(OuterRadius::Finite(1.54))?;
 //! let params = TwoPlateParams { tolerance: 1e-2, ..Default::default() };
-//! let s = solve(&joint, &params).unwrap();
+//! let s = solve(&joint, &params)?;
 //! assert!(s.r_o > 0.31 && s.r_o < 0.5, "R_o = {}", s.r_o);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::lcp::LcpParams;

@@ -39,15 +39,16 @@
 //! ```
 //! use boltzone::fem::single::{single_plate_r_o, Loading, SingleParams};
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
-//! let load = FaceLoad::uniform(0.1, 0.22, 1.0).unwrap();
+//! let load = FaceLoad::uniform(0.1, 0.22, 1.0)?;
 //! let plate = SinglePlate::new(0.1, OuterRadius::Finite(1.54), 0.1,
-//!                              Material::unit(0.3).unwrap(), load).unwrap();
-//! let (r_o, info) = single_plate_r_o(&plate, &SingleParams::default()).unwrap();
+//!                              Material::unit(0.3)?, load)?;
+//! let (r_o, info) = single_plate_r_o(&plate, &SingleParams::default())?;
 //! assert!((r_o / 0.1 - 3.3).abs() < 0.2); // Table 1 (A/D = 1, B/A = 2.2): 3.3 ± its 0.15 grid
 //! assert_eq!(info.levels.len(), 5);
 //! assert!(info.error_estimate < 1e-3 * r_o);
 //! let nut = SingleParams { loading: Loading::UniformDisplacement, ..SingleParams::default() };
-//! assert!(single_plate_r_o(&plate, &nut).unwrap().0 > r_o); // a rigid nut reaches further
+//! assert!(single_plate_r_o(&plate, &nut)?.0 > r_o); // a rigid nut reaches further
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::assemble::{assemble, Pattern};
