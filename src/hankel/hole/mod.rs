@@ -64,6 +64,7 @@
 
 pub mod bessel_i;
 pub mod bessel_k;
+pub mod chebyshev;
 pub mod eigen;
 pub mod fit;
 pub mod plate;

@@ -43,6 +43,7 @@
 //! assert!((sr - direct[0].sigma_r).abs() <= p.error() && (tau - direct[0].tau_rz).abs() <= p.error());
 //! ```
 
+use super::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};
 use super::traction::{hole_tractions, HoleTraction};
 use crate::hankel::field::Slab;
 use crate::hankel::quadrature::QuadParams;
@@ -128,7 +129,7 @@ impl TractionProfile {
             .max(f64::MIN_POSITIVE);
         let tolerance = tolerance.max(1e-15 * scale);
         let quad = QuadParams {
-            abs_tol: 0.1 * tolerance,
+            abs_tol: 0.2 * tolerance,
             ..*quad
         };
         let rho = bernstein_rho(singular_distance(slab.load(), r) / d);
@@ -164,8 +165,9 @@ impl TractionProfile {
     /// be a multiple of the current M).
     fn sample(&mut self, slab: &Slab, r: f64, m: usize, quad: &QuadParams) {
         let step = m.checked_div(self.m).unwrap_or(0);
-        let z: Vec<f64> = (0..=m / 2)
-            .map(|j| self.d * (PI * j as f64 / m as f64).cos())
+        let z: Vec<f64> = lobatto_points(m)[..=m / 2]
+            .iter()
+            .map(|x| self.d * x)
             .collect();
         let fresh: Vec<usize> = (0..=m / 2).filter(|j| step == 0 || j % step != 0).collect();
         let zf: Vec<f64> = fresh.iter().map(|&j| z[j]).collect();
@@ -185,45 +187,33 @@ impl TractionProfile {
         self.m = m;
     }
 
-    /// Chebyshev coefficients from the samples (discrete cosine transform of type I on the
-    /// whole grid, the lower half by symmetry).
+    /// Chebyshev coefficients from the samples, the lower half of the grid by symmetry
+    /// (σ_r even, τ_rz odd); the coefficients of the other parity vanish exactly.
     fn coefficients(&mut self) {
         let m = self.m;
-        let cosines: Vec<f64> = (0..2 * m)
-            .map(|i| (PI * i as f64 / m as f64).cos())
-            .collect();
-        let value = |j: usize, odd: bool| {
-            let (h, sign) = if j <= m / 2 { (j, 1.0) } else { (m - j, -1.0) };
-            let s = &self.samples[h];
-            if odd {
-                sign * s.tau_rz
-            } else {
-                s.sigma_r
-            }
-        };
-        let transform = |odd: bool| -> Vec<f64> {
+        let full = |odd: bool| -> Vec<f64> {
             (0..=m)
-                .map(|k| {
-                    if (k % 2 == 1) != odd {
-                        return 0.0; // symmetry: exactly zero
-                    }
-                    let s: f64 = (0..=m)
-                        .map(|j| {
-                            let w = if j == 0 || j == m { 0.5 } else { 1.0 };
-                            w * value(j, odd) * cosines[(j * k) % (2 * m)]
-                        })
-                        .sum();
-                    let c = 2.0 * s / m as f64;
-                    if k == 0 || k == m {
-                        0.5 * c
+                .map(|j| {
+                    let (h, sign) = if j <= m / 2 { (j, 1.0) } else { (m - j, -1.0) };
+                    let s = &self.samples[h];
+                    if odd {
+                        sign * s.tau_rz
                     } else {
-                        c
+                        s.sigma_r
                     }
                 })
                 .collect()
         };
-        self.sigma = transform(false);
-        self.tau = transform(true);
+        let parity = |mut c: Vec<f64>, odd: bool| {
+            for (k, ck) in c.iter_mut().enumerate() {
+                if (k % 2 == 1) != odd {
+                    *ck = 0.0;
+                }
+            }
+            c
+        };
+        self.sigma = parity(lobatto_coefficients(&full(false)), false);
+        self.tau = parity(lobatto_coefficients(&full(true)), true);
     }
 
     /// The error estimate of the module docs.
@@ -250,16 +240,7 @@ impl TractionProfile {
     /// (σ_r(R, z), τ_rz(R, z)) for |z| ≤ D (Clenshaw's recurrence in x = z/D).
     pub fn eval(&self, z: f64) -> (f64, f64) {
         let x = (z / self.d).clamp(-1.0, 1.0);
-        let clenshaw = |c: &[f64]| {
-            let (mut b1, mut b2) = (0.0, 0.0);
-            for &ck in c.iter().skip(1).rev() {
-                let b0 = 2.0 * x * b1 - b2 + ck;
-                b2 = b1;
-                b1 = b0;
-            }
-            x * b1 - b2 + c[0]
-        };
-        (clenshaw(&self.sigma), clenshaw(&self.tau))
+        (clenshaw(&self.sigma, x), clenshaw(&self.tau, x))
     }
 
     /// Estimated largest error of [`Self::eval`] (absolute).
