@@ -197,7 +197,11 @@ impl LocalMidplane {
 
     /// σ_z(r, 0) of the slab, or None outside [lo, hi].
     fn eval(&self, r: f64) -> Option<f64> {
-        (r >= self.lo && r <= self.hi)
-            .then(|| clenshaw(&self.coef, (2.0 * r - self.lo - self.hi) / (self.hi - self.lo)))
+        (r >= self.lo && r <= self.hi).then(|| {
+            clenshaw(
+                &self.coef,
+                (2.0 * r - self.lo - self.hi) / (self.hi - self.lo),
+            )
+        })
     }
 }
