@@ -20,7 +20,8 @@
 //! second half of the correction removes that: the fictitious slab is loaded by p continued
 //! smoothly into the hole ([`plate::extended_load`]), so its traction on r = A is smooth. The
 //! amplitudes come from least-squares collocation on r = A ([`fit`]; the slab's tractions at all
-//! heights by [`traction`]); the convergence parameter is the number of modes N (doubled until
+//! heights interpolated by [`profile`] from a few Chebyshev heights integrated by
+//! [`traction`]); the convergence parameter is the number of modes N (doubled until
 //! the target is met), and the error measure is the residual traction on the hole, measured on
 //! twice as many heights as were fitted.
 //!
@@ -40,7 +41,23 @@
 //! hole's share — the larger of the last two changes of R_o as N doubled, or with a fixed N the
 //! bound max residual·P/slope (|δσ_z| ≤ max residual traction: the error field is the response
 //! to that traction, whose self-equilibrated part decays away from the hole and whose net radial
-//! force is carried by the Lamé field, which has no σ_z) — to the slab quadrature's.
+//! force is carried by the Lamé field, which has no σ_z) — to the slab quadrature's, and the
+//! slab data's error (the traction profile's estimate, [`HoleInfo::slab_error`]) divided by the
+//! slope: the fit cannot see an error in its own data, so it is added in full.
+//!
+//! **Cost** (R_o to 1e-6, default parameters, A = 0.1, ν = 0.3; criterion and example 17 on a
+//! shared 2-core machine at load 3–4, so wall times vary by ±30 %). The slab's traction on the
+//! hole is computed once, at M/2 + 1 Chebyshev–Lobatto heights (M = 24–72 on Table 1, predicted
+//! from the load edge's distance to the hole, [`profile`]), 3–11 thousand ξ-nodes, 1.7–5 ms;
+//! then each N costs its fit (SVD), the residual check and a root search on the modes' closed
+//! forms (the slab's midplane σ_z is interpolated on the root's scan interval once, 0.6 ms).
+//! Wide loads converge at N = 16–32: 3–9 ms per geometry (A/D = 1, B/A = 3.1: 3.2 ms,
+//! profile 1.8 ms, fits and checks 0.5 ms, root search 0.8 ms). Eight of Table 1's twelve
+//! (narrow loads, thick plates) stop at N = 64 unconverged (the corner singularity above) and
+//! take 13–17 ms, of which the fits and residual checks at N = 4…64 are ~11 ms (the SVD of the
+//! 258 × 129 system at N = 64 alone ~7 ms) and the profile ~4.5 ms. The direct route
+//! ([`SlabSampling::Direct`]: every fitted and checked height integrated, 4N + 1 of them, the
+//! nearest ever closer to the face as N doubles) costs 3–5× more: 13–24 ms and 43–66 ms.
 //!
 //! **Finite rim.** With `OuterRadius::Finite(C)` the same treatment frees r = C: N modes growing
 //! outward (I₀, I₁(λ_k r), [`bessel_i`]) and the uniform in-plane state σ_r = σ_θ join the
@@ -91,7 +108,12 @@ pub struct HoleParams {
     /// Largest N of the doubling (default 64).
     pub max_terms: usize,
     /// Absolute tolerance of the slab's hole tractions, relative to P (default 1e-8: a hundredth
-    /// of the residual target, and below every residual the modes reach at N ≤ 256).
+    /// of the residual target, and below every residual the modes reach at N ≤ 256; it moves
+    /// R_o by at most tolerance·P/slope, 1e-8 to 6e-8 A on Table 1). With the default
+    /// [`SlabSampling::Profile`] it is the target of the interpolant's error estimate
+    /// (truncation + Lebesgue constant × the samples' quadrature error); the quadrature
+    /// confirms little below ~1e-10 next to the face, so tighter targets stop there and say so
+    /// in [`HoleInfo::slab_error`].
     pub slab_tolerance: f64,
     /// [`single_plate_separation`] stops doubling N when two successive changes of R_o are
     /// below this fraction of R_o (default 1e-6), or when the residual target is met.
@@ -103,8 +125,8 @@ pub struct HoleParams {
 /// How the slab's traction on the hole (and rim) is obtained at the fit's heights.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum SlabSampling {
-    /// Sampled once at a few Chebyshev heights and interpolated ([`profile`]): the default,
-    /// 3–10× cheaper, to the same `slab_tolerance`.
+    /// Sampled once at a few Chebyshev heights and interpolated ([`profile`]): the default;
+    /// 4–10× fewer ξ-nodes than the direct route, to the same `slab_tolerance`.
     #[default]
     Profile,
     /// Every fitted and checked height integrated on its own ([`traction`]); the reference
@@ -185,9 +207,12 @@ pub struct HoleInfo {
     pub rim_residual_max: f64,
     /// Condition number of the column-scaled collocation matrix.
     pub condition: f64,
-    /// Largest quadrature error estimate of the slab's hole tractions, relative to P.
+    /// Error estimate of the slab's hole tractions, relative to P: the traction profile's
+    /// (interpolation + samples), or with [`SlabSampling::Direct`] the largest quadrature
+    /// estimate.
     pub slab_error: f64,
-    /// Integrand evaluations spent on the slab's hole tractions.
+    /// ξ-nodes spent on the slab's hole tractions (each serves up to
+    /// [`traction::BATCH`] heights).
     pub slab_evaluations: usize,
     /// Every N tried, in order.
     pub history: Vec<HoleLevel>,
