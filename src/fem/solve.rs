@@ -7,17 +7,18 @@
 //! ```
 //! use boltzone::fem::*;
 //! use boltzone::Material;
-//! let r = Spacing::uniform(1.0, 2.0, 4).unwrap();
-//! let z = Spacing::uniform(0.0, 0.5, 2).unwrap();
-//! let mesh = Mesh::structured(ElementKind::Q4, &r, &[PlateSpec { z, material: 0 }]).unwrap();
+//! let r = Spacing::uniform(1.0, 2.0, 4)?;
+//! let z = Spacing::uniform(0.0, 0.5, 2)?;
+//! let mesh = Mesh::structured(ElementKind::Q4, &r, &[PlateSpec { z, material: 0 }])?;
 //! let mut s = Supports::new(mesh.n_nodes());
 //! for n in mesh.bottom(0) { s.roller_z(n); }
 //! let dofs = DofMap::new(&s);
-//! let k = assemble(&mesh, &[Material::unit(0.3).unwrap()], &dofs, &Pattern::new(&mesh, &dofs)).unwrap();
-//! let f = Factorization::new(&k.matrix, &SolveParams::default()).unwrap();
+//! let k = assemble(&mesh, &[Material::unit(0.3)?], &dofs, &Pattern::new(&mesh, &dofs))?;
+//! let f = Factorization::new(&k.matrix, &SolveParams::default())?;
 //! let b = vec![1.0; dofs.n_equations()];
 //! let x = f.solve(&b);
 //! assert!(x.iter().all(|v| v.is_finite()));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::FemError;
