@@ -37,13 +37,14 @@
 //! use boltzone::{FaceLoad, Material, hankel::{QuadParams, Slab}};
 //! use boltzone::hankel::hole::profile::TractionProfile;
 //! use boltzone::hankel::hole::traction::hole_tractions;
-//! let slab = Slab::new(0.1, Material::unit(0.3).unwrap(), FaceLoad::uniform(0.0, 0.31, 1.0).unwrap()).unwrap();
+//! let slab = Slab::new(0.1, Material::unit(0.3)?, FaceLoad::uniform(0.0, 0.31, 1.0)?)?;
 //! let p = TractionProfile::new(&slab, 0.1, 1e-8, &QuadParams::default());
 //! assert!(p.error() <= 1e-8);
 //! let q = QuadParams { rel_tol: 1e-13, abs_tol: 1e-13, ..QuadParams::default() };
 //! let (direct, _) = hole_tractions(&slab, 0.1, &[0.0737], &q);
 //! let (sr, tau) = p.eval(0.0737);
 //! assert!((sr - direct[0].sigma_r).abs() <= p.error() && (tau - direct[0].tau_rz).abs() <= p.error());
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};
