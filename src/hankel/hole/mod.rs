@@ -45,19 +45,21 @@
 //! slab data's error (the traction profile's estimate, [`HoleInfo::slab_error`]) divided by the
 //! slope: the fit cannot see an error in its own data, so it is added in full.
 //!
-//! **Cost** (R_o to 1e-6, default parameters, A = 0.1, ν = 0.3; criterion and example 17 on a
-//! shared 2-core machine at load 3–4, so wall times vary by ±30 %). The slab's traction on the
-//! hole is computed once, at M/2 + 1 Chebyshev–Lobatto heights (M = 24–72 on Table 1, predicted
-//! from the load edge's distance to the hole, [`profile`]), 3–11 thousand ξ-nodes, 1.7–5 ms;
-//! then each N costs its fit (SVD), the residual check and a root search on the modes' closed
-//! forms (the slab's midplane σ_z is interpolated on the root's scan interval once, 0.6 ms).
-//! Wide loads converge at N = 16–32: 3–9 ms per geometry (A/D = 1, B/A = 3.1: 3.2 ms,
-//! profile 1.8 ms, fits and checks 0.5 ms, root search 0.8 ms). Eight of Table 1's twelve
-//! (narrow loads, thick plates) stop at N = 64 unconverged (the corner singularity above) and
-//! take 13–17 ms, of which the fits and residual checks at N = 4…64 are ~11 ms (the SVD of the
-//! 258 × 129 system at N = 64 alone ~7 ms) and the profile ~4.5 ms. The direct route
-//! ([`SlabSampling::Direct`]: every fitted and checked height integrated, 4N + 1 of them, the
-//! nearest ever closer to the face as N doubles) costs 3–5× more: 13–24 ms and 43–66 ms.
+//! **Cost** (R_o to 1e-6, default parameters, A = 0.1, ν = 0.3; minimum of 21 runs, and
+//! example 17, on a shared 2-core machine at load 3–5, so medians run 10–50 % higher). The
+//! slab's traction on the hole is computed once, at M/2 + 1 Chebyshev–Lobatto heights (M =
+//! 24–72 on Table 1, predicted from the load edge's distance to the hole, [`profile`]), 4–12
+//! thousand ξ-nodes, 1.5–4.5 ms; then each N costs its fit (SVD), the residual check and a root
+//! search on the modes' closed forms (the slab's midplane σ_z is interpolated on the root's scan
+//! interval once, 0.4–0.5 ms). Wide loads converge at N = 16–32 in 3–7 ms (A/D = 1, B/A = 3.1:
+//! 3.0 ms = profile 1.5 + midplane interpolant 0.5 + fits and checks 0.5 + scans, roots and
+//! rule 0.5). Eight of Table 1's twelve (narrow loads, thick plates) stop at N = 64 unconverged
+//! (the corner singularity above) and take 14–17 ms, of which the fits and residual checks at
+//! N = 4…64 are ~11 ms (the SVD of the 258 × 129 system at N = 64 alone ~7 ms) and the profile
+//! 3–4.5 ms. The direct route ([`SlabSampling::Direct`]: every fitted and checked height
+//! integrated, 4N + 1 of them, the nearest ever closer to the face as N doubles; the only route
+//! before the profile) costs 13–19 ms and 42–75 ms on the same geometries, its slab data
+//! 16–150 thousand ξ-nodes.
 //!
 //! **Finite rim.** With `OuterRadius::Finite(C)` the same treatment frees r = C: N modes growing
 //! outward (I₀, I₁(λ_k r), [`bessel_i`]) and the uniform in-plane state σ_r = σ_θ join the
@@ -126,7 +128,7 @@ pub struct HoleParams {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum SlabSampling {
     /// Sampled once at a few Chebyshev heights and interpolated ([`profile`]): the default;
-    /// 4–10× fewer ξ-nodes than the direct route, to the same `slab_tolerance`.
+    /// 4–13× fewer ξ-nodes than the direct route on Table 1, to the same `slab_tolerance`.
     #[default]
     Profile,
     /// Every fitted and checked height integrated on its own ([`traction`]); the reference
