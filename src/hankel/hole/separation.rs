@@ -1,7 +1,7 @@
 //! R_o of the single plate with a hole: the first radius beyond B where the midplane σ_z of
 //! slab (extended load) + hole correction turns tensile. An outward scan from B in steps of
-//! `step`·D finds the first compressive→tensile sign change; the Illinois variant of regula falsi
-//! (Dowell & Jarratt, *BIT* 11 (1971) 168) narrows it. The midplane σ_z is a
+//! `step`·D finds the first compressive→tensile sign change; Brent's method
+//! ([`crate::hankel::root::brent`]) narrows it. The midplane σ_z is a
 //! [`MidplaneRule`] of the slab (one node set for all radii) plus the modes' closed forms.
 //!
 //! The slab's part does not change as N doubles, and the root stays in the same scan interval
@@ -203,5 +203,42 @@ impl LocalMidplane {
                 (2.0 * r - self.lo - self.hi) / (self.hi - self.lo),
             )
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::LocalMidplane;
+    use crate::hankel::field::Slab;
+    use crate::hankel::midplane::MidplaneRule;
+    use crate::load::FaceLoad;
+    use crate::material::Material;
+
+    #[test]
+    fn local_midplane_interpolates_the_rule_within_its_estimate() {
+        // Scan intervals of width D/2 around Table 1's zeros (wide and narrow load): the
+        // interpolant against the rule itself at points off the grid, within the interpolant's
+        // estimate plus rounding of the rule's sum (~1e-15 of its scale).
+        for (b, d) in [(0.31, 0.1), (0.13, 0.2)] {
+            let slab = Slab::new(
+                d,
+                Material::unit(0.3).unwrap(),
+                FaceLoad::uniform(0.0, b, 1.0).unwrap(),
+            )
+            .unwrap();
+            let rule = MidplaneRule::new(&slab, b + 12.0 * d, 1e-13).unwrap();
+            for k in [2.0, 5.0] {
+                let lo = b + 0.5 * k * d;
+                let hi = lo + 0.5 * d;
+                let l = LocalMidplane::new(&rule, lo, hi, 1e-12);
+                assert!(l.error <= 1e-12, "estimate {:e}", l.error);
+                for i in 0..40 {
+                    let r = lo + (hi - lo) * (i as f64 + 0.37) / 40.0;
+                    let diff = (l.eval(r).unwrap() - rule.eval(r).value).abs();
+                    assert!(diff <= l.error + 1e-14, "r {r}: {diff:e} vs {:e}", l.error);
+                }
+                assert!(l.eval(lo - 1e-9).is_none() && l.eval(hi + 1e-9).is_none());
+            }
+        }
     }
 }
