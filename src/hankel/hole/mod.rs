@@ -20,7 +20,8 @@
 //! second half of the correction removes that: the fictitious slab is loaded by p continued
 //! smoothly into the hole ([`plate::extended_load`]), so its traction on r = A is smooth. The
 //! amplitudes come from least-squares collocation on r = A ([`fit`]; the slab's tractions at all
-//! heights by [`traction`]); the convergence parameter is the number of modes N (doubled until
+//! heights interpolated by [`profile`] from a few Chebyshev heights integrated by
+//! [`traction`]); the convergence parameter is the number of modes N (doubled until
 //! the target is met), and the error measure is the residual traction on the hole, measured on
 //! twice as many heights as were fitted.
 //!
@@ -40,7 +41,25 @@
 //! hole's share — the larger of the last two changes of R_o as N doubled, or with a fixed N the
 //! bound max residual·P/slope (|δσ_z| ≤ max residual traction: the error field is the response
 //! to that traction, whose self-equilibrated part decays away from the hole and whose net radial
-//! force is carried by the Lamé field, which has no σ_z) — to the slab quadrature's.
+//! force is carried by the Lamé field, which has no σ_z) — to the slab quadrature's, and the
+//! slab data's error (the traction profile's estimate, [`HoleInfo::slab_error`]) divided by the
+//! slope: the fit cannot see an error in its own data, so it is added in full.
+//!
+//! **Cost** (R_o to 1e-6, default parameters, A = 0.1, ν = 0.3; minimum of 21 runs, and
+//! example 17, on a shared 2-core machine at load 3–5, so medians run 10–50 % higher). The
+//! slab's traction on the hole is computed once, at M/2 + 1 Chebyshev–Lobatto heights (M =
+//! 24–72 on Table 1, predicted from the load edge's distance to the hole, [`profile`]), 4–12
+//! thousand ξ-nodes, 1.5–4.5 ms; then each N costs its fit (SVD), the residual check and a root
+//! search on the modes' closed forms (the slab's midplane σ_z is interpolated on the root's scan
+//! interval once, 0.4–0.5 ms). Wide loads converge at N = 16–32 in 3–7 ms (A/D = 1, B/A = 3.1:
+//! 3.0 ms = profile 1.5 + midplane interpolant 0.5 + fits and checks 0.5 + scans, roots and
+//! rule 0.5). Eight of Table 1's twelve (narrow loads, thick plates) stop at N = 64 unconverged
+//! (the corner singularity above) and take 14–17 ms, of which the fits and residual checks at
+//! N = 4…64 are ~11 ms (the SVD of the 258 × 129 system at N = 64 alone ~7 ms) and the profile
+//! 3–4.5 ms. The direct route ([`SlabSampling::Direct`]: every fitted and checked height
+//! integrated, 4N + 1 of them, the nearest ever closer to the face as N doubles; the only route
+//! before the profile) costs 13–19 ms and 42–75 ms on the same geometries, its slab data
+//! 16–150 thousand ξ-nodes.
 //!
 //! **Finite rim.** With `OuterRadius::Finite(C)` the same treatment frees r = C: N modes growing
 //! outward (I₀, I₁(λ_k r), [`bessel_i`]) and the uniform in-plane state σ_r = σ_θ join the
@@ -64,13 +83,16 @@
 
 pub mod bessel_i;
 pub mod bessel_k;
+pub mod chebyshev;
 pub mod eigen;
 pub mod fit;
 pub mod plate;
+pub mod profile;
 mod separation;
 pub mod traction;
 
 pub use plate::HolePlate;
+pub use profile::TractionProfile;
 pub use separation::single_plate_separation;
 
 use crate::error::{positive, InputError};
@@ -88,11 +110,30 @@ pub struct HoleParams {
     /// Largest N of the doubling (default 64).
     pub max_terms: usize,
     /// Absolute tolerance of the slab's hole tractions, relative to P (default 1e-8: a hundredth
-    /// of the residual target, and below every residual the modes reach at N ≤ 256).
+    /// of the residual target, and below every residual the modes reach at N ≤ 256; it moves
+    /// R_o by at most tolerance·P/slope, 1e-8 to 6e-8 A on Table 1). With the default
+    /// [`SlabSampling::Profile`] it is the target of the interpolant's error estimate
+    /// (truncation + Lebesgue constant × the samples' quadrature error); the quadrature
+    /// confirms little below ~1e-10 next to the face, so tighter targets stop there and say so
+    /// in [`HoleInfo::slab_error`].
     pub slab_tolerance: f64,
     /// [`single_plate_separation`] stops doubling N when two successive changes of R_o are
     /// below this fraction of R_o (default 1e-6), or when the residual target is met.
     pub r_o_tolerance: f64,
+    /// How the slab's traction on the hole is obtained (default [`SlabSampling::Profile`]).
+    pub slab_sampling: SlabSampling,
+}
+
+/// How the slab's traction on the hole (and rim) is obtained at the fit's heights.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum SlabSampling {
+    /// Sampled once at a few Chebyshev heights and interpolated ([`profile`]): the default;
+    /// 4–13× fewer ξ-nodes than the direct route on Table 1, to the same `slab_tolerance`.
+    #[default]
+    Profile,
+    /// Every fitted and checked height integrated on its own ([`traction`]); the reference
+    /// route of the tests.
+    Direct,
 }
 
 impl Default for HoleParams {
@@ -104,6 +145,7 @@ impl Default for HoleParams {
             max_terms: 64,
             slab_tolerance: 1e-8,
             r_o_tolerance: 1e-6,
+            slab_sampling: SlabSampling::Profile,
         }
     }
 }
@@ -167,9 +209,12 @@ pub struct HoleInfo {
     pub rim_residual_max: f64,
     /// Condition number of the column-scaled collocation matrix.
     pub condition: f64,
-    /// Largest quadrature error estimate of the slab's hole tractions, relative to P.
+    /// Error estimate of the slab's hole tractions, relative to P: the traction profile's
+    /// (interpolation + samples), or with [`SlabSampling::Direct`] the largest quadrature
+    /// estimate.
     pub slab_error: f64,
-    /// Integrand evaluations spent on the slab's hole tractions.
+    /// ξ-nodes spent on the slab's hole tractions (each serves up to
+    /// [`traction::BATCH`] heights).
     pub slab_evaluations: usize,
     /// Every N tried, in order.
     pub history: Vec<HoleLevel>,

@@ -25,8 +25,9 @@
 
 use super::eigen::{lame_field, symmetric_roots, uniform_field, Mode, ModeField};
 use super::fit::{fit, heights, Boundary, Fit, HoleData};
+use super::profile::TractionProfile;
 use super::traction::hole_tractions;
-use super::{HoleInfo, HoleLevel, HoleParams};
+use super::{HoleInfo, HoleLevel, HoleParams, SlabSampling};
 use crate::error::InputError;
 use crate::hankel::field::{Slab, Stress};
 use crate::hankel::quadrature::QuadParams;
@@ -79,6 +80,12 @@ pub struct HolePlate {
     /// check points).
     grid: Vec<HoleData>,
     rim_grid: Vec<HoleData>,
+    /// How the slab traction is sampled, and the interpolants of [`SlabSampling::Profile`]
+    /// (hole, rim), built on first use.
+    sampling: SlabSampling,
+    profiles: Vec<(f64, TractionProfile)>,
+    /// Target of the slab traction's error (absolute).
+    slab_tolerance: f64,
     quad: QuadParams,
     nu: f64,
     g: f64,
@@ -128,10 +135,13 @@ impl HolePlate {
             },
             grid: Vec::new(),
             rim_grid: Vec::new(),
+            sampling: params.slab_sampling,
+            profiles: Vec::new(),
+            slab_tolerance: params.slab_tolerance * p_ref,
             quad: QuadParams {
                 rel_tol: 1e-10,
                 abs_tol: params.slab_tolerance * p_ref,
-                window: 9,
+                window: 13,
                 ..QuadParams::default()
             },
             nu: mat.poisson_ratio(),
@@ -160,9 +170,32 @@ impl HolePlate {
         true
     }
 
-    /// Slab traction at radius `r` on the heights `z` of 4N intervals, reusing `old` (the grid of
-    /// 2N intervals) when nested.
+    /// Slab traction at radius `r` on the heights `z` of 4N intervals. With
+    /// [`SlabSampling::Profile`] (default) the values come from the Chebyshev interpolant of the
+    /// cylinder r, sampled once on first use ([`TractionProfile`]); with
+    /// [`SlabSampling::Direct`] every height is integrated, reusing `old` (the grid of 2N
+    /// intervals) when nested.
     fn sample(&mut self, r: f64, old: Vec<HoleData>, z: &[f64]) -> Vec<HoleData> {
+        if self.sampling == SlabSampling::Profile {
+            let i = match self.profiles.iter().position(|(rp, _)| *rp == r) {
+                Some(i) => i,
+                None => {
+                    let p = TractionProfile::new(&self.slab, r, self.slab_tolerance, &self.quad);
+                    self.info.slab_evaluations += p.evaluations();
+                    self.info.slab_error = self.info.slab_error.max(p.error() / self.p_ref);
+                    self.profiles.push((r, p));
+                    self.profiles.len() - 1
+                }
+            };
+            let p = &self.profiles[i].1;
+            return z
+                .iter()
+                .map(|&z| {
+                    let (sigma_r, tau_rz) = p.eval(z);
+                    HoleData { z, sigma_r, tau_rz }
+                })
+                .collect();
+        }
         let nested = !old.is_empty() && old.len() * 2 - 1 == z.len();
         // heights not sampled yet: all, or the odd-numbered ones of a nested refinement
         let fresh: Vec<f64> = z

@@ -1,9 +1,19 @@
 //! R_o of the single plate with a hole: the first radius beyond B where the midplane σ_z of
 //! slab (extended load) + hole correction turns tensile. An outward scan from B in steps of
-//! `step`·D finds the first compressive→tensile sign change; the Illinois variant of regula falsi
-//! (Dowell & Jarratt, *BIT* 11 (1971) 168) narrows it. The midplane σ_z is a
+//! `step`·D finds the first compressive→tensile sign change; Brent's method
+//! ([`crate::hankel::root::brent`]) narrows it. The midplane σ_z is a
 //! [`MidplaneRule`] of the slab (one node set for all radii) plus the modes' closed forms.
+//!
+//! The slab's part does not change as N doubles, and the root stays in the same scan interval
+//! (it moves by ≪ `step`·D): on that interval the slab's σ_z(r, 0) is replaced by its Chebyshev
+//! interpolant ([`LocalMidplane`]), built once from 17–65 rule evaluations, so each level's
+//! root search costs only the modes' closed forms (a rule evaluation is a sum over its
+//! 500–1000 ξ-nodes, the modes N complex K₀/K₁ pairs). σ_z(r, 0) is analytic in the strip
+//! |Im r| < D (its ξ-integrand is bounded by e^(−ξD)·e^(ξ|Im r|)), so on an interval of
+//! half-width D/4 the coefficients fall like ρ^(−k), ρ = 4 + √17 ≈ 8.1: 17 points give ~1e-15
+//! of the scale.
 
+use super::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};
 use super::{HoleInfo, HoleParams, HolePlate};
 use crate::error::positive;
 use crate::hankel::midplane::MidplaneRule;
@@ -45,11 +55,8 @@ pub fn single_plate_separation(
     // The slab's σ_z at the scan radii B + kh does not change with N: kept across levels.
     let h = sep.step * d;
     let mut scan_cache: Vec<f64> = Vec::new();
+    let mut local: Option<LocalMidplane> = None;
     loop {
-        let mut f = |r: f64| {
-            evaluations += 1;
-            sign * (rule.eval(r).value + holed.correction_midplane(r))
-        };
         let mut scan = |k: usize| {
             let r = (b + k as f64 * h).min(r_end);
             while scan_cache.len() <= k {
@@ -61,6 +68,19 @@ pub fn single_plate_separation(
         let bracket = first_upward_crossing(&mut scan, r_end)?;
         let tol = rel_tol * b * 0.25;
         let ((a, fa), (c, fc)) = bracket;
+        if local.as_ref().is_none_or(|l| l.lo != a || l.hi != c) {
+            let l = LocalMidplane::new(&rule, a, c, sigma_tol);
+            evaluations += l.evaluations;
+            local = Some(l);
+        }
+        let slab = local.as_ref().expect("built above");
+        let mut f = |r: f64| {
+            let s = slab.eval(r).unwrap_or_else(|| {
+                evaluations += 1;
+                rule.eval(r).value
+            });
+            sign * (s + holed.correction_midplane(r))
+        };
         let mut g = |x: f64| Ok::<f64, std::convert::Infallible>(f(x));
         let Ok(Root { x: r_o, half_width }) = brent(&mut g, a, fa, c, fc, tol, sep.max_iterations);
         let dr = (1e-4 * d).max(1e-6 * r_o);
@@ -89,11 +109,13 @@ pub fn single_plate_separation(
             // The slab's hole tractions enter the fit with their quadrature error, which the
             // residual (measured against the same data) cannot see: add its effect too.
             let data_error = holed.info().slab_error * p_ref;
-            let error = half_width + (rule.eval(r_o).error + data_error) / slope.abs() + hole_error;
+            let error = half_width
+                + (slab.error + rule.eval(r_o).error + data_error) / slope.abs()
+                + hole_error;
             let sep_info = SeparationInfo {
                 r_o,
                 error,
-                evaluations: evaluations + scan_cache.len(),
+                evaluations: evaluations + scan_cache.len() + 1,
                 slope,
                 nodes: rule.nodes(),
                 seconds: start.elapsed().as_secs_f64(),
@@ -123,4 +145,100 @@ fn first_upward_crossing(
         lo = hi;
     }
     Err(SeparationError::NotFound { searched_to: r_end })
+}
+
+/// The slab's midplane σ_z(r, 0) on one scan interval [lo, hi] by Chebyshev interpolation on
+/// the Chebyshev–Lobatto grid (see the module docs): M = 16, doubled (nested) until the last
+/// three coefficients are below the tolerance, at most 64.
+struct LocalMidplane {
+    lo: f64,
+    hi: f64,
+    coef: Vec<f64>,
+    /// Interpolation error estimate (2 × the largest of the last three coefficients).
+    error: f64,
+    /// Rule evaluations spent.
+    evaluations: usize,
+}
+
+impl LocalMidplane {
+    fn new(rule: &MidplaneRule, lo: f64, hi: f64, tol: f64) -> Self {
+        let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+        let at = |x: f64| rule.eval(mid + half * x).value;
+        let mut m = 16;
+        let mut values: Vec<f64> = lobatto_points(m).into_iter().map(at).collect();
+        let mut evaluations = values.len();
+        loop {
+            let coef = lobatto_coefficients(&values);
+            let error = 2.0 * coef[m - 2..].iter().fold(0.0f64, |e, c| e.max(c.abs()));
+            if error <= tol || m >= 64 {
+                return Self {
+                    lo,
+                    hi,
+                    coef,
+                    error,
+                    evaluations,
+                };
+            }
+            // nested doubling: the old values sit at the even points of the new grid
+            let x = lobatto_points(2 * m);
+            values = (0..=2 * m)
+                .map(|j| {
+                    if j % 2 == 0 {
+                        values[j / 2]
+                    } else {
+                        evaluations += 1;
+                        at(x[j])
+                    }
+                })
+                .collect();
+            m *= 2;
+        }
+    }
+
+    /// σ_z(r, 0) of the slab, or None outside [lo, hi].
+    fn eval(&self, r: f64) -> Option<f64> {
+        (r >= self.lo && r <= self.hi).then(|| {
+            clenshaw(
+                &self.coef,
+                (2.0 * r - self.lo - self.hi) / (self.hi - self.lo),
+            )
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::LocalMidplane;
+    use crate::hankel::field::Slab;
+    use crate::hankel::midplane::MidplaneRule;
+    use crate::load::FaceLoad;
+    use crate::material::Material;
+
+    #[test]
+    fn local_midplane_interpolates_the_rule_within_its_estimate() {
+        // Scan intervals of width D/2 around Table 1's zeros (wide and narrow load): the
+        // interpolant against the rule itself at points off the grid, within the interpolant's
+        // estimate plus rounding of the rule's sum (~1e-15 of its scale).
+        for (b, d) in [(0.31, 0.1), (0.13, 0.2)] {
+            let slab = Slab::new(
+                d,
+                Material::unit(0.3).unwrap(),
+                FaceLoad::uniform(0.0, b, 1.0).unwrap(),
+            )
+            .unwrap();
+            let rule = MidplaneRule::new(&slab, b + 12.0 * d, 1e-13).unwrap();
+            for k in [2.0, 5.0] {
+                let lo = b + 0.5 * k * d;
+                let hi = lo + 0.5 * d;
+                let l = LocalMidplane::new(&rule, lo, hi, 1e-12);
+                assert!(l.error <= 1e-12, "estimate {:e}", l.error);
+                for i in 0..40 {
+                    let r = lo + (hi - lo) * (i as f64 + 0.37) / 40.0;
+                    let diff = (l.eval(r).unwrap() - rule.eval(r).value).abs();
+                    assert!(diff <= l.error + 1e-14, "r {r}: {diff:e} vs {:e}", l.error);
+                }
+                assert!(l.eval(lo - 1e-9).is_none() && l.eval(hi + 1e-9).is_none());
+            }
+        }
+    }
 }
