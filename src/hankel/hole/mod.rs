@@ -46,7 +46,7 @@
 //! slope: the fit cannot see an error in its own data, so it is added in full.
 //!
 //! **Cost** (R_o to 1e-6, default parameters, A = 0.1, ν = 0.3; minimum of 21 runs, and
-//! example 17, on a shared 2-core machine at load 3–5, so medians run 10–50 % higher). The
+//! example 18, on a shared 2-core machine at load 3–5, so medians run 10–50 % higher). The
 //! slab's traction on the hole is computed once, at M/2 + 1 Chebyshev–Lobatto heights (M =
 //! 24–72 on Table 1, predicted from the load edge's distance to the hole, [`profile`]), 4–12
 //! thousand ξ-nodes, 1.5–4.5 ms; then each N costs its fit (SVD), the residual check and a root
