@@ -62,16 +62,16 @@ pub struct Kernels {
 }
 
 /// Smallest t used (kernels are continuous at t = 0; this avoids 0/0).
-const T_MIN: f64 = 1e-300;
+pub(crate) const T_MIN: f64 = 1e-300;
 
 /// Scaled sinh and cosh: (S, C) with sinh x = eˣ S, cosh x = eˣ C, for x ≥ 0.
-fn scaled(x: f64) -> (f64, f64) {
+pub(crate) fn scaled(x: f64) -> (f64, f64) {
     let e2 = (-2.0 * x).exp();
     (-0.5 * (-2.0 * x).exp_m1(), 0.5 * (1.0 + e2))
 }
 
 /// Q(t) = e^(−2t)·2Δ(t) = 1 − e^(−4t) + 4t e^(−2t).
-fn q(t: f64) -> f64 {
+pub(crate) fn q(t: f64) -> f64 {
     -(-4.0 * t).exp_m1() + 4.0 * t * (-2.0 * t).exp()
 }
 

@@ -40,6 +40,7 @@
 pub mod field;
 pub mod hole;
 pub mod kernel;
+pub mod kernel_shear;
 pub mod layer;
 pub mod midplane;
 pub mod quadrature;

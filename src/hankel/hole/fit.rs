@@ -62,6 +62,10 @@ pub struct Boundary<'a> {
     pub r: f64,
     /// Slab traction at heights from the face down to the midplane.
     pub data: &'a [HoleData],
+    /// Extra real columns (the corner enrichment, [`super::corner`]) at the same heights: for
+    /// height i, `extra[2Mi..2Mi + M]` their σ_r and `extra[2Mi + M..2M(i + 1)]` their τ_rz,
+    /// M = [`Fit::extra`]`.len()` (empty when there are none).
+    pub extra: &'a [f64],
 }
 
 /// Fitted amplitudes and the quality of the fit.
@@ -75,6 +79,8 @@ pub struct Fit {
     pub uniform: f64,
     /// Complex amplitudes c_k: mode k contributes Re(c_k F_k).
     pub modes: Vec<Complex64>,
+    /// Amplitudes of the extra real columns of [`Boundary::extra`].
+    pub extra: Vec<f64>,
     /// Condition number of the column-scaled collocation matrix.
     pub condition: f64,
     /// Singular values dropped as below 1e-14 of the largest.
@@ -82,18 +88,24 @@ pub struct Fit {
 }
 
 /// The least-squares amplitudes cancelling the slab's traction on every boundary with `modes`,
-/// the Lamé field of the hole radius `a`, and (if `uniform`) the uniform in-plane state.
-pub fn fit(modes: &[Mode], a: f64, uniform: bool, boundaries: &[Boundary]) -> Fit {
+/// the Lamé field of the hole radius `a`, (if `uniform`) the uniform in-plane state, and
+/// `columns` extra real fields given on the boundaries ([`Boundary::extra`]).
+pub fn fit(modes: &[Mode], a: f64, uniform: bool, columns: usize, boundaries: &[Boundary]) -> Fit {
     let extra = 1 + usize::from(uniform);
-    let n = extra + 2 * modes.len();
+    let first_extra = extra + 2 * modes.len();
+    let n = first_extra + columns;
     let rows = 2 * boundaries.iter().map(|b| b.data.len()).sum::<usize>();
     let mut m = DMatrix::<f64>::zeros(rows, n);
     let mut rhs = DVector::<f64>::zeros(rows);
     let mut i = 0;
     for bd in boundaries {
         let radial: Vec<_> = modes.iter().map(|md| md.radial(bd.r)).collect();
-        for p in bd.data {
+        for (h, p) in bd.data.iter().enumerate() {
             m[(i, 0)] = -(a / bd.r) * (a / bd.r); // Lamé σ_r, τ = 0
+            for c in 0..columns {
+                m[(i, first_extra + c)] = bd.extra[2 * columns * h + c];
+                m[(i + 1, first_extra + c)] = bd.extra[2 * columns * h + columns + c];
+            }
             if uniform {
                 m[(i, 1)] = 1.0;
             }
@@ -141,13 +153,15 @@ pub fn fit(modes: &[Mode], a: f64, uniform: bool, boundaries: &[Boundary]) -> Fi
         modes: (0..modes.len())
             .map(|k| Complex64::new(c[extra + 2 * k], -c[extra + 2 * k + 1]))
             .collect(),
+        extra: c[first_extra..].to_vec(),
         condition: smax / smin,
         dropped: n - kept,
     }
 }
 
 impl Fit {
-    /// The correction's traction (σ_r, τ_rz) on the cylinder of radius r at height z.
+    /// The Lamé and mode part of the correction's traction (σ_r, τ_rz) on the cylinder of
+    /// radius r at height z (without the extra columns, which are known only where given).
     pub fn traction(&self, modes: &[Mode], r: f64, z: f64) -> (f64, f64) {
         let radial: Vec<_> = modes.iter().map(|m| m.radial(r)).collect();
         self.traction_at(modes, &radial, r, z)
@@ -179,8 +193,13 @@ impl Fit {
         let data = boundary.data;
         let last = data.len() - 1;
         let radial: Vec<_> = modes.iter().map(|m| m.radial(boundary.r)).collect();
+        let m = self.extra.len();
         for (i, p) in data.iter().enumerate() {
-            let (sr, tau) = self.traction_at(modes, &radial, boundary.r, p.z);
+            let (mut sr, mut tau) = self.traction_at(modes, &radial, boundary.r, p.z);
+            for (c, x) in self.extra.iter().enumerate() {
+                sr += x * boundary.extra[2 * m * i + c];
+                tau += x * boundary.extra[2 * m * i + m + c];
+            }
             let r = (p.sigma_r + sr).hypot(p.tau_rz + tau);
             max = max.max(r);
             let w = if i == 0 || i == last { 0.5 } else { 1.0 };

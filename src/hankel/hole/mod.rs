@@ -64,6 +64,9 @@
 
 pub mod bessel_i;
 pub mod bessel_k;
+pub mod bessel_nu;
+pub mod corner;
+pub mod corner_quad;
 pub mod eigen;
 pub mod fit;
 pub mod plate;
@@ -93,6 +96,9 @@ pub struct HoleParams {
     /// [`single_plate_separation`] stops doubling N when two successive changes of R_o are
     /// below this fraction of R_o (default 1e-6), or when the residual target is met.
     pub r_o_tolerance: f64,
+    /// Williams exponents of the corner (A, ±D) whose singular fields enrich the fit
+    /// ([`corner`]: four real columns each; 0 fits modes only). Default 2.
+    pub corner_roots: usize,
 }
 
 impl Default for HoleParams {
@@ -104,6 +110,7 @@ impl Default for HoleParams {
             max_terms: 64,
             slab_tolerance: 1e-8,
             r_o_tolerance: 1e-6,
+            corner_roots: 2,
         }
     }
 }
@@ -128,6 +135,13 @@ impl HoleParams {
         }
         if self.max_terms > 512 {
             return Err(bad("hole max_terms", self.max_terms));
+        }
+        if self.corner_roots > 6 {
+            return Err(InputError::Parameter {
+                field: "hole corner_roots",
+                value: self.corner_roots as f64,
+                reason: "must lie in 0..=6",
+            });
         }
         Ok(())
     }
@@ -171,6 +185,8 @@ pub struct HoleInfo {
     pub slab_error: f64,
     /// Integrand evaluations spent on the slab's hole tractions.
     pub slab_evaluations: usize,
+    /// Williams corner exponents enriched (4 real columns each; see [`HoleParams::corner_roots`]).
+    pub corner_roots: usize,
     /// Every N tried, in order.
     pub history: Vec<HoleLevel>,
     /// Wall-clock seconds of the correction.
