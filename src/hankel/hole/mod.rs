@@ -98,7 +98,7 @@ pub struct HoleParams {
     pub r_o_tolerance: f64,
     /// Williams exponents of the corner (A, ±D) whose singular fields enrich the fit
     /// ([`corner`]: four real columns each; 0 fits modes only). Default 2.
-    pub corner_roots: usize,
+    pub corner_terms: usize,
 }
 
 impl Default for HoleParams {
@@ -110,7 +110,7 @@ impl Default for HoleParams {
             max_terms: 64,
             slab_tolerance: 1e-8,
             r_o_tolerance: 1e-6,
-            corner_roots: 2,
+            corner_terms: 3,
         }
     }
 }
@@ -136,10 +136,10 @@ impl HoleParams {
         if self.max_terms > 512 {
             return Err(bad("hole max_terms", self.max_terms));
         }
-        if self.corner_roots > 6 {
+        if self.corner_terms > 6 {
             return Err(InputError::Parameter {
-                field: "hole corner_roots",
-                value: self.corner_roots as f64,
+                field: "hole corner_terms",
+                value: self.corner_terms as f64,
                 reason: "must lie in 0..=6",
             });
         }
@@ -185,8 +185,8 @@ pub struct HoleInfo {
     pub slab_error: f64,
     /// Integrand evaluations spent on the slab's hole tractions.
     pub slab_evaluations: usize,
-    /// Williams corner exponents enriched (4 real columns each; see [`HoleParams::corner_roots`]).
-    pub corner_roots: usize,
+    /// Williams corner exponents enriched (4 real columns each; see [`HoleParams::corner_terms`]).
+    pub corner_terms: usize,
     /// Every N tried, in order.
     pub history: Vec<HoleLevel>,
     /// Wall-clock seconds of the correction.

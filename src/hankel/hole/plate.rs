@@ -89,7 +89,7 @@ pub struct HolePlate {
     max_terms: usize,
     info: HoleInfo,
     /// Corner exponents enriched ([`super::corner`]; 0: none).
-    corner_roots: usize,
+    corner_terms: usize,
     corner: Option<CornerLoads>,
     /// The enrichment's traction columns on the hole (and the rim) by height (bits of z).
     corner_cache: HashMap<u64, Vec<f64>>,
@@ -151,7 +151,7 @@ impl HolePlate {
             p_ref,
             max_terms: params.terms.unwrap_or(params.max_terms).max(n),
             info: HoleInfo::default(),
-            corner_roots: params.corner_roots,
+            corner_terms: params.corner_terms,
             corner: None,
             corner_cache: HashMap::new(),
             corner_rim_cache: HashMap::new(),
@@ -215,7 +215,10 @@ impl HolePlate {
     /// Fits N = `n` modes: samples the slab on the new heights, solves, measures the residual.
     fn solve(&mut self, n: usize) {
         let d = self.slab.half_thickness();
-        let z = heights(d, 4 * n);
+        // 2N + 1 collocation heights (between them the check heights) for modes only; with the
+        // corner enrichment 4N + 1, so that its 4 columns per exponent keep the system ~2× overdetermined
+        let per_mode = if self.corner_terms > 0 { 8 } else { 4 };
+        let z = heights(d, per_mode * n);
         let old = std::mem::take(&mut self.grid);
         self.grid = self.sample(self.a, old, &z);
         if let Some(c) = self.rim {
@@ -236,8 +239,8 @@ impl HolePlate {
                 .map(|x| Mode::growing(*x, c, d, nu, g));
             self.modes.extend(growing);
         }
-        if self.corner.is_none() && self.corner_roots > 0 {
-            self.corner = Some(CornerLoads::new(a, d, nu, g, self.corner_roots));
+        if self.corner.is_none() && self.corner_terms > 0 {
+            self.corner = Some(CornerLoads::new(a, d, nu, g, self.corner_terms));
         }
         let columns = 4 * self.corner.as_ref().map_or(0, |c| c.count());
         let hole_extra = self.corner_columns(a, &z, false);
@@ -305,7 +308,7 @@ impl HolePlate {
             rim_residual_max: rim_residual,
             condition: f.condition,
         };
-        self.info.corner_roots = self.corner_roots;
+        self.info.corner_terms = self.corner_terms;
         self.info.history.push(level);
         self.info.terms = n;
         self.info.collocation_points = level.collocation_points;
