@@ -36,3 +36,11 @@ for z in [mp.mpc(0.3, 0.2), mp.mpc(2.7395934, 1.1190245), mp.mpc(-0.5, 0), mp.mp
     # compare exp(ln Gamma): print Gamma itself
     g = mp.gamma(z)
     print(",".join(["G"] + [mp.nstr(t, 20) for t in (z.real, z.imag, 0, g.real, g.imag)]))
+# kind E: generalised exponential integral E_p(w) = w^(p-1) Gamma(1-p, w) (mpmath expint), with
+# p in the re_nu, im_nu columns and w = x + i*(value in the re column of a preceding W row)
+for p in [mp.mpc(2.7395934, 1.1190245), mp.mpc(6.7395934, 1.1190245), mp.mpc(21.7395934, 1.1190245)]:
+    for w in [mp.mpc(0.3, 0), mp.mpc(0.9, -0.2), mp.mpc(4.0, 0), mp.mpc(0, 30.0), mp.mpc(0, -30.0), mp.mpc(0.05, 70.0),
+              mp.mpc(25.0, -3.0), mp.mpc(2.0, 12.0)]:
+        v = mp.expint(p, w)
+        print(",".join(["W"] + [mp.nstr(t, 20) for t in (w.real, w.imag, 0, 0, 0)]))
+        print(",".join(["E"] + [mp.nstr(t, 20) for t in (p.real, p.imag, 0, v.real, v.imag)]))
