@@ -139,6 +139,17 @@ pub struct CornerLoads {
     shear: Vec<NormalBessel>,
     /// ξ beyond which the closed-form tail is used.
     x_cut: f64,
+    /// The finite-part nodes for the hole r = A, with the transforms there (computed once).
+    hole_nodes: Vec<Node>,
+}
+
+/// A node of the finite-part rule: ξ, weight, J₀(ξr), J₁(ξr), (q̄_k, s̄_k) for every exponent.
+#[derive(Debug, Clone)]
+struct Node {
+    xi: f64,
+    weight: f64,
+    bessel: [f64; 2],
+    transforms: Vec<(Complex64, Complex64)>,
 }
 
 impl CornerLoads {
@@ -150,7 +161,7 @@ impl CornerLoads {
             .iter()
             .map(|l| (l + 1.0).norm_sqr().max(30.0) / a)
             .fold(20.0 / d, f64::max);
-        Self {
+        let mut loads = Self {
             a,
             d,
             nu,
@@ -159,7 +170,41 @@ impl CornerLoads {
             shear: lams.iter().map(|l| NormalBessel::new(l + 1.0)).collect(),
             lams,
             x_cut,
+            hole_nodes: Vec::new(),
+        };
+        loads.hole_nodes = loads.nodes(a);
+        loads
+    }
+
+    /// The finite-part rule for radius r: panels no wider than π/(A + r) and 1.5/D on [0, X],
+    /// X the first panel end beyond `x_cut`, 20 Gauss–Legendre points each. Returns the nodes
+    /// and X.
+    fn nodes(&self, r: f64) -> Vec<Node> {
+        let h = (PI / (self.a + r)).min(1.5 / self.d);
+        let panels = (self.x_cut / h).ceil() as usize;
+        let rule = gauss_legendre(20);
+        let mut out = Vec::with_capacity(panels * rule.len());
+        for p in 0..panels {
+            let c0 = (p as f64 + 0.5) * h;
+            for &(x, w) in rule.iter() {
+                let xi = c0 + 0.5 * h * x;
+                out.push(Node {
+                    xi,
+                    weight: 0.5 * h * w,
+                    bessel: [libm::j0(xi * r), libm::j1(xi * r)],
+                    transforms: (0..self.lams.len())
+                        .map(|k| self.transforms(k, xi))
+                        .collect(),
+                });
+            }
         }
+        out
+    }
+
+    /// The end X of the finite part of the rule for radius r.
+    fn x_end(&self, r: f64) -> f64 {
+        let h = (PI / (self.a + r)).min(1.5 / self.d);
+        (self.x_cut / h).ceil() * h
     }
 
     /// Number of exponents (each gives 4 real fields).
@@ -225,40 +270,35 @@ impl CornerLoads {
         let mut out = vec![vec![vec![[zero; 2]; comps.len()]; nl]; zs.len()];
         let ts: Vec<Vec<Term>> = comps.iter().map(|c| terms(*c, r, self.g)).collect();
         let az: Vec<f64> = zs.iter().map(|z| z.abs().min(d)).collect();
-        // finite part: panels on [0, X]
-        let h = (PI / (a + r)).min(1.5 / d);
-        let panels = (self.x_cut / h).ceil() as usize;
-        let x_end = panels as f64 * h;
-        let rule = gauss_legendre(20);
-        let mut tr = vec![(zero, zero); nl];
-        for p in 0..panels {
-            let c0 = (p as f64 + 0.5) * h;
-            for &(x, w) in rule.iter() {
-                let xi = c0 + 0.5 * h * x;
-                let wt = 0.5 * h * w;
-                for (k, t) in tr.iter_mut().enumerate() {
-                    *t = self.transforms(k, xi);
-                }
-                let bes = [libm::j0(xi * r), libm::j1(xi * r)];
-                for (hi, &zh) in az.iter().enumerate() {
-                    let kn = Kernels::at(xi * d, xi * zh, nu);
-                    let ks = ShearKernels::at(xi * d, xi * zh, nu);
-                    let kv = [
-                        [kn.z, kn.tau, kn.r, kn.m, kn.n, kn.w],
-                        [ks.z, ks.tau, ks.r, ks.m, ks.n, ks.w],
-                    ];
-                    for (ci, tc) in ts.iter().enumerate() {
-                        let mut v = [0.0; 2];
-                        for &(coef, q, n, ki) in tc {
-                            let base = coef * if q == 1 { xi } else { 1.0 } * bes[n] * wt;
-                            v[0] += base * kv[0][ki];
-                            v[1] -= base * kv[1][ki];
-                        }
-                        for (k, (qn, qs)) in tr.iter().enumerate() {
-                            let o = &mut out[hi][k][ci];
-                            o[0] += qn * v[0];
-                            o[1] += qs * v[1];
-                        }
+        // finite part on [0, X] (the hole's nodes are computed once)
+        let x_end = self.x_end(r);
+        let fresh;
+        let nodes = if r == a {
+            &self.hole_nodes
+        } else {
+            fresh = self.nodes(r);
+            &fresh
+        };
+        for node in nodes {
+            let (xi, wt, bes, tr) = (node.xi, node.weight, node.bessel, &node.transforms);
+            for (hi, &zh) in az.iter().enumerate() {
+                let kn = Kernels::at(xi * d, xi * zh, nu);
+                let ks = ShearKernels::at(xi * d, xi * zh, nu);
+                let kv = [
+                    [kn.z, kn.tau, kn.r, kn.m, kn.n, kn.w],
+                    [ks.z, ks.tau, ks.r, ks.m, ks.n, ks.w],
+                ];
+                for (ci, tc) in ts.iter().enumerate() {
+                    let mut v = [0.0; 2];
+                    for &(coef, q, n, ki) in tc {
+                        let base = coef * if q == 1 { xi } else { 1.0 } * bes[n] * wt;
+                        v[0] += base * kv[0][ki];
+                        v[1] -= base * kv[1][ki];
+                    }
+                    for (k, (qn, qs)) in tr.iter().enumerate() {
+                        let o = &mut out[hi][k][ci];
+                        o[0] += qn * v[0];
+                        o[1] += qs * v[1];
                     }
                 }
             }

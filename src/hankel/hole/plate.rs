@@ -297,7 +297,8 @@ impl HolePlate {
             .map(|x| [Complex64::new(x[0], -x[1]), Complex64::new(x[2], -x[3])])
             .collect();
         if let Some(corner) = &self.corner {
-            let r_max = self.slab.transform().outer().max(a) + 40.0 * d;
+            // the R_o scan reaches B + 12D by default; beyond r_max the direct integral is used
+            let r_max = self.slab.transform().outer().max(a) + 15.0 * d;
             self.corner_midplane = corner.midplane(&self.corner_amplitudes, r_max);
         }
         let level = HoleLevel {
