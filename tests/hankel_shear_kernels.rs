@@ -69,7 +69,7 @@ fn faces_remainders_and_half_space_limits() {
         ];
         for (got, (al, be)) in k.iter().zip(lim) {
             assert!(
-                (got - (al + be * u) * (-u as f64).exp()).abs() < 1e-14,
+                (got - (al + be * u) * (-u).exp()).abs() < 1e-14,
                 "u {u}: {k:?}"
             );
         }

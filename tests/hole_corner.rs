@@ -128,9 +128,8 @@ fn faces_carry_exactly_the_loads() {
     for r in [0.05, 0.09, 0.0999, 0.1, 0.1001, 0.13, 0.3] {
         for z in [d, -d] {
             let f = loads.fields(r, &[z], &[Component::SigmaZ, Component::TauRz]);
-            for k in 0..3 {
+            for (k, c) in f[0].iter().enumerate() {
                 let (q, s) = loads.loads(k, r);
-                let c = &f[0][k];
                 let sign = z.signum();
                 // rounding of O(1) transforms summed over ~500 nodes: 1e-14 of the load's size 1
                 let errs = [
@@ -164,8 +163,7 @@ fn face_value_at_the_corner_matches_weber_schafheitlin() {
         abs_tol: 1e-16,
         ..QuadParams::default()
     };
-    for k in 0..2 {
-        let l = loads.exponents()[k];
+    for (k, &l) in loads.exponents().iter().enumerate() {
         let rem = |shear: bool, imag: bool| {
             integrate_oscillatory(
                 |xi| {

@@ -334,12 +334,11 @@ impl CornerLoads {
                 }
             }
         }
-        for (hi, z) in zs.iter().enumerate() {
+        for (z, oh) in zs.iter().zip(out.iter_mut()) {
             if *z < 0.0 {
-                for (ci, c) in comps.iter().enumerate() {
-                    if odd(*c) {
-                        for k in 0..nl {
-                            let o = &mut out[hi][k][ci];
+                for ok in oh.iter_mut() {
+                    for (c, o) in comps.iter().zip(ok.iter_mut()) {
+                        if odd(*c) {
                             *o = [-o[0], -o[1]];
                         }
                     }

@@ -21,8 +21,20 @@
 //! On [0, X] panels no wider than a half-period π/(A + r) of the fastest oscillation and 1.5/D
 //! (the kernels' scale) carry a 20-point Gauss–Legendre rule (error ≈ 1e-25 of the amplitude, as
 //! in [`crate::hankel::midplane`]). The transforms Λ_λ(ξA), Λ_(λ+1)(ξA) and J₀, J₁ are shared by
-//! every height and component at a node. Checked in `tests/hole_corner.rs` (face conditions by
-//! Hankel inversion, the closed-form face value, equilibrium).
+//! every height and component at a node. Checked in `tests/hole_corner.rs` (E_p against mpmath,
+//! face conditions by Hankel inversion, the closed-form face value, equilibrium).
+//!
+//! ```
+//! use boltzone::hankel::hole::corner_quad::{expint, expint_sequence};
+//! use num_complex::Complex64;
+//! // E₁(1) = 0.21938393439552…, E₂(1) = e^(−1) − E₁(1) (A&S Table 5.1); the continued
+//! // fraction near |w| = 1 keeps ~1e-14
+//! let one = Complex64::new(1.0, 0.0);
+//! let e = expint_sequence(one, 2, one);
+//! assert!((e[0].re - 0.219_383_934_395_520_3).abs() < 1e-14);
+//! assert!((expint(2.0 * one, one).re - 0.148_495_506_775_922_0).abs() < 1e-14);
+//! assert!((e[1] - expint(2.0 * one, one)).norm() < 1e-14);
+//! ```
 
 use super::bessel_nu::ln_gamma;
 use num_complex::Complex64;
@@ -31,8 +43,9 @@ use std::f64::consts::PI;
 /// Terms kept in the asymptotic expansion of the Bessel products.
 pub const TAIL_TERMS: usize = 30;
 
-/// E_p(w) = ∫₁^∞ e^(−wt) t^(−p) dt for complex p (not an integer ≤ 1 when w is small) and
-/// Re w ≥ 0.
+/// E_p(w) = ∫₁^∞ e^(−wt) t^(−p) dt for Re w ≥ 0 and complex p; p must not be an integer when
+/// |w| < 1 (the series then divides by zero: NaN — the corner exponents are never integers),
+/// and Re p > 1 when w = 0. Relative accuracy ~1e-14 (the tests compare with mpmath).
 pub fn expint(p: Complex64, w: Complex64) -> Complex64 {
     if w.norm() == 0.0 {
         return 1.0 / (p - 1.0);

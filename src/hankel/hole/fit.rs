@@ -1,22 +1,27 @@
-//! Least-squares collocation of the hole traction: the amplitudes of the Lamé field and of N
-//! Papkovich–Fadle modes ([`super::eigen`]) that cancel σ_r and τ_rz of the (extended-load) slab
-//! on the hole r = A.
+//! Least-squares collocation of the hole traction: the amplitudes of the Lamé field, of N
+//! Papkovich–Fadle modes ([`super::eigen`]) and of extra given columns (the corner enrichment)
+//! that cancel σ_r and τ_rz of the (extended-load) slab on the hole r = A.
 //!
 //! **Points.** σ_r is even and τ_rz odd in z, and so is every mode: only 0 ≤ z ≤ D is fitted.
-//! Collocation heights z_j = D cos(πj/(2M)), j = 0…M, M = 2N (Chebyshev–Lobatto points of
-//! [−D, D] on its upper half, clustered at the corner z = D where the modes' traction varies
-//! fastest); check heights at the midpoints θ = π(j + ½)/(2M) — exactly the new points of the
-//! grid for 2N modes, so an adaptive doubling of N reuses every slab evaluation.
+//! Collocation heights z_j = D cos(πj/(2M)), j = 0…M (Chebyshev–Lobatto points of [−D, D] on
+//! its upper half, clustered at the corner z = D where the modes' traction varies fastest),
+//! M = 2N, or 4N with the corner enrichment; check heights at the midpoints
+//! θ = π(j + ½)/(2M) — exactly the new points of the grid for 2N modes, so an adaptive doubling
+//! of N reuses every slab evaluation.
 //!
-//! **System.** Unknowns: the Lamé amplitude c₀ and (α_k, β_k) with mode k entering as
-//! α_k Re F_k + β_k Im F_k; equations: σ_r and τ_rz at every z_j, 2(M + 1) rows for 2N + 1
-//! unknowns (twofold oversampling). With a rim r = C the same heights are used there too, and the
-//! unknowns add the uniform in-plane state and N modes growing outward. Columns are scaled to unit norm and the system is solved by
-//! the SVD (singular values below 1e-14 of the largest dropped); the condition number of the
-//! scaled matrix is reported.
+//! **System.** Unknowns: the Lamé amplitude c₀, (α_k, β_k) with mode k entering as
+//! α_k Re F_k + β_k Im F_k, and any extra real columns given on the boundaries (the corner
+//! enrichment of [`super::corner`], four per exponent); equations: σ_r and τ_rz at every z_j,
+//! 2(M + 1) rows (at least about twice the unknowns). With a rim r = C the same heights are used
+//! there too, and the unknowns add the uniform in-plane state and N modes growing outward.
+//! Columns are scaled to unit norm and the system is solved by the SVD (singular values below
+//! 1e-14 of the largest dropped); the condition number of the scaled matrix is reported (with
+//! the enrichment up to ~1e9 at N = 32: the singular fields and the modes overlap away from the
+//! corner, which the scaled SVD handles; the residual is measured, not inferred).
 //!
-//! **Residual.** The residual traction σ_r, τ_rz of slab + correction on the union of collocation
-//! and check heights, max and RMS (trapezoid in θ, the Chebyshev measure), divided by P.
+//! **Residual.** The residual traction σ_r, τ_rz of slab + correction (extra columns included)
+//! on the union of collocation and check heights, max and RMS (trapezoid in θ, the Chebyshev
+//! measure), divided by P.
 //!
 //! ```
 //! use boltzone::hankel::hole::fit::heights;

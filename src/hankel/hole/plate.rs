@@ -1,5 +1,5 @@
-//! The single plate with a hole: extended-load slab + fitted Lamé and Papkovich–Fadle modes,
-//! its fields at any (r, z), r ≥ A, and its midplane σ_z.
+//! The single plate with a hole: extended-load slab + fitted Lamé and Papkovich–Fadle modes and
+//! corner enrichment ([`super::corner`]), its fields at any (r, z), r ≥ A, and its midplane σ_z.
 //!
 //! **Extension of the load.** A load that starts at the hole edge with p(A) ≠ 0 gives the slab a
 //! logarithmically singular σ_r at the corner (A, ±D), which no smooth correction can cancel
@@ -8,7 +8,7 @@
 //! The continuation is continuous at A, so the slab field is smooth at the corner; in r ≥ A it
 //! differs from the unextended slab by the field of a load on r < A, itself a homogeneous
 //! solution there (faces free for r > A). This is the "face-pressure extension" half of the
-//! correction; the other half is the fitted modes of [`super::fit`].
+//! correction; the other half is the fitted modes and corner fields of [`super::fit`].
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
