@@ -312,3 +312,38 @@ fn traction_on_the_hole_has_the_corner_exponent() {
         );
     }
 }
+
+#[test]
+fn fields_do_not_depend_on_where_the_tail_starts() {
+    // The finite Gauss–Legendre part and the closed-form tail (Hankel expansions, E_p) must add
+    // up to the same integral wherever the split lies: moving it from the default (ξA ≈ 34) to
+    // 2× and 4× (panels and tail terms change completely) may change nothing but rounding.
+    use Component::*;
+    let (a, d) = (0.1, 0.1);
+    let base = CornerLoads::new(a, d, 0.3, 1.0, 3);
+    let x0 = base.tail_start();
+    let zs = [0.0, 0.05, 0.09, 0.099, 0.09999, 0.1, -0.07];
+    let comps = [SigmaR, SigmaTheta, SigmaZ, TauRz, U, W];
+    for r in [a, 0.13] {
+        let f0 = base.fields(r, &zs, &comps);
+        for factor in [2.0, 4.0] {
+            let moved = CornerLoads::new(a, d, 0.3, 1.0, 3).with_tail_start(factor * x0);
+            let f1 = moved.fields(r, &zs, &comps);
+            for (h0, h1) in f0.iter().zip(&f1) {
+                for (k0, k1) in h0.iter().zip(h1) {
+                    for (c0, c1) in k0.iter().zip(k1) {
+                        for kind in 0..2 {
+                            // O(0.1–1) values, rounding over ~10³ nodes: 1e-14
+                            assert!(
+                                (c0[kind] - c1[kind]).norm() < 1e-14 * (1.0 + c0[kind].norm()),
+                                "r {r} ×{factor}: {} vs {}",
+                                c0[kind],
+                                c1[kind]
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

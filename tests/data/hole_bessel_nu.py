@@ -24,7 +24,8 @@ print("kind,re_nu,im_nu,x,re,im")
 for l in lam:
     print(",".join(["R"] + [mp.nstr(v, 20) for v in (l.real, l.imag, 0, 0, 0)]))
 orders = [lam[0], lam[0] + 1, lam[1], lam[1] + 1, lam[3] + 1, mp.mpc(0.5, 0)]
-xs = [0, 0.37, 1.9, 2.1, 4.5, 9.0, 17.3, 24.9, 25.1, 40.0, 71.0, 99.0, 101.0, 350.0, 1.0e4, 1.0e6]
+xs = [0, 0.37, 1.9, 2.1, 3.3, 4.5, 6.6, 9.0, 12.5, 17.3, 20.0, 24.9, 25.1, 30.0, 33.9, 34.3, 40.0, 71.0, 99.0,
+      101.0, 350.0, 1.0e4, 1.0e6]
 for nu in orders:
     nu = mp.mpc(float(nu.real), float(nu.imag))
     for x in xs:

@@ -9,7 +9,7 @@
 //!
 //! - x ≤ 2: the power series Σ_k (−x²/4)^k/(k!(ν + 1)_k) (terms below e^x of the sum: no loss);
 //! - 2 < x < x_a = max(25, |ν|²): Miller's backward recurrence y_(k−1) = 2(ν + k)/x·y_k − y_(k+1)
-//!   (J_(ν+k) is the minimal solution, DLMF 10.74(iv)) from k = K ≈ x + 12x^(1/3) + 30, with the
+//!   (J_(ν+k) is the minimal solution, DLMF 10.74(iv)) from k = K ≈ x + 6x^(1/3) + 16, with the
 //!   Neumann normalisation (x/2)^ν = Σ_m (ν + 2m)Γ(ν + m)/m!·J_(ν+2m)(x) (DLMF 10.23.E2 at z = 0,
 //!   A&S 9.1.87), which gives Λ_ν = ν y₀ / Σ_m (ν + 2m)(ν)_m/m!·y_(2m) without any Γ;
 //! - x ≥ x_a: Hankel's expansion J_ν = ½(H⁽¹⁾ + H⁽²⁾), H^(1,2) ≈ √(2/(πx)) e^(±iω)
@@ -134,7 +134,7 @@ impl NormalBessel {
 
     fn miller(&self, x: f64) -> Complex64 {
         let nu = self.nu;
-        let m_top = ((x + 12.0 * x.cbrt() + 30.0) / 2.0).ceil() as usize;
+        let m_top = ((x + 6.0 * x.cbrt() + 16.0) / 2.0).ceil() as usize;
         let k_top = 2 * m_top;
         // weight (ν)_m/m! at m = m_top, then downward by w_(m−1) = w_m·m/(ν + m − 1)
         let mut w = Complex64::new(1.0, 0.0);

@@ -45,6 +45,7 @@ use crate::hankel::kernel_shear::ShearKernels;
 use crate::hankel::quadrature::gauss_legendre;
 use num_complex::Complex64;
 use std::f64::consts::PI;
+use std::sync::OnceLock;
 
 /// The first `n` free–free 90° wedge exponents λ (Re, Im > 0, λ = 1 excluded), alternately
 /// roots of sin(λπ/2) = −λ and = +λ, by Newton's method from the estimate
@@ -141,6 +142,9 @@ pub struct CornerLoads {
     x_cut: f64,
     /// The finite-part nodes for the hole r = A, with the transforms there (computed once).
     hole_nodes: Vec<Node>,
+    /// The midplane rule of the first r_max asked for (the fit asks again at every N).
+    #[allow(clippy::type_complexity)]
+    midplane_nodes: OnceLock<(f64, Vec<(f64, Vec<(Complex64, Complex64)>)>)>,
 }
 
 /// A node of the finite-part rule: ξ, weight, J₀(ξr), J₁(ξr), (q̄_k, s̄_k) for every exponent.
@@ -171,9 +175,24 @@ impl CornerLoads {
             lams,
             x_cut,
             hole_nodes: Vec::new(),
+            midplane_nodes: OnceLock::new(),
         };
         loads.hole_nodes = loads.nodes(a);
         loads
+    }
+
+    /// The same loads with the closed-form tail starting at ξ = `x`/A instead (it must stay in
+    /// the tail's range: xA ≥ |λ + 1|² and xD ≥ 20 — else the result is inaccurate, which is
+    /// what this is for: checking that the value does not depend on the split).
+    pub fn with_tail_start(mut self, x: f64) -> Self {
+        self.x_cut = x / self.a;
+        self.hole_nodes = self.nodes(self.a);
+        self
+    }
+
+    /// Where the closed-form tail starts, as ξA.
+    pub fn tail_start(&self) -> f64 {
+        self.x_cut * self.a
     }
 
     /// The finite-part rule for radius r: panels no wider than π/(A + r) and 1.5/D on [0, X],
@@ -364,8 +383,38 @@ impl CornerLoads {
     /// σ_z(r, 0) of Σ_k Re(c_k,p F_k,pressure + c_k,s F_k,shear) for radii up to `r_max`: the
     /// weights of a shared node set (see [`CornerMidplane`]).
     pub fn midplane(&self, amplitudes: &[[Complex64; 2]], r_max: f64) -> CornerMidplane {
+        let fresh;
+        let rule = match self.midplane_nodes.get() {
+            Some((r, nodes)) if *r == r_max => nodes,
+            _ => {
+                fresh = self.midplane_rule(r_max);
+                if self.midplane_nodes.get().is_none() {
+                    let _ = self.midplane_nodes.set((r_max, fresh.clone()));
+                }
+                &fresh
+            }
+        };
+        let nodes = rule
+            .iter()
+            .map(|(xi, parts)| {
+                let c = amplitudes
+                    .iter()
+                    .zip(parts)
+                    .map(|(amp, (p, s))| (amp[0] * p + amp[1] * s).re)
+                    .sum();
+                (*xi, c)
+            })
+            .collect();
+        CornerMidplane { nodes, r_max }
+    }
+
+    /// The midplane rule for radii up to r_max: nodes ξ_i and, per exponent, the weighted
+    /// (−w_i ξ_i q̄ K(ξ_i D), w_i ξ_i s̄ L_z(ξ_i D, 0)) (panels of at most five half-periods of
+    /// (r_max + A) and 1.5/D, 20 points each, to ξ = 45/D where K, L_z ≤ 2.5(1 + t)e^(−t) are
+    /// below 1e-17 of the load's size).
+    #[allow(clippy::type_complexity)]
+    fn midplane_rule(&self, r_max: f64) -> Vec<(f64, Vec<(Complex64, Complex64)>)> {
         let (a, d) = (self.a, self.d);
-        // K(t), L_z(t, 0) ≤ 2.5(1 + t)e^(−t): beyond t = 45 below 1e-17 of the load's size
         let x_end = 45.0 / d;
         let h = (5.0 * PI / (a + r_max)).min(1.5 / d);
         let panels = (x_end / h).ceil() as usize;
@@ -376,19 +425,21 @@ impl CornerLoads {
             for &(x, w) in rule.iter() {
                 let xi = c0 + 0.5 * h * x;
                 let t = xi * d;
+                let wt = 0.5 * h * w * xi;
                 let (kp, ks) = (
                     crate::hankel::kernel::midplane(t),
                     ShearKernels::midplane(t),
                 );
-                let mut c = 0.0;
-                for (k, amp) in amplitudes.iter().enumerate() {
-                    let (qn, qs) = self.transforms(k, xi);
-                    c += (amp[0] * qn * (-kp) + amp[1] * qs * ks).re;
-                }
-                nodes.push((xi, 0.5 * h * w * xi * c));
+                let parts = (0..self.lams.len())
+                    .map(|k| {
+                        let (qn, qs) = self.transforms(k, xi);
+                        (-wt * kp * qn, wt * ks * qs)
+                    })
+                    .collect();
+                nodes.push((xi, parts));
             }
         }
-        CornerMidplane { nodes, r_max }
+        nodes
     }
 }
 
