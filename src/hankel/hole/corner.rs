@@ -195,16 +195,30 @@ impl CornerLoads {
         self.x_cut * self.a
     }
 
-    /// The finite-part rule for radius r: panels no wider than π/(A + r) and 1.5/D on [0, X],
-    /// X the first panel end beyond `x_cut`, 20 Gauss–Legendre points each. Returns the nodes
-    /// and X.
+    /// The panel ends of the finite-part rule for radius r: no wider than a half-period
+    /// π/(A + r) of the fastest oscillation, and below ξ = 20/D (where the kernels still differ
+    /// from their half-space form) no wider than 1.5/D, their scale; up to X, the first panel
+    /// end at or beyond `x_cut`.
+    fn panel_ends(&self, r: f64) -> Vec<f64> {
+        let half = PI / (self.a + r);
+        let (near, switch) = (half.min(1.5 / self.d), 20.0 / self.d);
+        let mut ends = vec![0.0];
+        let mut x = 0.0;
+        while x < self.x_cut {
+            x += if x < switch { near } else { half };
+            ends.push(x);
+        }
+        ends
+    }
+
+    /// The finite-part rule for radius r on [`Self::panel_ends`], 20 Gauss–Legendre points per
+    /// panel, with J₀(ξr), J₁(ξr) and the transforms at each node.
     fn nodes(&self, r: f64) -> Vec<Node> {
-        let h = (PI / (self.a + r)).min(1.5 / self.d);
-        let panels = (self.x_cut / h).ceil() as usize;
         let rule = gauss_legendre(20);
-        let mut out = Vec::with_capacity(panels * rule.len());
-        for p in 0..panels {
-            let c0 = (p as f64 + 0.5) * h;
+        let ends = self.panel_ends(r);
+        let mut out = Vec::with_capacity(ends.len() * rule.len());
+        for e in ends.windows(2) {
+            let (c0, h) = (0.5 * (e[0] + e[1]), e[1] - e[0]);
             for &(x, w) in rule.iter() {
                 let xi = c0 + 0.5 * h * x;
                 out.push(Node {
@@ -222,8 +236,7 @@ impl CornerLoads {
 
     /// The end X of the finite part of the rule for radius r.
     fn x_end(&self, r: f64) -> f64 {
-        let h = (PI / (self.a + r)).min(1.5 / self.d);
-        (self.x_cut / h).ceil() * h
+        *self.panel_ends(r).last().expect("at least one panel end")
     }
 
     /// Number of exponents (each gives 4 real fields).
