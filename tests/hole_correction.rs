@@ -150,10 +150,16 @@ fn hole_free_and_faces_loaded_between_the_fitted_heights() {
     };
     // Heights that are neither collocation nor check points: the residual there is of the size
     // measured on the grid (the grid samples a smooth residual at twice the collocation density;
-    // allow 2x for the peaks between samples).
-    for zr in [0.0123, 0.333, 0.61, 0.887, 0.9711] {
+    // allow 2x for the peaks between samples). With the corner enrichment (default) the grid
+    // residual is ~1.6e-9 P; the last height lies 7e-4 D from the corner (measured there: 7e-10).
+    assert_eq!(h.info().corner_terms, 3);
+    for zr in [0.0123, 0.333, 0.61, 0.887, 0.9711, 0.9993] {
         let s = h.stress(0.1, zr * 0.1, &q);
         let t = s.sigma_r.value.hypot(s.tau_rz.value);
+        eprintln!(
+            "z/D = {zr}: {t:e} (grid residual {res:e}, quadrature {:e})",
+            s.sigma_r.error
+        );
         assert!(
             t <= 2.0 * res + s.sigma_r.error,
             "z/D = {zr}: {t:e} vs {res:e}"
