@@ -89,14 +89,51 @@ pub fn midplane_bound(t: f64) -> f64 {
     2.5 * (1.0 + t) * (-t).exp()
 }
 
+/// The t-dependent factors of every kernel at one ξ (shared by all heights there): t = ξD,
+/// the scaled S(t), C(t) and 4/Q(t).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct KernelNode {
+    /// t = ξD (at least [`T_MIN`]).
+    pub t: f64,
+    /// S(t) = sinh t·e^(−t).
+    pub st: f64,
+    /// C(t) = cosh t·e^(−t).
+    pub ct: f64,
+    /// 4/Q(t).
+    pub four_over_q: f64,
+}
+
+impl KernelNode {
+    /// The factors at t = ξD.
+    pub fn new(t: f64) -> Self {
+        let t = t.max(T_MIN);
+        let (st, ct) = scaled(t);
+        Self {
+            t,
+            st,
+            ct,
+            four_over_q: 4.0 / q(t),
+        }
+    }
+
+    /// (s clamped to [0, t], S(s), C(s), 4e^(s−t)/Q(t)) at s = ξ|z|: two exponentials.
+    pub fn height(&self, s: f64) -> (f64, f64, f64, f64) {
+        let s = s.clamp(0.0, self.t);
+        let (ss, cs) = scaled(s);
+        (s, ss, cs, self.four_over_q * (s - self.t).exp())
+    }
+}
+
 impl Kernels {
     /// All kernels at t = ξD, s = ξ|z| (s is clamped to [0, t]), Poisson's ratio `nu`.
     pub fn at(t: f64, s: f64, nu: f64) -> Kernels {
-        let t = t.max(T_MIN);
-        let s = s.clamp(0.0, t);
-        let (st, ct) = scaled(t);
-        let (ss, cs) = scaled(s);
-        let f = 4.0 * (s - t).exp() / q(t);
+        Self::at_node(&KernelNode::new(t), s, nu)
+    }
+
+    /// [`Self::at`] with the t-dependent factors given (many heights at one ξ).
+    pub fn at_node(node: &KernelNode, s: f64, nu: f64) -> Kernels {
+        let (t, st, ct) = (node.t, node.st, node.ct);
+        let (s, ss, cs, f) = node.height(s);
         Kernels {
             z: f * ((st + t * ct) * cs - s * st * ss),
             tau: f * (s * st * cs - t * ct * ss),

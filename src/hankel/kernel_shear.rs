@@ -41,7 +41,7 @@
 //! assert!(k.z.abs() < 1e-15 && (k.tau - 1.0).abs() < 1e-15);
 //! ```
 
-use super::kernel::{q, scaled, T_MIN};
+use super::kernel::{q, scaled, KernelNode, T_MIN};
 
 /// The shear-load kernels at t = ξD and s = ξ|z| (0 ≤ s ≤ t), Poisson's ratio ν. Odd kernels
 /// (τ, w) are returned for z ≥ 0; the caller applies the sign of z.
@@ -64,11 +64,13 @@ pub struct ShearKernels {
 impl ShearKernels {
     /// All kernels at t = ξD, s = ξ|z| (s is clamped to [0, t]), Poisson's ratio `nu`.
     pub fn at(t: f64, s: f64, nu: f64) -> ShearKernels {
-        let t = t.max(T_MIN);
-        let s = s.clamp(0.0, t);
-        let (st, ct) = scaled(t);
-        let (ss, cs) = scaled(s);
-        let f = 4.0 * (s - t).exp() / q(t);
+        Self::at_node(&KernelNode::new(t), s, nu)
+    }
+
+    /// [`Self::at`] with the t-dependent factors given (many heights at one ξ).
+    pub fn at_node(node: &KernelNode, s: f64, nu: f64) -> ShearKernels {
+        let (t, st, ct) = (node.t, node.st, node.ct);
+        let (s, ss, cs, f) = node.height(s);
         ShearKernels {
             z: f * (t * st * cs - s * ct * ss),
             tau: f * ((ct - t * st) * ss + s * ct * cs),

@@ -40,7 +40,7 @@
 
 use super::bessel_nu::NormalBessel;
 use super::corner_quad::{expint_table, tail, ProductSeries};
-use crate::hankel::kernel::Kernels;
+use crate::hankel::kernel::{KernelNode, Kernels};
 use crate::hankel::kernel_shear::ShearKernels;
 use crate::hankel::quadrature::gauss_legendre;
 use num_complex::Complex64;
@@ -313,9 +313,10 @@ impl CornerLoads {
         };
         for node in nodes {
             let (xi, wt, bes, tr) = (node.xi, node.weight, node.bessel, &node.transforms);
+            let kt = KernelNode::new(xi * d);
             for (hi, &zh) in az.iter().enumerate() {
-                let kn = Kernels::at(xi * d, xi * zh, nu);
-                let ks = ShearKernels::at(xi * d, xi * zh, nu);
+                let kn = Kernels::at_node(&kt, xi * zh, nu);
+                let ks = ShearKernels::at_node(&kt, xi * zh, nu);
                 let kv = [
                     [kn.z, kn.tau, kn.r, kn.m, kn.n, kn.w],
                     [ks.z, ks.tau, ks.r, ks.m, ks.n, ks.w],

@@ -297,9 +297,9 @@ impl HolePlate {
             .map(|x| [Complex64::new(x[0], -x[1]), Complex64::new(x[2], -x[3])])
             .collect();
         if let Some(corner) = &self.corner {
-            // the R_o scan reaches B + 12D by default, equilibrium checks B + 20D; beyond r_max
+            // the R_o scan reaches B + 12D by default, the equilibrium test B + 20D; beyond r_max
             // the (slower) direct integral is used
-            let r_max = self.slab.transform().outer().max(a) + 30.0 * d;
+            let r_max = self.slab.transform().outer().max(a) + 20.0 * d;
             self.corner_midplane = corner.midplane(&self.corner_amplitudes, r_max);
         }
         let level = HoleLevel {
