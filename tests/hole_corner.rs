@@ -53,6 +53,13 @@ fn normal_bessel_gamma_and_roots_match_mpmath() {
                 // Λ has no real zeros for Im ν ≠ 0: relative error is meaningful. Miller and the
                 // Hankel sums lose a few ε per term: 1e-13.
                 assert!(err < 1e-13, "Λ_{nu}({x}) = {got} vs {v}: {err:e}");
+                if nu.re > 1.0 {
+                    // the pair (Λ_(ν−1), Λ_ν) from one recurrence (the corner loads' use)
+                    let lower = NormalBessel::new(nu - 1.0);
+                    let (_, pair) = lower.eval_pair(&NormalBessel::new(nu), x);
+                    let err = (pair - v).norm() / v.norm();
+                    assert!(err < 1e-13, "pair Λ_{nu}({x}) = {pair} vs {v}: {err:e}");
+                }
             }
             "G" => {
                 let got = gamma(nu);

@@ -33,7 +33,9 @@
 //! **Overflow-free form.** With sinh x = eˣ S(x), cosh x = eˣ C(x), S = −expm1(−2x)/2,
 //! C = (1 + e^(−2x))/2 and Δ = e^(2t) Q/2, Q = −expm1(−4t) + 4t e^(−2t), every kernel is
 //! 4e^(s−t)·(polynomial in S, C, s, t)/Q with 0 ≤ s ≤ t: no exponential grows, and expm1 keeps
-//! full relative accuracy as t → 0 (Q ≈ 8t).
+//! full relative accuracy as t → 0 (Q ≈ 8t). [`KernelNode`] and [`KernelHeight`] hold the t- and
+//! s-dependent factors, so many heights at one ξ (and the shear kernels of
+//! [`super::kernel_shear`] at the same point) share them.
 //!
 //! ```
 //! use boltzone::hankel::kernel::{midplane, Kernels};
@@ -116,12 +118,31 @@ impl KernelNode {
         }
     }
 
-    /// (s clamped to [0, t], S(s), C(s), 4e^(s−t)/Q(t)) at s = ξ|z|: two exponentials.
-    pub fn height(&self, s: f64) -> (f64, f64, f64, f64) {
+    /// The s-dependent factors at s = ξ|z| (three exponentials), shared by the pressure and
+    /// shear kernels of one point.
+    pub fn height(&self, s: f64) -> KernelHeight {
         let s = s.clamp(0.0, self.t);
         let (ss, cs) = scaled(s);
-        (s, ss, cs, self.four_over_q * (s - self.t).exp())
+        KernelHeight {
+            s,
+            ss,
+            cs,
+            f: self.four_over_q * (s - self.t).exp(),
+        }
     }
+}
+
+/// The s-dependent factors of every kernel at one ξ and height ([`KernelNode::height`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct KernelHeight {
+    /// s = ξ|z| clamped to [0, t].
+    pub s: f64,
+    /// S(s).
+    pub ss: f64,
+    /// C(s).
+    pub cs: f64,
+    /// 4e^(s−t)/Q(t).
+    pub f: f64,
 }
 
 impl Kernels {
@@ -132,8 +153,13 @@ impl Kernels {
 
     /// [`Self::at`] with the t-dependent factors given (many heights at one ξ).
     pub fn at_node(node: &KernelNode, s: f64, nu: f64) -> Kernels {
+        Self::at_height(node, &node.height(s), nu)
+    }
+
+    /// [`Self::at`] with the t- and s-dependent factors given.
+    pub fn at_height(node: &KernelNode, h: &KernelHeight, nu: f64) -> Kernels {
         let (t, st, ct) = (node.t, node.st, node.ct);
-        let (s, ss, cs, f) = node.height(s);
+        let (s, ss, cs, f) = (h.s, h.ss, h.cs, h.f);
         Kernels {
             z: f * ((st + t * ct) * cs - s * st * ss),
             tau: f * (s * st * cs - t * ct * ss),

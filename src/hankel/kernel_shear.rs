@@ -41,7 +41,7 @@
 //! assert!(k.z.abs() < 1e-15 && (k.tau - 1.0).abs() < 1e-15);
 //! ```
 
-use super::kernel::{q, scaled, KernelNode, T_MIN};
+use super::kernel::{q, scaled, KernelHeight, KernelNode, T_MIN};
 
 /// The shear-load kernels at t = ξD and s = ξ|z| (0 ≤ s ≤ t), Poisson's ratio ν. Odd kernels
 /// (τ, w) are returned for z ≥ 0; the caller applies the sign of z.
@@ -69,8 +69,14 @@ impl ShearKernels {
 
     /// [`Self::at`] with the t-dependent factors given (many heights at one ξ).
     pub fn at_node(node: &KernelNode, s: f64, nu: f64) -> ShearKernels {
+        Self::at_height(node, &node.height(s), nu)
+    }
+
+    /// [`Self::at`] with the t- and s-dependent factors given (shared with the pressure
+    /// kernels of [`super::kernel::Kernels::at_height`]).
+    pub fn at_height(node: &KernelNode, h: &KernelHeight, nu: f64) -> ShearKernels {
         let (t, st, ct) = (node.t, node.st, node.ct);
-        let (s, ss, cs, f) = node.height(s);
+        let (s, ss, cs, f) = (h.s, h.ss, h.cs, h.f);
         ShearKernels {
             z: f * (t * st * cs - s * ct * ss),
             tau: f * ((ct - t * st) * ss + s * ct * cs),

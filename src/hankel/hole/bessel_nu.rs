@@ -118,6 +118,17 @@ impl NormalBessel {
         }
     }
 
+    /// (Λ_ν(x), Λ_(ν+1)(x)) with `next` the function of order ν + 1: in the recurrence's range
+    /// one backward run gives both, Λ_(ν+1) = (ν + 1)(2/x)(y₁/y₀)Λ_ν.
+    pub fn eval_pair(&self, next: &NormalBessel, x: f64) -> (Complex64, Complex64) {
+        let x = x.abs();
+        if x <= 2.0 || x >= next.x_a.max(self.x_a) {
+            return (self.eval(x), next.eval(x));
+        }
+        let (l0, y1_over_y0) = self.miller_ratio(x);
+        (l0, (self.nu + 1.0) * (2.0 / x) * y1_over_y0 * l0)
+    }
+
     fn series(&self, x: f64) -> Complex64 {
         let q = -0.25 * x * x;
         let mut term = Complex64::new(1.0, 0.0);
@@ -133,6 +144,11 @@ impl NormalBessel {
     }
 
     fn miller(&self, x: f64) -> Complex64 {
+        self.miller_ratio(x).0
+    }
+
+    /// Λ_ν(x) and y₁/y₀ = J_(ν+1)(x)/J_ν(x) by the backward recurrence.
+    fn miller_ratio(&self, x: f64) -> (Complex64, Complex64) {
         let nu = self.nu;
         let m_top = ((x + 6.0 * x.cbrt() + 16.0) / 2.0).ceil() as usize;
         let k_top = 2 * m_top;
@@ -142,12 +158,16 @@ impl NormalBessel {
             w = w * (nu + (m - 1) as f64) / m as f64;
         }
         let (mut y_next, mut y) = (Complex64::new(0.0, 0.0), Complex64::new(1e-30, 0.0));
+        let mut y1 = Complex64::new(0.0, 0.0);
         let mut sum = (nu + k_top as f64) * w * y;
         let mut m = m_top;
         for k in (1..=k_top).rev() {
             let y_prev = 2.0 * (nu + k as f64) / x * y - y_next;
             y_next = y;
             y = y_prev;
+            if k == 1 {
+                y1 = y_next;
+            }
             // y now holds y_(k−1)
             if (k - 1) % 2 == 0 {
                 w = w * m as f64 / (nu + (m - 1) as f64);
@@ -157,10 +177,11 @@ impl NormalBessel {
             if y.re.abs() + y.im.abs() > 1e200 {
                 y *= 1e-200;
                 y_next *= 1e-200;
+                y1 *= 1e-200;
                 sum *= 1e-200;
             }
         }
-        nu * y / sum
+        (nu * y / sum, y1 / y)
     }
 
     fn asymptotic(&self, x: f64) -> Complex64 {

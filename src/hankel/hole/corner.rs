@@ -262,9 +262,10 @@ impl CornerLoads {
     pub fn transforms(&self, k: usize, xi: f64) -> (Complex64, Complex64) {
         let (a, l) = (self.a, self.lams[k]);
         let x = xi * a;
+        let (ln, ls) = self.normal[k].eval_pair(&self.shear[k], x);
         (
-            a * a * self.normal[k].eval(x) / (2.0 * l),
-            a * a * x * self.shear[k].eval(x) / (4.0 * l * (l + 1.0)),
+            a * a * ln / (2.0 * l),
+            a * a * x * ls / (4.0 * l * (l + 1.0)),
         )
     }
 
@@ -315,8 +316,9 @@ impl CornerLoads {
             let (xi, wt, bes, tr) = (node.xi, node.weight, node.bessel, &node.transforms);
             let kt = KernelNode::new(xi * d);
             for (hi, &zh) in az.iter().enumerate() {
-                let kn = Kernels::at_node(&kt, xi * zh, nu);
-                let ks = ShearKernels::at_node(&kt, xi * zh, nu);
+                let kh = kt.height(xi * zh);
+                let kn = Kernels::at_height(&kt, &kh, nu);
+                let ks = ShearKernels::at_height(&kt, &kh, nu);
                 let kv = [
                     [kn.z, kn.tau, kn.r, kn.m, kn.n, kn.w],
                     [ks.z, ks.tau, ks.r, ks.m, ks.n, ks.w],
