@@ -78,7 +78,7 @@ fn corner_enrichment_makes_the_residual_fall_much_faster() {
     // only fall like N^(−1.74) (0.054 at N = 4, 9.5e-4 at N = 64). With the corner's leading
     // exponents λ₁, λ₁ + 1, λ₁ + 2 in the basis the next unresolved term is the second Williams
     // exponent, stresses ρ^(λ₂−1): the residual should fall at least like N^(−3.8). Measured
-    // (example 05): 2.8e-3, 9.0e-5, 1.1e-5, 2.9e-7 at N = 4…32, fitted slope −4.3 (−4.6 to N = 64).
+    // (example 05): 2.8e-3, 9.0e-5, 1.1e-5, 3.0e-7 at N = 4…32, fitted slope −4.3 (−4.4 to N = 64).
     let h = {
         let params = HoleParams {
             max_terms: 32,

@@ -39,7 +39,7 @@
 //! the residual falls like N^(−4) or faster (the next unresolved exponent, λ₂ = 4.8083 +
 //! 1.4639i, bounds it at N^(−3.8)): 4.7e-7 P at N = 4 for A/D = 1, B/A = 3.1 (down to the
 //! slab data's quadrature floor, ~3e-9 P, at N = 8), and for A/D = 0.5, B/A = 1.3 2.8e-3, 9.0e-5,
-//! 1.1e-5, 2.9e-7, 6.9e-9 P at N = 4 … 64. Every Table 1 geometry reaches 1e-6 P at N ≤ 32
+//! 1.1e-5, 3.0e-7, 1.3e-8 P at N = 4 … 64 (fitted rate N^(−4.4); the last near that floor). Every Table 1 geometry reaches 1e-6 P at N ≤ 32
 //! (N = 4–8 for the wide loads; the narrow ones need N = 16–32 to resolve the load edge B,
 //! 0.03–0.06 in from the hole). R_o, a few D away, converges faster still: its changes under
 //! doubling N fall below 1e-8 R_o (wide) and 1e-6 R_o (narrow) by N = 16, and it agrees with the
