@@ -14,10 +14,11 @@
 //!
 //! ```
 //! use boltzone::{Joint, Material};
-//! let j = Joint::symmetric(0.1, 0.31, 0.1, Material::unit(0.3).unwrap()).unwrap();
-//! let s = j.single_plate_substitute().unwrap();
+//! let j = Joint::symmetric(0.1, 0.31, 0.1, Material::unit(0.3)?)?;
+//! let s = j.single_plate_substitute().ok_or("unequal plates")?;
 //! assert_eq!(s.half_thickness(), 0.1);
-//! assert!(Joint::symmetric(0.1, 0.05, 0.1, Material::unit(0.3).unwrap()).is_err());
+//! assert!(Joint::symmetric(0.1, 0.05, 0.1, Material::unit(0.3)?).is_err());
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use crate::error::{non_negative, positive, InputError};

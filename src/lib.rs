@@ -22,9 +22,10 @@
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
-//! let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
-//! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3).unwrap(), load);
+//! let load = FaceLoad::uniform(0.1, 0.31, 1.0)?;
+//! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3)?, load);
 //! assert!(plate.is_ok());
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 #![warn(missing_docs)]
 

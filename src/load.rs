@@ -14,10 +14,11 @@
 //!
 //! ```
 //! use boltzone::{FaceLoad, Peak};
-//! let u = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
-//! let t = FaceLoad::triangular(0.1, 0.31, 1.0, Peak::AtA).unwrap();
+//! let u = FaceLoad::uniform(0.1, 0.31, 1.0)?;
+//! let t = FaceLoad::triangular(0.1, 0.31, 1.0, Peak::AtA)?;
 //! assert!((u.total_force() - t.total_force()).abs() < 1e-14);
 //! assert_eq!(t.pressure_at(0.31), 0.0);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use crate::error::{finite, non_negative, InputError};

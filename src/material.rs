@@ -7,11 +7,12 @@
 //!
 //! ```
 //! use boltzone::Material;
-//! let steel = Material::new(28.0e6, 0.3).unwrap();
+//! let steel = Material::new(28.0e6, 0.3)?;
 //! let (lambda, mu) = steel.lame();
 //! assert!((mu - 28.0e6 / 2.6).abs() < 1e-6);
 //! assert!((lambda - 2.0 * mu * 0.3 / 0.4).abs() < 1e-6);
 //! assert!(Material::new(1.0, 0.5).is_err()); // incompressible: not admitted
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use crate::error::{positive, InputError};

@@ -14,9 +14,10 @@
 //!     markers: vec![], x_range: (0.0, 10.0), y_range: (0.0, 100.0),
 //! };
 //! let path = std::env::temp_dir().join(format!("boltzone_doc_{}.svg", std::process::id()));
-//! write_figure(&fig, &path, (640, 480)).unwrap();
-//! assert!(std::fs::read_to_string(&path).unwrap().contains("<svg"));
-//! std::fs::remove_file(&path).unwrap();
+//! write_figure(&fig, &path, (640, 480))?;
+//! assert!(std::fs::read_to_string(&path)?.contains("<svg"));
+//! std::fs::remove_file(&path)?;
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use plotters::coord::Shift;

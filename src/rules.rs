@@ -16,10 +16,11 @@
 //!
 //! ```
 //! use boltzone::rules::{cone_radius, vdi2230_tan_phi};
-//! let r = cone_radius(0.31, 0.1, 45f64.to_radians(), f64::INFINITY).unwrap();
+//! let r = cone_radius(0.31, 0.1, 45f64.to_radians(), f64::INFINITY)?;
 //! assert!((r.radius - 0.41).abs() < 1e-15);
 //! // β_L = 2, y = 1: the logarithms vanish and tan φ = 0.362.
-//! assert!((vdi2230_tan_phi(2.0, 1.0).unwrap() - 0.362).abs() < 1e-15);
+//! assert!((vdi2230_tan_phi(2.0, 1.0)? - 0.362).abs() < 1e-15);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use crate::error::{positive, InputError};

@@ -1,6 +1,6 @@
 //! The R_o estimators on synthetic data with a known separation radius.
 
-use boltzone::contact::separation::{estimate, fitted_rate, observed_rate, NodalInterface};
+use boltzone::contact::separation::{estimate, fitted_rate, NodalInterface};
 
 /// Nodes spaced h from 0.1, pressure c√(R−r)(1 + a(R−r)), gap (r−R)^{3/2}(1 + a(r−R)).
 fn synthetic(h: f64, r_o: f64, a: f64) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
@@ -85,28 +85,13 @@ fn second_order_with_curvature_and_spread_bounds_error() {
 }
 
 #[test]
-fn observed_rate_recovers_a_power_law() {
-    // x_k = 1 + 0.3 hₖ^1.5 with h halving: rate 1.5, Richardson error exact.
+fn fitted_rate_recovers_a_power_law() {
+    // x_k = 1 + 0.3 hₖ^1.5 with h halving: the changes fall at rate 1.5 exactly.
     let xs: Vec<f64> = (0..4)
         .map(|k| 1.0 + 0.3 * 0.5f64.powi(k).powf(1.5))
         .collect();
-    let (rate, err) = observed_rate(&xs, 2.0, 3.0).unwrap();
-    assert!((rate - 1.5).abs() < 1e-12);
-    assert!((err - 0.3 * 0.125f64.powf(1.5)).abs() < 1e-14);
-    assert!(observed_rate(&xs[..2], 2.0, 3.0).is_none());
     assert!((fitted_rate(&xs, 2.0).unwrap() - 1.5).abs() < 1e-12);
     assert!(fitted_rate(&xs[..2], 2.0).is_none());
-    // Faster than the cap: the error is estimated as if the rate were the cap, and the last
-    // change may not be smaller than the one before shrunk at the cap (conservative).
-    let (rate, err) = observed_rate(&xs, 2.0, 1.0).unwrap();
-    assert!((rate - 1.5).abs() < 1e-12);
-    assert!((err - (xs[2] - xs[1]).abs() / 2.0).abs() < 1e-15);
-    // An accidentally tiny last change does not make the error tiny.
-    let (_, err) = observed_rate(&[1.0, 1.1, 1.1 + 1e-9], 2.0, 2.0).unwrap();
-    assert!((err - 0.1 / 4.0 / 3.0).abs() < 1e-12);
-    // Oscillating: the last change is the error.
-    let (_, err) = observed_rate(&[1.0, 1.1, 1.05, 1.06], 2.0, 3.0).unwrap();
-    assert!((err - 0.01).abs() < 1e-12);
 }
 
 #[test]

@@ -445,11 +445,11 @@ fn error_estimate_measures_the_actual_error() {
         )
         .unwrap();
         let actual = (s.r_o - fine.r_o).abs();
-        // The estimate is a Richardson extrapolation, not a bound: over the 12 Table 1
-        // geometries and Table 2 case 5 (welded and frictionless) the actual error was at most
-        // 1.2 times the estimate (ratios 0.11–1.20); a factor 2 leaves room for that spread.
+        // The estimate max(|d₃|, |d₂|/4, |d₁|/16) of the last value (no extrapolation) covers
+        // the actual error: over 68 design-map geometries at tolerances 2e-3 to 1e-4 the actual
+        // error was at most 0.57 of it (see the module docs of two_plate).
         assert!(
-            actual <= 2.0 * s.r_o_error + fine.r_o_error,
+            actual <= s.r_o_error + fine.r_o_error,
             "B={b} D={d}: error {actual:e} > estimate {:e}",
             s.r_o_error
         );

@@ -14,8 +14,9 @@ fn lame_convergence_example_runs() {
 
 #[test]
 fn table1_example_runs_on_two_rows() {
-    // 4 levels reach 0.05 % on the first rows (measured 0.01 %)
-    ex03::run(4, 2, 0.05).unwrap();
+    // 5 levels reach 0.05 % on the first rows by the estimate (on 4 it still carries a
+    // sixteenth of the coarsest change, ~0.07 %)
+    ex03::run(5, 2, 0.05).unwrap();
 }
 
 #[allow(dead_code)]

@@ -1,7 +1,8 @@
 //! `boltzone single`: the single-plate model (Fernlund's substitution, a plate 2D thick with a
 //! hole, loaded on both faces by a uniform pressure over A..B) and its separation radius R_o.
-//! `--method fem` runs [`boltzone::fem::single::single_plate_r_o`] (nested refinements with a
-//! Richardson error estimate); `--method hankel` runs
+//! `--method fem` runs [`boltzone::fem::single::single_plate_r_o`] (refinement levels halving the
+//! elements at A, B and the previous R_o; error estimate max(|d₃|, |d₂|/4, |d₁|/16) of the last
+//! level changes, [`boltzone::fem::single::level_estimate`]); `--method hankel` runs
 //! [`boltzone::hankel::hole::single_plate_separation`] (infinite slab + hole correction, and a
 //! rim correction when `--c` is given).
 
@@ -45,7 +46,7 @@ pub struct Args {
     /// Face loading (fem).
     #[arg(long, value_enum, default_value_t = Nut::Pressure)]
     nut: Nut,
-    /// Nested refinement levels (fem, ≥ 3 for an error estimate).
+    /// Refinement levels (fem, ≥ 3 for an error estimate).
     #[arg(long, default_value_t = 5)]
     levels: usize,
     /// Print JSON instead of text.

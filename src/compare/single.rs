@@ -1,12 +1,11 @@
 //! Adapters to the single-plate models for the comparison: R_o to a wanted relative accuracy.
 //!
 //! - [`single_fem`]: the FE model of [`crate::fem::single`] (Q9, half plate with a midplane
-//!   roller, finite rim C), refined by halving every element (nested meshes) until the error
-//!   estimate of [`last_level_estimate`] (the larger of the last change and a quarter of the
-//!   one before; no extrapolation) falls below the tolerance; at least three levels. This is an
-//!   adapter: [`crate::fem::single::single_plate_r_o`] runs a fixed number of levels, which
-//!   costs 4× per unneeded level on a design map, and extrapolates, which the irregular
-//!   convergence documented at [`last_level_estimate`] makes unsafe.
+//!   roller, finite rim C) on its refinement levels (element size halved at A, B and the
+//!   previous R_o) until the error estimate of [`crate::fem::single::level_estimate`] (the
+//!   largest of the last three changes shrunk at rate 2 per level; no extrapolation) falls
+//!   below the tolerance; at least three levels. [`crate::fem::single::single_plate_r_o`] runs the
+//!   same levels and estimate with a fixed number of levels.
 //! - [`single_hankel`]: the Hankel-transform plate with the hole correction
 //!   ([`crate::hankel::hole::single_plate_separation`]), an infinite plate: R_o with the error
 //!   estimate of that module (bracket, slab quadrature and hole residual).
@@ -14,20 +13,22 @@
 //! ```
 //! use boltzone::compare::{single::single_fem, Geometry};
 //! use boltzone::OuterRadius;
-//! let g = Geometry::from_ratios(0.1, 1.0, 3.1, 1.54, 0.3).unwrap();
-//! let (r, info) = single_fem(&g.single_plate(OuterRadius::Finite(1.54)).unwrap(), 1e-3).unwrap();
+//! let g = Geometry::from_ratios(0.1, 1.0, 3.1, 1.54, 0.3)?;
+//! let (r, info) = single_fem(&g.single_plate(OuterRadius::Finite(1.54))?, 1e-3)?;
 //! assert!(r.error <= 1e-3 * r.value && info.levels >= 3);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::Value;
-use crate::fem::single::{crossing_levels, SingleParams};
+use crate::fem::single::{crossing_levels, level_estimate, SingleParams};
 use crate::fem::FemError;
 use crate::hankel::hole::{single_plate_separation, HoleParams};
 use crate::hankel::separation::{SeparationError, SeparationParams};
 use crate::joint::SinglePlate;
 
-/// Most FE levels [`single_fem`] tries (the finest has 4⁶ times the coarsest's elements).
-pub const MAX_FEM_LEVELS: usize = 7;
+/// Most FE levels [`single_fem`] tries (the finest has 2⁻⁷ of the first's element size at the
+/// foci).
+pub const MAX_FEM_LEVELS: usize = 8;
 
 /// Sizes of the FE study.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -41,8 +42,10 @@ pub struct FemStudy {
 /// Single-plate R_o by FE to relative accuracy `tolerance` (module docs).
 pub fn single_fem(plate: &SinglePlate, tolerance: f64) -> Result<(Value, FemStudy), FemError> {
     crate::error::positive("single-plate tolerance", tolerance)?;
-    // The FE defaults (first element 0.5 D at A and B, growth 1.15) were the cheapest for
-    // 0.1 % over the map's range among coarse sizes 0.35/0.5/0.7 and growths 1.15/1.3.
+    // The FE defaults (first elements 0.5 D at the foci, growth 1.25 radially and 1.5 axially)
+    // were the cheapest for 0.1 % over 68 map points among first sizes 0.35/0.5, radial
+    // growths 1.15/1.25/1.35 and axial growths 1.3/1.5 (worst actual error 1.5e-4 against
+    // nested uniform references; the growth 1.35 needed a fifth level at 10 points).
     let params = SingleParams::default();
     let mut values: Vec<f64> = Vec::new();
     for (l, level) in crossing_levels(plate, &params)?
@@ -51,7 +54,8 @@ pub fn single_fem(plate: &SinglePlate, tolerance: f64) -> Result<(Value, FemStud
     {
         let level = level?;
         values.push(level.r_o);
-        if let Some(v) = last_level_estimate(&values) {
+        if let Some((value, error)) = level_estimate(&values) {
+            let v = Value { value, error };
             if v.error <= tolerance * v.value || l + 1 == MAX_FEM_LEVELS {
                 return Ok((
                     v,
@@ -64,25 +68,6 @@ pub fn single_fem(plate: &SinglePlate, tolerance: f64) -> Result<(Value, FemStud
         }
     }
     unreachable!("the last level returns")
-}
-
-/// The error of the last of a halving sequence: max(|d₂|, |d₁|/4) with d₂, d₁ the last two
-/// changes; `None` with fewer than three values. The value is not extrapolated: on the map's
-/// range the single-plate R_o converges irregularly (observed orders from −4 to 10 between
-/// levels, overshoots such as 0.21874, 0.22189, 0.22235, 0.22225, 0.22223 for A/D = 1,
-/// B/A = 1.3, where Richardson on the first three levels moved the value away from the limit).
-/// The last change bounds the remaining error when the rate is at least 1; |d₁|/4, what the
-/// last change would be at rate 2, guards against a last change that is small by accident.
-pub fn last_level_estimate(v: &[f64]) -> Option<Value> {
-    let n = v.len();
-    if n < 3 {
-        return None;
-    }
-    let (d1, d2) = (v[n - 2] - v[n - 3], v[n - 1] - v[n - 2]);
-    Some(Value {
-        value: v[n - 1],
-        error: d2.abs().max(0.25 * d1.abs()),
-    })
 }
 
 /// Single-plate R_o by Hankel transforms with the hole correction (infinite plate; module docs).

@@ -6,8 +6,9 @@
 //!
 //! ```no_run
 //! use boltzone::compare::{table1, CompareParams};
-//! let rows = table1::compute(&CompareParams::default(), &|| ()).unwrap();
+//! let rows = table1::compute(&CompareParams::default(), &|| ())?;
 //! print!("{}", table1::text(&rows));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::{compare_all, CompareError, CompareParams, Comparison, Geometry};

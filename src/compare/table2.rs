@@ -13,8 +13,9 @@
 //! ```no_run
 //! use boltzone::compare::table2;
 //! use boltzone::contact::two_plate::InterfaceModel;
-//! let rows = table2::compute(InterfaceModel::Welded, 5e-4, &|| ()).unwrap();
+//! let rows = table2::compute(InterfaceModel::Welded, 5e-4, &|| ())?;
 //! print!("{}", table2::text(&rows));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::{CompareError, Value};

@@ -36,9 +36,10 @@
 //! use nalgebra::{DMatrix, DVector};
 //! // Two springs of flexibility 1 on a rigid plane, one pushed in by 1, the other lifted by 1.
 //! let lcp = Lcp::frictionless(DMatrix::identity(2, 2), DVector::from_vec(vec![-1.0, 1.0]));
-//! let s = solve_lcp(&lcp, &LcpParams::default()).unwrap();
+//! let s = solve_lcp(&lcp, &LcpParams::default())?;
 //! assert!((s.force[0] - 1.0).abs() < 1e-15 && s.force[1] == 0.0);
 //! assert!(s.active == vec![true, false]);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::ContactError;

@@ -25,20 +25,21 @@
 //! use boltzone::fem::{ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
 //! use boltzone::{FaceLoad, Material};
 //! // One plate on a rigid plane, pressed on 0.1 ≤ r ≤ 0.2; the node at r = 0.15 holds it down.
-//! let r = Spacing::uniform(0.1, 1.0, 18).unwrap();
-//! let z = Spacing::uniform(0.0, 0.1, 2).unwrap();
-//! let mesh = Mesh::structured(ElementKind::Q9, &r, &[PlateSpec { z, material: 0 }]).unwrap();
-//! let load = FaceLoad::uniform(0.1, 0.2, 1.0).unwrap();
+//! let r = Spacing::uniform(0.1, 1.0, 18)?;
+//! let z = Spacing::uniform(0.0, 0.1, 2)?;
+//! let mesh = Mesh::structured(ElementKind::Q9, &r, &[PlateSpec { z, material: 0 }])?;
+//! let load = FaceLoad::uniform(0.1, 0.2, 1.0)?;
 //! let mut loads = Loads::new(mesh.n_nodes());
-//! loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, &load).unwrap();
-//! let model = Model { mesh, materials: vec![Material::unit(0.3).unwrap()], upper: 0, lower: None };
+//! loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, &load)?;
+//! let model = Model { mesh, materials: vec![Material::unit(0.3)?], upper: 0, lower: None };
 //! let window: Vec<usize> = (0..37).filter(|&i| i != 2).collect();
 //! let setup = LevelSetup { tied: &[2], window: &window, welded: false, fix_rigid: true,
 //!                          lcp: LcpParams::default(), nut: (0.1, 0.2) };
-//! let s = solve_level(&model, &setup, &Supports::new(model.mesh.n_nodes()), &loads).unwrap();
+//! let s = solve_level(&model, &setup, &Supports::new(model.mesh.n_nodes()), &loads)?;
 //! let total: f64 = s.force.iter().sum();
 //! assert!((total - load.total_force()).abs() < 1e-10 * total);
 //! assert!(s.closed[0] && !s.closed[36]); // in contact at the hole, open at the rim
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::lcp::{solve_lcp, Lcp, LcpInfo, LcpParams};

@@ -18,7 +18,8 @@
 //! use boltzone::contact::{solve_lcp, Lcp, LcpParams};
 //! use nalgebra::{DMatrix, DVector};
 //! let lcp = Lcp::frictionless(DMatrix::identity(1, 1), DVector::from_vec(vec![-2.0]));
-//! assert_eq!(solve_lcp(&lcp, &LcpParams::default()).unwrap().force[0], 2.0);
+//! assert_eq!(solve_lcp(&lcp, &LcpParams::default())?.force[0], 2.0);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 mod error;

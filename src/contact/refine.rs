@@ -11,11 +11,12 @@
 //! ```
 //! use boltzone::contact::two_plate::{solve, TwoPlateParams};
 //! use boltzone::{Joint, Material, OuterRadius};
-//! let j = Joint::symmetric(0.1, 0.2, 0.1, Material::unit(0.3).unwrap()).unwrap()
-//!     .with_outer_radius(OuterRadius::Finite(1.0)).unwrap();
-//! let s = solve(&j, &TwoPlateParams { tolerance: 1e-2, ..Default::default() }).unwrap();
+//! let j = Joint::symmetric(0.1, 0.2, 0.1, Material::unit(0.3)?)?
+//!     .with_outer_radius(OuterRadius::Finite(1.0))?;
+//! let s = solve(&j, &TwoPlateParams { tolerance: 1e-2, ..Default::default() })?;
 //! // After the first level only a few points near the edge remain LCP unknowns.
 //! assert!(s.info.levels[1..].iter().all(|l| l.window < 40 && l.attempts == 1));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::level::{solve_level, LevelSetup, LevelSolution, Model};

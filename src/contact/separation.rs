@@ -23,8 +23,9 @@
 //! let r_o = 0.2713;
 //! let p: Vec<f64> = r.iter().map(|&x| if x < r_o { (r_o - x).sqrt() } else { 0.0 }).collect();
 //! let g: Vec<f64> = r.iter().map(|&x| if x > r_o { (x - r_o).powf(1.5) } else { 0.0 }).collect();
-//! let e = estimate(&NodalInterface { radius: &r, pressure: &p, gap: &g }).unwrap();
+//! let e = estimate(&NodalInterface { radius: &r, pressure: &p, gap: &g }).ok_or("no separation")?;
 //! assert!((e.r_o - r_o).abs() < 1e-14);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 /// Nodal values along the interface, ordered by increasing radius.
@@ -93,34 +94,6 @@ pub fn estimate(data: &NodalInterface<'_>) -> Option<SeparationEstimate> {
         first_open: r[k + 1],
         spread,
     })
-}
-
-/// Observed convergence of a sequence of estimates on meshes refined by a constant factor f:
-/// returns (rate, error estimate of the last value) from the last three values x₀, x₁, x₂, with
-/// rate = log(|x₁ − x₀| / |x₂ − x₁|) / log f. The error is a Richardson estimate made
-/// conservative on purpose: with d = max(|x₂ − x₁|, |x₁ − x₀| / f^`max_rate`) (a last change
-/// that is accidentally small cannot hide the one before, shrunk at the largest rate expected),
-/// the error is d / (f^p − 1), p = min(rate, `max_rate`), when the two changes have one sign and
-/// rate ≥ 1, and d itself otherwise (not yet asymptotic). None if fewer than three values or a
-/// change vanishes exactly.
-pub fn observed_rate(values: &[f64], factor: f64, max_rate: f64) -> Option<(f64, f64)> {
-    let n = values.len();
-    if n < 3 {
-        return None;
-    }
-    let (s1, s2) = (values[n - 2] - values[n - 3], values[n - 1] - values[n - 2]);
-    let (d1, d2) = (s1.abs(), s2.abs());
-    if d2 == 0.0 || d1 == 0.0 {
-        return None;
-    }
-    let rate = (d1 / d2).ln() / factor.ln();
-    let d = d2.max(d1 / factor.powf(max_rate));
-    let err = if rate >= 1.0 && s1.signum() == s2.signum() {
-        d / (factor.powf(rate.min(max_rate)) - 1.0)
-    } else {
-        d
-    };
-    Some((rate, err))
 }
 
 /// Convergence rate fitted to a whole sequence on meshes refined by the factor f: the

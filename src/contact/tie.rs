@@ -14,12 +14,13 @@
 //! use faer::sparse::{SparseColMat, Triplet};
 //! // Two unit springs to ground, tied together: one unknown of stiffness 2.
 //! let k = SparseColMat::<usize, f64>::try_new_from_triplets(
-//!     2, 2, &[Triplet::new(0, 0, 1.0), Triplet::new(1, 1, 1.0)]).unwrap();
+//!     2, 2, &[Triplet::new(0, 0, 1.0), Triplet::new(1, 1, 1.0)])?;
 //! let t = Ties::new(2, &[(0, 1)]);
-//! let kt = t.matrix(&k).unwrap();
+//! let kt = t.matrix(&k)?;
 //! assert_eq!(kt.nrows(), 1);
 //! assert_eq!(t.restrict(&[1.0, 2.0]), vec![3.0]);
 //! assert_eq!(t.prolong(&[5.0]), vec![5.0, 5.0]);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use crate::fem::FemError;

@@ -11,15 +11,16 @@
 //! ```
 //! use boltzone::fem::*;
 //! use boltzone::Material;
-//! let r = Spacing::uniform(1.0, 2.0, 2).unwrap();
-//! let z = Spacing::uniform(0.0, 1.0, 1).unwrap();
-//! let mesh = Mesh::structured(ElementKind::Q4, &r, &[PlateSpec { z, material: 0 }]).unwrap();
+//! let r = Spacing::uniform(1.0, 2.0, 2)?;
+//! let z = Spacing::uniform(0.0, 1.0, 1)?;
+//! let mesh = Mesh::structured(ElementKind::Q4, &r, &[PlateSpec { z, material: 0 }])?;
 //! let mut s = Supports::new(mesh.n_nodes());
 //! for n in mesh.bottom(0) { s.roller_z(n); }
 //! let dofs = DofMap::new(&s);
 //! let pattern = Pattern::new(&mesh, &dofs);
-//! let k = assemble(&mesh, &[Material::unit(0.3).unwrap()], &dofs, &pattern).unwrap();
+//! let k = assemble(&mesh, &[Material::unit(0.3)?], &dofs, &pattern)?;
 //! assert_eq!(k.matrix.nrows(), dofs.n_equations());
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::dofs::{Component, DofMap};

@@ -24,10 +24,11 @@
 //! let mut s = Supports::new(3);
 //! s.roller_z(0);
 //! s.prescribe(1, Component::R, 0.01);
-//! s.skew(2, -135.0, 0.0).unwrap();
+//! s.skew(2, -135.0, 0.0)?;
 //! let d = DofMap::new(&s);
 //! assert_eq!(d.n_equations(), 3);
 //! assert_eq!(d.equation(0, Component::Z), None);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use crate::error::InputError;

@@ -12,9 +12,10 @@
 //! use boltzone::fem::lame::{lame_error, LameCase};
 //! use boltzone::fem::ElementKind;
 //! let case = LameCase { a: 1.0, b: 2.0, nu: 0.3 };
-//! let e4 = lame_error(&case, ElementKind::Q9, 4).unwrap();
-//! let e8 = lame_error(&case, ElementKind::Q9, 8).unwrap();
+//! let e4 = lame_error(&case, ElementKind::Q9, 4)?;
+//! let e8 = lame_error(&case, ElementKind::Q9, 8)?;
 //! assert!(e8 < e4 / 6.0); // third order: 8 × per halving
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::assemble::{assemble, Pattern};

@@ -14,14 +14,15 @@
 //! ```
 //! use boltzone::fem::*;
 //! use boltzone::FaceLoad;
-//! let r = Spacing::uniform(0.1, 1.0, 7).unwrap();
-//! let z = Spacing::uniform(0.0, 0.1, 1).unwrap();
-//! let mesh = Mesh::structured(ElementKind::Q9, &r, &[PlateSpec { z, material: 0 }]).unwrap();
-//! let p = FaceLoad::uniform(0.1, 0.31, 2.0).unwrap();
+//! let r = Spacing::uniform(0.1, 1.0, 7)?;
+//! let z = Spacing::uniform(0.0, 0.1, 1)?;
+//! let mesh = Mesh::structured(ElementKind::Q9, &r, &[PlateSpec { z, material: 0 }])?;
+//! let p = FaceLoad::uniform(0.1, 0.31, 2.0)?;
 //! let mut loads = Loads::new(mesh.n_nodes());
-//! loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, &p).unwrap();
+//! loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, &p)?;
 //! let fz: f64 = loads.forces().iter().map(|f| f[1]).sum();
 //! assert!((fz + p.total_force()).abs() < 1e-13 * p.total_force());
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::element::GAUSS3;

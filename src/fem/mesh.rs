@@ -13,12 +13,13 @@
 //!
 //! ```
 //! use boltzone::fem::{ElementKind, Mesh, PlateSpec, Spacing};
-//! let r = Spacing::uniform(0.1, 1.0, 9).unwrap();
-//! let z = Spacing::uniform(0.0, 0.1, 2).unwrap();
-//! let m = Mesh::structured(ElementKind::Q9, &r, &[PlateSpec { z, material: 0 }]).unwrap();
+//! let r = Spacing::uniform(0.1, 1.0, 9)?;
+//! let z = Spacing::uniform(0.0, 0.1, 2)?;
+//! let m = Mesh::structured(ElementKind::Q9, &r, &[PlateSpec { z, material: 0 }])?;
 //! assert_eq!(m.n_nodes(), 19 * 5);
 //! assert_eq!(m.n_elements(), 18);
 //! assert_eq!(m.top(0).len(), 19);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::element::ElementKind;

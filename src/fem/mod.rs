@@ -29,13 +29,14 @@
 //! ```
 //! use boltzone::fem::single::{single_plate_r_o, SingleParams};
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
-//! let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
+//! let load = FaceLoad::uniform(0.1, 0.31, 1.0)?;
 //! let plate = SinglePlate::new(0.1, OuterRadius::Finite(1.54), 0.1,
-//!                              Material::unit(0.3).unwrap(), load).unwrap();
+//!                              Material::unit(0.3)?, load)?;
 //! let params = SingleParams { levels: 3, ..SingleParams::default() };
-//! let (r_o, info) = single_plate_r_o(&plate, &params).unwrap();
+//! let (r_o, info) = single_plate_r_o(&plate, &params)?;
 //! assert!(r_o > 0.31 && r_o < 0.6, "{r_o}");
 //! assert!(info.error_estimate < 0.01);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 pub mod assemble;

@@ -10,14 +10,15 @@
 //!
 //! ```
 //! use boltzone::fem::*;
-//! let r = Spacing::uniform(0.0, 1.0, 20).unwrap();
-//! let z = Spacing::uniform(0.0, 1.0, 20).unwrap();
-//! let mesh = Mesh::structured(ElementKind::Q4, &r, &[PlateSpec { z, material: 0 }]).unwrap();
+//! let r = Spacing::uniform(0.0, 1.0, 20)?;
+//! let z = Spacing::uniform(0.0, 1.0, 20)?;
+//! let mesh = Mesh::structured(ElementKind::Q4, &r, &[PlateSpec { z, material: 0 }])?;
 //! let dofs = DofMap::new(&Supports::new(mesh.n_nodes()));
 //! let p = nested_dissection(&mesh, &dofs);
 //! let mut seen = p.clone();
 //! seen.sort();
 //! assert!(seen.iter().enumerate().all(|(i, &v)| i == v)); // a permutation
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::dofs::{Component, DofMap};

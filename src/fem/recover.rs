@@ -14,24 +14,25 @@
 //! ```
 //! use boltzone::fem::*;
 //! use boltzone::{FaceLoad, Material};
-//! let r = Spacing::uniform(0.0, 1.0, 4).unwrap();
-//! let z = Spacing::uniform(0.0, 0.5, 2).unwrap();
-//! let mesh = Mesh::structured(ElementKind::Q9, &r, &[PlateSpec { z, material: 0 }]).unwrap();
+//! let r = Spacing::uniform(0.0, 1.0, 4)?;
+//! let z = Spacing::uniform(0.0, 0.5, 2)?;
+//! let mesh = Mesh::structured(ElementKind::Q9, &r, &[PlateSpec { z, material: 0 }])?;
 //! let mut s = Supports::new(mesh.n_nodes());
 //! for n in mesh.bottom(0) { s.roller_z(n); }
 //! for n in mesh.inner(0) { s.roller_r(n); } // the axis
 //! let mut loads = Loads::new(mesh.n_nodes());
-//! loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, &FaceLoad::uniform(0.0, 1.0, 3.0).unwrap()).unwrap();
-//! let mat = [Material::unit(0.3).unwrap()];
+//! loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, &FaceLoad::uniform(0.0, 1.0, 3.0)?)?;
+//! let mat = [Material::unit(0.3)?];
 //! let dofs = DofMap::new(&s);
-//! let k = assemble(&mesh, &mat, &dofs, &Pattern::new(&mesh, &dofs)).unwrap();
-//! let x = Factorization::new(&k.matrix, &SolveParams::default()).unwrap().solve(&dofs.gather(loads.forces()));
+//! let k = assemble(&mesh, &mat, &dofs, &Pattern::new(&mesh, &dofs))?;
+//! let x = Factorization::new(&k.matrix, &SolveParams::default())?.solve(&dofs.gather(loads.forces()));
 //! let u = dofs.expand(&x);
-//! let reac = reactions(&mesh, &mat, &u, &loads).unwrap();
+//! let reac = reactions(&mesh, &mat, &u, &loads)?;
 //! let line = mesh.bottom(0);
 //! let rz: Vec<f64> = line.iter().map(|&n| reac[n][1]).collect();
-//! let t = line_traction(&mesh, &line, &rz).unwrap();
+//! let t = line_traction(&mesh, &line, &rz)?;
 //! assert!(t.iter().all(|tz| (tz - 3.0).abs() < 1e-10)); // σ_z = −t_z = −3 everywhere
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::element::{ElementPoint, Stress};

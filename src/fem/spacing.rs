@@ -10,9 +10,10 @@
 //!
 //! ```
 //! use boltzone::fem::Spacing;
-//! let s = Spacing::graded(0.1, 1.54, &[0.31], &[0.1, 0.31], 0.01, 1.2, 0.2).unwrap();
+//! let s = Spacing::graded(0.1, 1.54, &[0.31], &[0.1, 0.31], 0.01, 1.2, 0.2)?;
 //! assert!(s.points().contains(&0.31));
 //! assert_eq!(s.refined(2).points().len(), 2 * s.points().len() - 1);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use crate::error::{finite, positive, InputError};

@@ -16,9 +16,10 @@
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::Slab};
-//! let slab = Slab::new(0.1, Material::unit(0.3).unwrap(), FaceLoad::uniform(0.1, 0.31, 1.0).unwrap()).unwrap();
+//! let slab = Slab::new(0.1, Material::unit(0.3)?, FaceLoad::uniform(0.1, 0.31, 1.0)?)?;
 //! let s = slab.stress(0.2, 0.1, &Default::default());
 //! assert!((s.sigma_z.value + 1.0).abs() < 1e-12 && s.tau_rz.value.abs() < 1e-12);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::kernel::{face_remainders, Kernels};

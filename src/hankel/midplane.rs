@@ -20,11 +20,12 @@
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{Slab, MidplaneRule}};
-//! let slab = Slab::new(0.1, Material::unit(0.3).unwrap(), FaceLoad::uniform(0.1, 0.31, 1.0).unwrap()).unwrap();
-//! let rule = MidplaneRule::new(&slab, 1.0, 1e-12).unwrap();
+//! let slab = Slab::new(0.1, Material::unit(0.3)?, FaceLoad::uniform(0.1, 0.31, 1.0)?)?;
+//! let rule = MidplaneRule::new(&slab, 1.0, 1e-12)?;
 //! let direct = slab.sigma_z(0.5, 0.0, &Default::default());
 //! let fast = rule.eval(0.5);
 //! assert!((direct.value - fast.value).abs() <= direct.error + fast.error);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::field::Slab;

@@ -34,9 +34,10 @@
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{Slab, SeparationParams}};
-//! let slab = Slab::new(0.1, Material::unit(0.3).unwrap(), FaceLoad::uniform(0.1, 0.31, 1.0).unwrap()).unwrap();
-//! let sep = slab.separation_radius(&SeparationParams::default()).unwrap();
+//! let slab = Slab::new(0.1, Material::unit(0.3)?, FaceLoad::uniform(0.1, 0.31, 1.0)?)?;
+//! let sep = slab.separation_radius(&SeparationParams::default())?;
 //! assert!(sep.r_o > 0.31 && sep.error < 1e-9);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 pub mod field;

@@ -49,12 +49,13 @@
 //! ```
 //! use boltzone::{FaceLoad, Material};
 //! use boltzone::hankel::receding::{Layer, RecedingParams};
-//! let layer = Layer::new(1.0, Material::unit(0.3).unwrap(), FaceLoad::uniform(0.0, 1.0, 1.0).unwrap()).unwrap();
-//! let contact = layer.receding_contact(&RecedingParams::default()).unwrap();
+//! let layer = Layer::new(1.0, Material::unit(0.3)?, FaceLoad::uniform(0.0, 1.0, 1.0)?)?;
+//! let contact = layer.receding_contact(&RecedingParams::default())?;
 //! assert!(contact.r_o > 1.0 && contact.info.error < 1e-8);
 //! // complementarity: pressure inside, an opening gap outside
 //! assert!(contact.solution.pressure(0.5 * contact.r_o) > 0.0);
 //! assert!(contact.solution.gap(1.2 * contact.r_o) > 0.0);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::receding_search::{root, verify, Search};

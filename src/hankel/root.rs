@@ -4,9 +4,10 @@
 //!
 //! ```
 //! use boltzone::hankel::root::brent;
-//! let mut f = |x: f64| Ok::<f64, ()>(x * x - 2.0);
-//! let r = brent(&mut f, 1.0, -1.0, 2.0, 2.0, 1e-14, 100).unwrap();
+//! let mut f = |x: f64| Ok::<f64, std::convert::Infallible>(x * x - 2.0);
+//! let r = brent(&mut f, 1.0, -1.0, 2.0, 2.0, 1e-14, 100)?;
 //! assert!((r.x - 2f64.sqrt()).abs() < 1e-13);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 /// A root and the half-width of its final bracket.

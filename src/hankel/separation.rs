@@ -14,10 +14,11 @@
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{Slab, SeparationParams}};
-//! let slab = Slab::new(0.1, Material::unit(0.3).unwrap(), FaceLoad::uniform(0.1, 0.31, 1.0).unwrap()).unwrap();
-//! let s = slab.separation_radius(&SeparationParams::default()).unwrap();
+//! let slab = Slab::new(0.1, Material::unit(0.3)?, FaceLoad::uniform(0.1, 0.31, 1.0)?)?;
+//! let s = slab.separation_radius(&SeparationParams::default())?;
 //! let at = |r: f64| slab.sigma_z(r, 0.0, &Default::default()).value;
 //! assert!(at(s.r_o - 1e-6) < 0.0 && at(s.r_o + 1e-6) > 0.0);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::field::Slab;

@@ -9,9 +9,10 @@
 //!
 //! ```
 //! use boltzone::{FaceLoad, hankel::transform::LoadTransform};
-//! let t = LoadTransform::new(&FaceLoad::uniform(0.1, 0.31, 1.0).unwrap());
+//! let t = LoadTransform::new(&FaceLoad::uniform(0.1, 0.31, 1.0)?);
 //! // p̄(0) = ∫ p r dr = (B² − A²)/2
 //! assert!((t.eval(0.0) - (0.31f64.powi(2) - 0.01) / 2.0).abs() < 1e-16);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use crate::hankel::quadrature::{gauss_legendre, panel, Estimate};

@@ -15,8 +15,9 @@
 //! ```
 //! use boltzone::fem::element::ElementKind;
 //! let x = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
-//! let k = ElementKind::Cst4.stiffness(&x, &boltzone::Material::unit(0.25).unwrap());
+//! let k = ElementKind::Cst4.stiffness(&x, &boltzone::Material::unit(0.25)?);
 //! assert_eq!(k.len(), 64);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::{add_btdb, apply_d, mirror_upper, strain, ElementPoint, Stress};

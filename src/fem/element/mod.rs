@@ -23,8 +23,9 @@
 //! use boltzone::fem::element::ElementKind;
 //! use boltzone::Material;
 //! let x = [[1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]];
-//! let k = ElementKind::Q4.stiffness(&x, &Material::unit(0.3).unwrap());
+//! let k = ElementKind::Q4.stiffness(&x, &Material::unit(0.3)?);
 //! assert!((k[1] - k[8]).abs() < 1e-15 * k[0].abs()); // symmetric
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 pub mod cst4;
