@@ -33,7 +33,9 @@
 //! **Overflow-free form.** With sinh x = eˣ S(x), cosh x = eˣ C(x), S = −expm1(−2x)/2,
 //! C = (1 + e^(−2x))/2 and Δ = e^(2t) Q/2, Q = −expm1(−4t) + 4t e^(−2t), every kernel is
 //! 4e^(s−t)·(polynomial in S, C, s, t)/Q with 0 ≤ s ≤ t: no exponential grows, and expm1 keeps
-//! full relative accuracy as t → 0 (Q ≈ 8t).
+//! full relative accuracy as t → 0 (Q ≈ 8t). [`KernelNode`] and [`KernelHeight`] hold the t- and
+//! s-dependent factors, so many heights at one ξ (and the shear kernels of
+//! [`super::kernel_shear`] at the same point) share them.
 //!
 //! ```
 //! use boltzone::hankel::kernel::{midplane, Kernels};
@@ -62,16 +64,16 @@ pub struct Kernels {
 }
 
 /// Smallest t used (kernels are continuous at t = 0; this avoids 0/0).
-const T_MIN: f64 = 1e-300;
+pub(crate) const T_MIN: f64 = 1e-300;
 
 /// Scaled sinh and cosh: (S, C) with sinh x = eˣ S, cosh x = eˣ C, for x ≥ 0.
-fn scaled(x: f64) -> (f64, f64) {
+pub(crate) fn scaled(x: f64) -> (f64, f64) {
     let e2 = (-2.0 * x).exp();
     (-0.5 * (-2.0 * x).exp_m1(), 0.5 * (1.0 + e2))
 }
 
 /// Q(t) = e^(−2t)·2Δ(t) = 1 − e^(−4t) + 4t e^(−2t).
-fn q(t: f64) -> f64 {
+pub(crate) fn q(t: f64) -> f64 {
     -(-4.0 * t).exp_m1() + 4.0 * t * (-2.0 * t).exp()
 }
 
@@ -89,14 +91,75 @@ pub fn midplane_bound(t: f64) -> f64 {
     2.5 * (1.0 + t) * (-t).exp()
 }
 
+/// The t-dependent factors of every kernel at one ξ (shared by all heights there): t = ξD,
+/// the scaled S(t), C(t) and 4/Q(t).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct KernelNode {
+    /// t = ξD (at least [`T_MIN`]).
+    pub t: f64,
+    /// S(t) = sinh t·e^(−t).
+    pub st: f64,
+    /// C(t) = cosh t·e^(−t).
+    pub ct: f64,
+    /// 4/Q(t).
+    pub four_over_q: f64,
+}
+
+impl KernelNode {
+    /// The factors at t = ξD.
+    pub fn new(t: f64) -> Self {
+        let t = t.max(T_MIN);
+        let (st, ct) = scaled(t);
+        Self {
+            t,
+            st,
+            ct,
+            four_over_q: 4.0 / q(t),
+        }
+    }
+
+    /// The s-dependent factors at s = ξ|z| (three exponentials), shared by the pressure and
+    /// shear kernels of one point.
+    pub fn height(&self, s: f64) -> KernelHeight {
+        let s = s.clamp(0.0, self.t);
+        let (ss, cs) = scaled(s);
+        KernelHeight {
+            s,
+            ss,
+            cs,
+            f: self.four_over_q * (s - self.t).exp(),
+        }
+    }
+}
+
+/// The s-dependent factors of every kernel at one ξ and height ([`KernelNode::height`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct KernelHeight {
+    /// s = ξ|z| clamped to [0, t].
+    pub s: f64,
+    /// S(s).
+    pub ss: f64,
+    /// C(s).
+    pub cs: f64,
+    /// 4e^(s−t)/Q(t).
+    pub f: f64,
+}
+
 impl Kernels {
     /// All kernels at t = ξD, s = ξ|z| (s is clamped to [0, t]), Poisson's ratio `nu`.
     pub fn at(t: f64, s: f64, nu: f64) -> Kernels {
-        let t = t.max(T_MIN);
-        let s = s.clamp(0.0, t);
-        let (st, ct) = scaled(t);
-        let (ss, cs) = scaled(s);
-        let f = 4.0 * (s - t).exp() / q(t);
+        Self::at_node(&KernelNode::new(t), s, nu)
+    }
+
+    /// [`Self::at`] with the t-dependent factors given (many heights at one ξ).
+    pub fn at_node(node: &KernelNode, s: f64, nu: f64) -> Kernels {
+        Self::at_height(node, &node.height(s), nu)
+    }
+
+    /// [`Self::at`] with the t- and s-dependent factors given.
+    pub fn at_height(node: &KernelNode, h: &KernelHeight, nu: f64) -> Kernels {
+        let (t, st, ct) = (node.t, node.st, node.ct);
+        let (s, ss, cs, f) = (h.s, h.ss, h.cs, h.f);
         Kernels {
             z: f * ((st + t * ct) * cs - s * st * ss),
             tau: f * (s * st * cs - t * ct * ss),

@@ -5,6 +5,8 @@
 //!
 //! - [`quadrature`]: ∫₀^∞ f(ξ) dξ for oscillatory f (partition–extrapolation, Wynn's ε);
 //! - [`kernel`]: the slab's Hankel kernels in overflow-free form, with their derivation;
+//!   [`kernel_shear`]: the same for a radial shear traction on the faces (the hole's corner
+//!   enrichment loads the faces by both);
 //! - [`transform`]: the load's transform p̄(ξ), computed once per slab;
 //! - [`field`]: [`Slab`], every stress and displacement at any (r, z) with error estimates;
 //! - [`midplane`]: the midplane σ_z(r, 0) fast, on a node set shared by all radii, and the curve;
@@ -41,6 +43,7 @@
 pub mod field;
 pub mod hole;
 pub mod kernel;
+pub mod kernel_shear;
 pub mod layer;
 pub mod midplane;
 pub mod quadrature;

@@ -1,22 +1,27 @@
-//! Least-squares collocation of the hole traction: the amplitudes of the Lamé field and of N
-//! Papkovich–Fadle modes ([`super::eigen`]) that cancel σ_r and τ_rz of the (extended-load) slab
-//! on the hole r = A.
+//! Least-squares collocation of the hole traction: the amplitudes of the Lamé field, of N
+//! Papkovich–Fadle modes ([`super::eigen`]) and of extra given columns (the corner enrichment)
+//! that cancel σ_r and τ_rz of the (extended-load) slab on the hole r = A.
 //!
 //! **Points.** σ_r is even and τ_rz odd in z, and so is every mode: only 0 ≤ z ≤ D is fitted.
-//! Collocation heights z_j = D cos(πj/(2M)), j = 0…M, M = 2N (Chebyshev–Lobatto points of
-//! [−D, D] on its upper half, clustered at the corner z = D where the modes' traction varies
-//! fastest); check heights at the midpoints θ = π(j + ½)/(2M) — exactly the new points of the
-//! grid for 2N modes, so an adaptive doubling of N reuses every slab evaluation.
+//! Collocation heights z_j = D cos(πj/(2M)), j = 0…M (Chebyshev–Lobatto points of [−D, D] on
+//! its upper half, clustered at the corner z = D where the modes' traction varies fastest),
+//! M = 2N, or 4N with the corner enrichment; check heights at the midpoints
+//! θ = π(j + ½)/(2M) — exactly the new points of the grid for 2N modes, so an adaptive doubling
+//! of N reuses every slab evaluation.
 //!
-//! **System.** Unknowns: the Lamé amplitude c₀ and (α_k, β_k) with mode k entering as
-//! α_k Re F_k + β_k Im F_k; equations: σ_r and τ_rz at every z_j, 2(M + 1) rows for 2N + 1
-//! unknowns (twofold oversampling). With a rim r = C the same heights are used there too, and the
-//! unknowns add the uniform in-plane state and N modes growing outward. Columns are scaled to unit norm and the system is solved by
-//! the SVD (singular values below 1e-14 of the largest dropped); the condition number of the
-//! scaled matrix is reported.
+//! **System.** Unknowns: the Lamé amplitude c₀, (α_k, β_k) with mode k entering as
+//! α_k Re F_k + β_k Im F_k, and any extra real columns given on the boundaries (the corner
+//! enrichment of [`super::corner`], four per exponent); equations: σ_r and τ_rz at every z_j,
+//! 2(M + 1) rows (at least about twice the unknowns). With a rim r = C the same heights are used
+//! there too, and the unknowns add the uniform in-plane state and N modes growing outward.
+//! Columns are scaled to unit norm and the system is solved by the SVD (singular values below
+//! 1e-14 of the largest dropped); the condition number of the scaled matrix is reported (with
+//! the enrichment up to ~1e9 at N = 32: the singular fields and the modes overlap away from the
+//! corner, which the scaled SVD handles; the residual is measured, not inferred).
 //!
-//! **Residual.** The residual traction σ_r, τ_rz of slab + correction on the union of collocation
-//! and check heights, max and RMS (trapezoid in θ, the Chebyshev measure), divided by P.
+//! **Residual.** The residual traction σ_r, τ_rz of slab + correction (extra columns included)
+//! on the union of collocation and check heights, max and RMS (trapezoid in θ, the Chebyshev
+//! measure), divided by P.
 //!
 //! ```
 //! use boltzone::hankel::hole::fit::heights;
@@ -62,6 +67,10 @@ pub struct Boundary<'a> {
     pub r: f64,
     /// Slab traction at heights from the face down to the midplane.
     pub data: &'a [HoleData],
+    /// Extra real columns (the corner enrichment, [`super::corner`]) at the same heights: for
+    /// height i, `extra[2Mi..2Mi + M]` their σ_r and `extra[2Mi + M..2M(i + 1)]` their τ_rz,
+    /// M = [`Fit::extra`]`.len()` (empty when there are none).
+    pub extra: &'a [f64],
 }
 
 /// Fitted amplitudes and the quality of the fit.
@@ -75,6 +84,8 @@ pub struct Fit {
     pub uniform: f64,
     /// Complex amplitudes c_k: mode k contributes Re(c_k F_k).
     pub modes: Vec<Complex64>,
+    /// Amplitudes of the extra real columns of [`Boundary::extra`].
+    pub extra: Vec<f64>,
     /// Condition number of the column-scaled collocation matrix.
     pub condition: f64,
     /// Singular values dropped as below 1e-14 of the largest.
@@ -82,18 +93,24 @@ pub struct Fit {
 }
 
 /// The least-squares amplitudes cancelling the slab's traction on every boundary with `modes`,
-/// the Lamé field of the hole radius `a`, and (if `uniform`) the uniform in-plane state.
-pub fn fit(modes: &[Mode], a: f64, uniform: bool, boundaries: &[Boundary]) -> Fit {
+/// the Lamé field of the hole radius `a`, (if `uniform`) the uniform in-plane state, and
+/// `columns` extra real fields given on the boundaries ([`Boundary::extra`]).
+pub fn fit(modes: &[Mode], a: f64, uniform: bool, columns: usize, boundaries: &[Boundary]) -> Fit {
     let extra = 1 + usize::from(uniform);
-    let n = extra + 2 * modes.len();
+    let first_extra = extra + 2 * modes.len();
+    let n = first_extra + columns;
     let rows = 2 * boundaries.iter().map(|b| b.data.len()).sum::<usize>();
     let mut m = DMatrix::<f64>::zeros(rows, n);
     let mut rhs = DVector::<f64>::zeros(rows);
     let mut i = 0;
     for bd in boundaries {
         let radial: Vec<_> = modes.iter().map(|md| md.radial(bd.r)).collect();
-        for p in bd.data {
+        for (h, p) in bd.data.iter().enumerate() {
             m[(i, 0)] = -(a / bd.r) * (a / bd.r); // Lamé σ_r, τ = 0
+            for c in 0..columns {
+                m[(i, first_extra + c)] = bd.extra[2 * columns * h + c];
+                m[(i + 1, first_extra + c)] = bd.extra[2 * columns * h + columns + c];
+            }
             if uniform {
                 m[(i, 1)] = 1.0;
             }
@@ -141,13 +158,15 @@ pub fn fit(modes: &[Mode], a: f64, uniform: bool, boundaries: &[Boundary]) -> Fi
         modes: (0..modes.len())
             .map(|k| Complex64::new(c[extra + 2 * k], -c[extra + 2 * k + 1]))
             .collect(),
+        extra: c[first_extra..].to_vec(),
         condition: smax / smin,
         dropped: n - kept,
     }
 }
 
 impl Fit {
-    /// The correction's traction (σ_r, τ_rz) on the cylinder of radius r at height z.
+    /// The Lamé and mode part of the correction's traction (σ_r, τ_rz) on the cylinder of
+    /// radius r at height z (without the extra columns, which are known only where given).
     pub fn traction(&self, modes: &[Mode], r: f64, z: f64) -> (f64, f64) {
         let radial: Vec<_> = modes.iter().map(|m| m.radial(r)).collect();
         self.traction_at(modes, &radial, r, z)
@@ -179,8 +198,13 @@ impl Fit {
         let data = boundary.data;
         let last = data.len() - 1;
         let radial: Vec<_> = modes.iter().map(|m| m.radial(boundary.r)).collect();
+        let m = self.extra.len();
         for (i, p) in data.iter().enumerate() {
-            let (sr, tau) = self.traction_at(modes, &radial, boundary.r, p.z);
+            let (mut sr, mut tau) = self.traction_at(modes, &radial, boundary.r, p.z);
+            for (c, x) in self.extra.iter().enumerate() {
+                sr += x * boundary.extra[2 * m * i + c];
+                tau += x * boundary.extra[2 * m * i + m + c];
+            }
             let r = (p.sigma_r + sr).hypot(p.tau_rz + tau);
             max = max.max(r);
             let w = if i == 0 || i == last { 0.5 } else { 1.0 };

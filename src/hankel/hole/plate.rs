@@ -1,5 +1,5 @@
-//! The single plate with a hole: extended-load slab + fitted Lamé and Papkovich–Fadle modes,
-//! its fields at any (r, z), r ≥ A, and its midplane σ_z.
+//! The single plate with a hole: extended-load slab + fitted Lamé and Papkovich–Fadle modes and
+//! corner enrichment ([`super::corner`]), its fields at any (r, z), r ≥ A, and its midplane σ_z.
 //!
 //! **Extension of the load.** A load that starts at the hole edge with p(A) ≠ 0 gives the slab a
 //! logarithmically singular σ_r at the corner (A, ±D), which no smooth correction can cancel
@@ -8,7 +8,7 @@
 //! The continuation is continuous at A, so the slab field is smooth at the corner; in r ≥ A it
 //! differs from the unextended slab by the field of a load on r < A, itself a homogeneous
 //! solution there (faces free for r > A). This is the "face-pressure extension" half of the
-//! correction; the other half is the fitted modes of [`super::fit`].
+//! correction; the other half is the fitted modes and corner fields of [`super::fit`].
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -23,6 +23,7 @@
 //! assert!(s.sigma_r.value.abs() < 1e-4);
 //! ```
 
+use super::corner::{Component, CornerLoads, CornerMidplane};
 use super::eigen::{lame_field, symmetric_roots, uniform_field, Mode, ModeField};
 use super::fit::{fit, heights, Boundary, Fit, HoleData};
 use super::profile::TractionProfile;
@@ -33,6 +34,8 @@ use crate::hankel::field::{Slab, Stress};
 use crate::hankel::quadrature::QuadParams;
 use crate::joint::{OuterRadius, SinglePlate};
 use crate::load::FaceLoad;
+use num_complex::Complex64;
+use std::collections::HashMap;
 use std::time::Instant;
 
 /// The load continued into the hole (see the module docs); `None` when A = 0.
@@ -92,6 +95,15 @@ pub struct HolePlate {
     p_ref: f64,
     max_terms: usize,
     info: HoleInfo,
+    /// Corner exponents enriched ([`super::corner`]; 0: none).
+    corner_terms: usize,
+    corner: Option<CornerLoads>,
+    /// The enrichment's traction columns on the hole (and the rim) by height (bits of z).
+    corner_cache: HashMap<u64, Vec<f64>>,
+    corner_rim_cache: HashMap<u64, Vec<f64>>,
+    /// Fitted (pressure, shear) amplitudes per exponent.
+    corner_amplitudes: Vec<[Complex64; 2]>,
+    corner_midplane: CornerMidplane,
 }
 
 impl HolePlate {
@@ -149,6 +161,12 @@ impl HolePlate {
             p_ref,
             max_terms: params.terms.unwrap_or(params.max_terms).max(n),
             info: HoleInfo::default(),
+            corner_terms: params.corner_terms,
+            corner: None,
+            corner_cache: HashMap::new(),
+            corner_rim_cache: HashMap::new(),
+            corner_amplitudes: Vec::new(),
+            corner_midplane: CornerMidplane::default(),
         };
         if a > 0.0 {
             holed.solve(n);
@@ -230,7 +248,10 @@ impl HolePlate {
     /// Fits N = `n` modes: samples the slab on the new heights, solves, measures the residual.
     fn solve(&mut self, n: usize) {
         let d = self.slab.half_thickness();
-        let z = heights(d, 4 * n);
+        // 2N + 1 collocation heights (between them the check heights) for modes only; with the
+        // corner enrichment 4N + 1, so that its 4 columns per exponent keep the system ~2× overdetermined
+        let per_mode = if self.corner_terms > 0 { 8 } else { 4 };
+        let z = heights(d, per_mode * n);
         let old = std::mem::take(&mut self.grid);
         self.grid = self.sample(self.a, old, &z);
         if let Some(c) = self.rim {
@@ -251,24 +272,45 @@ impl HolePlate {
                 .map(|x| Mode::growing(*x, c, d, nu, g));
             self.modes.extend(growing);
         }
+        if self.corner.is_none() && self.corner_terms > 0 {
+            self.corner = Some(CornerLoads::new(a, d, nu, g, self.corner_terms));
+        }
+        let columns = 4 * self.corner.as_ref().map_or(0, |c| c.count());
+        let hole_extra = self.corner_columns(a, &z, false);
+        let rim_extra = self
+            .rim
+            .map_or_else(Vec::new, |c| self.corner_columns(c, &z, true));
+        // collocation heights: every other one of the grid
+        let every_other = |v: &[f64]| -> Vec<f64> {
+            v.chunks(2 * columns.max(1))
+                .step_by(2)
+                .flatten()
+                .copied()
+                .collect()
+        };
+        let (hole_colloc_extra, rim_colloc_extra) =
+            (every_other(&hole_extra), every_other(&rim_extra));
         let colloc: Vec<HoleData> = self.grid.iter().step_by(2).copied().collect();
         let rim_colloc: Vec<HoleData> = self.rim_grid.iter().step_by(2).copied().collect();
         let mut bounds = vec![Boundary {
             r: a,
             data: &colloc,
+            extra: &hole_colloc_extra,
         }];
         if let Some(c) = self.rim {
             bounds.push(Boundary {
                 r: c,
                 data: &rim_colloc,
+                extra: &rim_colloc_extra,
             });
         }
-        let f = fit(&self.modes, a, self.rim.is_some(), &bounds);
+        let f = fit(&self.modes, a, self.rim.is_some(), columns, &bounds);
         let (rmax, rrms) = f.residual(
             &self.modes,
             &Boundary {
                 r: a,
                 data: &self.grid,
+                extra: &hole_extra,
             },
         );
         let rim_residual = self.rim.map_or(0.0, |c| {
@@ -277,10 +319,22 @@ impl HolePlate {
                 &Boundary {
                     r: c,
                     data: &self.rim_grid,
+                    extra: &rim_extra,
                 },
             )
             .0 / self.p_ref
         });
+        self.corner_amplitudes = f
+            .extra
+            .chunks(4)
+            .map(|x| [Complex64::new(x[0], -x[1]), Complex64::new(x[2], -x[3])])
+            .collect();
+        if let Some(corner) = &self.corner {
+            // the R_o scan reaches B + 12D by default, the equilibrium test B + 20D; beyond r_max
+            // the (slower) direct integral is used
+            let r_max = self.slab.transform().outer().max(a) + 20.0 * d;
+            self.corner_midplane = corner.midplane(&self.corner_amplitudes, r_max);
+        }
         let level = HoleLevel {
             terms: n,
             collocation_points: colloc.len(),
@@ -289,6 +343,7 @@ impl HolePlate {
             rim_residual_max: rim_residual,
             condition: f.condition,
         };
+        self.info.corner_terms = self.corner_terms;
         self.info.history.push(level);
         self.info.terms = n;
         self.info.collocation_points = level.collocation_points;
@@ -298,6 +353,38 @@ impl HolePlate {
         self.info.rim_residual_max = rim_residual;
         self.info.condition = level.condition;
         self.fit = Some(f);
+    }
+
+    /// The enrichment's traction columns on the cylinder r at the heights `z` (see
+    /// [`Boundary::extra`]), computing only heights not cached yet.
+    fn corner_columns(&mut self, r: f64, z: &[f64], rim: bool) -> Vec<f64> {
+        let Some(corner) = &self.corner else {
+            return Vec::new();
+        };
+        let cache = if rim {
+            &mut self.corner_rim_cache
+        } else {
+            &mut self.corner_cache
+        };
+        let fresh: Vec<f64> = z
+            .iter()
+            .copied()
+            .filter(|h| !cache.contains_key(&h.to_bits()))
+            .collect();
+        if !fresh.is_empty() {
+            for (h, t) in fresh.iter().zip(corner.tractions(r, &fresh)) {
+                let (mut sr, mut tau) = (Vec::new(), Vec::new());
+                for c in &t {
+                    sr.extend([c[0].re, c[0].im, c[1].re, c[1].im]);
+                    tau.extend([c[2].re, c[2].im, c[3].re, c[3].im]);
+                }
+                sr.extend(tau);
+                cache.insert(h.to_bits(), sr);
+            }
+        }
+        z.iter()
+            .flat_map(|h| cache[&h.to_bits()].iter().copied())
+            .collect()
     }
 
     /// The rim radius C whose traction the correction cancels (None: infinite plate).
@@ -320,7 +407,8 @@ impl HolePlate {
         self.a
     }
 
-    /// The fitted correction alone (Lamé + modes, without the slab) at (r, z), r ≥ A.
+    /// The fitted correction alone (Lamé + modes + corner enrichment, without the slab) at
+    /// (r, z), r ≥ A.
     pub fn correction(&self, r: f64, z: f64) -> ModeField<f64> {
         let Some(f) = &self.fit else {
             return ModeField::default();
@@ -344,18 +432,48 @@ impl HolePlate {
             out.u += (c * v.u).re;
             out.w += (c * v.w).re;
         }
+        if let Some(corner) = &self.corner {
+            use Component::*;
+            let comps = [SigmaR, SigmaTheta, SigmaZ, TauRz, U, W];
+            let f = &corner.fields(r, &[z], &comps)[0];
+            let v: Vec<f64> = (0..comps.len())
+                .map(|ci| {
+                    f.iter()
+                        .zip(&self.corner_amplitudes)
+                        .map(|(fk, c)| (c[0] * fk[ci][0] + c[1] * fk[ci][1]).re)
+                        .sum()
+                })
+                .collect();
+            out.sigma_r += v[0];
+            out.sigma_theta += v[1];
+            out.sigma_z += v[2];
+            out.tau_rz += v[3];
+            out.u += v[4];
+            out.w += v[5];
+        }
         out
     }
 
-    /// The fitted correction's midplane σ_z(r, 0) (the Lamé field has none).
+    /// The fitted correction's midplane σ_z(r, 0) (modes and corner enrichment; the Lamé field
+    /// has none).
     pub fn correction_midplane(&self, r: f64) -> f64 {
-        self.fit.as_ref().map_or(0.0, |f| {
+        let modes = self.fit.as_ref().map_or(0.0, |f| {
             self.modes
                 .iter()
                 .zip(&f.modes)
                 .map(|(m, c)| (c * m.midplane_sigma_z(r)).re)
                 .sum()
-        })
+        });
+        let corner = self.corner.as_ref().map_or(0.0, |corner| {
+            self.corner_midplane.eval(r).unwrap_or_else(|| {
+                corner.fields(r, &[0.0], &[Component::SigmaZ])[0]
+                    .iter()
+                    .zip(&self.corner_amplitudes)
+                    .map(|(fk, c)| (c[0] * fk[0][0] + c[1] * fk[0][1]).re)
+                    .sum()
+            })
+        });
+        modes + corner
     }
 
     /// Stresses of the plate with the hole at (r, z), r ≥ A: slab (extended load) + correction.

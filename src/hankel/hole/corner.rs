@@ -1,0 +1,476 @@
+//! Corner enrichment of the hole correction: exact homogeneous fields of the plate r ≥ A that
+//! carry the Williams singularity of the 90° corner (A, ±D).
+//!
+//! **Why.** Where the free hole wall meets a loaded face the exact correction contains terms
+//! ρ^λ (stresses ρ^(λ−1)), λ the free–free 90° wedge exponents, roots of sin(λπ/2) = ∓λ
+//! (Williams, *J. Appl. Mech.* 19 (1952) 526): λ₁ = 2.7396 + 1.1190i (−), λ₂ = 4.8083 + 1.4639i
+//! (+), λ₃ = 6.8451 + 1.6816i (−), … ([`corner_exponents`]). Smooth Papkovich–Fadle modes
+//! resolve them only down to a height ~D/N, hence the N^(−1.74) residual without enrichment.
+//!
+//! **Construction.** The infinite slab (no hole) loaded symmetrically on both faces INSIDE the
+//! hole, by a pressure q(r) = (1 − r²/A²)^(λ−1) or a radial shear τ_rz(r, ±D) = ±s(r),
+//! s(r) = (r/A)(1 − r²/A²)^(λ−1), for r < A. In r ≥ A each is a homogeneous solution (faces free,
+//! equilibrium, decaying); near the corner, (1 − r²/A²)^(λ−1) = (2(A − r)/A)^(λ−1)(1 + O(A − r)),
+//! and the slab's response is a half-plane power field ρ^(λ−1)g(θ) plus smoother terms (λ is not
+//! a half-plane exponent). The quarter-plane Williams eigenfunction continued to the half plane is
+//! free on the face beyond the corner and carries a normal + shear traction ∝ ρ^(λ−1) on the
+//! other half of the face — so a complex combination of the two loads contains it exactly, and
+//! the rest is smoother (O(ρ^λ)). Real and imaginary parts give four real fit columns per λ.
+//!
+//! **Transforms** (Sonine's first finite integral, DLMF 10.22.19, with Λ of [`super::bessel_nu`]):
+//! q̄(ξ) = ∫₀^A q(r) J₀(ξr) r dr = A² Λ_λ(ξA)/(2λ), s̄(ξ) = ∫₀^A s(r) J₁(ξr) r dr =
+//! A² ξA Λ_(λ+1)(ξA)/(4λ(λ + 1)). The fields are those of [`crate::hankel::kernel`] (pressure q)
+//! and [`crate::hankel::kernel_shear`] (shear s), integrated by [`super::corner_quad`].
+//!
+//! Sign convention: compression negative; the pressure load presses the faces (σ_z(r, ±D) =
+//! −q(r)); displacements carry 1/(2G). Values are complex: the real and imaginary parts are the
+//! responses to Re q and Im q (Re s, Im s).
+//!
+//! ```
+//! use boltzone::hankel::hole::corner::{corner_exponents, Component, CornerLoads};
+//! let lam = corner_exponents(2);
+//! assert!((lam[0].re - 2.739_593_4).abs() < 1e-7 && (lam[1].im - 1.463_928_1).abs() < 1e-7);
+//! let loads = CornerLoads::new(0.1, 0.1, 0.3, 1.0, 1);
+//! // on the face beyond the corner, σ_z = τ_rz = 0 (the loads act inside the hole only)
+//! let f = loads.fields(0.13, &[0.1], &[Component::SigmaZ, Component::TauRz]);
+//! for kind in 0..2 {
+//!     assert!(f[0][0][0][kind].norm() < 1e-12 && f[0][0][1][kind].norm() < 1e-12);
+//! }
+//! ```
+
+use super::bessel_nu::NormalBessel;
+use super::corner_quad::{expint_table, tail, ProductSeries};
+use crate::hankel::kernel::{KernelNode, Kernels};
+use crate::hankel::kernel_shear::ShearKernels;
+use crate::hankel::quadrature::gauss_legendre;
+use num_complex::Complex64;
+use std::f64::consts::PI;
+use std::sync::OnceLock;
+
+/// The first `n` free–free 90° wedge exponents λ (Re, Im > 0, λ = 1 excluded), alternately
+/// roots of sin(λπ/2) = −λ and = +λ, by Newton's method from the estimate
+/// λ ≈ 2k + ¾ + (2i/π) ln(4k + 1.5); converged to a relative step below 1e-15.
+pub fn corner_exponents(n: usize) -> Vec<Complex64> {
+    (1..=n)
+        .map(|k| {
+            let sign = if k % 2 == 1 { 1.0 } else { -1.0 };
+            let re = 2.0 * k as f64 + 0.75;
+            let mut l = Complex64::new(re, (2.0 / PI) * (2.0 * re).ln());
+            for _ in 0..60 {
+                let h = 0.5 * PI;
+                let step = ((l * h).sin() + sign * l) / (h * (l * h).cos() + sign);
+                l -= step;
+                if step.norm() <= 1e-15 * l.norm() {
+                    break;
+                }
+            }
+            l
+        })
+        .collect()
+}
+
+/// The `n` leading exponents of the corner's singular expansion: the Williams exponents λ_k
+/// ([`corner_exponents`]) and their axisymmetric companions λ_k + j (the terms ρ^(λ+j) that the
+/// hole's curvature and the loads' shape add to each Williams term), ordered by real part:
+/// λ₁, λ₁ + 1, λ₁ + 2, λ₂, λ₁ + 3, λ₂ + 1, …
+pub fn enrichment_exponents(n: usize) -> Vec<Complex64> {
+    let roots = corner_exponents(n);
+    let mut all: Vec<(f64, usize, usize)> = Vec::new();
+    for (k, l) in roots.iter().enumerate() {
+        for j in 0..n {
+            all.push((l.re + j as f64, k, j));
+        }
+    }
+    all.sort_by(|a, b| a.0.total_cmp(&b.0));
+    all.iter()
+        .take(n)
+        .map(|&(_, k, j)| roots[k] + j as f64)
+        .collect()
+}
+
+/// A field component of the enrichment.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Component {
+    /// σ_r.
+    SigmaR,
+    /// σ_θ.
+    SigmaTheta,
+    /// σ_z.
+    SigmaZ,
+    /// τ_rz (odd in z).
+    TauRz,
+    /// u.
+    U,
+    /// w (odd in z).
+    W,
+}
+
+/// One integral term: coefficient, power q of ξ, Bessel order n of J_n(ξr), kernel index into
+/// [z, τ, r, m, n, w].
+type Term = (f64, usize, usize, usize);
+
+/// The terms of a component for the pressure load (the shear load has the opposite signs and
+/// its own kernels), at radius r, shear modulus g (see the kernel tables).
+fn terms(c: Component, r: f64, g: f64) -> Vec<Term> {
+    let (kz, kt, kr, km, kn, kw) = (0, 1, 2, 3, 4, 5);
+    match c {
+        Component::SigmaR => vec![(-1.0, 1, 0, kr), (1.0 / r, 0, 1, km)],
+        Component::SigmaTheta => vec![(-1.0, 1, 0, kn), (-1.0 / r, 0, 1, km)],
+        Component::SigmaZ => vec![(-1.0, 1, 0, kz)],
+        Component::TauRz => vec![(-1.0, 1, 1, kt)],
+        Component::U => vec![(-0.5 / g, 0, 1, km)],
+        Component::W => vec![(-0.5 / g, 0, 0, kw)],
+    }
+}
+
+fn odd(c: Component) -> bool {
+    matches!(c, Component::TauRz | Component::W)
+}
+
+/// The corner loads of one hole: for each exponent λ_k a pressure and a shear load inside the
+/// hole (see the module docs).
+#[derive(Debug, Clone)]
+pub struct CornerLoads {
+    a: f64,
+    d: f64,
+    nu: f64,
+    g: f64,
+    lams: Vec<Complex64>,
+    normal: Vec<NormalBessel>,
+    shear: Vec<NormalBessel>,
+    /// ξ beyond which the closed-form tail is used.
+    x_cut: f64,
+    /// The finite-part nodes for the hole r = A, with the transforms there (computed once).
+    hole_nodes: Vec<Node>,
+    /// The midplane rule of the first r_max asked for (the fit asks again at every N).
+    #[allow(clippy::type_complexity)]
+    midplane_nodes: OnceLock<(f64, Vec<(f64, Vec<(Complex64, Complex64)>)>)>,
+}
+
+/// A node of the finite-part rule: ξ, weight, J₀(ξr), J₁(ξr), (q̄_k, s̄_k) for every exponent.
+#[derive(Debug, Clone)]
+struct Node {
+    xi: f64,
+    weight: f64,
+    bessel: [f64; 2],
+    transforms: Vec<(Complex64, Complex64)>,
+}
+
+impl CornerLoads {
+    /// The loads of the first `n` exponents for hole radius `a`, half-thickness `d`, Poisson's
+    /// ratio `nu`, shear modulus `g`.
+    pub fn new(a: f64, d: f64, nu: f64, g: f64, n: usize) -> Self {
+        let lams = enrichment_exponents(n);
+        let x_cut = lams
+            .iter()
+            .map(|l| (l + 1.0).norm_sqr().max(30.0) / a)
+            .fold(20.0 / d, f64::max);
+        let mut loads = Self {
+            a,
+            d,
+            nu,
+            g,
+            normal: lams.iter().map(|l| NormalBessel::new(*l)).collect(),
+            shear: lams.iter().map(|l| NormalBessel::new(l + 1.0)).collect(),
+            lams,
+            x_cut,
+            hole_nodes: Vec::new(),
+            midplane_nodes: OnceLock::new(),
+        };
+        loads.hole_nodes = loads.nodes(a);
+        loads
+    }
+
+    /// The same loads with the closed-form tail starting at ξ = `x`/A instead (it must stay in
+    /// the tail's range: xA ≥ |λ + 1|² and xD ≥ 20 — else the result is inaccurate, which is
+    /// what this is for: checking that the value does not depend on the split).
+    pub fn with_tail_start(mut self, x: f64) -> Self {
+        self.x_cut = x / self.a;
+        self.hole_nodes = self.nodes(self.a);
+        self
+    }
+
+    /// Where the closed-form tail starts, as ξA.
+    pub fn tail_start(&self) -> f64 {
+        self.x_cut * self.a
+    }
+
+    /// The panel ends of the finite-part rule for radius r: no wider than a half-period
+    /// π/(A + r) of the fastest oscillation, and below ξ = 20/D (where the kernels still differ
+    /// from their half-space form) no wider than 1.5/D, their scale; up to X, the first panel
+    /// end at or beyond `x_cut`.
+    fn panel_ends(&self, r: f64) -> Vec<f64> {
+        let half = PI / (self.a + r);
+        let (near, switch) = (half.min(1.5 / self.d), 20.0 / self.d);
+        let mut ends = vec![0.0];
+        let mut x = 0.0;
+        while x < self.x_cut {
+            x += if x < switch { near } else { half };
+            ends.push(x);
+        }
+        ends
+    }
+
+    /// The finite-part rule for radius r on [`Self::panel_ends`], 20 Gauss–Legendre points per
+    /// panel, with J₀(ξr), J₁(ξr) and the transforms at each node.
+    fn nodes(&self, r: f64) -> Vec<Node> {
+        let rule = gauss_legendre(20);
+        let ends = self.panel_ends(r);
+        let mut out = Vec::with_capacity(ends.len() * rule.len());
+        for e in ends.windows(2) {
+            let (c0, h) = (0.5 * (e[0] + e[1]), e[1] - e[0]);
+            for &(x, w) in rule.iter() {
+                let xi = c0 + 0.5 * h * x;
+                out.push(Node {
+                    xi,
+                    weight: 0.5 * h * w,
+                    bessel: [libm::j0(xi * r), libm::j1(xi * r)],
+                    transforms: (0..self.lams.len())
+                        .map(|k| self.transforms(k, xi))
+                        .collect(),
+                });
+            }
+        }
+        out
+    }
+
+    /// The end X of the finite part of the rule for radius r.
+    fn x_end(&self, r: f64) -> f64 {
+        *self.panel_ends(r).last().expect("at least one panel end")
+    }
+
+    /// Number of exponents (each gives 4 real fields).
+    pub fn count(&self) -> usize {
+        self.lams.len()
+    }
+
+    /// The exponents λ_k.
+    pub fn exponents(&self) -> &[Complex64] {
+        &self.lams
+    }
+
+    /// The pressure q_k(r) and the shear s_k(r) of exponent k (zero for r ≥ A).
+    pub fn loads(&self, k: usize, r: f64) -> (Complex64, Complex64) {
+        if r >= self.a {
+            return (Complex64::new(0.0, 0.0), Complex64::new(0.0, 0.0));
+        }
+        let q = ((self.lams[k] - 1.0) * (1.0 - (r / self.a).powi(2)).ln()).exp();
+        (q, q * r / self.a)
+    }
+
+    /// The transforms (q̄_k(ξ), s̄_k(ξ)) (orders 0 and 1).
+    pub fn transforms(&self, k: usize, xi: f64) -> (Complex64, Complex64) {
+        let (a, l) = (self.a, self.lams[k]);
+        let x = xi * a;
+        let (ln, ls) = self.normal[k].eval_pair(&self.shear[k], x);
+        (
+            a * a * ln / (2.0 * l),
+            a * a * x * ls / (4.0 * l * (l + 1.0)),
+        )
+    }
+
+    /// The half-space limits (α, β) of the kernels [z, τ, r, m, n, w] of the pressure (kind 0)
+    /// and shear (kind 1) loads: k → (α + βu)e^(−u), u = ξ(D − |z|).
+    fn half_space(&self, kind: usize) -> [(f64, f64); 6] {
+        let nu = self.nu;
+        if kind == 0 {
+            [
+                (1.0, 1.0),
+                (0.0, -1.0),
+                (1.0, -1.0),
+                (1.0 - 2.0 * nu, -1.0),
+                (2.0 * nu, 0.0),
+                (2.0 * (1.0 - nu), 1.0),
+            ]
+        } else {
+            [
+                (0.0, 1.0),
+                (1.0, -1.0),
+                (2.0, -1.0),
+                (2.0 * (1.0 - nu), -1.0),
+                (2.0 * nu, 0.0),
+                (1.0 - 2.0 * nu, 1.0),
+            ]
+        }
+    }
+
+    /// The components `comps` of every enrichment field at (r, z) for each z in `zs` (r > 0,
+    /// |z| ≤ D): `out[height][k][component]` = [pressure field, shear field] of exponent k.
+    pub fn fields(&self, r: f64, zs: &[f64], comps: &[Component]) -> Vec<Vec<Vec<[Complex64; 2]>>> {
+        let (a, d, nu) = (self.a, self.d, self.nu);
+        let nl = self.lams.len();
+        let zero = Complex64::new(0.0, 0.0);
+        let mut out = vec![vec![vec![[zero; 2]; comps.len()]; nl]; zs.len()];
+        let ts: Vec<Vec<Term>> = comps.iter().map(|c| terms(*c, r, self.g)).collect();
+        let az: Vec<f64> = zs.iter().map(|z| z.abs().min(d)).collect();
+        // finite part on [0, X] (the hole's nodes are computed once)
+        let x_end = self.x_end(r);
+        let fresh;
+        let nodes = if r == a {
+            &self.hole_nodes
+        } else {
+            fresh = self.nodes(r);
+            &fresh
+        };
+        for node in nodes {
+            let (xi, wt, bes, tr) = (node.xi, node.weight, node.bessel, &node.transforms);
+            let kt = KernelNode::new(xi * d);
+            for (hi, &zh) in az.iter().enumerate() {
+                let kh = kt.height(xi * zh);
+                let kn = Kernels::at_height(&kt, &kh, nu);
+                let ks = ShearKernels::at_height(&kt, &kh, nu);
+                let kv = [
+                    [kn.z, kn.tau, kn.r, kn.m, kn.n, kn.w],
+                    [ks.z, ks.tau, ks.r, ks.m, ks.n, ks.w],
+                ];
+                for (ci, tc) in ts.iter().enumerate() {
+                    let mut v = [0.0; 2];
+                    for &(coef, q, n, ki) in tc {
+                        let base = coef * if q == 1 { xi } else { 1.0 } * bes[n] * wt;
+                        v[0] += base * kv[0][ki];
+                        v[1] -= base * kv[1][ki];
+                    }
+                    for (k, (qn, qs)) in tr.iter().enumerate() {
+                        let o = &mut out[hi][k][ci];
+                        o[0] += qn * v[0];
+                        o[1] += qs * v[1];
+                    }
+                }
+            }
+        }
+        // tail beyond X in closed form
+        let hs = [self.half_space(0), self.half_space(1)];
+        for (k, &lam) in self.lams.iter().enumerate() {
+            let pref = [a * a / (2.0 * lam), a * a / (4.0 * lam * (lam + 1.0))];
+            let series: Vec<[ProductSeries; 2]> = (0..2)
+                .map(|kind| {
+                    let (nu_t, tau) = if kind == 0 {
+                        (lam, 0.0)
+                    } else {
+                        (lam + 1.0, 1.0)
+                    };
+                    [0, 1].map(|n| ProductSeries::new(nu_t, tau, n, a, r))
+                })
+                .collect();
+            let kappas: Vec<f64> = series[0][0].parts.iter().map(|p| p.0).collect();
+            for (hi, &zh) in az.iter().enumerate() {
+                let y = d - zh;
+                let e = expint_table(lam, y, x_end, &kappas);
+                for (ci, tc) in ts.iter().enumerate() {
+                    for kind in 0..2 {
+                        let sign = if kind == 0 { 1.0 } else { -1.0 };
+                        let mut v = zero;
+                        for &(coef, q, n, ki) in tc {
+                            let (al, be) = hs[kind][ki];
+                            v += sign * coef * tail(&series[kind][n], &e, lam, q, al, be, y, x_end);
+                        }
+                        out[hi][k][ci][kind] += pref[kind] * v;
+                    }
+                }
+            }
+        }
+        for (z, oh) in zs.iter().zip(out.iter_mut()) {
+            if *z < 0.0 {
+                for ok in oh.iter_mut() {
+                    for (c, o) in comps.iter().zip(ok.iter_mut()) {
+                        if odd(*c) {
+                            *o = [-o[0], -o[1]];
+                        }
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// σ_r and τ_rz on the cylinder of radius r at the heights `zs`:
+    /// `out[height][k]` = [σ_r pressure, σ_r shear, τ pressure, τ shear].
+    pub fn tractions(&self, r: f64, zs: &[f64]) -> Vec<Vec<[Complex64; 4]>> {
+        self.fields(r, zs, &[Component::SigmaR, Component::TauRz])
+            .into_iter()
+            .map(|h| {
+                h.into_iter()
+                    .map(|c| [c[0][0], c[0][1], c[1][0], c[1][1]])
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// σ_z(r, 0) of Σ_k Re(c_k,p F_k,pressure + c_k,s F_k,shear) for radii up to `r_max`: the
+    /// weights of a shared node set (see [`CornerMidplane`]).
+    pub fn midplane(&self, amplitudes: &[[Complex64; 2]], r_max: f64) -> CornerMidplane {
+        let fresh;
+        let rule = match self.midplane_nodes.get() {
+            Some((r, nodes)) if *r == r_max => nodes,
+            _ => {
+                fresh = self.midplane_rule(r_max);
+                if self.midplane_nodes.get().is_none() {
+                    let _ = self.midplane_nodes.set((r_max, fresh.clone()));
+                }
+                &fresh
+            }
+        };
+        let nodes = rule
+            .iter()
+            .map(|(xi, parts)| {
+                let c = amplitudes
+                    .iter()
+                    .zip(parts)
+                    .map(|(amp, (p, s))| (amp[0] * p + amp[1] * s).re)
+                    .sum();
+                (*xi, c)
+            })
+            .collect();
+        CornerMidplane { nodes, r_max }
+    }
+
+    /// The midplane rule for radii up to r_max: nodes ξ_i and, per exponent, the weighted
+    /// (−w_i ξ_i q̄ K(ξ_i D), w_i ξ_i s̄ L_z(ξ_i D, 0)) (panels of at most five half-periods of
+    /// (r_max + A) and 1.5/D, 20 points each, to ξ = 45/D where K, L_z ≤ 2.5(1 + t)e^(−t) are
+    /// below 1e-17 of the load's size).
+    #[allow(clippy::type_complexity)]
+    fn midplane_rule(&self, r_max: f64) -> Vec<(f64, Vec<(Complex64, Complex64)>)> {
+        let (a, d) = (self.a, self.d);
+        let x_end = 45.0 / d;
+        let h = (5.0 * PI / (a + r_max)).min(1.5 / d);
+        let panels = (x_end / h).ceil() as usize;
+        let rule = gauss_legendre(20);
+        let mut nodes = Vec::with_capacity(panels * rule.len());
+        for p in 0..panels {
+            let c0 = (p as f64 + 0.5) * h;
+            for &(x, w) in rule.iter() {
+                let xi = c0 + 0.5 * h * x;
+                let t = xi * d;
+                let wt = 0.5 * h * w * xi;
+                let (kp, ks) = (
+                    crate::hankel::kernel::midplane(t),
+                    ShearKernels::midplane(t),
+                );
+                let parts = (0..self.lams.len())
+                    .map(|k| {
+                        let (qn, qs) = self.transforms(k, xi);
+                        (-wt * kp * qn, wt * ks * qs)
+                    })
+                    .collect();
+                nodes.push((xi, parts));
+            }
+        }
+        nodes
+    }
+}
+
+/// The fitted enrichment's midplane σ_z(r, 0) = Σ_i c_i J₀(ξ_i r) on a node set shared by all
+/// r ≤ r_max (panels of at most five half-periods of J₀(ξ(r_max + A))·Λ(ξA) and 1.5/D, 20 points
+/// each, to ξ = 45/D; the [`crate::hankel::midplane`] construction).
+#[derive(Debug, Clone, Default)]
+pub struct CornerMidplane {
+    nodes: Vec<(f64, f64)>,
+    r_max: f64,
+}
+
+impl CornerMidplane {
+    /// σ_z(r, 0) for r ≤ r_max (None beyond).
+    pub fn eval(&self, r: f64) -> Option<f64> {
+        (r <= self.r_max).then(|| self.nodes.iter().map(|(xi, c)| c * libm::j0(xi * r)).sum())
+    }
+}
