@@ -83,19 +83,20 @@
 //! ```
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 //! use boltzone::hankel::hole::{single_plate_separation, HoleParams};
-//! let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
-//! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3).unwrap(), load).unwrap();
-//! let (sep, hole) = single_plate_separation(&plate, &Default::default(), &HoleParams::default()).unwrap();
+//! let load = FaceLoad::uniform(0.1, 0.31, 1.0)?;
+//! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3)?, load)?;
+//! let (sep, hole) = single_plate_separation(&plate, &Default::default(), &HoleParams::default())?;
 //! // the corner enrichment meets the 1e-6 P target at N = 4, R_o to ~1e-6 relative
 //! assert!(hole.residual_max < 1e-6 && hole.terms == 4 && hole.corner_terms == 3);
 //! assert!(sep.error < 2e-6 * sep.r_o);
 //! assert!((sep.r_o / 0.1 - 4.03183).abs() < 1e-5);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 pub mod bessel_i;
 pub mod bessel_k;
-pub mod chebyshev;
 pub mod bessel_nu;
+pub mod chebyshev;
 pub mod corner;
 pub mod corner_quad;
 pub mod eigen;

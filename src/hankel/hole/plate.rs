@@ -13,14 +13,15 @@
 //! ```
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 //! use boltzone::hankel::hole::{HoleParams, HolePlate};
-//! let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
-//! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3).unwrap(), load).unwrap();
-//! let holed = HolePlate::new(&plate, &HoleParams { terms: Some(16), ..Default::default() }).unwrap();
+//! let load = FaceLoad::uniform(0.1, 0.31, 1.0)?;
+//! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3)?, load)?;
+//! let holed = HolePlate::new(&plate, &HoleParams { terms: Some(16), ..Default::default() })?;
 //! let info = holed.info();
 //! assert!(info.residual_max < 1e-4 && info.history.len() == 1);
 //! // the hole is (nearly) free: σ_r(A, z) = slab + correction
 //! let s = holed.stress(0.1, 0.05, &Default::default());
 //! assert!(s.sigma_r.value.abs() < 1e-4);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::corner::{Component, CornerLoads, CornerMidplane};

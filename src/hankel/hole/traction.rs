@@ -32,11 +32,12 @@
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{QuadParams, Slab}};
 //! use boltzone::hankel::hole::traction::hole_tractions;
-//! let slab = Slab::new(0.1, Material::unit(0.3).unwrap(), FaceLoad::uniform(0.0, 0.31, 1.0).unwrap()).unwrap();
+//! let slab = Slab::new(0.1, Material::unit(0.3)?, FaceLoad::uniform(0.0, 0.31, 1.0)?)?;
 //! let q = QuadParams { rel_tol: 1e-12, abs_tol: 1e-12, ..QuadParams::default() };
 //! let (t, _evaluations) = hole_tractions(&slab, 0.1, &[0.05], &q);
 //! let s = slab.stress(0.1, 0.05, &q);
 //! assert!((t[0].sigma_r - s.sigma_r.value).abs() < 1e-9);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use crate::hankel::field::Slab;
