@@ -5,9 +5,9 @@
 //! rayon; each model's R_o meets the relative tolerance `tolerance` (default 1e-3 = 0.1 %) by its
 //! own error estimate, which the CSV carries beside each value.
 //!
-//! Cost: the default 40 × 40 map at 1e-3 took 85 s of CPU (81.3 s user + 4.1 s system,
-//! ≈ 53 ms per point, three quarters of it in the two-plate model; about 43 s of wall time on
-//! two idle cores) — `examples/17_map_speed.rs` times both models point by point against the
+//! Cost: the default 40 × 40 map at 1e-3 took 48.4 s of CPU (≈ 30 ms per point; 40.4 s of
+//! wall time at 119 % CPU beside another job, about 25 s on two idle cores) —
+//! `examples/17_map_speed.rs` times both models point by point against the
 //! error they achieve.
 //!
 //! ```
