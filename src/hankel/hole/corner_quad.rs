@@ -19,8 +19,8 @@
 //!   (DLMF 8.19.8, 8.19.17), and E_p(0) = 1/(p − 1).
 //!
 //! On [0, X] panels no wider than a half-period π/(A + r) of the fastest oscillation and 1.5/D
-//! (the kernels' scale) carry a 20-point Gauss–Legendre rule (error ≈ 1e-25 of the amplitude, as
-//! in [`crate::hankel::midplane`]). The transforms Λ_λ(ξA), Λ_(λ+1)(ξA) and J₀, J₁ are shared by
+//! (the kernels' scale) carry a 12-point Gauss–Legendre rule (error ≈ 1e-20 of the amplitude;
+//! see `NODES_PER_PANEL` in [`super::corner`]). The transforms Λ_λ(ξA), Λ_(λ+1)(ξA) and J₀, J₁ are shared by
 //! every height and component at a node. Checked in `tests/hole_corner.rs` (E_p against mpmath,
 //! face conditions by Hankel inversion, the closed-form face value, equilibrium).
 //!
