@@ -168,9 +168,8 @@ pub struct CornerLoads {
     x_cut: f64,
     /// The finite-part nodes for the hole r = A, with the transforms there (computed once).
     hole_nodes: Vec<Node>,
-    /// The midplane rule of the first r_max asked for (the fit asks again at every N).
-    #[allow(clippy::type_complexity)]
-    midplane_nodes: OnceLock<(f64, Vec<(f64, Vec<(Complex64, Complex64)>)>)>,
+    /// The midplane rule of the first r_max asked for.
+    midplane_nodes: OnceLock<CornerMidplaneRule>,
 }
 
 /// A node of the finite-part rule: ξ, weight, J₀(ξr), J₁(ξr), (q̄_k, s̄_k) for every exponent.
@@ -470,49 +469,27 @@ impl CornerLoads {
             .collect()
     }
 
-    /// The enrichment fields' midplane σ_z(r, 0) as real basis values: for exponent k,
-    /// [Re, Im] of the pressure field then [Re, Im] of the shear field (so that amplitudes
-    /// c = (x₀ − ix₁, x₂ − ix₃) give Σ_j x_j·basis_j = Re(c_p F_p + c_s F_s), the fit's
-    /// convention). Radii up to `r_max` share one node set ([`Self::midplane_rule`], built on
-    /// first use: one J₀ per node for all 4·count values); beyond, the direct integral.
+    /// The enrichment fields' midplane σ_z(r, 0) as real basis values (see
+    /// [`CornerMidplaneRule::basis`]): radii up to `r_max` on the node set of the first
+    /// `r_max` asked for (built then, kept), beyond or for another `r_max` the direct integral.
     pub fn midplane_basis(&self, r: f64, r_max: f64) -> Vec<f64> {
-        if r > r_max {
-            return self.fields(r, &[0.0], &[Component::SigmaZ])[0]
+        let rule = self
+            .midplane_nodes
+            .get_or_init(|| self.midplane_rule(r_max));
+        match rule.basis(r) {
+            Some(b) if rule.r_max == r_max => b,
+            _ => self.fields(r, &[0.0], &[Component::SigmaZ])[0]
                 .iter()
                 .flat_map(|f| [f[0][0].re, f[0][0].im, f[0][1].re, f[0][1].im])
-                .collect();
+                .collect(),
         }
-        let fresh;
-        let rule = match self.midplane_nodes.get() {
-            Some((rm, nodes)) if *rm == r_max => nodes,
-            _ => {
-                fresh = self.midplane_rule(r_max);
-                if self.midplane_nodes.get().is_none() {
-                    let _ = self.midplane_nodes.set((r_max, fresh.clone()));
-                }
-                &fresh
-            }
-        };
-        let zero = Complex64::new(0.0, 0.0);
-        let mut sums = vec![(zero, zero); self.lams.len()];
-        for (xi, parts) in rule {
-            let j = libm::j0(xi * r);
-            for (s, (p, q)) in sums.iter_mut().zip(parts) {
-                s.0 += j * p;
-                s.1 += j * q;
-            }
-        }
-        sums.iter()
-            .flat_map(|(p, q)| [p.re, p.im, q.re, q.im])
-            .collect()
     }
 
     /// The midplane rule for radii up to r_max: nodes ξ_i and, per exponent, the weighted
     /// (−w_i ξ_i q̄ K(ξ_i D), w_i ξ_i s̄ L_z(ξ_i D, 0)) (panels of at most five half-periods of
     /// (r_max + A) and 1.5/D, 20 points each, to ξ = 45/D where K, L_z ≤ 2.5(1 + t)e^(−t) are
-    /// below 1e-17 of the load's size).
-    #[allow(clippy::type_complexity)]
-    fn midplane_rule(&self, r_max: f64) -> Vec<(f64, Vec<(Complex64, Complex64)>)> {
+    /// below 1e-17 of the load's size). A smaller r_max has fewer nodes.
+    pub fn midplane_rule(&self, r_max: f64) -> CornerMidplaneRule {
         let (a, d) = (self.a, self.d);
         let x_end = 45.0 / d;
         let h = (5.0 * PI / (a + r_max)).min(1.5 / d);
@@ -537,6 +514,46 @@ impl CornerLoads {
                 nodes.push((xi, parts));
             }
         }
-        nodes
+        CornerMidplaneRule { r_max, nodes }
+    }
+}
+
+/// The corner enrichment fields' midplane σ_z(r, 0) for radii up to r_max on one node set
+/// ([`CornerLoads::midplane_rule`]): one J₀ per node serves all 4·count values at a radius.
+#[derive(Debug, Clone)]
+pub struct CornerMidplaneRule {
+    r_max: f64,
+    #[allow(clippy::type_complexity)]
+    nodes: Vec<(f64, Vec<(Complex64, Complex64)>)>,
+}
+
+impl CornerMidplaneRule {
+    /// The largest radius served.
+    pub fn r_max(&self) -> f64 {
+        self.r_max
+    }
+
+    /// For exponent k, [Re, Im] of the pressure field's σ_z(r, 0), then [Re, Im] of the shear
+    /// field's (so that amplitudes c = (x₀ − ix₁, x₂ − ix₃) give Σ_j x_j·basis_j =
+    /// Re(c_p F_p + c_s F_s), the fit's convention); None beyond r_max.
+    pub fn basis(&self, r: f64) -> Option<Vec<f64>> {
+        if r > self.r_max {
+            return None;
+        }
+        let zero = Complex64::new(0.0, 0.0);
+        let count = self.nodes.first().map_or(0, |n| n.1.len());
+        let mut sums = vec![(zero, zero); count];
+        for (xi, parts) in &self.nodes {
+            let j = libm::j0(xi * r);
+            for (s, (p, q)) in sums.iter_mut().zip(parts) {
+                s.0 += j * p;
+                s.1 += j * q;
+            }
+        }
+        Some(
+            sums.iter()
+                .flat_map(|(p, q)| [p.re, p.im, q.re, q.im])
+                .collect(),
+        )
     }
 }

@@ -24,7 +24,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::corner::{Component, CornerLoads};
+use super::corner::{Component, CornerLoads, CornerMidplaneRule};
 use super::eigen::{lame_field, symmetric_roots, uniform_field, Mode, ModeField};
 use super::fit::{fit, heights, Boundary, Fit, HoleData};
 use super::profile::TractionProfile;
@@ -478,6 +478,13 @@ impl HolePlate {
         self.corner
             .as_ref()
             .map_or_else(Vec::new, |c| c.midplane_basis(r, self.corner_r_max))
+    }
+
+    /// A node set for [`Self::corner_midplane_basis`]-values at radii up to `r_max`
+    /// ([`CornerLoads::midplane_rule`]: fewer nodes for a smaller `r_max`); None without
+    /// enrichment.
+    pub fn corner_midplane_rule(&self, r_max: f64) -> Option<CornerMidplaneRule> {
+        self.corner.as_ref().map(|c| c.midplane_rule(r_max))
     }
 
     /// The fitted real amplitudes of the enrichment's fields (4 per exponent; empty without
