@@ -459,12 +459,15 @@ impl HolePlate {
         self.modes_midplane(r) + dot(self.corner_weights(), &self.corner_midplane_basis(r))
     }
 
-    /// The modes' part of [`Self::correction_midplane`].
+    /// The modes' part of [`Self::correction_midplane`] (modes whose share is bounded below
+    /// 1e-18 P there are skipped: [`Mode::midplane_bound`]).
     pub fn modes_midplane(&self, r: f64) -> f64 {
+        let negligible = 1e-18 * self.p_ref;
         self.fit.as_ref().map_or(0.0, |f| {
             self.modes
                 .iter()
                 .zip(&f.modes)
+                .filter(|(m, c)| c.norm() * m.midplane_bound(r) > negligible)
                 .map(|(m, c)| (c * m.midplane_sigma_z(r)).re)
                 .sum()
         })
