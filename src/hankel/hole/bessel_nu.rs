@@ -81,7 +81,13 @@ pub struct NormalBessel {
     gamma1: Complex64,
     hankel: Vec<Complex64>,
     x_a: f64,
+    /// Neumann weights (ν)_m/m!, m = 0…[`WEIGHTS`] − 1, for Miller's normalisation.
+    weights: Vec<Complex64>,
 }
+
+/// Neumann weights kept per order: Miller's start m_top = (x + 6x^(1/3) + 16)/2 stays below
+/// this for x < 98 (the recurrence's range ends at x_a = max(25, |ν|²)); beyond, computed.
+const WEIGHTS: usize = 72;
 
 impl NormalBessel {
     /// The function of order `nu` (Re ν > 0).
@@ -93,11 +99,18 @@ impl NormalBessel {
             let j = (2 * k + 1) as f64;
             a = a * (4.0 * nu * nu - j * j) / (8.0 * (k + 1) as f64);
         }
+        let mut weights = Vec::with_capacity(WEIGHTS);
+        let mut w = Complex64::new(1.0, 0.0);
+        for m in 0..WEIGHTS {
+            weights.push(w);
+            w = w * (nu + m as f64) / (m + 1) as f64;
+        }
         Self {
             nu,
             gamma1: gamma(nu + 1.0),
             hankel,
             x_a: nu.norm_sqr().max(25.0),
+            weights,
         }
     }
 
@@ -181,11 +194,21 @@ impl NormalBessel {
         let nu = self.nu;
         let m_top = (((x + 6.0 * x.cbrt() + 16.0) / 2.0).ceil() as usize).max(count);
         let k_top = 2 * m_top;
-        // weight (ν)_m/m! at m = m_top, then downward by w_(m−1) = w_m·m/(ν + m − 1)
-        let mut w = Complex64::new(1.0, 0.0);
-        for m in 1..=m_top {
-            w = w * (nu + (m - 1) as f64) / m as f64;
-        }
+        // weights (ν)_m/m! (kept, or computed upward for a far start)
+        let computed;
+        let weights = if m_top < WEIGHTS {
+            &self.weights
+        } else {
+            let mut v = Vec::with_capacity(m_top + 1);
+            let mut w = Complex64::new(1.0, 0.0);
+            for m in 0..=m_top {
+                v.push(w);
+                w = w * (nu + m as f64) / (m + 1) as f64;
+            }
+            computed = v;
+            &computed
+        };
+        let mut w = weights[m_top];
         let zero = Complex64::new(0.0, 0.0);
         let (mut y_next, mut y) = (zero, Complex64::new(1e-30, 0.0));
         let mut kept = vec![zero; count.max(1)];
@@ -200,8 +223,8 @@ impl NormalBessel {
             }
             // y now holds y_(k−1)
             if (k - 1) % 2 == 0 {
-                w = w * m as f64 / (nu + (m - 1) as f64);
                 m -= 1;
+                w = weights[m];
                 sum += (nu + (k - 1) as f64) * w * y;
             }
             if y.re.abs() + y.im.abs() > 1e200 {
