@@ -11,7 +11,13 @@
 //! 500–1000 ξ-nodes, the modes N complex K₀/K₁ pairs). σ_z(r, 0) is analytic in the strip
 //! |Im r| < D (its ξ-integrand is bounded by e^(−ξD)·e^(ξ|Im r|)), so on an interval of
 //! half-width D/4 the coefficients fall like ρ^(−k), ρ = 4 + √17 ≈ 8.1: 17 points give ~1e-15
-//! of the scale.
+//! of the scale. The corner enrichment's fields do not change with N either (only their
+//! amplitudes do): their midplane σ_z are kept at the scan radii and interpolated on the
+//! bracket the same way (to 1e-13 of each field's size; the amplitude-weighted interpolation
+//! error joins R_o's estimate), each on a node set sized for the radii it serves.
+//!
+//! N doubles until R_o's whole error estimate is below `r_o_tolerance`·R_o (see [`super`] for
+//! the hole's share of it).
 
 use super::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};
 use super::corner::CornerMidplaneRule;
