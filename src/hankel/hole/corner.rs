@@ -39,7 +39,7 @@
 //! ```
 
 use super::bessel_nu::NormalBessel;
-use super::corner_quad::{expint_table, tail, ProductSeries};
+use super::corner_quad::{expint_table_extended, tail, ProductSeries};
 use crate::hankel::kernel::{KernelNode, Kernels};
 use crate::hankel::kernel_shear::ShearKernels;
 use crate::hankel::quadrature::gauss_legendre;
@@ -405,9 +405,31 @@ impl CornerLoads {
                 }
             }
         }
-        // tail beyond X in closed form
+        // tail beyond X in closed form; the E_p tables per height and family of exponents
+        // λ_k + j (one extended table serves them all)
         let hs = [self.half_space(0), self.half_space(1)];
+        let kappas: Vec<f64> = [1.0, -1.0]
+            .iter()
+            .flat_map(|s1| [1.0, -1.0].map(|s2| s1 * a + s2 * r))
+            .collect();
+        let tables: Vec<Vec<Vec<Vec<Complex64>>>> = az
+            .iter()
+            .map(|&zh| {
+                let y = d - zh;
+                if y * x_end > DECAYED {
+                    return Vec::new();
+                }
+                self.families
+                    .iter()
+                    .map(|f| {
+                        let (base, extra) = (f[0].order(), f.len() - 2);
+                        expint_table_extended(base, y, x_end, &kappas, extra)
+                    })
+                    .collect()
+            })
+            .collect();
         for (k, &lam) in self.lams.iter().enumerate() {
+            let (family, offset) = self.members[k];
             let pref = [a * a / (2.0 * lam), a * a / (4.0 * lam * (lam + 1.0))];
             let series: Vec<[ProductSeries; 2]> = (0..2)
                 .map(|kind| {
@@ -419,14 +441,21 @@ impl CornerLoads {
                     [0, 1].map(|n| ProductSeries::new(nu_t, tau, n, a, r))
                 })
                 .collect();
-            let kappas: Vec<f64> = series[0][0].parts.iter().map(|p| p.0).collect();
+            debug_assert!(series[0][0]
+                .parts
+                .iter()
+                .zip(&kappas)
+                .all(|(p, k)| p.0 == *k));
             let x_lam = (-lam * x_end.ln()).exp();
             for (hi, &zh) in az.iter().enumerate() {
                 let y = d - zh;
-                if y * x_end > DECAYED {
+                if tables[hi].is_empty() {
                     continue;
                 }
-                let e = expint_table(lam, y, x_end, &kappas);
+                let e: Vec<&[Complex64]> = tables[hi][family]
+                    .iter()
+                    .map(|row| &row[offset..])
+                    .collect();
                 for (ci, tc) in ts.iter().enumerate() {
                     for kind in 0..2 {
                         let sign = if kind == 0 { 1.0 } else { -1.0 };

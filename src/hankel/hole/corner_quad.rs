@@ -181,12 +181,24 @@ impl ProductSeries {
 /// E_(λ−1+j)(ω_s X) for j = 0…[`TAIL_TERMS`] + 1 and the four ω_s = y − iκ_s of a [`ProductSeries`]
 /// (κ depends on r only, so one table serves every series at that radius and height y).
 pub fn expint_table(lam: Complex64, y: f64, x: f64, kappas: &[f64]) -> Vec<Vec<Complex64>> {
+    expint_table_extended(lam, y, x, kappas, 0)
+}
+
+/// [`expint_table`] with `extra` more terms per row: row[j..] is then the table of λ + j for
+/// j ≤ `extra` (exponents λ, λ + 1, … share one table).
+pub fn expint_table_extended(
+    lam: Complex64,
+    y: f64,
+    x: f64,
+    kappas: &[f64],
+    extra: usize,
+) -> Vec<Vec<Complex64>> {
     let mut out: Vec<Vec<Complex64>> = Vec::with_capacity(kappas.len());
     for (i, &k) in kappas.iter().enumerate() {
         // equal κ (A − r and r − A on the hole, both 0) share one sequence
         let row = match kappas[..i].iter().position(|&q| q == k) {
             Some(j) => out[j].clone(),
-            None => expint_sequence(lam - 1.0, TAIL_TERMS + 2, Complex64::new(y, -k) * x),
+            None => expint_sequence(lam - 1.0, TAIL_TERMS + 2 + extra, Complex64::new(y, -k) * x),
         };
         out.push(row);
     }
@@ -194,12 +206,13 @@ pub fn expint_table(lam: Complex64, y: f64, x: f64, kappas: &[f64]) -> Vec<Vec<C
 }
 
 /// ∫_X^∞ (α + βyξ)e^(−yξ) ξ^q (ξA)^τ Λ_ν(ξA) J_n(ξr) dξ from the series `ser` (of that ν, τ, n)
-/// with ν − τ = λ, the table `e` = [`expint_table`]`(λ, y, X, κ's)` and `x_lam` = X^(−λ), for
+/// with ν − τ = λ, the table `e` = [`expint_table`]`(λ, y, X, κ's)` (its rows, or their
+/// tails from j of an extended table of λ − j) and `x_lam` = X^(−λ), for
 /// q ∈ {0, 1}.
 #[allow(clippy::too_many_arguments)]
 pub fn tail(
     ser: &ProductSeries,
-    e: &[Vec<Complex64>],
+    e: &[&[Complex64]],
     x_lam: Complex64,
     q: usize,
     alpha: f64,
