@@ -65,16 +65,20 @@ pub fn single_plate_separation(
     let h = sep.step * d;
     let mut scan_cache: Vec<(f64, Vec<f64>)> = Vec::new();
     let mut local: Option<(LocalMidplane, LocalMidplane)> = None;
-    // The corner fields' midplane σ_z on node sets sized for the radii asked: the scan's (to
-    // r_end) and the bracket's (to its upper end, ~2× fewer nodes for its 17–65 radii).
-    let scan_rule = holed.corner_midplane_rule(r_end);
+    // The corner fields' midplane σ_z on a node set sized for the radii asked: to B + 4D
+    // (Table 1's brackets end by B + 2.5D; the fewer radii the rule serves, the fewer nodes),
+    // beyond that the plate's own (to B + 20D) for the scan and one sized for the bracket.
+    let near_rule = holed.corner_midplane_rule((b + 4.0 * d).min(r_end));
     loop {
         let weights = holed.corner_weights().to_vec();
         let mut scan = |k: usize| {
             let r = (b + k as f64 * h).min(r_end);
             while scan_cache.len() <= k {
                 let rk = (b + scan_cache.len() as f64 * h).min(r_end);
-                scan_cache.push((rule.eval(rk).value, corner_basis(&holed, &scan_rule, rk)));
+                scan_cache.push((
+                    rule.eval(rk).value,
+                    corner_basis(&holed, near_rule.as_ref(), rk),
+                ));
             }
             let (slab, corner) = &scan_cache[k];
             let value = slab + holed.modes_midplane(r) + dot(&weights, corner);
@@ -86,9 +90,13 @@ pub fn single_plate_separation(
         if local.as_ref().is_none_or(|l| l.0.lo != a || l.0.hi != c) {
             let slab = LocalMidplane::new(|r| vec![rule.eval(r).value], a, c, |_, _| sigma_tol);
             // the corner fields to ~1e-13 of their size (the rounding of their sums)
-            let bracket_rule = holed.corner_midplane_rule(c);
+            let bracket_rule = match &near_rule {
+                Some(q) if q.r_max() >= c => None,
+                _ => holed.corner_midplane_rule(c),
+            };
+            let bracket_rule = bracket_rule.as_ref().or(near_rule.as_ref());
             let corner = LocalMidplane::new(
-                |r| corner_basis(&holed, &bracket_rule, r),
+                |r| corner_basis(&holed, bracket_rule, r),
                 a,
                 c,
                 |_, s| 1e-13 * s,
@@ -175,9 +183,8 @@ pub fn single_plate_separation(
 }
 
 /// The corner fields' midplane basis at r from `rule` if it serves r, else the plate's own.
-fn corner_basis(holed: &HolePlate, rule: &Option<CornerMidplaneRule>, r: f64) -> Vec<f64> {
-    rule.as_ref()
-        .and_then(|q| q.basis(r))
+fn corner_basis(holed: &HolePlate, rule: Option<&CornerMidplaneRule>, r: f64) -> Vec<f64> {
+    rule.and_then(|q| q.basis(r))
         .unwrap_or_else(|| holed.corner_midplane_basis(r))
 }
 
