@@ -64,20 +64,20 @@
 //! (B/A = 1.3, A/D ≤ 0.75) at N = 16, with estimates of 1.3e-8–8.8e-7 R_o and actual errors of
 //! 9e-14–9e-8 R_o (example 18).
 //!
-//! **Cost** (R_o to 1e-6, default parameters, A = 0.1, ν = 0.3; example 18, minimum of 15 runs,
-//! one thread, load ≈ 1 on the 2-core machine; medians 1–10 % higher): 5.4–8.0 ms for the ten
-//! rows that stop at N = 8, 9.4 and 9.8 ms for the two at N = 16 (81 ms for all twelve; before
-//! the R_o-based stopping rule and the work below, 7.2–26 ms and 171 ms). The slab's traction
-//! on the hole is computed once, at M/2 + 1 Chebyshev–Lobatto heights (M = 24–72 on Table 1,
-//! predicted from the load edge's distance to the hole, [`profile`]), 4–12 thousand ξ-nodes,
-//! 1.1–3.0 ms (criterion; Wynn's ε updated in O(window) per panel,
-//! [`crate::hankel::quadrature::WynnWindow`]). Each N then costs the corner fields' tractions at
-//! the new heights (12-point panels, decayed contributions skipped, one backward recurrence per
-//! family of orders for the transforms: ~30 % of the N = 16 runs), the fit (Householder QR) and
-//! residual, and a root search on the modes' closed forms: the slab's midplane σ_z and the
-//! corner fields' are interpolated on the root's bracket once, on node sets sized for it. The
-//! direct route ([`SlabSampling::Direct`]: every fitted and checked height integrated) costs
-//! 9.8–20 ms on the same geometries.
+//! **Cost** (R_o to 1e-6, default parameters, A = 0.1, ν = 0.3; example 18, minimum of 21 runs,
+//! one thread, load ≈ 1 on the 2-core machine; medians 2–4 % higher): 4.6–6.5 ms for the ten
+//! rows that stop at N = 8, 8.7 ms for the two at N = 16 (72 ms for all twelve; before the
+//! R_o-based stopping rule and the work below, 7.2–26 ms and 171 ms). The slab's traction on the
+//! hole is computed once, at M/2 + 1 Chebyshev–Lobatto heights (M = 24–72 on Table 1, predicted
+//! from the load edge's distance to the hole, [`profile`]), 4–12 thousand ξ-nodes, 1.1–3.0 ms
+//! (criterion; Wynn's ε updated in O(window) per panel,
+//! [`crate::hankel::quadrature::WynnWindow`]): ~30 % of a run. Each N then costs the corner
+//! fields' tractions at the new heights (12-point panels, decayed contributions skipped, one
+//! backward recurrence and one E_p table per family of exponents λ₁ + j: ~25–35 % of a run),
+//! the fit (Householder QR) and residual, and a root search on the modes' closed forms: the
+//! slab's midplane σ_z and the corner fields' are interpolated on the root's bracket once, on a
+//! node set sized for it (~15 %). The direct route ([`SlabSampling::Direct`]: every fitted and
+//! checked height integrated) costs 9.3–18 ms on the same geometries.
 //!
 //! **Finite rim.** With `OuterRadius::Finite(C)` the same treatment frees r = C: N modes growing
 //! outward (I₀, I₁(λ_k r), [`bessel_i`]) and the uniform in-plane state σ_r = σ_θ join the
