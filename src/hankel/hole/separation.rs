@@ -32,8 +32,10 @@ use std::time::Instant;
 
 /// R_o of `plate` with its hole made traction-free (see [`super`]); the hole's fit is
 /// described by the returned [`HoleInfo`]. R_o's error estimate is the bracket half-width, plus
-/// (midplane quadrature error + the hole data's quadrature error)/slope at R_o, plus the hole's
-/// share (the larger of the last two changes of R_o as N doubled, or max residual·P/slope).
+/// (midplane quadrature and interpolation errors + the hole data's quadrature error)/slope at
+/// R_o, plus the hole's share (the last change of R_o as N doubled when the doublings contract,
+/// else the larger of the last two; at the first N max residual·P/slope); N doubles until it is
+/// below `hole.r_o_tolerance`·R_o.
 pub fn single_plate_separation(
     plate: &SinglePlate,
     sep: &SeparationParams,
