@@ -1,5 +1,5 @@
-//! Time of the single plate with a hole by the Hankel route: R_o with N doubled until R_o is
-//! converged to 1e-6 (two successive changes) or N = 64, for the easiest and the hardest of
+//! Time of the single plate with a hole by the Hankel route: R_o with N doubled until R_o's
+//! error estimate is below 1e-6 R_o (or N = 64), for the easiest and the hardest of
 //! Table 1's geometries, by the default route (slab traction on the hole as a Chebyshev profile
 //! in z) and by the direct per-height route it replaced; then the pieces: the slab's traction
 //! profile alone, and the hole fit alone at N = 16. Time against error for all twelve

@@ -60,6 +60,18 @@ fn normal_bessel_gamma_and_roots_match_mpmath() {
                     let err = (pair - v).norm() / v.norm();
                     assert!(err < 1e-13, "pair Λ_{nu}({x}) = {pair} vs {v}: {err:e}");
                 }
+                // and as the top of a family ν − j … ν from one recurrence at ν − j (the
+                // corner transforms' use, families of λ_k + 0…3)
+                for j in 1..=3 {
+                    if nu.re > j as f64 {
+                        let family: Vec<NormalBessel> = (0..=j)
+                            .map(|i| NormalBessel::new(nu - (j - i) as f64))
+                            .collect();
+                        let top = NormalBessel::eval_family(&family, x)[j];
+                        let err = (top - v).norm() / v.norm();
+                        assert!(err < 1e-13, "family Λ_{nu}({x}) from ν − {j}: {err:e}");
+                    }
+                }
             }
             "G" => {
                 let got = gamma(nu);

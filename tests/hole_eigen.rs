@@ -160,3 +160,24 @@ fn each_mode_is_self_equilibrated_in_z() {
         );
     }
 }
+
+#[test]
+fn midplane_bound_bounds_the_midplane_stress() {
+    // Modes 1…128 for A/D from 0.05 to 20 (λA from ~0.1 to ~8000), radii from the hole out
+    // to 10 D: |σ_z(r, 0)| ≤ bound.
+    let roots = symmetric_roots(128);
+    for a_over_d in [0.05, 0.5, 1.0, 5.0, 20.0] {
+        let (d, a) = (0.1, 0.1 * a_over_d);
+        for x in &roots {
+            let m = Mode::new(*x, a, d, 0.3, 1.0);
+            for step in [0.0, 1e-3, 0.01, 0.1, 0.5, 1.0, 3.0, 10.0] {
+                let r = a + step * d;
+                let (value, bound) = (m.midplane_sigma_z(r).norm(), m.midplane_bound(r));
+                assert!(
+                    value <= bound,
+                    "A/D {a_over_d}, λD {x}, r {r}: {value:e} > {bound:e}"
+                );
+            }
+        }
+    }
+}

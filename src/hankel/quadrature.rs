@@ -181,6 +181,78 @@ fn wynn_in_place(s: &[f64], prev: &mut [f64], cur: &mut [f64]) -> f64 {
     best
 }
 
+/// Wynn's ε on the last `window` terms of a growing sequence, updated in O(window) per term:
+/// it keeps the newest entry of each column of the ε-table, ε_(k+1)^(n) = ε_(k−1)^(n+1) +
+/// 1/(ε_k^(n+1) − ε_k^(n)) (the newest entries of a column use only the newest terms, so they
+/// are the entries of the window's own table), and where a difference vanished or was not
+/// finite. [`Self::push`] returns bit for bit what [`wynn_epsilon`] returns on the window's
+/// terms (the same operations on the same operands, the same early exits; checked in the
+/// tests), at a cost of `window` divisions instead of window²/2.
+#[derive(Debug, Clone)]
+pub struct WynnWindow {
+    window: usize,
+    /// Terms pushed so far.
+    count: usize,
+    /// Newest entry of each column k < window.
+    last: Vec<f64>,
+    /// Per column k: the first term index n of the newest pair (ε_k^(n), ε_k^(n+1)) whose
+    /// difference vanished or was not finite.
+    broken: Vec<Option<usize>>,
+}
+
+impl WynnWindow {
+    /// An empty sequence with Wynn's ε on its last `window` (≥ 1) terms.
+    pub fn new(window: usize) -> Self {
+        let window = window.max(1);
+        Self {
+            window,
+            count: 0,
+            last: vec![0.0; window],
+            broken: vec![None; window],
+        }
+    }
+
+    /// Appends term `s` and returns the extrapolation of the last `window` terms.
+    pub fn push(&mut self, s: f64) -> f64 {
+        let m = self.count;
+        self.count += 1;
+        let n = self.count.min(self.window);
+        // new newest entries, column by column: ε_(k+1) from the old ε_(k−1), ε_k and the new ε_k
+        let (mut old_km1, mut new_k) = (0.0, s);
+        for k in 0..n {
+            let old_k = self.last[k];
+            self.last[k] = new_k;
+            if k + 1 < n {
+                let d = new_k - old_k;
+                if d == 0.0 || !d.is_finite() {
+                    self.broken[k] = Some(m - k - 1);
+                }
+                let next = old_km1 + 1.0 / d;
+                old_km1 = old_k;
+                new_k = next;
+            }
+        }
+        if n < 3 {
+            return s;
+        }
+        // the value wynn_epsilon gives on the window's n terms (first index m + 1 − n)
+        let first = m + 1 - n;
+        let mut best = self.last[0];
+        for k in 0..n - 1 {
+            if self.broken[k].is_some_and(|b| b >= first) {
+                return best;
+            }
+            if (k + 1) % 2 == 0 {
+                if !self.last[k + 1].is_finite() {
+                    return best;
+                }
+                best = self.last[k + 1];
+            }
+        }
+        best
+    }
+}
+
 /// ∫₀^∞ f(ξ) dξ for an integrand oscillating with angular frequency at most `omega` (> 0)
 /// whose non-oscillating factor varies on the ξ-scale `smooth` (use `f64::INFINITY` when it
 /// varies slower than the oscillation): see [`integrate_oscillatory_vec`].
@@ -220,7 +292,12 @@ pub fn integrate_oscillatory_vec<const N: usize, F: FnMut(f64) -> [f64; N]>(
     let rule = gauss_legendre(params.order);
     let window = params.window.max(3);
     let max_panels = params.max_panels.max(5);
-    let mut sums: [Vec<f64>; N] = std::array::from_fn(|_| Vec::with_capacity(64));
+    // Wynn's ε on the last `window` half-period sums, and (products) on the last `window`
+    // whole-period sums ending at the newest — the sums of one parity, alternately
+    let mut tables: [WynnWindow; N] = std::array::from_fn(|_| WynnWindow::new(window));
+    let mut whole: [[WynnWindow; 2]; N] =
+        std::array::from_fn(|_| std::array::from_fn(|_| WynnWindow::new(window)));
+    let mut second_value = [0.0; N];
     let mut extrapolated: [Vec<f64>; N] = std::array::from_fn(|_| Vec::with_capacity(64));
     let mut total = [0.0; N];
     let mut total_abs = [0.0; N];
@@ -246,9 +323,10 @@ pub fn integrate_oscillatory_vec<const N: usize, F: FnMut(f64) -> [f64; N]>(
         }
         k += 1;
         for j in 0..N {
-            sums[j].push(total[j]);
-            let from = sums[j].len().saturating_sub(window);
-            extrapolated[j].push(wynn_epsilon(&sums[j][from..]));
+            extrapolated[j].push(tables[j].push(total[j]));
+            if params.products {
+                second_value[j] = whole[j][k % 2].push(total[j]);
+            }
         }
         if k < 6 {
             continue;
@@ -263,20 +341,8 @@ pub fn integrate_oscillatory_vec<const N: usize, F: FnMut(f64) -> [f64; N]>(
             // a second extrapolation from every other partial sum (whole periods): it differs
             // from the first when the integrand beats with a slower frequency (products of
             // Bessel functions), where the half-period sums are not a clean alternation
-            let sj = &sums[j];
             let second = if params.products {
-                // the last `window` whole-period sums, oldest first, in a stack buffer
-                let tail = &sj[sj.len().saturating_sub(2 * window)..];
-                let mut buf = [0.0; 64];
-                let count = tail.len().div_ceil(2).min(buf.len());
-                for (b, v) in buf[..count]
-                    .iter_mut()
-                    .rev()
-                    .zip(tail.iter().rev().step_by(2))
-                {
-                    *b = *v;
-                }
-                wynn_epsilon(&buf[..count])
+                second_value[j]
             } else {
                 e[m - 1]
             };
@@ -321,6 +387,76 @@ pub fn integrate_oscillatory_vec<const N: usize, F: FnMut(f64) -> [f64; N]>(
                 out[j].error += (out[j].value - total[j]).abs();
             }
             return out;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{wynn_epsilon, WynnWindow};
+
+    /// The incremental table against the from-scratch ε on every window, bit for bit: partial
+    /// sums of alternating series (the use), random sequences, and sequences with repeated
+    /// terms, zero differences, huge and non-finite terms (the early exits).
+    #[test]
+    fn wynn_window_equals_wynn_epsilon_on_every_window() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut uniform = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut sequences: Vec<Vec<f64>> = Vec::new();
+        // partial sums of Σ (−1)^k/(k + 1)^p and of e^(−ak)cos(k)
+        for p in [0.5, 1.0, 2.0] {
+            let mut s = 0.0;
+            sequences.push(
+                (0..60)
+                    .map(|k| {
+                        s += (-1f64).powi(k) / (k as f64 + 1.0).powf(p);
+                        s
+                    })
+                    .collect(),
+            );
+        }
+        let mut s = 0.0;
+        sequences.push(
+            (0..60)
+                .map(|k| {
+                    s += (-0.05 * k as f64).exp() * (k as f64).cos();
+                    s
+                })
+                .collect(),
+        );
+        for _ in 0..40 {
+            let seq: Vec<f64> = (0..50)
+                .map(|_| {
+                    let u = uniform();
+                    match (uniform() * 20.0) as usize {
+                        0 => 1.0,       // repeats: zero differences
+                        1 => 1e300 * u, // overflow of the table
+                        2 => f64::NAN,
+                        3 => f64::INFINITY,
+                        _ => u,
+                    }
+                })
+                .collect();
+            sequences.push(seq);
+        }
+        sequences.push(vec![2.0; 30]);
+        for seq in &sequences {
+            for window in [1, 2, 3, 4, 7, 13, 14] {
+                let mut table = WynnWindow::new(window);
+                for end in 1..=seq.len() {
+                    let fast = table.push(seq[end - 1]);
+                    let slow = wynn_epsilon(&seq[end.saturating_sub(window)..end]);
+                    assert!(
+                        fast.to_bits() == slow.to_bits() || (fast.is_nan() && slow.is_nan()),
+                        "window {window}, {end} terms: {fast:e} vs {slow:e}"
+                    );
+                }
+            }
         }
     }
 }

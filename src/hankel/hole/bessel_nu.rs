@@ -81,7 +81,13 @@ pub struct NormalBessel {
     gamma1: Complex64,
     hankel: Vec<Complex64>,
     x_a: f64,
+    /// Neumann weights (ν)_m/m!, m = 0…[`WEIGHTS`] − 1, for Miller's normalisation.
+    weights: Vec<Complex64>,
 }
+
+/// Neumann weights kept per order: Miller's start m_top = (x + 6x^(1/3) + 16)/2 stays below
+/// this for x < 98 (the recurrence's range ends at x_a = max(25, |ν|²)); beyond, computed.
+const WEIGHTS: usize = 72;
 
 impl NormalBessel {
     /// The function of order `nu` (Re ν > 0).
@@ -93,11 +99,18 @@ impl NormalBessel {
             let j = (2 * k + 1) as f64;
             a = a * (4.0 * nu * nu - j * j) / (8.0 * (k + 1) as f64);
         }
+        let mut weights = Vec::with_capacity(WEIGHTS);
+        let mut w = Complex64::new(1.0, 0.0);
+        for m in 0..WEIGHTS {
+            weights.push(w);
+            w = w * (nu + m as f64) / (m + 1) as f64;
+        }
         Self {
             nu,
             gamma1: gamma(nu + 1.0),
             hankel,
             x_a: nu.norm_sqr().max(25.0),
+            weights,
         }
     }
 
@@ -144,44 +157,86 @@ impl NormalBessel {
     }
 
     fn miller(&self, x: f64) -> Complex64 {
-        self.miller_ratio(x).0
+        self.miller_ratios(x, 1).0
     }
 
-    /// Λ_ν(x) and y₁/y₀ = J_(ν+1)(x)/J_ν(x) by the backward recurrence.
     fn miller_ratio(&self, x: f64) -> (Complex64, Complex64) {
-        let nu = self.nu;
-        let m_top = ((x + 6.0 * x.cbrt() + 16.0) / 2.0).ceil() as usize;
-        let k_top = 2 * m_top;
-        // weight (ν)_m/m! at m = m_top, then downward by w_(m−1) = w_m·m/(ν + m − 1)
-        let mut w = Complex64::new(1.0, 0.0);
-        for m in 1..=m_top {
-            w = w * (nu + (m - 1) as f64) / m as f64;
+        let (l0, r) = self.miller_ratios(x, 2);
+        (l0, r[1])
+    }
+
+    /// Λ_(ν+j)(x), j = 0…len − 1, with `family[j]` the function of order ν + j (`family[0]`
+    /// = self): in the recurrence's range one backward run gives all,
+    /// Λ_(ν+j) = (ν + 1)_j (2/x)^j (y_j/y₀)Λ_ν; elsewhere each order's own route.
+    pub fn eval_family(family: &[NormalBessel], x: f64) -> Vec<Complex64> {
+        let x = x.abs();
+        let x_a = family.iter().fold(0.0f64, |m, f| m.max(f.x_a));
+        if family.is_empty() || x <= 2.0 || x >= x_a {
+            return family.iter().map(|f| f.eval(x)).collect();
         }
-        let (mut y_next, mut y) = (Complex64::new(0.0, 0.0), Complex64::new(1e-30, 0.0));
-        let mut y1 = Complex64::new(0.0, 0.0);
+        let nu = family[0].nu;
+        let (l0, ratios) = family[0].miller_ratios(x, family.len());
+        let mut factor = Complex64::new(1.0, 0.0);
+        ratios
+            .iter()
+            .enumerate()
+            .map(|(j, r)| {
+                if j > 0 {
+                    factor *= (nu + j as f64) * (2.0 / x);
+                }
+                factor * r * l0
+            })
+            .collect()
+    }
+
+    /// Λ_ν(x) and y_j/y₀ = J_(ν+j)(x)/J_ν(x), j = 0…count − 1, by the backward recurrence.
+    fn miller_ratios(&self, x: f64, count: usize) -> (Complex64, Vec<Complex64>) {
+        let nu = self.nu;
+        let m_top = (((x + 6.0 * x.cbrt() + 16.0) / 2.0).ceil() as usize).max(count);
+        let k_top = 2 * m_top;
+        // weights (ν)_m/m! (kept, or computed upward for a far start)
+        let computed;
+        let weights = if m_top < WEIGHTS {
+            &self.weights
+        } else {
+            let mut v = Vec::with_capacity(m_top + 1);
+            let mut w = Complex64::new(1.0, 0.0);
+            for m in 0..=m_top {
+                v.push(w);
+                w = w * (nu + m as f64) / (m + 1) as f64;
+            }
+            computed = v;
+            &computed
+        };
+        let mut w = weights[m_top];
+        let zero = Complex64::new(0.0, 0.0);
+        let (mut y_next, mut y) = (zero, Complex64::new(1e-30, 0.0));
+        let mut kept = vec![zero; count.max(1)];
         let mut sum = (nu + k_top as f64) * w * y;
         let mut m = m_top;
         for k in (1..=k_top).rev() {
             let y_prev = 2.0 * (nu + k as f64) / x * y - y_next;
             y_next = y;
             y = y_prev;
-            if k == 1 {
-                y1 = y_next;
+            if k < count {
+                kept[k] = y_next;
             }
             // y now holds y_(k−1)
             if (k - 1) % 2 == 0 {
-                w = w * m as f64 / (nu + (m - 1) as f64);
                 m -= 1;
+                w = weights[m];
                 sum += (nu + (k - 1) as f64) * w * y;
             }
             if y.re.abs() + y.im.abs() > 1e200 {
                 y *= 1e-200;
                 y_next *= 1e-200;
-                y1 *= 1e-200;
+                kept.iter_mut().for_each(|v| *v *= 1e-200);
                 sum *= 1e-200;
             }
         }
-        (nu * y / sum, y1 / y)
+        kept[0] = y;
+        let inv = 1.0 / y;
+        (nu * y / sum, kept.iter().map(|v| v * inv).collect())
     }
 
     fn asymptotic(&self, x: f64) -> Complex64 {

@@ -39,7 +39,7 @@
 //! ```
 
 use super::bessel_nu::NormalBessel;
-use super::corner_quad::{expint_table, tail, ProductSeries};
+use super::corner_quad::{expint_table_extended, tail, ProductSeries};
 use crate::hankel::kernel::{KernelNode, Kernels};
 use crate::hankel::kernel_shear::ShearKernels;
 use crate::hankel::quadrature::gauss_legendre;
@@ -75,6 +75,15 @@ pub fn corner_exponents(n: usize) -> Vec<Complex64> {
 /// λ₁, λ₁ + 1, λ₁ + 2, λ₂, λ₁ + 3, λ₂ + 1, …
 pub fn enrichment_exponents(n: usize) -> Vec<Complex64> {
     let roots = corner_exponents(n);
+    enrichment_terms(n)
+        .into_iter()
+        .map(|(k, j)| roots[k] + j as f64)
+        .collect()
+}
+
+/// The (root index k, offset j) of each of [`enrichment_exponents`]: λ = λ_(k+1) + j.
+fn enrichment_terms(n: usize) -> Vec<(usize, usize)> {
+    let roots = corner_exponents(n);
     let mut all: Vec<(f64, usize, usize)> = Vec::new();
     for (k, l) in roots.iter().enumerate() {
         for j in 0..n {
@@ -82,10 +91,7 @@ pub fn enrichment_exponents(n: usize) -> Vec<Complex64> {
         }
     }
     all.sort_by(|a, b| a.0.total_cmp(&b.0));
-    all.iter()
-        .take(n)
-        .map(|&(_, k, j)| roots[k] + j as f64)
-        .collect()
+    all.iter().take(n).map(|&(_, k, j)| (k, j)).collect()
 }
 
 /// A field component of the enrichment.
@@ -104,6 +110,21 @@ pub enum Component {
     /// w (odd in z).
     W,
 }
+
+/// Gauss–Legendre points per panel of the finite-part rule. A panel spans at most a half-period
+/// of the fastest oscillation e^(iξ(A + r)) and 1.5/D, the kernels' scale (their poles lie
+/// ≥ 3.7/D from the real ξ-axis): 12 points integrate both to ~1e-20 (the GL remainder for
+/// e^(iπu/2) on [−1, 1] is ~1e-20 at 10 points). Measured: the traction columns at 257 heights
+/// (A/D = 1 and 0.5) differ from a 20-point rule's by ≤ 5e-15 of each column's largest value,
+/// the rounding level of the sums (10 points: 1.3e-14).
+const NODES_PER_PANEL: usize = 12;
+
+/// Beyond ξ(D − |z|) = `DECAYED` a height's share of the integrals is dropped, and the tail
+/// too when X(D − |z|) exceeds it: every kernel there is e^(−ξ(D−|z|)) times a polynomial of
+/// degree ≤ 2 in ξD (≤ 70 on the rule), so the dropped terms are below 4·70²·e^(−45) ≈ 6e-16
+/// of the transform's value there, itself ≤ 1e-4 of its value at ξ = 0 (Λ_λ(ξA) decays like
+/// (ξA)^(−Re λ − ½) and XA ≥ 30).
+const DECAYED: f64 = 45.0;
 
 /// One integral term: coefficient, power q of ξ, Bessel order n of J_n(ξr), kernel index into
 /// [z, τ, r, m, n, w].
@@ -138,13 +159,17 @@ pub struct CornerLoads {
     lams: Vec<Complex64>,
     normal: Vec<NormalBessel>,
     shear: Vec<NormalBessel>,
+    /// Per Williams root used: the functions of orders λ_k + j, j = 0…(largest offset + 1),
+    /// which one backward recurrence serves ([`NormalBessel::eval_family`]).
+    families: Vec<Vec<NormalBessel>>,
+    /// Per exponent: (family, offset j) of its pressure transform's order (the shear's is j + 1).
+    members: Vec<(usize, usize)>,
     /// ξ beyond which the closed-form tail is used.
     x_cut: f64,
     /// The finite-part nodes for the hole r = A, with the transforms there (computed once).
     hole_nodes: Vec<Node>,
-    /// The midplane rule of the first r_max asked for (the fit asks again at every N).
-    #[allow(clippy::type_complexity)]
-    midplane_nodes: OnceLock<(f64, Vec<(f64, Vec<(Complex64, Complex64)>)>)>,
+    /// The midplane rule of the first r_max asked for.
+    midplane_nodes: OnceLock<CornerMidplaneRule>,
 }
 
 /// A node of the finite-part rule: ξ, weight, J₀(ξr), J₁(ξr), (q̄_k, s̄_k) for every exponent.
@@ -165,7 +190,28 @@ impl CornerLoads {
             .iter()
             .map(|l| (l + 1.0).norm_sqr().max(30.0) / a)
             .fold(20.0 / d, f64::max);
+        let roots = corner_exponents(n);
+        let terms = enrichment_terms(n);
+        let mut families = Vec::new();
+        let mut members = vec![(0, 0); n];
+        for (k, root) in roots.iter().enumerate() {
+            let top = terms.iter().filter(|t| t.0 == k).map(|t| t.1 + 2).max();
+            if let Some(top) = top {
+                for (i, t) in terms.iter().enumerate() {
+                    if t.0 == k {
+                        members[i] = (families.len(), t.1);
+                    }
+                }
+                families.push(
+                    (0..top)
+                        .map(|j| NormalBessel::new(root + j as f64))
+                        .collect(),
+                );
+            }
+        }
         let mut loads = Self {
+            families,
+            members,
             a,
             d,
             nu,
@@ -211,10 +257,10 @@ impl CornerLoads {
         ends
     }
 
-    /// The finite-part rule for radius r on [`Self::panel_ends`], 20 Gauss–Legendre points per
-    /// panel, with J₀(ξr), J₁(ξr) and the transforms at each node.
+    /// The finite-part rule for radius r on [`Self::panel_ends`], [`NODES_PER_PANEL`]
+    /// Gauss–Legendre points per panel, with J₀(ξr), J₁(ξr) and the transforms at each node.
     fn nodes(&self, r: f64) -> Vec<Node> {
-        let rule = gauss_legendre(20);
+        let rule = gauss_legendre(NODES_PER_PANEL);
         let ends = self.panel_ends(r);
         let mut out = Vec::with_capacity(ends.len() * rule.len());
         for e in ends.windows(2) {
@@ -225,9 +271,7 @@ impl CornerLoads {
                     xi,
                     weight: 0.5 * h * w,
                     bessel: [libm::j0(xi * r), libm::j1(xi * r)],
-                    transforms: (0..self.lams.len())
-                        .map(|k| self.transforms(k, xi))
-                        .collect(),
+                    transforms: self.transforms_all(xi),
                 });
             }
         }
@@ -267,6 +311,26 @@ impl CornerLoads {
             a * a * ln / (2.0 * l),
             a * a * x * ls / (4.0 * l * (l + 1.0)),
         )
+    }
+
+    /// [`Self::transforms`] of every exponent at once (one backward recurrence per family of
+    /// orders λ_k + j instead of one per exponent).
+    pub fn transforms_all(&self, xi: f64) -> Vec<(Complex64, Complex64)> {
+        let x = xi * self.a;
+        let values: Vec<Vec<Complex64>> = self
+            .families
+            .iter()
+            .map(|f| NormalBessel::eval_family(f, x))
+            .collect();
+        let a2 = self.a * self.a;
+        self.lams
+            .iter()
+            .zip(&self.members)
+            .map(|(l, &(f, j))| {
+                let (ln, ls) = (values[f][j], values[f][j + 1]);
+                (a2 * ln / (2.0 * l), a2 * x * ls / (4.0 * l * (l + 1.0)))
+            })
+            .collect()
     }
 
     /// The half-space limits (α, β) of the kernels [z, τ, r, m, n, w] of the pressure (kind 0)
@@ -316,6 +380,9 @@ impl CornerLoads {
             let (xi, wt, bes, tr) = (node.xi, node.weight, node.bessel, &node.transforms);
             let kt = KernelNode::new(xi * d);
             for (hi, &zh) in az.iter().enumerate() {
+                if xi * (d - zh) > DECAYED {
+                    continue;
+                }
                 let kh = kt.height(xi * zh);
                 let kn = Kernels::at_height(&kt, &kh, nu);
                 let ks = ShearKernels::at_height(&kt, &kh, nu);
@@ -338,9 +405,31 @@ impl CornerLoads {
                 }
             }
         }
-        // tail beyond X in closed form
+        // tail beyond X in closed form; the E_p tables per height and family of exponents
+        // λ_k + j (one extended table serves them all)
         let hs = [self.half_space(0), self.half_space(1)];
+        let kappas: Vec<f64> = [1.0, -1.0]
+            .iter()
+            .flat_map(|s1| [1.0, -1.0].map(|s2| s1 * a + s2 * r))
+            .collect();
+        let tables: Vec<Vec<Vec<Vec<Complex64>>>> = az
+            .iter()
+            .map(|&zh| {
+                let y = d - zh;
+                if y * x_end > DECAYED {
+                    return Vec::new();
+                }
+                self.families
+                    .iter()
+                    .map(|f| {
+                        let (base, extra) = (f[0].order(), f.len() - 2);
+                        expint_table_extended(base, y, x_end, &kappas, extra)
+                    })
+                    .collect()
+            })
+            .collect();
         for (k, &lam) in self.lams.iter().enumerate() {
+            let (family, offset) = self.members[k];
             let pref = [a * a / (2.0 * lam), a * a / (4.0 * lam * (lam + 1.0))];
             let series: Vec<[ProductSeries; 2]> = (0..2)
                 .map(|kind| {
@@ -352,17 +441,30 @@ impl CornerLoads {
                     [0, 1].map(|n| ProductSeries::new(nu_t, tau, n, a, r))
                 })
                 .collect();
-            let kappas: Vec<f64> = series[0][0].parts.iter().map(|p| p.0).collect();
+            debug_assert!(series[0][0]
+                .parts
+                .iter()
+                .zip(&kappas)
+                .all(|(p, k)| p.0 == *k));
+            let x_lam = (-lam * x_end.ln()).exp();
             for (hi, &zh) in az.iter().enumerate() {
                 let y = d - zh;
-                let e = expint_table(lam, y, x_end, &kappas);
+                if tables[hi].is_empty() {
+                    continue;
+                }
+                let e: Vec<&[Complex64]> = tables[hi][family]
+                    .iter()
+                    .map(|row| &row[offset..])
+                    .collect();
                 for (ci, tc) in ts.iter().enumerate() {
                     for kind in 0..2 {
                         let sign = if kind == 0 { 1.0 } else { -1.0 };
                         let mut v = zero;
                         for &(coef, q, n, ki) in tc {
                             let (al, be) = hs[kind][ki];
-                            v += sign * coef * tail(&series[kind][n], &e, lam, q, al, be, y, x_end);
+                            v += sign
+                                * coef
+                                * tail(&series[kind][n], &e, x_lam, q, al, be, y, x_end);
                         }
                         out[hi][k][ci][kind] += pref[kind] * v;
                     }
@@ -396,40 +498,27 @@ impl CornerLoads {
             .collect()
     }
 
-    /// σ_z(r, 0) of Σ_k Re(c_k,p F_k,pressure + c_k,s F_k,shear) for radii up to `r_max`: the
-    /// weights of a shared node set (see [`CornerMidplane`]).
-    pub fn midplane(&self, amplitudes: &[[Complex64; 2]], r_max: f64) -> CornerMidplane {
-        let fresh;
-        let rule = match self.midplane_nodes.get() {
-            Some((r, nodes)) if *r == r_max => nodes,
-            _ => {
-                fresh = self.midplane_rule(r_max);
-                if self.midplane_nodes.get().is_none() {
-                    let _ = self.midplane_nodes.set((r_max, fresh.clone()));
-                }
-                &fresh
-            }
-        };
-        let nodes = rule
-            .iter()
-            .map(|(xi, parts)| {
-                let c = amplitudes
-                    .iter()
-                    .zip(parts)
-                    .map(|(amp, (p, s))| (amp[0] * p + amp[1] * s).re)
-                    .sum();
-                (*xi, c)
-            })
-            .collect();
-        CornerMidplane { nodes, r_max }
+    /// The enrichment fields' midplane σ_z(r, 0) as real basis values (see
+    /// [`CornerMidplaneRule::basis`]): radii up to `r_max` on the node set of the first
+    /// `r_max` asked for (built then, kept), beyond or for another `r_max` the direct integral.
+    pub fn midplane_basis(&self, r: f64, r_max: f64) -> Vec<f64> {
+        let rule = self
+            .midplane_nodes
+            .get_or_init(|| self.midplane_rule(r_max));
+        match rule.basis(r) {
+            Some(b) if rule.r_max == r_max => b,
+            _ => self.fields(r, &[0.0], &[Component::SigmaZ])[0]
+                .iter()
+                .flat_map(|f| [f[0][0].re, f[0][0].im, f[0][1].re, f[0][1].im])
+                .collect(),
+        }
     }
 
     /// The midplane rule for radii up to r_max: nodes ξ_i and, per exponent, the weighted
     /// (−w_i ξ_i q̄ K(ξ_i D), w_i ξ_i s̄ L_z(ξ_i D, 0)) (panels of at most five half-periods of
     /// (r_max + A) and 1.5/D, 20 points each, to ξ = 45/D where K, L_z ≤ 2.5(1 + t)e^(−t) are
-    /// below 1e-17 of the load's size).
-    #[allow(clippy::type_complexity)]
-    fn midplane_rule(&self, r_max: f64) -> Vec<(f64, Vec<(Complex64, Complex64)>)> {
+    /// below 1e-17 of the load's size). A smaller r_max has fewer nodes.
+    pub fn midplane_rule(&self, r_max: f64) -> CornerMidplaneRule {
         let (a, d) = (self.a, self.d);
         let x_end = 45.0 / d;
         let h = (5.0 * PI / (a + r_max)).min(1.5 / d);
@@ -446,31 +535,54 @@ impl CornerLoads {
                     crate::hankel::kernel::midplane(t),
                     ShearKernels::midplane(t),
                 );
-                let parts = (0..self.lams.len())
-                    .map(|k| {
-                        let (qn, qs) = self.transforms(k, xi);
-                        (-wt * kp * qn, wt * ks * qs)
-                    })
+                let parts = self
+                    .transforms_all(xi)
+                    .into_iter()
+                    .map(|(qn, qs)| (-wt * kp * qn, wt * ks * qs))
                     .collect();
                 nodes.push((xi, parts));
             }
         }
-        nodes
+        CornerMidplaneRule { r_max, nodes }
     }
 }
 
-/// The fitted enrichment's midplane σ_z(r, 0) = Σ_i c_i J₀(ξ_i r) on a node set shared by all
-/// r ≤ r_max (panels of at most five half-periods of J₀(ξ(r_max + A))·Λ(ξA) and 1.5/D, 20 points
-/// each, to ξ = 45/D; the [`crate::hankel::midplane`] construction).
-#[derive(Debug, Clone, Default)]
-pub struct CornerMidplane {
-    nodes: Vec<(f64, f64)>,
+/// The corner enrichment fields' midplane σ_z(r, 0) for radii up to r_max on one node set
+/// ([`CornerLoads::midplane_rule`]): one J₀ per node serves all 4·count values at a radius.
+#[derive(Debug, Clone)]
+pub struct CornerMidplaneRule {
     r_max: f64,
+    #[allow(clippy::type_complexity)]
+    nodes: Vec<(f64, Vec<(Complex64, Complex64)>)>,
 }
 
-impl CornerMidplane {
-    /// σ_z(r, 0) for r ≤ r_max (None beyond).
-    pub fn eval(&self, r: f64) -> Option<f64> {
-        (r <= self.r_max).then(|| self.nodes.iter().map(|(xi, c)| c * libm::j0(xi * r)).sum())
+impl CornerMidplaneRule {
+    /// The largest radius served.
+    pub fn r_max(&self) -> f64 {
+        self.r_max
+    }
+
+    /// For exponent k, [Re, Im] of the pressure field's σ_z(r, 0), then [Re, Im] of the shear
+    /// field's (so that amplitudes c = (x₀ − ix₁, x₂ − ix₃) give Σ_j x_j·basis_j =
+    /// Re(c_p F_p + c_s F_s), the fit's convention); None beyond r_max.
+    pub fn basis(&self, r: f64) -> Option<Vec<f64>> {
+        if r > self.r_max {
+            return None;
+        }
+        let zero = Complex64::new(0.0, 0.0);
+        let count = self.nodes.first().map_or(0, |n| n.1.len());
+        let mut sums = vec![(zero, zero); count];
+        for (xi, parts) in &self.nodes {
+            let j = libm::j0(xi * r);
+            for (s, (p, q)) in sums.iter_mut().zip(parts) {
+                s.0 += j * p;
+                s.1 += j * q;
+            }
+        }
+        Some(
+            sums.iter()
+                .flat_map(|(p, q)| [p.re, p.im, q.re, q.im])
+                .collect(),
+        )
     }
 }

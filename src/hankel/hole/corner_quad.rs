@@ -19,8 +19,8 @@
 //!   (DLMF 8.19.8, 8.19.17), and E_p(0) = 1/(p − 1).
 //!
 //! On [0, X] panels no wider than a half-period π/(A + r) of the fastest oscillation and 1.5/D
-//! (the kernels' scale) carry a 20-point Gauss–Legendre rule (error ≈ 1e-25 of the amplitude, as
-//! in [`crate::hankel::midplane`]). The transforms Λ_λ(ξA), Λ_(λ+1)(ξA) and J₀, J₁ are shared by
+//! (the kernels' scale) carry a 12-point Gauss–Legendre rule (error ≈ 1e-20 of the amplitude;
+//! see `NODES_PER_PANEL` in [`super::corner`]). The transforms Λ_λ(ξA), Λ_(λ+1)(ξA) and J₀, J₁ are shared by
 //! every height and component at a node. Checked in `tests/hole_corner.rs` (E_p against mpmath,
 //! face conditions by Hankel inversion, the closed-form face value, equilibrium).
 //!
@@ -181,22 +181,39 @@ impl ProductSeries {
 /// E_(λ−1+j)(ω_s X) for j = 0…[`TAIL_TERMS`] + 1 and the four ω_s = y − iκ_s of a [`ProductSeries`]
 /// (κ depends on r only, so one table serves every series at that radius and height y).
 pub fn expint_table(lam: Complex64, y: f64, x: f64, kappas: &[f64]) -> Vec<Vec<Complex64>> {
-    kappas
-        .iter()
-        .map(|&k| {
-            let w = Complex64::new(y, -k) * x;
-            expint_sequence(lam - 1.0, TAIL_TERMS + 2, w)
-        })
-        .collect()
+    expint_table_extended(lam, y, x, kappas, 0)
+}
+
+/// [`expint_table`] with `extra` more terms per row: row[j..] is then the table of λ + j for
+/// j ≤ `extra` (exponents λ, λ + 1, … share one table).
+pub fn expint_table_extended(
+    lam: Complex64,
+    y: f64,
+    x: f64,
+    kappas: &[f64],
+    extra: usize,
+) -> Vec<Vec<Complex64>> {
+    let mut out: Vec<Vec<Complex64>> = Vec::with_capacity(kappas.len());
+    for (i, &k) in kappas.iter().enumerate() {
+        // equal κ (A − r and r − A on the hole, both 0) share one sequence
+        let row = match kappas[..i].iter().position(|&q| q == k) {
+            Some(j) => out[j].clone(),
+            None => expint_sequence(lam - 1.0, TAIL_TERMS + 2 + extra, Complex64::new(y, -k) * x),
+        };
+        out.push(row);
+    }
+    out
 }
 
 /// ∫_X^∞ (α + βyξ)e^(−yξ) ξ^q (ξA)^τ Λ_ν(ξA) J_n(ξr) dξ from the series `ser` (of that ν, τ, n)
-/// with ν − τ = λ, the table `e` = [`expint_table`]`(λ, y, X, κ's)`, for q ∈ {0, 1}.
+/// with ν − τ = λ, the table `e` = [`expint_table`]`(λ, y, X, κ's)` (its rows, or their
+/// tails from j of an extended table of λ − j) and `x_lam` = X^(−λ), for
+/// q ∈ {0, 1}.
 #[allow(clippy::too_many_arguments)]
 pub fn tail(
     ser: &ProductSeries,
-    e: &[Vec<Complex64>],
-    lam: Complex64,
+    e: &[&[Complex64]],
+    x_lam: Complex64,
     q: usize,
     alpha: f64,
     beta: f64,
@@ -206,7 +223,9 @@ pub fn tail(
     // ξ-power of the k-th term: e − k with e = q + τ − ν − 1 = q − λ − 1; ∫ξ^(e−k) e^(−ωξ) =
     // X^(e−k+1) E_(k−e), k − e = λ + (k + 1 − q); the β term has one more power of ξ.
     // X^(q−k−λ) = X^(−λ)·X^q·X^(−k)
-    let x_lam = (-lam * x.ln()).exp() * if q == 1 { x } else { 1.0 };
+    let x_lam = x_lam * if q == 1 { x } else { 1.0 };
+    let inv_x = 1.0 / x;
+    let beta_y = if y > 0.0 { beta * y * x } else { 0.0 };
     let mut out = Complex64::new(0.0, 0.0);
     for ((_, cc, c), et) in ser.parts.iter().zip(e) {
         let mut s = Complex64::new(0.0, 0.0);
@@ -214,11 +233,11 @@ pub fn tail(
         for (k, ck) in c.iter().enumerate().take(TAIL_TERMS - 1) {
             // E_(λ−1+j): α needs j = k + 2 − q, β (one more power) j = k + 1 − q
             let mut v = alpha * et[k + 2 - q];
-            if beta != 0.0 && y > 0.0 {
-                v += beta * y * x * et[k + 1 - q];
+            if beta_y != 0.0 {
+                v += beta_y * et[k + 1 - q];
             }
             s += ck * xk * v;
-            xk /= x;
+            xk *= inv_x;
         }
         s *= x_lam;
         out += cc * s;

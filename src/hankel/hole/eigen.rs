@@ -175,6 +175,19 @@ impl Mode {
         r0 * (self.alpha - (1.0 - 2.0 * self.nu))
     }
 
+    /// An upper bound of |[`Self::midplane_sigma_z`]| at r ≥ A for a decaying mode:
+    /// 2|α − (1 − 2ν)|e^(−Re λ (r − A)) (the scaled K₀(λr)/K₁(λA) is at most 1 in size —
+    /// Hankel's expansions, √(A/r)(1 + O(1/λA)), and K₀ < K₁ at small λA — the 2 a margin;
+    /// checked in `tests/hole_eigen.rs`), ∞ for a growing mode. Sums skip modes whose bound
+    /// times their amplitude is negligible.
+    pub fn midplane_bound(&self, r: f64) -> f64 {
+        if self.growing {
+            return f64::INFINITY;
+        }
+        let f = (self.alpha - (1.0 - 2.0 * self.nu)).norm();
+        2.0 * f * (-self.lam.re * (r - self.a).max(0.0)).exp()
+    }
+
     /// Every field at (r, z), r ≥ A, |z| ≤ D.
     pub fn field(&self, r: f64, z: f64) -> ModeField<Complex64> {
         self.field_at(self.radial(r), r, z)

@@ -14,10 +14,12 @@
 //! enrichment of [`super::corner`], four per exponent); equations: σ_r and τ_rz at every z_j,
 //! 2(M + 1) rows (at least about twice the unknowns). With a rim r = C the same heights are used
 //! there too, and the unknowns add the uniform in-plane state and N modes growing outward.
-//! Columns are scaled to unit norm and the system is solved by the SVD (singular values below
-//! 1e-14 of the largest dropped); the condition number of the scaled matrix is reported (with
+//! Columns are scaled to unit norm and the system is solved by Householder QR, whose small
+//! triangle's singular values give the condition number of the scaled matrix (reported; with
 //! the enrichment up to ~1e9 at N = 32: the singular fields and the modes overlap away from the
-//! corner, which the scaled SVD handles; the residual is measured, not inferred).
+//! corner; the residual is measured, not inferred); past 1e12 by the SVD instead, singular
+//! values below 1e-14 of the largest dropped (QR took 2.6 ms against the SVD's 7.4 ms at
+//! 258 × 129).
 //!
 //! **Residual.** The residual traction σ_r, τ_rz of slab + correction (extra columns included)
 //! on the union of collocation and check heights, max and RMS (trapezoid in θ, the Chebyshev
@@ -139,17 +141,30 @@ pub fn fit(modes: &[Mode], a: f64, uniform: bool, columns: usize, boundaries: &[
     for (j, s) in scale.iter().enumerate() {
         m.column_mut(j).scale_mut(*s);
     }
-    let svd = m.svd(true, true);
-    let smax = svd.singular_values.max();
-    let cut = 1e-14 * smax;
-    let kept = svd.singular_values.iter().filter(|&&s| s > cut).count();
-    let smin = svd
-        .singular_values
-        .iter()
-        .copied()
-        .filter(|&s| s > cut)
-        .fold(f64::INFINITY, f64::min);
-    let x = svd.solve(&rhs, cut).unwrap_or_else(|_| DVector::zeros(n));
+    // Householder QR (backward stable: the residual is near-optimal while the scaled matrix
+    // is far from rank-deficient); the singular values of the small triangle R — those of the
+    // scaled matrix — give the condition number. Past 1e12 the SVD's truncated solve instead.
+    let (rows_m, _) = m.shape();
+    let (x, smax, smin, kept) = if rows_m >= n {
+        let qr = m.clone().qr();
+        let r = qr.r();
+        let sv = r.singular_values();
+        let (smax, smin) = (sv.max(), sv.min());
+        let solved = (smin > 1e-12 * smax)
+            .then(|| {
+                let mut qtb = rhs.clone();
+                qr.q_tr_mul(&mut qtb);
+                let qtb = qtb.rows(0, n).into_owned();
+                r.solve_upper_triangular(&qtb)
+            })
+            .flatten();
+        match solved {
+            Some(x) => (x, smax, smin, n),
+            None => svd_solve(m, &rhs),
+        }
+    } else {
+        svd_solve(m, &rhs)
+    };
     let c: Vec<f64> = (0..n).map(|j| x[j] * scale[j]).collect();
     Fit {
         a,
@@ -162,6 +177,24 @@ pub fn fit(modes: &[Mode], a: f64, uniform: bool, columns: usize, boundaries: &[
         condition: smax / smin,
         dropped: n - kept,
     }
+}
+
+/// The least-squares solution by the SVD, singular values below 1e-14 of the largest dropped:
+/// (x, largest, smallest kept, number kept).
+fn svd_solve(m: DMatrix<f64>, rhs: &DVector<f64>) -> (DVector<f64>, f64, f64, usize) {
+    let n = m.ncols();
+    let svd = m.svd(true, true);
+    let smax = svd.singular_values.max();
+    let cut = 1e-14 * smax;
+    let kept = svd.singular_values.iter().filter(|&&s| s > cut).count();
+    let smin = svd
+        .singular_values
+        .iter()
+        .copied()
+        .filter(|&s| s > cut)
+        .fold(f64::INFINITY, f64::min);
+    let x = svd.solve(rhs, cut).unwrap_or_else(|_| DVector::zeros(n));
+    (x, smax, smin, kept)
 }
 
 impl Fit {

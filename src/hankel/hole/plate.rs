@@ -24,7 +24,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::corner::{Component, CornerLoads, CornerMidplane};
+use super::corner::{Component, CornerLoads, CornerMidplaneRule};
 use super::eigen::{lame_field, symmetric_roots, uniform_field, Mode, ModeField};
 use super::fit::{fit, heights, Boundary, Fit, HoleData};
 use super::profile::TractionProfile;
@@ -104,7 +104,8 @@ pub struct HolePlate {
     corner_rim_cache: HashMap<u64, Vec<f64>>,
     /// Fitted (pressure, shear) amplitudes per exponent.
     corner_amplitudes: Vec<[Complex64; 2]>,
-    corner_midplane: CornerMidplane,
+    /// Radii up to which the enrichment's midplane σ_z uses its shared node set.
+    corner_r_max: f64,
 }
 
 impl HolePlate {
@@ -167,7 +168,7 @@ impl HolePlate {
             corner_cache: HashMap::new(),
             corner_rim_cache: HashMap::new(),
             corner_amplitudes: Vec::new(),
-            corner_midplane: CornerMidplane::default(),
+            corner_r_max: 0.0,
         };
         if a > 0.0 {
             holed.solve(n);
@@ -330,12 +331,9 @@ impl HolePlate {
             .chunks(4)
             .map(|x| [Complex64::new(x[0], -x[1]), Complex64::new(x[2], -x[3])])
             .collect();
-        if let Some(corner) = &self.corner {
-            // the R_o scan reaches B + 12D by default, the equilibrium test B + 20D; beyond r_max
-            // the (slower) direct integral is used
-            let r_max = self.slab.transform().outer().max(a) + 20.0 * d;
-            self.corner_midplane = corner.midplane(&self.corner_amplitudes, r_max);
-        }
+        // the R_o scan reaches B + 12D by default, the equilibrium test B + 20D; beyond r_max
+        // the enrichment's midplane σ_z is the (slower) direct integral
+        self.corner_r_max = self.slab.transform().outer().max(a) + 20.0 * d;
         let level = HoleLevel {
             terms: n,
             collocation_points: colloc.len(),
@@ -458,23 +456,44 @@ impl HolePlate {
     /// The fitted correction's midplane σ_z(r, 0) (modes and corner enrichment; the Lamé field
     /// has none).
     pub fn correction_midplane(&self, r: f64) -> f64 {
-        let modes = self.fit.as_ref().map_or(0.0, |f| {
+        self.modes_midplane(r) + dot(self.corner_weights(), &self.corner_midplane_basis(r))
+    }
+
+    /// The modes' part of [`Self::correction_midplane`] (modes whose share is bounded below
+    /// 1e-18 P there are skipped: [`Mode::midplane_bound`]).
+    pub fn modes_midplane(&self, r: f64) -> f64 {
+        let negligible = 1e-18 * self.p_ref;
+        self.fit.as_ref().map_or(0.0, |f| {
             self.modes
                 .iter()
                 .zip(&f.modes)
+                .filter(|(m, c)| c.norm() * m.midplane_bound(r) > negligible)
                 .map(|(m, c)| (c * m.midplane_sigma_z(r)).re)
                 .sum()
-        });
-        let corner = self.corner.as_ref().map_or(0.0, |corner| {
-            self.corner_midplane.eval(r).unwrap_or_else(|| {
-                corner.fields(r, &[0.0], &[Component::SigmaZ])[0]
-                    .iter()
-                    .zip(&self.corner_amplitudes)
-                    .map(|(fk, c)| (c[0] * fk[0][0] + c[1] * fk[0][1]).re)
-                    .sum()
-            })
-        });
-        modes + corner
+        })
+    }
+
+    /// The corner enrichment's midplane σ_z(r, 0) field by field, 4 real values per exponent
+    /// ([`CornerLoads::midplane_basis`]; empty without enrichment): they do not depend on N,
+    /// so a caller scanning r at every N may keep them. The enrichment's σ_z is their dot
+    /// product with [`Self::corner_weights`].
+    pub fn corner_midplane_basis(&self, r: f64) -> Vec<f64> {
+        self.corner
+            .as_ref()
+            .map_or_else(Vec::new, |c| c.midplane_basis(r, self.corner_r_max))
+    }
+
+    /// A node set for [`Self::corner_midplane_basis`]-values at radii up to `r_max`
+    /// ([`CornerLoads::midplane_rule`]: fewer nodes for a smaller `r_max`); None without
+    /// enrichment.
+    pub fn corner_midplane_rule(&self, r_max: f64) -> Option<CornerMidplaneRule> {
+        self.corner.as_ref().map(|c| c.midplane_rule(r_max))
+    }
+
+    /// The fitted real amplitudes of the enrichment's fields (4 per exponent; empty without
+    /// enrichment or fit).
+    pub fn corner_weights(&self) -> &[f64] {
+        self.fit.as_ref().map_or(&[], |f| &f.extra)
     }
 
     /// Stresses of the plate with the hole at (r, z), r ≥ A: slab (extended load) + correction.
@@ -488,4 +507,9 @@ impl HolePlate {
         s.tau_rz.value += c.tau_rz;
         s
     }
+}
+
+/// Σ x_i y_i over the common length.
+pub(super) fn dot(x: &[f64], y: &[f64]) -> f64 {
+    x.iter().zip(y).map(|(a, b)| a * b).sum()
 }

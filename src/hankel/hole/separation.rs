@@ -11,9 +11,17 @@
 //! 500–1000 ξ-nodes, the modes N complex K₀/K₁ pairs). σ_z(r, 0) is analytic in the strip
 //! |Im r| < D (its ξ-integrand is bounded by e^(−ξD)·e^(ξ|Im r|)), so on an interval of
 //! half-width D/4 the coefficients fall like ρ^(−k), ρ = 4 + √17 ≈ 8.1: 17 points give ~1e-15
-//! of the scale.
+//! of the scale. The corner enrichment's fields do not change with N either (only their
+//! amplitudes do): their midplane σ_z are kept at the scan radii and interpolated on the
+//! bracket the same way (to 1e-13 of each field's size; the amplitude-weighted interpolation
+//! error joins R_o's estimate), each on a node set sized for the radii it serves.
+//!
+//! N doubles until R_o's whole error estimate is below `r_o_tolerance`·R_o (see [`super`] for
+//! the hole's share of it).
 
 use super::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};
+use super::corner::CornerMidplaneRule;
+use super::plate::dot;
 use super::{HoleInfo, HoleParams, HolePlate};
 use crate::error::positive;
 use crate::hankel::midplane::MidplaneRule;
@@ -24,8 +32,10 @@ use std::time::Instant;
 
 /// R_o of `plate` with its hole made traction-free (see [`super`]); the hole's fit is
 /// described by the returned [`HoleInfo`]. R_o's error estimate is the bracket half-width, plus
-/// (midplane quadrature error + the hole data's quadrature error)/slope at R_o, plus the hole's
-/// share (the larger of the last two changes of R_o as N doubled, or max residual·P/slope).
+/// (midplane quadrature and interpolation errors + the hole data's quadrature error)/slope at
+/// R_o, plus the hole's share (the last change of R_o as N doubled when the doublings contract,
+/// else the larger of the last two; at the first N max residual·P/slope); N doubles until it is
+/// below `hole.r_o_tolerance`·R_o.
 pub fn single_plate_separation(
     plate: &SinglePlate,
     sep: &SeparationParams,
@@ -52,66 +62,114 @@ pub fn single_plate_separation(
     let mut evaluations = 0;
     let mut previous: Option<f64> = None;
     let mut changes: Vec<f64> = Vec::new();
-    // The slab's σ_z at the scan radii B + kh does not change with N: kept across levels.
+    // The slab's σ_z and the corner fields' σ_z at the scan radii B + kh do not change with N:
+    // kept across levels (only the modes and the amplitudes do).
     let h = sep.step * d;
-    let mut scan_cache: Vec<f64> = Vec::new();
-    let mut local: Option<LocalMidplane> = None;
+    let mut scan_cache: Vec<(f64, Vec<f64>)> = Vec::new();
+    let mut local: Option<(LocalMidplane, LocalMidplane)> = None;
+    // The corner fields' midplane σ_z on a node set sized for the radii asked: to B + 4D
+    // (Table 1's brackets end by B + 2.5D; the fewer radii the rule serves, the fewer nodes),
+    // beyond that the plate's own (to B + 20D) for the scan and one sized for the bracket.
+    let near_rule = holed.corner_midplane_rule((b + 4.0 * d).min(r_end));
     loop {
+        let weights = holed.corner_weights().to_vec();
         let mut scan = |k: usize| {
             let r = (b + k as f64 * h).min(r_end);
             while scan_cache.len() <= k {
                 let rk = (b + scan_cache.len() as f64 * h).min(r_end);
-                scan_cache.push(rule.eval(rk).value);
+                scan_cache.push((
+                    rule.eval(rk).value,
+                    corner_basis(&holed, near_rule.as_ref(), rk),
+                ));
             }
-            (r, sign * (scan_cache[k] + holed.correction_midplane(r)))
+            let (slab, corner) = &scan_cache[k];
+            let value = slab + holed.modes_midplane(r) + dot(&weights, corner);
+            (r, sign * value)
         };
         let bracket = first_upward_crossing(&mut scan, r_end)?;
         let tol = rel_tol * b * 0.25;
         let ((a, fa), (c, fc)) = bracket;
-        if local.as_ref().is_none_or(|l| l.lo != a || l.hi != c) {
-            let l = LocalMidplane::new(&rule, a, c, sigma_tol);
-            evaluations += l.evaluations;
-            local = Some(l);
+        if local.as_ref().is_none_or(|l| l.0.lo != a || l.0.hi != c) {
+            let slab = LocalMidplane::new(|r| vec![rule.eval(r).value], a, c, |_, _| sigma_tol);
+            // the corner fields to ~1e-13 of their size (the rounding of their sums)
+            let bracket_rule = match &near_rule {
+                Some(q) if q.r_max() >= c => None,
+                _ => holed.corner_midplane_rule(c),
+            };
+            let bracket_rule = bracket_rule.as_ref().or(near_rule.as_ref());
+            let corner = LocalMidplane::new(
+                |r| corner_basis(&holed, bracket_rule, r),
+                a,
+                c,
+                |_, s| 1e-13 * s,
+            );
+            evaluations += slab.evaluations;
+            local = Some((slab, corner));
         }
-        let slab = local.as_ref().expect("built above");
+        let (slab, corner) = local.as_ref().expect("built above");
         let mut f = |r: f64| {
-            let s = slab.eval(r).unwrap_or_else(|| {
+            let s = slab.eval1(r).unwrap_or_else(|| {
                 evaluations += 1;
                 rule.eval(r).value
             });
-            sign * (s + holed.correction_midplane(r))
+            let basis = corner
+                .eval(r)
+                .unwrap_or_else(|| holed.corner_midplane_basis(r));
+            sign * (s + holed.modes_midplane(r) + dot(&weights, &basis))
         };
         let mut g = |x: f64| Ok::<f64, std::convert::Infallible>(f(x));
         let Ok(Root { x: r_o, half_width }) = brent(&mut g, a, fa, c, fc, tol, sep.max_iterations);
         let dr = (1e-4 * d).max(1e-6 * r_o);
         let slope = (f(r_o + dr) - f(r_o - dr)) / (2.0 * dr);
         let residual_max = holed.info().residual_max;
+        let residual_met = residual_max <= hole.residual_target;
         if let Some(p) = previous {
             changes.push((r_o - p).abs());
         }
-        // R_o's convergence in N is not monotone (the fit redistributes the corner residual):
-        // the larger of the last two changes estimates the remaining error.
-        let change = (changes.len() >= 2)
-            .then(|| {
-                changes[changes.len() - 2..]
-                    .iter()
-                    .copied()
-                    .fold(0.0, f64::max)
-            })
-            .or(changes.last().copied());
-        let converged = residual_max <= hole.residual_target
-            || (changes.len() >= 2 && change.is_some_and(|c| c <= hole.r_o_tolerance * r_o));
+        // The hole's share of R_o's error. With a single N, the bound max residual·P/slope
+        // (|δσ_z| ≤ max residual traction; see the module docs). After doublings, the last
+        // change of R_o: it bounds the current error whenever that error at least halves per
+        // doubling (|R_N − R_N/2| ≥ err(N/2) − err(N) ≥ err(N)). That contraction is checked
+        // on what is measured: the last two changes (the last at most half the one before),
+        // or after one doubling the residual (met, or at least halved). Without it, the
+        // larger of the last two changes (or of the change and the bound). (With the corner
+        // enrichment R_o's error falls 3–300× per doubling on Table 1: example 18.)
+        let bound = residual_max * p_ref / slope.abs();
+        let history = &holed.info().history;
+        let hole_error = match changes.len() {
+            0 => bound,
+            n => {
+                let last = changes[n - 1];
+                let before = (n >= 2).then(|| changes[n - 2]);
+                let contracting = match before {
+                    Some(c) => last <= 0.5 * c,
+                    None => {
+                        let r_prev = history[history.len() - 2].residual_max;
+                        residual_met || residual_max <= 0.5 * r_prev
+                    }
+                };
+                if contracting {
+                    last
+                } else {
+                    last.max(before.unwrap_or(bound))
+                }
+            }
+        };
+        // The slab's hole tractions enter the fit with their quadrature error, which the
+        // residual (measured against the same data) cannot see: add its effect too; and the
+        // local interpolants' errors (the corner fields' weighted by the fitted amplitudes).
+        let data_error = holed.info().slab_error * p_ref;
+        let corner_error = dot(
+            &weights.iter().map(|w| w.abs()).collect::<Vec<_>>(),
+            &corner.errors,
+        );
+        let error = half_width
+            + (slab.errors[0] + rule.eval(r_o).error + data_error + corner_error) / slope.abs()
+            + hole_error;
+        // Stop when R_o's whole estimate meets the R_o target (the residual target alone does
+        // not: at the first N its bound can exceed it), or N is fixed, or N can grow no more.
+        let converged = error <= hole.r_o_tolerance * r_o;
         if hole.terms.is_some() || converged || !holed.refine() {
-            // Hole error: the larger of the last two changes of R_o under doubling N (the
-            // residual falls algebraically, like N^(−1.74), so a change bounds what is left), or
-            // with a single N the bound max residual·P / slope.
-            let hole_error = change.unwrap_or(residual_max * p_ref / slope.abs());
-            // The slab's hole tractions enter the fit with their quadrature error, which the
-            // residual (measured against the same data) cannot see: add its effect too.
-            let data_error = holed.info().slab_error * p_ref;
-            let error = half_width
-                + (slab.error + rule.eval(r_o).error + data_error) / slope.abs()
-                + hole_error;
             let sep_info = SeparationInfo {
                 r_o,
                 error,
@@ -124,6 +182,12 @@ pub fn single_plate_separation(
         }
         previous = Some(r_o);
     }
+}
+
+/// The corner fields' midplane basis at r from `rule` if it serves r, else the plate's own.
+fn corner_basis(holed: &HolePlate, rule: Option<&CornerMidplaneRule>, r: f64) -> Vec<f64> {
+    rule.and_then(|q| q.basis(r))
+        .unwrap_or_else(|| holed.corner_midplane_basis(r))
 }
 
 /// The first compressive→tensile sign change of the scan `(r_k, f(r_k))`, k = 0, 1, … (r_0 = B,
@@ -147,47 +211,68 @@ fn first_upward_crossing(
     Err(SeparationError::NotFound { searched_to: r_end })
 }
 
-/// The slab's midplane σ_z(r, 0) on one scan interval [lo, hi] by Chebyshev interpolation on
-/// the Chebyshev–Lobatto grid (see the module docs): M = 16, doubled (nested) until the last
-/// three coefficients are below the tolerance, at most 64.
+/// Functions of r on one scan interval [lo, hi] (the slab's midplane σ_z(r, 0), or the corner
+/// enrichment's fields there) by Chebyshev interpolation on the Chebyshev–Lobatto grid (see the
+/// module docs): M = 16, doubled (nested) until the last three coefficients of every function
+/// are below its tolerance, at most 64.
 struct LocalMidplane {
     lo: f64,
     hi: f64,
-    coef: Vec<f64>,
-    /// Interpolation error estimate (2 × the largest of the last three coefficients).
-    error: f64,
-    /// Rule evaluations spent.
+    /// Chebyshev coefficients, one vector per function.
+    coef: Vec<Vec<f64>>,
+    /// Interpolation error estimates (2 × the largest of the last three coefficients).
+    errors: Vec<f64>,
+    /// Function evaluations spent.
     evaluations: usize,
 }
 
 impl LocalMidplane {
-    fn new(rule: &MidplaneRule, lo: f64, hi: f64, tol: f64) -> Self {
+    /// `at(r)` gives every function at r; `tol(j, s)` is function j's tolerance when its
+    /// largest sample is s.
+    fn new(
+        mut at: impl FnMut(f64) -> Vec<f64>,
+        lo: f64,
+        hi: f64,
+        tol: impl Fn(usize, f64) -> f64,
+    ) -> Self {
         let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-        let at = |x: f64| rule.eval(mid + half * x).value;
         let mut m = 16;
-        let mut values: Vec<f64> = lobatto_points(m).into_iter().map(at).collect();
+        let mut values: Vec<Vec<f64>> = lobatto_points(m)
+            .into_iter()
+            .map(|x| at(mid + half * x))
+            .collect();
         let mut evaluations = values.len();
+        let count = values[0].len();
         loop {
-            let coef = lobatto_coefficients(&values);
-            let error = 2.0 * coef[m - 2..].iter().fold(0.0f64, |e, c| e.max(c.abs()));
-            if error <= tol || m >= 64 {
+            let (mut coef, mut errors, mut ok) = (Vec::new(), Vec::new(), true);
+            for j in 0..count {
+                let column: Vec<f64> = values.iter().map(|v| v[j]).collect();
+                let scale = column.iter().fold(0.0f64, |s, v| s.max(v.abs()));
+                let c = lobatto_coefficients(&column);
+                let error = 2.0 * c[m - 2..].iter().fold(0.0f64, |e, c| e.max(c.abs()));
+                ok &= error <= tol(j, scale);
+                coef.push(c);
+                errors.push(error);
+            }
+            if ok || m >= 64 {
                 return Self {
                     lo,
                     hi,
                     coef,
-                    error,
+                    errors,
                     evaluations,
                 };
             }
             // nested doubling: the old values sit at the even points of the new grid
             let x = lobatto_points(2 * m);
+            let mut old = std::mem::take(&mut values).into_iter();
             values = (0..=2 * m)
                 .map(|j| {
                     if j % 2 == 0 {
-                        values[j / 2]
+                        old.next().expect("nested grid")
                     } else {
                         evaluations += 1;
-                        at(x[j])
+                        at(mid + half * x[j])
                     }
                 })
                 .collect();
@@ -195,14 +280,15 @@ impl LocalMidplane {
         }
     }
 
-    /// σ_z(r, 0) of the slab, or None outside [lo, hi].
-    fn eval(&self, r: f64) -> Option<f64> {
-        (r >= self.lo && r <= self.hi).then(|| {
-            clenshaw(
-                &self.coef,
-                (2.0 * r - self.lo - self.hi) / (self.hi - self.lo),
-            )
-        })
+    /// Every function at r, or None outside [lo, hi].
+    fn eval(&self, r: f64) -> Option<Vec<f64>> {
+        let x = (2.0 * r - self.lo - self.hi) / (self.hi - self.lo);
+        (r >= self.lo && r <= self.hi).then(|| self.coef.iter().map(|c| clenshaw(c, x)).collect())
+    }
+
+    /// The single function's value (the slab's interpolant).
+    fn eval1(&self, r: f64) -> Option<f64> {
+        self.eval(r).map(|v| v[0])
     }
 }
 
@@ -230,12 +316,13 @@ mod tests {
             for k in [2.0, 5.0] {
                 let lo = b + 0.5 * k * d;
                 let hi = lo + 0.5 * d;
-                let l = LocalMidplane::new(&rule, lo, hi, 1e-12);
-                assert!(l.error <= 1e-12, "estimate {:e}", l.error);
+                let l = LocalMidplane::new(|r| vec![rule.eval(r).value], lo, hi, |_, _| 1e-12);
+                let error = l.errors[0];
+                assert!(error <= 1e-12, "estimate {error:e}");
                 for i in 0..40 {
                     let r = lo + (hi - lo) * (i as f64 + 0.37) / 40.0;
-                    let diff = (l.eval(r).unwrap() - rule.eval(r).value).abs();
-                    assert!(diff <= l.error + 1e-14, "r {r}: {diff:e} vs {:e}", l.error);
+                    let diff = (l.eval1(r).unwrap() - rule.eval(r).value).abs();
+                    assert!(diff <= error + 1e-14, "r {r}: {diff:e} vs {error:e}");
                 }
                 assert!(l.eval(lo - 1e-9).is_none() && l.eval(hi + 1e-9).is_none());
             }

@@ -17,9 +17,10 @@
 //! returns at once. A batch runs as long as its nearest-to-face height needs, and until the
 //! others freeze every panel pays Wynn's ε (window 13, twice with the whole-period check) for
 //! each of them — with the Bessel calls, the two dominant costs (a profile of the quadrature
-//! spends ~45 % in Wynn's ε, ~25 % in Bessel functions): so a batch only takes heights within
-//! a factor 4 of distance to the face (see [`hole_tractions`]); that cut the profile's CPU time
-//! by 8–17 % against fixed batches of 8. The tolerance applies to the largest value in the
+//! spent ~45 % in Wynn's ε, ~25 % in Bessel functions, before the ε-table was updated
+//! incrementally, [`crate::hankel::quadrature::WynnWindow`], which cut the profile by ~25 %):
+//! so a batch only takes heights within a factor 4 of distance to the face (see
+//! [`hole_tractions`]); that cut the profile's CPU time by 8–17 % against fixed batches of 8. The tolerance applies to the largest value in the
 //! batch.
 //! The face height z = D, where the kernels do not decay, is left to `Slab::stress`, which
 //! integrates the half-space limit analytically there.
