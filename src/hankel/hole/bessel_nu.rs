@@ -89,16 +89,23 @@ pub struct NormalBessel {
 /// this for x < 98 (the recurrence's range ends at x_a = max(25, |ν|²)); beyond, computed.
 const WEIGHTS: usize = 72;
 
+/// The first `terms` Hankel-expansion coefficients a_k(ν) of DLMF 10.17.1:
+/// a_0 = 1, a_(k+1) = a_k (4ν² − (2k + 1)²)/(8(k + 1)).
+pub fn hankel_coefficients(nu: Complex64, terms: usize) -> Vec<Complex64> {
+    let mut out = Vec::with_capacity(terms);
+    let mut a = Complex64::new(1.0, 0.0);
+    for k in 0..terms {
+        out.push(a);
+        let j = (2 * k + 1) as f64;
+        a = a * (4.0 * nu * nu - j * j) / (8.0 * (k + 1) as f64);
+    }
+    out
+}
+
 impl NormalBessel {
     /// The function of order `nu` (Re ν > 0).
     pub fn new(nu: Complex64) -> Self {
-        let mut hankel = Vec::with_capacity(HANKEL_TERMS);
-        let mut a = Complex64::new(1.0, 0.0);
-        for k in 0..HANKEL_TERMS {
-            hankel.push(a);
-            let j = (2 * k + 1) as f64;
-            a = a * (4.0 * nu * nu - j * j) / (8.0 * (k + 1) as f64);
-        }
+        let hankel = hankel_coefficients(nu, HANKEL_TERMS);
         let mut weights = Vec::with_capacity(WEIGHTS);
         let mut w = Complex64::new(1.0, 0.0);
         for m in 0..WEIGHTS {

@@ -36,7 +36,7 @@
 //! assert!((e[1] - expint(2.0 * one, one)).norm() < 1e-14);
 //! ```
 
-use super::bessel_nu::ln_gamma;
+use super::bessel_nu::{hankel_coefficients, ln_gamma};
 use num_complex::Complex64;
 use std::f64::consts::PI;
 
@@ -125,18 +125,6 @@ pub fn expint_sequence(p0: Complex64, count: usize, w: Complex64) -> Vec<Complex
     out
 }
 
-/// Hankel-expansion coefficients a_k(ν) of DLMF 10.17.1, k = 0…[`TAIL_TERMS`].
-pub fn hankel_coefficients(nu: Complex64) -> Vec<Complex64> {
-    let mut out = Vec::with_capacity(TAIL_TERMS);
-    let mut a = Complex64::new(1.0, 0.0);
-    for k in 0..TAIL_TERMS {
-        out.push(a);
-        let j = (2 * k + 1) as f64;
-        a = a * (4.0 * nu * nu - j * j) / (8.0 * (k + 1) as f64);
-    }
-    out
-}
-
 /// The asymptotic form of (ξA)^τ Λ_ν(ξA)·J_n(ξr) = Σ_(s₁,s₂ = ±) C·ξ^(τ−ν−1) e^(iξ(s₁A + s₂r))
 /// Σ_k c_k ξ^(−k): for each sign pair (κ, C, c_k).
 #[derive(Debug, Clone)]
@@ -148,8 +136,8 @@ pub struct ProductSeries {
 impl ProductSeries {
     /// The series of (ξA)^`tau` Λ_`nu`(ξA)·J_`n`(ξr) (n = 0 or 1).
     pub fn new(nu: Complex64, tau: f64, n: usize, a: f64, r: f64) -> Self {
-        let an = hankel_coefficients(nu);
-        let bn = hankel_coefficients(Complex64::new(n as f64, 0.0));
+        let an = hankel_coefficients(nu, TAIL_TERMS);
+        let bn = hankel_coefficients(Complex64::new(n as f64, 0.0), TAIL_TERMS);
         let i = Complex64::new(0.0, 1.0);
         let phase_nu = 0.5 * PI * nu + 0.25 * PI;
         let phase_n = 0.5 * PI * n as f64 + 0.25 * PI;
