@@ -88,7 +88,9 @@ impl Mesh {
             });
         }
         for w in plates.windows(2) {
-            let (top, bottom) = (*w[0].z.points().last().unwrap(), w[1].z.points()[0]);
+            // a Spacing has at least two points (checked when it is built)
+            let (lower, upper) = (w[0].z.points(), w[1].z.points());
+            let (top, bottom) = (lower[lower.len() - 1], upper[0]);
             if (top - bottom).abs() > 1e-12 * (1.0 + top.abs()) {
                 return Err(InputError::Parameter {
                     field: "plate bottom z",
@@ -103,8 +105,9 @@ impl Mesh {
         let mut rows = 0;
         for p in plates {
             let z = node_line(&p.z, o);
+            let len = z.len();
             layout.push(PlateNodes { offset: rows, z });
-            rows += layout.last().unwrap().z.len();
+            rows += len;
         }
         let mut nodes = Vec::with_capacity(r.len() * rows);
         for &ri in &r {
