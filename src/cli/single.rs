@@ -9,6 +9,7 @@
 use super::args::{Element, Geometry};
 use boltzone::fem::single::{single_plate_r_o, Loading, SingleParams};
 use boltzone::fem::ElementKind;
+use boltzone::hankel::hole::{single_plate_separation, HoleParams};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
 /// Which solver computes R_o.
@@ -49,6 +50,10 @@ pub struct Args {
     /// Refinement levels (fem, ≥ 3 for an error estimate).
     #[arg(long, default_value_t = 5)]
     levels: usize,
+    /// Corner exponents λ₁, λ₁+1, λ₁+2, λ₂, … whose singular fields enrich the hole fit
+    /// (hankel; 0 = Papkovich–Fadle modes only, at most 6).
+    #[arg(long, default_value_t = HoleParams::default().corner_terms)]
+    corner_terms: usize,
     /// Print JSON instead of text.
     #[arg(long)]
     json: bool,
@@ -133,8 +138,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 
 /// `--method hankel`: R_o of the plate with its hole made traction-free (Hankel route).
 fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<()> {
-    use boltzone::hankel::hole::{single_plate_separation, HoleParams};
-    let (sep, hole) = single_plate_separation(plate, &Default::default(), &HoleParams::default())?;
+    let params = HoleParams {
+        corner_terms: args.corner_terms,
+        ..HoleParams::default()
+    };
+    let (sep, hole) = single_plate_separation(plate, &Default::default(), &params)?;
     let r_o_over_a = (args.geom.a > 0.0).then(|| sep.r_o / args.geom.a);
     if args.json {
         let v = serde_json::json!({
@@ -144,6 +152,7 @@ fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<()> {
             "r_o_error": sep.error,
             "outer_radius": args.c,
             "hole_terms": hole.terms,
+            "hole_corner_terms": hole.corner_terms,
             "hole_residual_max": hole.residual_max,
             "hole_residual_rms": hole.residual_rms,
             "rim_residual_max": hole.rim_residual_max,
@@ -167,8 +176,8 @@ fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<()> {
             println!("R_o / A  = {q:.7}");
         }
         println!(
-            "hole     = {} modes, residual traction max {:.2e} P, rms {:.2e} P, condition {:.1e}",
-            hole.terms, hole.residual_max, hole.residual_rms, hole.condition
+            "hole     = {} modes + {} corner exponents, residual traction max {:.2e} P, rms {:.2e} P, condition {:.1e}",
+            hole.terms, hole.corner_terms, hole.residual_max, hole.residual_rms, hole.condition
         );
         if args.c.is_some() {
             println!(
