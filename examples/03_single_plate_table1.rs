@@ -7,8 +7,9 @@
 //! Run: `cargo run --release --example 03_single_plate_table1 [levels] [rows]`
 //! (default 5 levels, all 12 rows).
 
+use boltzone::compare::Geometry;
 use boltzone::fem::single::{single_plate_r_o, SingleParams};
-use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+use boltzone::OuterRadius;
 
 fn main() -> anyhow::Result<()> {
     let mut args = std::env::args().skip(1);
@@ -41,14 +42,8 @@ pub fn run(levels: usize, rows: usize, target_percent: f64) -> anyhow::Result<()
     );
     let mut worst: f64 = 0.0;
     for row in boltzone::reference::table1().into_iter().take(rows) {
-        let load = FaceLoad::uniform(a, row.b(), 1.0)?;
-        let plate = SinglePlate::new(
-            a,
-            OuterRadius::Finite(1.54),
-            row.d(),
-            Material::unit(0.3)?,
-            load,
-        )?;
+        let plate = Geometry::new(a, row.b(), row.d(), 1.54, 0.3)?
+            .single_plate(OuterRadius::Finite(1.54))?;
         let (r_o, info) = single_plate_r_o(&plate, &params)?;
         let lv: Vec<String> = info
             .levels

@@ -6,8 +6,9 @@
 //!
 //! Run: `cargo run --release --example 11_rigid_nut [levels]` (default 5).
 
+use boltzone::compare::Geometry;
 use boltzone::fem::single::{single_plate_r_o, Loading, SingleParams};
-use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+use boltzone::OuterRadius;
 
 fn main() -> anyhow::Result<()> {
     let levels: usize = std::env::args()
@@ -29,14 +30,8 @@ pub fn run(levels: usize) -> anyhow::Result<()> {
         .into_iter()
         .filter(|r| r.a_over_d == 1.0)
     {
-        let load = FaceLoad::uniform(a, row.b(), 1.0)?;
-        let plate = SinglePlate::new(
-            a,
-            OuterRadius::Finite(1.54),
-            row.d(),
-            Material::unit(0.3)?,
-            load,
-        )?;
+        let plate = Geometry::new(a, row.b(), row.d(), 1.54, 0.3)?
+            .single_plate(OuterRadius::Finite(1.54))?;
         let mut res = Vec::new();
         for loading in [Loading::Pressure, Loading::UniformDisplacement] {
             let params = SingleParams {
