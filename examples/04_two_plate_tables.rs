@@ -32,11 +32,7 @@ fn joint(a: f64, b: f64, c: f64, d1: f64, d2: f64, m: Material, p: f64) -> Joint
 }
 
 fn check(name: &str, j: &Joint, s: &TwoPlateSolution) {
-    assert!(
-        s.info.converged,
-        "{name}: not converged: {:?}",
-        s.info.levels
-    );
+    assert!(s.converged, "{name}: not converged: {:?}", s.info.levels);
     let total: f64 = s.force.iter().sum();
     let rel = (total - j.load().total_force()).abs() / j.load().total_force();
     assert!(rel < 1e-8, "{name}: equilibrium off by {rel:e}");
@@ -96,7 +92,7 @@ pub fn main() {
             row.two,
             row.two - s.r_o / a,
             last.nodes,
-            1e3 * s.info.time,
+            1e3 * s.info.seconds,
             ratio,
             levels(s, a)
         );

@@ -182,7 +182,7 @@ pub fn main() {
 /// radius), outer radius `c`, tolerance 1e-5 on R_o, ν = 0.3.
 fn fe(load: &FaceLoad, d: f64, c: f64) -> TwoPlateSolution {
     let s = fe_nu(load, d, c, 0.3);
-    assert!(s.info.converged, "FE not converged at C = {c}");
+    assert!(s.converged, "FE not converged at C = {c}");
     s
 }
 
@@ -233,7 +233,7 @@ fn fe_comparison(d: f64) {
         let v: Vec<f64> = fes.iter().map(|s| s.r_o).collect();
         let ratio = (v[0] - r) / (v[1] - r);
         let r_inf = v[2] + (v[2] - v[1]) / 3.0;
-        let time: f64 = fes.iter().map(|s| s.info.time).sum();
+        let time: f64 = fes.iter().map(|s| s.info.seconds).sum();
         println!(
             "{:>5} {:>13.9} {:>13.9} {:>13.9} {:>13.9} {:>6.2} {:>13.9} {:>+9.1e} {:>8.2}",
             bd,
@@ -273,7 +273,7 @@ fn fe_comparison(d: f64) {
                 (r_inf - r) / r,
                 s[0].r_o_error,
                 s[1].r_o_error,
-                s[0].info.converged && s[1].info.converged
+                s[0].converged && s[1].converged
             );
         }
     }

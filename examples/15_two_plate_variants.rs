@@ -34,7 +34,7 @@ fn pair(d: f64, load: FaceLoad) -> Joint {
 }
 
 fn line(name: &str, s: &TwoPlateSolution, force: Option<f64>) {
-    assert!(s.info.converged, "{name}: not converged");
+    assert!(s.converged, "{name}: not converged");
     let total: f64 = s.force.iter().sum();
     if let Some(f) = force {
         assert!(

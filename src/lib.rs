@@ -14,6 +14,7 @@
 //! - [`reference`]: the report's Tables 1 and 2 and the Chapter V table, as data.
 //! - [`compare`]: single- vs two-plate R_o and the rules of thumb: Tables 1 and 2 recomputed,
 //!   the design map; [`plot`]: SVG/PNG figures.
+//! - [`value`]: the one value-with-error type ([`Value`]: value, error, converged) of every result.
 //! - [`rules`]: the 45° cone of Rötscher, the VDI 2230 deformation cone and other cone rules.
 //!
 //! Sign convention throughout: compression negative (σ_z = −p under a face pressure p > 0); z is
@@ -40,8 +41,10 @@ pub mod material;
 pub mod plot;
 pub mod reference;
 pub mod rules;
+pub mod value;
 
 pub use error::InputError;
 pub use joint::{Joint, OuterRadius, Plate, SinglePlate};
 pub use load::{FaceLoad, Peak, Profile, Segment};
 pub use material::Material;
+pub use value::Value;

@@ -226,6 +226,18 @@ impl FaceLoad {
         self.total_force() / (PI * (b * b - a * a))
     }
 
+    /// The same load in other units: every radius multiplied by `length`, every pressure by
+    /// `pressure` (both finite and positive).
+    pub fn rescaled(&self, length: f64, pressure: f64) -> Result<Self, InputError> {
+        crate::error::positive("load length scale", length)?;
+        crate::error::positive("load pressure scale", pressure)?;
+        Ok(Self {
+            profile: self.profile,
+            knots: self.knots.iter().map(|r| r * length).collect(),
+            values: self.values.iter().map(|v| v * pressure).collect(),
+        })
+    }
+
     /// The same load with every pressure multiplied by `factor`.
     pub fn scaled(&self, factor: f64) -> Result<Self, InputError> {
         finite("load scale factor", factor)?;

@@ -1,4 +1,5 @@
-//! The `boltzone` command-line tool. Run `boltzone --help` for the commands.
+//! The `boltzone` command-line tool. Run `boltzone --help` for the commands; exit codes are
+//! listed in `cli/exit.rs` (0 converged, 1 failure, 2 bad input, 3 not converged).
 
 mod cli;
 
@@ -7,10 +8,10 @@ use clap::Parser;
 fn main() -> std::process::ExitCode {
     let args = cli::Cli::parse();
     match cli::run(args) {
-        Ok(()) => std::process::ExitCode::SUCCESS,
+        Ok(status) => std::process::ExitCode::from(status.code()),
         Err(e) => {
             eprintln!("error: {e:#}");
-            std::process::ExitCode::from(2)
+            std::process::ExitCode::from(cli::exit::code_of(&e))
         }
     }
 }

@@ -54,8 +54,11 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
         path: path.to_path_buf(),
         source,
     };
-    std::fs::write(&tmp, bytes).map_err(io)?;
-    std::fs::rename(&tmp, path).map_err(io)
+    let written = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path));
+    if written.is_err() {
+        let _ = std::fs::remove_file(&tmp); // nothing half-written stays behind
+    }
+    written.map_err(io)
 }
 
 /// `dir/.name.tmp<pid>.ext`: same directory (rename stays on one file system), same extension.
@@ -96,15 +99,20 @@ pub fn write_figure<F: Figure>(fig: &F, path: &Path, size: (u32, u32)) -> Result
         }
         Some("png") => {
             let tmp = temp_path(path);
-            {
+            let drawn = (|| {
                 let root = BitMapBackend::new(&tmp, size).into_drawing_area();
                 fig.draw(&root)?;
                 root.present().map_err(pe)?;
+                drop(root);
+                std::fs::rename(&tmp, path).map_err(|source| PlotError::Io {
+                    path: path.to_path_buf(),
+                    source,
+                })
+            })();
+            if drawn.is_err() {
+                let _ = std::fs::remove_file(&tmp); // nothing half-written stays behind
             }
-            std::fs::rename(&tmp, path).map_err(|source| PlotError::Io {
-                path: path.to_path_buf(),
-                source,
-            })
+            drawn
         }
         _ => Err(PlotError::Format(path.to_path_buf())),
     }

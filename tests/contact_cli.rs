@@ -28,6 +28,8 @@ fn json_and_curve() {
         "2",
         "--force",
         "1100",
+        "--interface",
+        "welded",
         "--tol",
         "5e-3",
         "--json",
@@ -45,7 +47,7 @@ fn json_and_curve() {
     assert!(v["r_o_error"].as_f64().unwrap() < 5e-3 * r_o);
     assert_eq!(v["interface"], "welded");
     assert!(v["nodes"].as_u64().unwrap() > 0 && v["dofs"].as_u64().unwrap() > 0);
-    assert!(v["time_s"].as_f64().unwrap() > 0.0);
+    assert!(v["seconds"].as_f64().unwrap() > 0.0);
     // The curve: header, then r, p, g; p > 0 only inside R_o (up to one node), g > 0 beyond.
     let text = std::fs::read_to_string(&curve).unwrap();
     let rows: Vec<[f64; 3]> = text

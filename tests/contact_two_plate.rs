@@ -86,7 +86,7 @@ fn assert_signorini(name: &str, s: &TwoPlateSolution, applied: Option<f64>) {
 fn equilibrium_and_complementarity_symmetric() {
     let j = joint(0.31, 0.1, 0.1, None);
     let s = solve(&j, &loose()).unwrap();
-    assert!(s.info.converged && s.info.levels.len() >= 3);
+    assert!(s.converged && s.info.levels.len() >= 3);
     assert_signorini("A/D=1 B/A=3.1", &s, Some(j.load().total_force()));
     // One plate on a frictionless plane: no interface shear (round-off of K u).
     let pmax = s.pressure.iter().fold(0.0f64, |m, p| m.max(*p));
@@ -164,7 +164,7 @@ fn unequal_plates_welded_and_frictionless() {
             },
         )
         .unwrap();
-        assert!(s.info.converged);
+        assert!(s.converged);
         assert_eq!(
             s.info.model,
             if model == InterfaceModel::Welded {
@@ -403,7 +403,7 @@ fn r_o_converges_at_the_observed_rate() {
         ..Default::default()
     };
     let s = solve(&joint(0.31, 0.1, 0.1, None), &p).unwrap();
-    assert!(!s.info.converged);
+    assert!(!s.converged);
     let l = &s.info.levels;
     let pts: Vec<(f64, f64)> = l
         .windows(2)
@@ -435,7 +435,7 @@ fn error_estimate_measures_the_actual_error() {
             },
         )
         .unwrap();
-        assert!(fine.info.converged);
+        assert!(fine.converged);
         let s = solve(
             &j,
             &TwoPlateParams {

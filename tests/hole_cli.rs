@@ -58,7 +58,11 @@ fn corner_terms_flag_reaches_the_solver_and_bad_values_name_the_field() {
             "--json",
         ]
     };
-    let v = common::json_of(&common::boltzone(&args("0")));
+    // modes only miss the default 1e-6 here: printed, flagged, exit 3
+    let out = common::boltzone(&args("0"));
+    assert_eq!(out.status.code(), Some(3));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["converged"], false);
     let load = FaceLoad::uniform(0.1, 0.13, 1.0).unwrap();
     let plate = SinglePlate::new(
         0.1,
@@ -84,5 +88,5 @@ fn corner_terms_flag_reaches_the_solver_and_bad_values_name_the_field() {
     let bad = common::boltzone(&args("7"));
     assert!(!bad.status.success());
     let msg = String::from_utf8_lossy(&bad.stderr);
-    assert!(msg.contains("corner_terms") && msg.contains('7'), "{msg}");
+    assert!(msg.contains("--corner-terms") && msg.contains('7'), "{msg}");
 }

@@ -42,7 +42,7 @@ fn fe(a: f64, load: &FaceLoad, d: f64, c: f64, tol: f64) -> (f64, f64) {
         ..Default::default()
     };
     let s = solve(&joint, &params).unwrap();
-    assert!(s.info.converged, "FE not converged at C = {c}");
+    assert!(s.converged, "FE not converged at C = {c}");
     (s.r_o, s.r_o_error)
 }
 

@@ -17,7 +17,8 @@ pub struct Geometry {
     /// Thickness D of ONE plate (in); the single-plate substitute is 2D thick.
     #[arg(long, allow_negative_numbers = true)]
     pub d: f64,
-    /// Poisson's ratio ν (the no-hole slab's midplane σ_z, hence its R_o, does not depend on it).
+    /// Poisson's ratio ν (it moves R_o through the hole, the rim and the second plate; only the
+    /// no-hole infinite slab's R_o is independent of it).
     #[arg(long, default_value_t = 0.3, allow_negative_numbers = true)]
     pub nu: f64,
 }
@@ -55,7 +56,19 @@ pub struct TableOutput {
     /// Also write the table as CSV to FILE.
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
-    /// Relative tolerance of each R_o (each meets it by its own error estimate).
-    #[arg(long, default_value_t = 5e-4)]
+    /// Relative tolerance of each R_o (each meets it by its own error estimate; a value that
+    /// misses it is flagged NOT converged and the command exits 3).
+    #[arg(long, default_value_t = 5e-4, allow_negative_numbers = true)]
     pub tol: f64,
+}
+
+impl TableOutput {
+    /// Checks --tol and the --csv path before any work starts.
+    pub fn check(&self) -> anyhow::Result<()> {
+        super::check::tolerance("--tol", self.tol)?;
+        if let Some(p) = &self.csv {
+            super::check::output_path("--csv", p)?;
+        }
+        Ok(())
+    }
 }

@@ -2,13 +2,15 @@
 //! heat maps (SVG or PNG): R_o/A of both models, the substitution's discrepancy, and the 45° and
 //! VDI rules' errors against the two-plate answer.
 
-use super::{progress, write_output};
+use super::exit::Status;
+use super::{check, progress, write_output};
 use boltzone::compare::map::{compute, log_spaced, DesignMap, MapParams};
 use boltzone::plot::{write_figure, HeatMapFigure, HeatPanel};
 use std::path::PathBuf;
 
 /// Arguments of `boltzone map`.
 #[derive(Debug, clap::Args)]
+#[command(allow_negative_numbers = true)]
 pub struct Args {
     /// Points per axis (A/D ∈ [0.2, 5], B/A ∈ [1.1, 5], log spaced).
     #[arg(long, default_value_t = 40)]
@@ -37,9 +39,56 @@ pub struct Args {
 }
 
 /// Runs `boltzone map`.
-pub fn run(args: Args) -> anyhow::Result<()> {
+pub fn run(args: Args) -> anyhow::Result<Status> {
     if !(2..=400).contains(&args.n) {
-        anyhow::bail!("--n = {}: must lie in 2..=400", args.n);
+        return super::exit::usage("--n", args.n, "must lie in 2..=400");
+    }
+    check::tolerance("--tol", args.tol)?;
+    check::positive("--c-over-a", "C/A", args.c_over_a)?;
+    for (flag, field, list) in [
+        ("--a-over-d", "A/D", &args.a_over_d),
+        ("--b-over-a", "B/A", &args.b_over_a),
+    ] {
+        for &x in list {
+            check::positive(flag, field, x)?;
+        }
+    }
+    for &x in &args.b_over_a {
+        if x <= 1.0 {
+            return super::exit::usage("--b-over-a", x, "B/A must exceed 1");
+        }
+    }
+    let b_max = args.b_over_a.iter().copied().fold(5.0, f64::max);
+    if args.c_over_a <= b_max {
+        return super::exit::usage(
+            "--c-over-a",
+            args.c_over_a,
+            &format!("C/A must exceed the largest B/A of the map ({b_max})"),
+        );
+    }
+    for (flag, p) in [
+        ("--csv", &args.csv),
+        ("--svg", &args.svg),
+        ("--png", &args.png),
+    ] {
+        if let Some(p) = p {
+            check::output_path(flag, p)?;
+        }
+    }
+    for (flag, p) in [("--svg", &args.svg), ("--png", &args.png)] {
+        let ext = p
+            .as_ref()
+            .and_then(|p| p.extension())
+            .and_then(|e| e.to_str());
+        if let (Some(p), Some(e)) = (p, ext) {
+            if !e.eq_ignore_ascii_case(&flag[2..]) {
+                return super::exit::usage(
+                    flag,
+                    p.display(),
+                    &format!("the extension must be .{}", &flag[2..]),
+                );
+            }
+        }
     }
     let axis = |own: &[f64], lo: f64, hi: f64| {
         if own.is_empty() {
@@ -98,7 +147,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     for p in [&args.svg, &args.png].into_iter().flatten() {
         write_figure(&figure(&map), p, (1200, 1000))?;
     }
-    Ok(())
+    let converged = map.points.iter().all(|c| c.converged());
+    if !converged {
+        println!("some values missed --tol (NOT converged): exit 3");
+    }
+    Ok(Status::from_converged(converged))
 }
 
 /// Four heat maps: two-plate R_o/A, single-plate discrepancy, 45° and VDI errors.

@@ -1,6 +1,8 @@
 //! Command-line front end: one module per command; errors are reported by `main`.
 
 mod args;
+mod check;
+pub mod exit;
 mod map;
 mod single;
 mod slab;
@@ -8,9 +10,10 @@ mod table1;
 mod table2;
 mod two;
 
-use boltzone::compare::{compare, CompareParams, Geometry, Value};
+use boltzone::compare::{compare, show, CompareParams, Geometry, Value};
 use boltzone::reference;
 use clap::{Parser, Subcommand};
+use exit::Status;
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::Path;
 
@@ -42,8 +45,9 @@ enum Command {
     Reference,
 }
 
-/// Runs the chosen command; with none, the built-in default case.
-pub fn run(cli: Cli) -> anyhow::Result<()> {
+/// Runs the chosen command; with none, the built-in default case. The status says whether
+/// every value printed met its tolerance (exit codes: [`exit`]).
+pub fn run(cli: Cli) -> anyhow::Result<Status> {
     match cli.command {
         None => default_case(),
         Some(Command::Slab(a)) => slab::run(a),
@@ -52,7 +56,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Some(Command::Table1(a)) => table1::run(a),
         Some(Command::Table2(a)) => table2::run(a),
         Some(Command::Map(a)) => map::run(a),
-        Some(Command::Reference) => reference(),
+        Some(Command::Reference) => reference().map(|()| Status::Converged),
     }
 }
 
@@ -68,6 +72,54 @@ fn progress(len: u64, what: &str) -> ProgressBar {
     bar
 }
 
+/// Keys whose value may be absent (printed as nothing rather than null).
+const OPTIONAL_KEYS: [&str; 9] = [
+    "rate",
+    "cut",
+    "observed_order",
+    "r_o_over_a",
+    "single_hankel",
+    "autoradiographic",
+    "discrepancy_autoradiographic_percent",
+    "outer_radius",
+    "hole_history",
+];
+
+/// Prints `value` as pretty JSON without its null entries: an absent quantity (no observed rate,
+/// no hole) is left out rather than printed as null. serde_json prints a non-finite number as
+/// null too: a null under any other key is therefore an error (exit 1), never a silent null.
+fn print_json<T: serde::Serialize>(value: &T) -> anyhow::Result<()> {
+    fn strip(v: &mut serde_json::Value, path: &str) -> anyhow::Result<()> {
+        match v {
+            serde_json::Value::Object(m) => {
+                for (k, x) in m.iter() {
+                    if x.is_null() && !OPTIONAL_KEYS.contains(&k.as_str()) {
+                        anyhow::bail!("{path}.{k} is not a finite number (NaN or infinite)");
+                    }
+                }
+                m.retain(|_, x| !x.is_null());
+                for (k, x) in m.iter_mut() {
+                    strip(x, &format!("{path}.{k}"))?;
+                }
+            }
+            serde_json::Value::Array(a) => {
+                for (i, x) in a.iter_mut().enumerate() {
+                    if x.is_null() {
+                        anyhow::bail!("{path}[{i}] is not a finite number (NaN or infinite)");
+                    }
+                    strip(x, &format!("{path}[{i}]"))?;
+                }
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+    let mut v = serde_json::to_value(value)?;
+    strip(&mut v, "result")?;
+    println!("{}", serde_json::to_string_pretty(&v)?);
+    Ok(())
+}
+
 /// Writes `text` to `path` through a temporary file renamed into place.
 fn write_output(path: &Path, text: &str) -> anyhow::Result<()> {
     boltzone::plot::write_atomic(path, text.as_bytes())?;
@@ -77,7 +129,7 @@ fn write_output(path: &Path, text: &str) -> anyhow::Result<()> {
 
 /// The built-in default case: Table 1's first geometry (A = D = 0.1 in, B = 0.31 in,
 /// C = 1.54 in, ν = 0.3): both models' R_o, the rules of thumb, the report's values beside.
-fn default_case() -> anyhow::Result<()> {
+fn default_case() -> anyhow::Result<Status> {
     let report = reference::table1()[0];
     let g = Geometry::table1()[0];
     let params = CompareParams {
@@ -97,11 +149,11 @@ fn default_case() -> anyhow::Result<()> {
         g.nu
     );
     let line = |name: &str, v: Value, rep: Option<f64>, secs: f64| {
-        let r = c.over_a(v);
         let rep = rep.map(|x| format!("[{x}]")).unwrap_or_default();
         println!(
-            "  {name:<38} R_o = {:.5} ± {:.1e} in   R_o/A = {:.4} ± {:.4} {rep:>6}  {secs:.3} s",
-            v.value, v.error, r.value, r.error
+            "  {name:<38} R_o = {} in   R_o/A = {} {rep:>6}  {secs:.3} s",
+            show(v, 5),
+            show(c.over_a(v), 4)
         );
     };
     line(
@@ -118,19 +170,17 @@ fn default_case() -> anyhow::Result<()> {
     );
     if let Some(h) = c.single_hankel {
         line(
-            "single plate, Hankel + hole (C = inf)",
+            "single plate, Hankel + hole (infinite C)",
             h,
             None,
             c.info.seconds_hankel,
         );
     }
     println!(
-        "  discrepancy (single - two)/two: {:.2} ± {:.2} % [{} %]; in contact area: {:.1} ± {:.1} %",
-        c.discrepancy_percent.value,
-        c.discrepancy_percent.error,
+        "  discrepancy (single - two)/two: {} % [{} %]; in contact area: {} %",
+        show(c.discrepancy_percent, 2),
         report.discrepancy_percent,
-        c.area_discrepancy_percent.value,
-        c.area_discrepancy_percent.error
+        show(c.area_discrepancy_percent, 1),
     );
     println!("\nRules of thumb (contact radius R, error against the two-plate R_o):");
     for r in &c.rules {
@@ -148,7 +198,7 @@ fn default_case() -> anyhow::Result<()> {
         "\nTotal {:.2} s. More: boltzone table1 | table2 | map | two | single --help",
         c.info.seconds
     );
-    Ok(())
+    Ok(Status::from_converged(c.converged()))
 }
 
 /// A length without binary round-off noise (0.31, not 0.31000000000000005).

@@ -7,9 +7,12 @@
 //! rim correction when `--c` is given).
 
 use super::args::{Element, Geometry};
-use boltzone::fem::single::{single_plate_r_o, Loading, SingleParams};
+use super::check;
+use super::exit::{num, sig, Status};
+use boltzone::fem::single::{solve, Loading, SingleParams};
 use boltzone::fem::ElementKind;
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
+use boltzone::hankel::SeparationParams;
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
 /// Which solver computes R_o.
@@ -32,6 +35,7 @@ pub enum Nut {
 
 /// Arguments of `boltzone single`.
 #[derive(Debug, clap::Args)]
+#[command(allow_negative_numbers = true)]
 pub struct Args {
     #[command(flatten)]
     geom: Geometry,
@@ -47,9 +51,14 @@ pub struct Args {
     /// Face loading (fem).
     #[arg(long, value_enum, default_value_t = Nut::Pressure)]
     nut: Nut,
-    /// Refinement levels (fem, ≥ 3 for an error estimate).
-    #[arg(long, default_value_t = 5)]
+    /// Most refinement levels (fem, 3..=12): levels are added until the error estimate meets
+    /// --tol.
+    #[arg(long, default_value_t = 8)]
     levels: usize,
+    /// Wanted relative error of R_o (default 5e-4 for fem, 1e-6 for hankel); a result that
+    /// misses it is flagged NOT converged and the command exits 3.
+    #[arg(long)]
+    tol: Option<f64>,
     /// Corner exponents λ₁, λ₁+1, λ₁+2, λ₂, … whose singular fields enrich the hole fit
     /// (hankel; 0 = Papkovich–Fadle modes only, at most 6).
     #[arg(long, default_value_t = HoleParams::default().corner_terms)]
@@ -59,8 +68,49 @@ pub struct Args {
     json: bool,
 }
 
+/// --tol, or the method's default.
+fn tolerance(args: &Args) -> f64 {
+    args.tol.unwrap_or(match args.method {
+        Method::Fem => 5e-4,
+        Method::Hankel => 1e-6,
+    })
+}
+
+/// Checks every flag before any work starts (exit 2 naming the flag).
+fn check_args(args: &Args) -> anyhow::Result<()> {
+    let g = &args.geom;
+    check::annulus(g.a, g.b)?;
+    check::positive("--d", "plate half-thickness D (the plate is 2D thick)", g.d)?;
+    if let Some(c) = args.c {
+        check::outer_radius("--c", c, g.b)?;
+    }
+    let nu_max = if args.method == Method::Fem {
+        check::NU_MAX_FEM
+    } else {
+        0.5
+    };
+    check::poisson("--nu", g.nu, nu_max)?;
+    check::tolerance("--tol", tolerance(args))?;
+    check::domain(g.a, g.b, g.d, check::B_OVER_D_SINGLE)?;
+    if !(3..=12).contains(&args.levels) {
+        return super::exit::usage("--levels", args.levels, "must lie in 3..=12");
+    }
+    if args.corner_terms > 6 {
+        return super::exit::usage("--corner-terms", args.corner_terms, "must lie in 0..=6");
+    }
+    if args.method == Method::Hankel && args.nut != Nut::Pressure {
+        return super::exit::usage(
+            "--nut",
+            "rigid",
+            "needs --method fem (the Hankel route loads the faces by a pressure)",
+        );
+    }
+    Ok(())
+}
+
 /// Runs the command.
-pub fn run(args: Args) -> anyhow::Result<()> {
+pub fn run(args: Args) -> anyhow::Result<Status> {
+    check_args(&args)?;
     let outer = args.c.map_or(OuterRadius::Infinite, OuterRadius::Finite);
     let load = FaceLoad::uniform(args.geom.a, args.geom.b, 1.0)?;
     let plate = SinglePlate::new(
@@ -71,11 +121,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         load,
     )?;
     if args.method == Method::Hankel {
-        if args.nut != Nut::Pressure {
-            anyhow::bail!(
-                "--nut rigid needs --method fem (the Hankel route loads the faces by a pressure)"
-            );
-        }
         return run_hankel(&args, &plate);
     }
     let kind = ElementKind::from(args.element);
@@ -87,44 +132,51 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         loading,
         kind,
         levels: args.levels,
+        tolerance: tolerance(&args),
         ..SingleParams::default()
     };
-    let (r_o, info) = single_plate_r_o(&plate, &params)?;
-    let r_o_over_a = if args.geom.a > 0.0 {
-        Some(r_o / args.geom.a)
-    } else {
-        None
-    };
+    let s = solve(&plate, &params)?;
+    let info = &s.info;
+    let r_o_over_a = (args.geom.a > 0.0).then(|| s.r_o / args.geom.a);
     if args.json {
-        let v = serde_json::json!({
+        let mut v = serde_json::json!({
             "method": "fem",
             "element": format!("{kind:?}"),
             "loading": format!("{loading:?}"),
-            "r_o": r_o,
-            "r_o_over_a": r_o_over_a,
-            "r_o_error": info.error_estimate,
+            "r_o": s.r_o,
+            "r_o_error": s.r_o_error,
+            "converged": s.converged,
+            "tolerance": tolerance(&args),
             "levels": info.levels,
             "observed_order": info.observed_order,
             "nodes": info.nodes,
             "dofs": info.dofs,
             "seconds": info.seconds,
         });
-        println!("{}", serde_json::to_string_pretty(&v)?);
+        if let Some(q) = r_o_over_a {
+            v["r_o_over_a"] = q.into();
+        }
+        super::print_json(&v)?;
     } else {
         println!(
-            "single plate 2D thick, FE ({kind:?}), A = {}, B = {}, D = {}, C = {}, nu = {}",
-            args.geom.a,
-            args.geom.b,
-            args.geom.d,
-            outer.value(),
+            "single plate 2D thick, FE ({kind:?}), A = {} in, B = {} in, D = {} in, C = {}, nu = {}",
+            num(args.geom.a),
+            num(args.geom.b),
+            num(args.geom.d),
+            args.c.map_or("infinite".into(), |c| format!("{} in", num(c))),
             args.geom.nu
         );
-        println!("R_o      = {r_o:.6} ± {:.2e}", info.error_estimate);
+        println!(
+            "R_o      = {} ± {:.2e} in{}",
+            sig(s.r_o, 7),
+            s.r_o_error,
+            not_converged(s.converged)
+        );
         if let Some(q) = r_o_over_a {
             println!("R_o / A  = {q:.5}");
         }
         println!(
-            "levels   = {:?}\norder    = {}\nmesh     = {} nodes, {} dofs (finest), {:.2} s",
+            "levels   = {:?} in\norder    = {}\nmesh     = {} nodes, {} dofs (finest), {:.2} s",
             info.levels,
             info.observed_order
                 .map_or("-".into(), |p| format!("{p:.2}")),
@@ -133,23 +185,44 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             info.seconds
         );
     }
-    Ok(())
+    Ok(Status::from_converged(s.converged))
+}
+
+/// The text flag of a result that missed --tol.
+fn not_converged(converged: bool) -> &'static str {
+    if converged {
+        ""
+    } else {
+        "   NOT converged to --tol (exit 3)"
+    }
 }
 
 /// `--method hankel`: R_o of the plate with its hole made traction-free (Hankel route).
-fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<()> {
+fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<Status> {
     let params = HoleParams {
         corner_terms: args.corner_terms,
+        r_o_tolerance: tolerance(args),
         ..HoleParams::default()
     };
-    let (sep, hole) = single_plate_separation(plate, &Default::default(), &params)?;
+    let search = SeparationParams {
+        rel_tol: SeparationParams::default()
+            .rel_tol
+            .max(1e-3 * tolerance(args)),
+        ..Default::default()
+    };
+    // Every flag was checked: what the route rejects now is a plate outside its reach (e.g.
+    // too thin for its quadrature budget), a limit of the method (exit 1), not bad input.
+    let (sep, hole) = single_plate_separation(plate, &search, &params).map_err(|e| {
+        anyhow::anyhow!("the Hankel route cannot treat this plate ({e}); try --method fem")
+    })?;
     let r_o_over_a = (args.geom.a > 0.0).then(|| sep.r_o / args.geom.a);
     if args.json {
-        let v = serde_json::json!({
+        let mut v = serde_json::json!({
             "method": "hankel",
             "r_o": sep.r_o,
-            "r_o_over_a": r_o_over_a,
             "r_o_error": sep.error,
+            "converged": sep.converged,
+            "tolerance": tolerance(args),
             "outer_radius": args.c,
             "hole_terms": hole.terms,
             "hole_corner_terms": hole.corner_terms,
@@ -161,17 +234,25 @@ fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<()> {
             "evaluations": sep.evaluations + hole.slab_evaluations,
             "seconds": sep.seconds,
         });
-        println!("{}", serde_json::to_string_pretty(&v)?);
+        if let Some(q) = r_o_over_a {
+            v["r_o_over_a"] = q.into();
+        }
+        super::print_json(&v)?;
     } else {
         println!(
-            "single plate 2D thick with a hole, Hankel route, A = {}, B = {}, D = {}, C = {}, nu = {}",
-            args.geom.a,
-            args.geom.b,
-            args.geom.d,
-            plate.outer_radius().value(),
+            "single plate 2D thick with a hole, Hankel route, A = {} in, B = {} in, D = {} in, C = {}, nu = {}",
+            num(args.geom.a),
+            num(args.geom.b),
+            num(args.geom.d),
+            args.c.map_or("infinite".into(), |c| format!("{} in", num(c))),
             args.geom.nu
         );
-        println!("R_o      = {:.8} ± {:.2e}", sep.r_o, sep.error);
+        println!(
+            "R_o      = {} ± {:.2e} in{}",
+            sig(sep.r_o, 9),
+            sep.error,
+            not_converged(sep.converged)
+        );
         if let Some(q) = r_o_over_a {
             println!("R_o / A  = {q:.7}");
         }
@@ -187,5 +268,5 @@ fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<()> {
         }
         println!("time     = {:.2} ms", 1e3 * sep.seconds);
     }
-    Ok(())
+    Ok(Status::from_converged(sep.converged))
 }

@@ -3,19 +3,20 @@
 //! ([`boltzone::hankel::separation`]), and optionally the midplane σ_z/P curve as CSV.
 
 use super::args::Geometry;
-use anyhow::Context;
+use super::check;
+use super::exit::{num, sig, Status};
 use boltzone::hankel::{Midplane, MidplaneCurve, SeparationParams, Slab};
 use boltzone::{FaceLoad, Material};
-use std::io::Write;
 use std::path::PathBuf;
 
 /// Arguments of `boltzone slab`.
 #[derive(Debug, clap::Args)]
+#[command(allow_negative_numbers = true)]
 pub struct Args {
     #[command(flatten)]
     geom: Geometry,
     /// Relative tolerance on R_o.
-    #[arg(long, default_value_t = 1e-10)]
+    #[arg(long, default_value_t = 1e-10, allow_negative_numbers = true)]
     tol: f64,
     /// Print one JSON object instead of text.
     #[arg(long)]
@@ -26,24 +27,34 @@ pub struct Args {
 }
 
 /// Runs the command.
-pub fn run(args: Args) -> anyhow::Result<()> {
-    let material = Material::unit(args.geom.nu)?;
-    let load = FaceLoad::uniform(args.geom.a, args.geom.b, 1.0)?;
-    if args.geom.a <= 0.0 {
-        anyhow::bail!(
-            "hole radius A = {} must be positive (R_o is reported as R_o/A)",
-            args.geom.a
+pub fn run(args: Args) -> anyhow::Result<Status> {
+    let g = &args.geom;
+    if g.a.is_nan() || g.a <= 0.0 {
+        return super::exit::usage(
+            "--a",
+            g.a,
+            "the hole radius A must be positive (R_o is reported as R_o/A)",
         );
     }
+    check::annulus(g.a, g.b)?;
+    check::positive("--d", "slab half-thickness D (the slab is 2D thick)", g.d)?;
+    check::poisson("--nu", g.nu, 0.5)?;
+    check::tolerance("--tol", args.tol)?;
+    check::domain(g.a, g.b, g.d, check::B_OVER_D_SLAB)?;
+    if let Some(path) = &args.curve {
+        check::output_path("--curve", path)?;
+    }
+    let material = Material::unit(args.geom.nu)?;
+    let load = FaceLoad::uniform(args.geom.a, args.geom.b, 1.0)?;
     let slab = Slab::new(args.geom.d, material, load)?;
     let params = SeparationParams {
         rel_tol: args.tol,
         ..Default::default()
     };
     let sep = slab.separation_radius(&params)?;
+    super::exit::finite("R_o error estimate", sep.error)?;
     if let Some(path) = &args.curve {
-        write_curve(&slab, args.geom.a, path)
-            .with_context(|| format!("writing {}", path.display()))?;
+        super::write_output(path, &curve_csv(&slab, args.geom.a)?)?;
     }
     if args.json {
         let v = serde_json::json!({
@@ -51,17 +62,30 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "r_o": sep.r_o,
             "r_o_over_a": sep.r_o / args.geom.a,
             "r_o_error": sep.error,
+            "converged": sep.converged,
+            "tolerance": args.tol,
             "evaluations": sep.evaluations,
             "seconds": sep.seconds,
             "model": "infinite slab 2D thick, no hole, uniform load on both faces (Hankel transforms)",
         });
-        println!("{v}");
+        super::print_json(&v)?;
     } else {
         println!(
             "infinite slab 2D thick (D = {} in), no hole, uniform load on {} ≤ r ≤ {} in",
-            args.geom.d, args.geom.a, args.geom.b
+            num(args.geom.d),
+            num(args.geom.a),
+            num(args.geom.b)
         );
-        println!("R_o   = {:.12} in  ± {:.1e}", sep.r_o, sep.error);
+        println!(
+            "R_o   = {} in  ± {:.1e} in{}",
+            sig(sep.r_o, 13),
+            sep.error,
+            if sep.converged {
+                ""
+            } else {
+                "   NOT converged to --tol (exit 3)"
+            }
+        );
         println!(
             "R_o/A = {:.12}  ± {:.1e}",
             sep.r_o / args.geom.a,
@@ -73,11 +97,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             1e3 * sep.seconds
         );
     }
-    Ok(())
+    Ok(Status::from_converged(sep.converged))
 }
 
-/// Writes the curve to a temporary file beside `path`, then renames it (nothing half-written).
-fn write_curve(slab: &Slab, a: f64, path: &std::path::Path) -> anyhow::Result<()> {
+/// The midplane σ_z/P against r/A on 0 ≤ r ≤ max(3B, B + 6D) as CSV.
+fn curve_csv(slab: &Slab, a: f64) -> anyhow::Result<String> {
     let (b, d) = (slab.load().outer(), slab.half_thickness());
     let r_end = (3.0 * b).max(b + 6.0 * d);
     // interpolated curve, or for very thin slabs (more than MAX_CURVE_PANELS panels of width D)
@@ -90,19 +114,15 @@ fn write_curve(slab: &Slab, a: f64, path: &std::path::Path) -> anyhow::Result<()
                 Box::new(move |r| m.eval(r))
             }
         };
-    let tmp = path.with_extension("csv.tmp");
-    {
-        let mut f = std::io::BufWriter::new(std::fs::File::create(&tmp)?);
-        writeln!(f, "# midplane sigma_z/P of the infinite slab (no hole), D = {d} in, A = {a} in, B = {b} in; compression negative")?;
-        writeln!(f, "r_over_a,sigma_z_over_p,error_over_p")?;
-        let n = 1000;
-        for k in 0..=n {
-            let r = r_end * k as f64 / n as f64;
-            let e = eval(r);
-            writeln!(f, "{},{},{:.1e}", r / a, e.value, e.error)?;
-        }
-        f.flush()?;
+    let mut out = format!(
+        "# midplane sigma_z/P of the infinite slab (no hole), D = {d} in, A = {a} in, B = {b} in; \
+         compression negative\nr_over_a,sigma_z_over_p,error_over_p\n"
+    );
+    let n = 1000;
+    for k in 0..=n {
+        let r = r_end * k as f64 / n as f64;
+        let e = eval(r);
+        out += &format!("{},{},{:.1e}\n", r / a, e.value, e.error);
     }
-    std::fs::rename(&tmp, path)?;
-    Ok(())
+    Ok(out)
 }

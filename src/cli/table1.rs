@@ -3,11 +3,13 @@
 //! geometries, the report's values beside ours.
 
 use super::args::TableOutput;
+use super::exit::Status;
 use super::{progress, write_output};
 use boltzone::compare::{table1, CompareParams};
 
 /// Arguments of `boltzone table1`.
 #[derive(Debug, clap::Args)]
+#[command(allow_negative_numbers = true)]
 pub struct Args {
     #[command(flatten)]
     out: TableOutput,
@@ -17,7 +19,8 @@ pub struct Args {
 }
 
 /// Runs `boltzone table1`.
-pub fn run(args: Args) -> anyhow::Result<()> {
+pub fn run(args: Args) -> anyhow::Result<Status> {
+    args.out.check()?;
     let params = CompareParams {
         tolerance: args.out.tol,
         hankel_check: !args.no_hankel,
@@ -28,7 +31,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let rows = table1::compute(&params, &|| bar.inc(1))?;
     bar.finish_and_clear();
     if args.out.json {
-        println!("{}", serde_json::to_string_pretty(&rows)?);
+        super::print_json(&rows)?;
     } else {
         print!("{}", table1::text(&rows));
         println!(
@@ -41,5 +44,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if let Some(path) = &args.out.csv {
         write_output(path, &table1::csv(&rows))?;
     }
-    Ok(())
+    let converged = rows.iter().all(|r| r.ours.converged());
+    if !converged && !args.out.json {
+        println!("some values missed --tol (marked NOT converged): exit 3");
+    }
+    Ok(Status::from_converged(converged))
 }

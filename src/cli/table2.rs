@@ -2,6 +2,7 @@
 //! two-plate 2R_o of the seven test joints beside the report's and the measured ranges.
 
 use super::args::TableOutput;
+use super::exit::Status;
 use super::two::Interface;
 use super::{progress, write_output};
 use boltzone::compare::table2;
@@ -10,6 +11,7 @@ use clap::ValueEnum;
 
 /// Arguments of `boltzone table2`.
 #[derive(Debug, clap::Args)]
+#[command(allow_negative_numbers = true)]
 pub struct Args {
     #[command(flatten)]
     out: TableOutput,
@@ -19,7 +21,8 @@ pub struct Args {
 }
 
 /// Runs `boltzone table2`.
-pub fn run(args: Args) -> anyhow::Result<()> {
+pub fn run(args: Args) -> anyhow::Result<Status> {
+    args.out.check()?;
     let model = match args.interface {
         Interface::Welded => InterfaceModel::Welded,
         Interface::Frictionless => InterfaceModel::Frictionless,
@@ -29,7 +32,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let rows = table2::compute(model, args.out.tol, &|| bar.inc(1))?;
     bar.finish_and_clear();
     if args.out.json {
-        println!("{}", serde_json::to_string_pretty(&rows)?);
+        super::print_json(&rows)?;
     } else {
         print!("{}", table2::text(&rows));
         let name = args
@@ -45,5 +48,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if let Some(path) = &args.out.csv {
         write_output(path, &table2::csv(&rows))?;
     }
-    Ok(())
+    let converged = rows.iter().all(|r| r.two_r_o.converged);
+    if !converged && !args.out.json {
+        println!("some values missed --tol (marked NOT converged): exit 3");
+    }
+    Ok(Status::from_converged(converged))
 }

@@ -3,7 +3,8 @@
 //! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV.
 
 use super::args::{Element, Geometry};
-use anyhow::Context;
+use super::check;
+use super::exit::{sig, Status};
 use boltzone::contact::two_plate::{
     solve, EdgeSupport, InterfaceModel, Loading, TwoPlateParams, TwoPlateSolution,
 };
@@ -11,8 +12,7 @@ use boltzone::fem::ElementKind;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Peak, Plate};
 use clap::ValueEnum;
 use std::f64::consts::PI;
-use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Interface model between unequal or dissimilar plates.
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -36,6 +36,7 @@ pub enum Shape {
 
 /// Arguments of `boltzone two`.
 #[derive(Debug, clap::Args)]
+#[command(allow_negative_numbers = true)]
 pub struct Args {
     /// A, B, D (the upper plate's thickness; the lower plate's too unless --d2 is given), ν.
     #[command(flatten)]
@@ -70,8 +71,10 @@ pub struct Args {
     /// Fix the outer edge r = C (Fig. 20(c)).
     #[arg(long)]
     fixed_edge: bool,
-    /// Interface model for unequal or dissimilar plates (equal plates are exact either way).
-    #[arg(long, value_enum, default_value_t = Interface::Welded)]
+    /// Interface model for unequal or dissimilar plates (equal plates are exact either way);
+    /// frictionless by default, as the library (welded: the report's model, ill-posed for
+    /// dissimilar materials).
+    #[arg(long, value_enum, default_value_t = Interface::Frictionless)]
     interface: Interface,
     /// Element type (q9: the only one whose R_o error estimate is reliable; the linear ones are
     /// cheaper but can miss the tolerance by a factor of three).
@@ -88,8 +91,54 @@ pub struct Args {
     json: bool,
 }
 
+/// Checks every flag before any work starts (exit 2 naming the flag).
+fn check_args(args: &Args) -> anyhow::Result<()> {
+    let g = &args.geom;
+    check::annulus(g.a, g.b)?;
+    check::positive("--d", "plate thickness D", g.d)?;
+    if let Some(d2) = args.d2 {
+        check::positive("--d2", "lower plate thickness D2", d2)?;
+    }
+    if let Some(c) = args.c {
+        check::outer_radius("--c", c, g.b)?;
+    }
+    check::positive("--e", "Young's modulus E", args.e)?;
+    if let Some(e2) = args.e2 {
+        check::positive("--e2", "lower plate's Young's modulus E2", e2)?;
+    }
+    check::poisson("--nu", g.nu, check::NU_MAX_FEM)?;
+    if let Some(nu2) = args.nu2 {
+        check::poisson("--nu2", nu2, check::NU_MAX_FEM)?;
+    }
+    check::positive("--p", "bearing pressure P", args.p)?;
+    if let Some(f) = args.force {
+        check::positive("--force", "bolt force F", f)?;
+    }
+    if let Some(n) = args.nut_displacement {
+        check::positive("--nut-displacement", "nut displacement", n)?;
+    }
+    check::tolerance("--tol", args.tol)?;
+    check::domain(
+        g.a,
+        g.b,
+        args.d2.map_or(g.d, |d2| d2.min(g.d)),
+        check::B_OVER_D_TWO,
+    )?;
+    if let Some(d2) = args.d2 {
+        check::ratio("--d2", d2, g.d, 1e3, "thickness")?;
+    }
+    if let Some(e2) = args.e2 {
+        check::ratio("--e2", e2, args.e, 1e6, "Young's modulus")?;
+    }
+    if let Some(path) = &args.curve {
+        check::output_path("--curve", path)?;
+    }
+    Ok(())
+}
+
 /// Runs the command.
-pub fn run(args: Args) -> anyhow::Result<()> {
+pub fn run(args: Args) -> anyhow::Result<Status> {
+    check_args(&args)?;
     let upper_mat = Material::new(args.e, args.geom.nu)?;
     let lower_mat = Material::new(args.e2.unwrap_or(args.e), args.nu2.unwrap_or(args.geom.nu))?;
     let p = match args.force {
@@ -127,35 +176,44 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     };
     let s = solve(&joint, &params)?;
     if let Some(path) = &args.curve {
-        write_curve(path, &s).with_context(|| format!("writing {}", path.display()))?;
+        super::write_output(path, &curve_csv(&s))?;
     }
-    let last = s.info.levels.last().expect("one level");
+    let Some(last) = s.info.levels.last() else {
+        anyhow::bail!("the two-plate solver returned no mesh level");
+    };
+    let r_o_over_a = (args.geom.a > 0.0).then(|| s.r_o / args.geom.a);
     if args.json {
-        let out = serde_json::json!({
+        let mut out = serde_json::json!({
             "r_o": s.r_o,
-            "r_o_over_a": s.r_o / args.geom.a,
             "r_o_error": s.r_o_error,
-            "converged": s.info.converged,
+            "converged": s.converged,
+            "full_contact": s.full_contact,
+            "overlap": s.overlap,
+            "report_rule": s.report_rule,
+            "tolerance": args.tol,
             "interface": s.info.model,
             "nodes": last.nodes,
             "dofs": last.dofs,
             "levels": s.info.levels,
             "rate": s.info.rate,
             "nut_deflection": s.nut_deflection,
-            "time_s": s.info.time,
+            "seconds": s.info.seconds,
         });
-        println!("{}", serde_json::to_string_pretty(&out)?);
+        if let Some(q) = r_o_over_a {
+            out["r_o_over_a"] = q.into();
+        }
+        super::print_json(&out)?;
     } else {
+        let over_a = r_o_over_a.map_or(String::new(), |q| format!("R_o/A = {}, ", sig(q, 6)));
         println!(
-            "R_o = {:.6} ± {:.1e} in   (R_o/A = {:.5}, 2R_o = {:.5} in){}",
-            s.r_o,
+            "R_o = {} ± {:.1e} in   ({over_a}2R_o = {} in){}",
+            sig(s.r_o, 7),
             s.r_o_error,
-            s.r_o / args.geom.a,
-            2.0 * s.r_o,
-            if s.info.converged {
+            sig(2.0 * s.r_o, 6),
+            if s.converged {
                 ""
             } else {
-                "  NOT converged to --tol"
+                "  NOT converged to --tol (exit 3)"
             }
         );
         println!(
@@ -165,34 +223,39 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             last.nodes,
             last.dofs,
             s.info.rate.map_or("—".into(), |r| format!("{r:.2}")),
-            s.info.time
+            s.info.seconds
         );
+        if s.report_rule || s.overlap > 0.0 && !s.converged {
+            println!(
+                "WARNING: no sign-consistent contact edge (welded dissimilar plates have an \
+                 oscillatory edge singularity){}; the welded model is ill-posed here: use \
+                 --interface frictionless (or the frictional model when it lands)",
+                if s.overlap > 0.0 {
+                    format!(", the plates overlap by {:.2e} in", s.overlap)
+                } else {
+                    String::new()
+                }
+            );
+        }
+        if s.full_contact {
+            println!("full contact: the plates touch out to the rim, R_o = C");
+        }
         println!("deflection under the nut: {:.4e} in", s.nut_deflection);
     }
-    Ok(())
+    Ok(Status::from_converged(s.converged))
 }
 
-/// Writes r, p, g as CSV through a temporary file renamed into place.
-fn write_curve(path: &Path, s: &TwoPlateSolution) -> anyhow::Result<()> {
-    let tmp = path.with_extension("csv.tmp");
-    {
-        let mut f = std::io::BufWriter::new(std::fs::File::create(&tmp)?);
-        writeln!(
-            f,
-            "# boltzone two: interface of the finest mesh; model: {}",
-            s.info.model
-        )?;
-        writeln!(
-            f,
-            "# r = radius, p = interface pressure (compression > 0), g = gap between the plates, \
-             tau = interface shear stress on the upper plate (welded model; 0 otherwise)"
-        )?;
-        writeln!(f, "r,p,g,tau")?;
-        for (((r, p), g), t) in s.radius.iter().zip(&s.pressure).zip(&s.gap).zip(&s.shear) {
-            writeln!(f, "{r:.10e},{p:.10e},{g:.10e},{t:.10e}")?;
-        }
-        f.flush()?;
+/// r, p, g, τ of the finest mesh as CSV.
+fn curve_csv(s: &TwoPlateSolution) -> String {
+    let mut out = format!(
+        "# boltzone two: interface of the finest mesh; model: {}\n\
+         # r = radius (in), p = interface pressure (psi, compression > 0), g = gap between the \
+         plates (in), tau = interface shear stress on the upper plate (psi; welded model, 0 otherwise)\n\
+         r,p,g,tau\n",
+        s.info.model
+    );
+    for (((r, p), g), t) in s.radius.iter().zip(&s.pressure).zip(&s.gap).zip(&s.shear) {
+        out += &format!("{r:.10e},{p:.10e},{g:.10e},{t:.10e}\n");
     }
-    std::fs::rename(&tmp, path)?;
-    Ok(())
+    out
 }

@@ -82,14 +82,19 @@ pub enum CompareError {
     },
 }
 
-/// A value with its estimated absolute error.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Value {
-    /// The value.
-    pub value: f64,
-    /// Its estimated absolute error.
-    pub error: f64,
+impl CompareError {
+    /// Whether the failure is bad input (the caller's to fix) rather than a solver failure.
+    pub fn is_input(&self) -> bool {
+        match self {
+            Self::Input(_) => true,
+            Self::Single { source, .. } => source.is_input(),
+            Self::Hankel { source, .. } => source.is_input(),
+            Self::Two { source, .. } => source.is_input(),
+        }
+    }
 }
+
+pub use crate::value::Value;
 
 /// A symmetric joint: two equal plates of one material, uniform bearing pressure on A ≤ r ≤ B.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -279,19 +284,33 @@ pub struct Comparison {
 impl Comparison {
     /// R_o/A with its error for a model's value.
     pub fn over_a(&self, v: Value) -> Value {
-        Value {
-            value: v.value / self.geometry.a,
-            error: v.error / self.geometry.a,
-        }
+        v.scaled(1.0 / self.geometry.a)
+    }
+
+    /// Whether every R_o of the comparison met its tolerance.
+    pub fn converged(&self) -> bool {
+        self.single.converged
+            && self.two.converged
+            && self.single_hankel.is_none_or(|h| h.converged)
     }
 }
 
-/// (x − y)/y·100 with first-order error propagation.
+/// `value ± error` for a table: the value with `decimals` decimals, the error in scientific
+/// notation (so that a small error never prints as 0.0000), and ` NOT converged` where the
+/// error missed the tolerance.
+pub fn show(v: Value, decimals: usize) -> String {
+    format!(
+        "{:.*} ± {:.1e}{}",
+        decimals,
+        v.value,
+        v.error,
+        if v.converged { "" } else { " NOT converged" }
+    )
+}
+
+/// (x − y)/y·100 with first-order error propagation ([`Value::percent_difference`]).
 pub fn percent_difference(x: Value, y: Value) -> Value {
-    Value {
-        value: (x.value - y.value) / y.value * 100.0,
-        error: 100.0 * (x.error / y.value.abs() + x.value.abs() * y.error / (y.value * y.value)),
-    }
+    x.percent_difference(y)
 }
 
 /// X = R² − A² (contact area / π) with its error 2R·e.
@@ -299,6 +318,7 @@ fn area(r: Value, a: f64) -> Value {
     Value {
         value: r.value * r.value - a * a,
         error: 2.0 * r.value * r.error,
+        converged: r.converged,
     }
 }
 
@@ -342,6 +362,7 @@ pub fn compare(g: &Geometry, params: &CompareParams) -> Result<Comparison, Compa
     let two = Value {
         value: sol.r_o,
         error: sol.r_o_error,
+        converged: sol.converged,
     };
     let seconds_two = t.elapsed().as_secs_f64();
     let rule = |name, cone: rules::ConeRadius| RuleResult {
@@ -349,13 +370,7 @@ pub fn compare(g: &Geometry, params: &CompareParams) -> Result<Comparison, Compa
         half_angle_degrees: cone.half_angle.to_degrees(),
         radius: cone.radius,
         truncated: cone.truncated,
-        error_percent: percent_difference(
-            Value {
-                value: cone.radius,
-                error: 0.0,
-            },
-            two,
-        ),
+        error_percent: percent_difference(Value::exact(cone.radius), two),
     };
     let rules = [
         rule("45° (Rötscher)", rules::roetscher(g.b, g.d, g.c)?),

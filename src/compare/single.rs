@@ -20,7 +20,7 @@
 //! ```
 
 use super::Value;
-use crate::fem::single::{crossing_levels, level_estimate, SingleParams};
+use crate::fem::single::{solve, SingleParams};
 use crate::fem::FemError;
 use crate::hankel::hole::{single_plate_separation, HoleParams};
 use crate::hankel::separation::{SeparationError, SeparationParams};
@@ -41,33 +41,27 @@ pub struct FemStudy {
 
 /// Single-plate R_o by FE to relative accuracy `tolerance` (module docs).
 pub fn single_fem(plate: &SinglePlate, tolerance: f64) -> Result<(Value, FemStudy), FemError> {
-    crate::error::positive("single-plate tolerance", tolerance)?;
     // The FE defaults (first elements 0.5 D at the foci, growth 1.25 radially and 1.5 axially)
     // were the cheapest for 0.1 % over 68 map points among first sizes 0.35/0.5, radial
     // growths 1.15/1.25/1.35 and axial growths 1.3/1.5 (worst actual error 1.5e-4 against
     // nested uniform references; the growth 1.35 needed a fifth level at 10 points).
-    let params = SingleParams::default();
-    let mut values: Vec<f64> = Vec::new();
-    for (l, level) in crossing_levels(plate, &params)?
-        .take(MAX_FEM_LEVELS)
-        .enumerate()
-    {
-        let level = level?;
-        values.push(level.r_o);
-        if let Some((value, error)) = level_estimate(&values) {
-            let v = Value { value, error };
-            if v.error <= tolerance * v.value || l + 1 == MAX_FEM_LEVELS {
-                return Ok((
-                    v,
-                    FemStudy {
-                        levels: values.len(),
-                        dofs: level.dofs,
-                    },
-                ));
-            }
-        }
-    }
-    unreachable!("the last level returns")
+    let params = SingleParams {
+        tolerance,
+        levels: MAX_FEM_LEVELS,
+        ..SingleParams::default()
+    };
+    let s = solve(plate, &params)?;
+    Ok((
+        Value {
+            value: s.r_o,
+            error: s.r_o_error,
+            converged: s.converged,
+        },
+        FemStudy {
+            levels: s.info.levels.len(),
+            dofs: s.info.dofs,
+        },
+    ))
 }
 
 /// Single-plate R_o by Hankel transforms with the hole correction (infinite plate; module docs).
@@ -84,8 +78,5 @@ pub fn single_hankel(plate: &SinglePlate, tolerance: f64) -> Result<Value, Separ
         ..Default::default()
     };
     let (s, _) = single_plate_separation(plate, &sep, &hole)?;
-    Ok(Value {
-        value: s.r_o,
-        error: s.error,
-    })
+    Ok(Value::with_tolerance(s.r_o, s.error, tolerance))
 }

@@ -11,7 +11,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::{compare_all, CompareError, CompareParams, Comparison, Geometry};
+use super::{compare_all, show, CompareError, CompareParams, Comparison, Geometry};
 use crate::reference::{self, Table1Row};
 use serde::Serialize;
 
@@ -78,7 +78,7 @@ pub fn csv_fields(c: &Comparison) -> String {
             if x.is_nan() {
                 String::new()
             } else {
-                format!("{x:.6}")
+                format!("{x}")
             }
         })
         .collect::<Vec<_>>()
@@ -108,22 +108,37 @@ pub fn text(rows: &[Row]) -> String {
          (one on a frictionless rigid plane); ours ± error estimate [report's value]\n\n",
     );
     s += &format!(
-        "{:>5} {:>5}  {:>18} {:>18} {:>16}  {:>15}  {:>15}\n",
-        "A/D", "B/A", "single R_o/A", "two R_o/A", "disc. %", "area disc. %", "Hankel single"
+        "{:>5} {:>5}  {:>24} {:>6}  {:>24} {:>6}  {:>19} {:>6}  {:>17}  {:>24}\n",
+        "A/D",
+        "B/A",
+        "single R_o/A",
+        "[rep.]",
+        "two R_o/A",
+        "[rep.]",
+        "disc. %",
+        "[rep.]",
+        "area disc. %",
+        "Hankel single (infinite C)"
     );
     for r in rows {
         let c = &r.ours;
         let (si, tw) = (c.over_a(c.single), c.over_a(c.two));
         let h = c
             .single_hankel
-            .map(|v| format!("{:.4}", c.over_a(v).value))
+            .map(|v| show(c.over_a(v), 4))
             .unwrap_or_else(|| "-".into());
         s += &format!(
-            "{:>5} {:>5}  {:>7.4}±{:<6.4} [{:.1}] {:>7.4}±{:<6.4} [{:.1}] {:>6.2}±{:<4.2} [{:.1}]  {:>7.2}±{:<6.2}  {:>15}\n",
-            r.report.a_over_d, r.report.b_over_a, si.value, si.error, r.report.single,
-            tw.value, tw.error, r.report.two, c.discrepancy_percent.value,
-            c.discrepancy_percent.error, r.report.discrepancy_percent,
-            c.area_discrepancy_percent.value, c.area_discrepancy_percent.error, h
+            "{:>5} {:>5}  {:>24} {:>6}  {:>24} {:>6}  {:>19} {:>6}  {:>17}  {:>24}\n",
+            r.report.a_over_d,
+            r.report.b_over_a,
+            show(si, 4),
+            format!("[{}]", r.report.single),
+            show(tw, 4),
+            format!("[{}]", r.report.two),
+            show(c.discrepancy_percent, 2),
+            format!("[{}]", r.report.discrepancy_percent),
+            show(c.area_discrepancy_percent, 2),
+            h
         );
     }
     s += "\nRules of thumb: R/A, and error against the two-plate R_o in % (cone half-angle)\n";

@@ -18,7 +18,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::{CompareError, Value};
+use super::{show, CompareError, Value};
 use crate::contact::two_plate::{solve, InterfaceModel, TwoPlateParams};
 use crate::error::positive;
 use crate::joint::{Joint, OuterRadius, Plate};
@@ -91,13 +91,14 @@ pub fn compute(
                 two_r_o: Value {
                     value: two,
                     error: 2.0 * s.r_o_error,
+                    converged: s.converged,
                 },
                 model: s.info.model,
                 discrepancy_rubbing_percent: discrepancy(two, case.rubbing.average),
                 discrepancy_autoradiographic_percent: case
                     .autoradiographic
                     .map(|m| discrepancy(two, m.average)),
-                seconds: s.info.time,
+                seconds: s.info.seconds,
                 report: case,
             })
         })
@@ -138,13 +139,12 @@ pub fn text(rows: &[Row]) -> String {
             _ => "-".into(),
         };
         s += &format!(
-            "{:>4} {:>5}/{:<5} {:>5}  {:>7.4}±{:<8.1e} {:>7.3}  {:>17} {:>17}  {:>13} {:>13}  {}\n",
+            "{:>4} {:>5}/{:<5} {:>5}  {:>16} {:>7.3}  {:>17} {:>17}  {:>13} {:>13}  {}\n",
             c.case,
             c.d1,
             c.d2,
             c.two_b,
-            r.two_r_o.value,
-            r.two_r_o.error,
+            show(r.two_r_o, 4),
             c.computed,
             format!(
                 "{:.2}-{:.2} ({:.2})",

@@ -50,3 +50,14 @@ pub enum ContactError {
         radius: f64,
     },
 }
+
+impl ContactError {
+    /// Whether the failure is bad input (the caller's to fix) rather than a solver failure.
+    pub fn is_input(&self) -> bool {
+        match self {
+            Self::Input(_) => true,
+            Self::Fem(e) => e.is_input(),
+            _ => false,
+        }
+    }
+}

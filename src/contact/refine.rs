@@ -30,10 +30,28 @@ pub(crate) struct Geometry {
     pub a: f64,
     pub b: f64,
     pub c: f64,
+    /// A radius inside the plate that must be a node, with the radial spacing inside it as for a
+    /// plate cut there (so that two cuts share their mesh up to the nearer one).
+    pub inner_cut: Option<f64>,
     pub d: [f64; 2],
     pub two: bool,
     pub welded: bool,
 }
+
+/// The previous mesh level: its solution, its R_o and its element size at R_o.
+#[derive(Debug, Clone)]
+pub(crate) struct PreviousLevel {
+    /// The level's solution.
+    pub solution: LevelSolution,
+    /// Its R_o.
+    pub r_o: f64,
+    /// Its element size at R_o.
+    pub h: f64,
+}
+
+/// Largest radial element size, in plate thicknesses: longer elements (aspect ratios of
+/// thousands) made the stiffness matrix numerically indefinite for C/D ≳ 10⁴.
+const H_MAX_OVER_D: f64 = 50.0;
 
 /// The mesh of one level: radial grading at A, B and the estimate of R_o, axial grading at the
 /// interface and the outer faces; materials by plate.
@@ -46,8 +64,12 @@ pub(crate) fn mesh(
 ) -> Result<Model, ContactError> {
     let q = 1.25;
     let mut foci = vec![g.a, g.b];
-    foci.extend(r_est.filter(|&r| r > g.a && r < g.c));
-    let r = Spacing::graded(g.a, g.c, &foci[1..], &foci, h, q, (g.c - g.a) / 10.0)?;
+    let c_spacing = g.inner_cut.unwrap_or(g.c);
+    foci.extend(r_est.filter(|&r| r > g.a && r < c_spacing));
+    let h_max = ((c_spacing - g.a) / 10.0).min(H_MAX_OVER_D * g.d[0].max(g.d[1]));
+    let mut knots = foci[1..].to_vec();
+    knots.extend(g.inner_cut);
+    let r = Spacing::graded(g.a, g.c, &knots, &foci, h, q, h_max)?;
     // Axially the fields vary more slowly than radially near R_o: a faster growth (1.5) away
     // from the interface and the loaded face halves the node count at no measurable cost in R_o.
     let zs = |z0: f64, z1: f64| Spacing::graded(z0, z1, &[], &[z0, z1], h, 1.5, (z1 - z0) / 3.0);
@@ -91,7 +113,7 @@ pub(crate) fn solve_adaptive(
     joint: &Joint,
     g: &Geometry,
     params: &TwoPlateParams,
-    prev: Option<&(LevelSolution, f64, f64)>,
+    prev: Option<&PreviousLevel>,
 ) -> Result<(LevelSolution, usize, usize), ContactError> {
     let r = model.mesh.radial_nodes().to_vec();
     let load = joint.load();
@@ -180,9 +202,9 @@ pub(crate) fn solve_adaptive(
 
 /// Ties and window from the previous level: points closed there and farther than three old
 /// elements from every contact boundary are tied; the rest up to R_o + 6 old elements are unknown.
-fn refined_plan(r: &[f64], prev: &(LevelSolution, f64, f64)) -> Option<(Vec<usize>, Vec<usize>)> {
-    let (s, r_o, h) = prev;
-    let margin = 3.0 * h;
+fn refined_plan(r: &[f64], prev: &PreviousLevel) -> Option<(Vec<usize>, Vec<usize>)> {
+    let (s, r_o) = (&prev.solution, &prev.r_o);
+    let margin = 3.0 * prev.h;
     let mut bounds: Vec<f64> = s
         .closed
         .windows(2)

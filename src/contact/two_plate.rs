@@ -44,13 +44,13 @@
 
 use super::lcp::LcpParams;
 use super::level::LevelSolution;
-use super::refine::{mesh, solve_adaptive, Geometry};
+use super::refine::{mesh, solve_adaptive, Geometry, PreviousLevel};
 use super::separation::{estimate, fitted_rate, NodalInterface, SeparationEstimate};
 use super::ContactError;
 use crate::error::InputError;
 use crate::fem::single::level_estimate;
 use crate::fem::ElementKind;
-use crate::joint::{Joint, OuterRadius};
+use crate::joint::{Joint, OuterRadius, Plate};
 use serde::Serialize;
 use std::time::Instant;
 
@@ -179,10 +179,12 @@ pub struct TwoPlateInfo {
     /// Observed convergence rate of R_o in the element size: least-squares slope of
     /// log |R_o,k+1 − R_o,k| against log h_k over all levels (None with fewer than three).
     pub rate: Option<f64>,
-    /// Whether the tolerance was met.
-    pub converged: bool,
+    /// Where a plate wider than the mesh can hold (or infinite) was cut (None: meshed whole).
+    pub cut: Option<f64>,
+    /// The cut's estimated error in R_o (included in `r_o_error`; 0 without a cut).
+    pub truncation_error: f64,
     /// Wall time, seconds.
-    pub time: f64,
+    pub seconds: f64,
 }
 
 /// The result of [`solve`]: R_o and the interface curves of the finest level.
@@ -192,6 +194,16 @@ pub struct TwoPlateSolution {
     pub r_o: f64,
     /// Its estimated absolute error ([`crate::fem::single::level_estimate`] of the levels).
     pub r_o_error: f64,
+    /// Whether `r_o_error` met the tolerance (relative to R_o).
+    pub converged: bool,
+    /// Whether the plates touch out to the rim (R_o = C: no separation inside the plate).
+    pub full_contact: bool,
+    /// Largest overlap of the plates (a negative gap) on the finest level; beyond round-off
+    /// it makes the result not converged.
+    pub overlap: f64,
+    /// Whether the finest level's welded zone came from the report's rule (no sign-consistent
+    /// contact edge exists: welded dissimilar plates); such a result is not converged.
+    pub report_rule: bool,
     /// Interface node radii of the finest level.
     pub radius: Vec<f64>,
     /// Contact force per interface node (totals; sums to the applied force).
@@ -211,63 +223,235 @@ pub struct TwoPlateSolution {
 }
 
 /// Solves the two-plate contact problem of `joint` (module docs).
+///
+/// The problem is solved in units where the thinner plate's thickness, the stiffer plate's
+/// modulus and the largest bearing pressure are 1 (R_o depends only on ratios), so that any
+/// finite input — a modulus of 1e-300 or 1e300, plates a nanometre or a kilometre thick —
+/// meets the same well-scaled matrices; the results are scaled back.
 pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution, ContactError> {
-    let start = Instant::now();
     check(params)?;
+    let (up, lo) = (joint.upper(), joint.lower());
+    let length = up.thickness().min(lo.thickness());
+    let modulus = up
+        .material()
+        .youngs_modulus()
+        .max(lo.material().youngs_modulus());
+    let stress = match params.loading {
+        Loading::Pressure => {
+            let p = joint
+                .load()
+                .values()
+                .iter()
+                .fold(0.0, |m: f64, v| m.max(v.abs()));
+            if p.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+                return Err(InputError::NotPositive {
+                    field: "bearing pressure P",
+                    value: p,
+                }
+                .into());
+            }
+            p
+        }
+        Loading::NutDisplacement(_) => modulus,
+    };
+    let unit = |m: crate::material::Material| {
+        crate::material::Material::new(m.youngs_modulus() / modulus, m.poisson_ratio())
+    };
+    // Every length is multiplied by the same factor, so that the load's inner radius stays
+    // bit for bit the hole radius.
+    let inv = 1.0 / length;
+    let scaled = Joint::new(
+        joint.hole_radius() * inv,
+        match joint.outer_radius() {
+            // wider than f64 can hold in these units: infinite to every digit of R_o
+            OuterRadius::Finite(c) if (c * inv).is_finite() => OuterRadius::Finite(c * inv),
+            OuterRadius::Finite(_) => OuterRadius::Infinite,
+            OuterRadius::Infinite => OuterRadius::Infinite,
+        },
+        Plate::new(up.thickness() * inv, unit(up.material())?)?,
+        Plate::new(lo.thickness() * inv, unit(lo.material())?)?,
+        joint.load().rescaled(inv, 1.0 / stress)?,
+    )?;
+    let scaled_params = TwoPlateParams {
+        loading: match params.loading {
+            Loading::NutDisplacement(d) => Loading::NutDisplacement(d * inv),
+            l => l,
+        },
+        ..*params
+    };
+    let mut s = solve_unit(&scaled, &scaled_params).map_err(|e| match e {
+        ContactError::WindowExhausted { radius } => ContactError::WindowExhausted {
+            radius: radius * length,
+        },
+        ContactError::ReferenceInTension { radius, reaction } => ContactError::ReferenceInTension {
+            radius: radius * length,
+            reaction: reaction * stress * length * length,
+        },
+        e => e,
+    })?;
+    let displacement = length * stress / modulus;
+    s.r_o *= length;
+    s.r_o_error *= length;
+    s.radius.iter_mut().for_each(|r| *r *= length);
+    s.force
+        .iter_mut()
+        .for_each(|f| *f *= stress * length * length);
+    s.pressure.iter_mut().for_each(|p| *p *= stress);
+    s.shear.iter_mut().for_each(|t| *t *= stress);
+    s.gap.iter_mut().for_each(|g| *g *= displacement);
+    s.nut_deflection *= displacement;
+    s.info.cut = s.info.cut.map(|c| c * length);
+    s.info.truncation_error *= length;
+    for l in &mut s.info.levels {
+        l.h *= length;
+        l.r_o *= length;
+        l.spread *= length;
+    }
+    Ok(s)
+}
+
+/// Widest free annulus C − B meshed, in thicknesses of the thinner plate: the bending stiffness
+/// of a free annulus L long falls like (D/L)⁴ against the element stiffnesses, and beyond
+/// L/D ≈ 10⁴ the stiffness matrix is numerically indefinite in f64.
+const C_MAX_OVER_D: f64 = 2.0e3;
+
+/// One solved mesh level and its R_o.
+struct Level {
+    sol: LevelSolution,
+    est: SeparationEstimate,
+    record: TwoPlateLevel,
+}
+
+/// Solves the level of element size `h` at R_o, A and B on the plates cut at `g.c`.
+fn solve_level_at(
+    joint: &Joint,
+    g: &Geometry,
+    params: &TwoPlateParams,
+    h: f64,
+    prev: Option<&PreviousLevel>,
+) -> Result<Level, ContactError> {
+    let model = mesh(joint, g, params.element, h, prev.map(|p| p.r_o))?;
+    let nodes = model.mesh.n_nodes();
+    let (sol, window, attempts) = solve_adaptive(&model, joint, g, params, prev)?;
+    let est = match separation(&sol) {
+        Some(est) => est,
+        // Closed out to the rim: full contact, R_o = C (an answer, not a failure).
+        None if sol.closed.last() == Some(&true) => SeparationEstimate {
+            r_o: g.c,
+            r_o_gap_far: None,
+            r_o_pressure: None,
+            last_contact: g.c,
+            first_open: g.c,
+            spread: 0.0,
+        },
+        None => return Err(ContactError::WindowExhausted { radius: g.c }),
+    };
+    let record = TwoPlateLevel {
+        h,
+        nodes,
+        dofs: sol.dofs,
+        window,
+        r_o: est.r_o,
+        spread: est.spread,
+        iterations: sol.lcp.iterations,
+        changes: sol.lcp.changes,
+        attempts,
+        report_rule: sol.lcp.prefix,
+        residual: sol.lcp.residual,
+        time_linear: sol.time_linear.as_secs_f64(),
+        time_contact: sol.time_contact.as_secs_f64(),
+    };
+    Ok(Level { sol, est, record })
+}
+
+/// Where to cut plates wider than the mesh can hold, and the error the cut makes in R_o.
+///
+/// R_o approaches its value for the wide plate like C⁻² (a free annulus beyond R_o carries the
+/// rim's influence by bending moments ∝ 1/r²; measured in `receding_vs_fe`). Starting from
+/// C₁ = 10B + 10(D₁ + D₂), two coarse levels at C₁ and 2C₁ give Δ = R(2C₁) − R(C₁), so that the
+/// cut's error in R_o is (4/3)|Δ|(1 − C₁²/C²) for the plate's own C (C = ∞: the factor is 1).
+/// C₁ doubles while that exceeds a quarter of the tolerance and 2C₁ stays below both C and
+/// [`C_MAX_OVER_D`]·D; returns (C₁, its error), or (C, 0) when the plate fits whole.
+fn truncation(
+    joint: &Joint,
+    g: &Geometry,
+    params: &TwoPlateParams,
+    c: f64,
+    h0: f64,
+) -> Result<(f64, f64), ContactError> {
+    let c_max = g.b + C_MAX_OVER_D * g.d[0].min(g.d[1]);
+    let mut c1 = 10.0 * g.b + 10.0 * (g.d[0] + g.d[1]);
+    if c <= c1.max(c_max) {
+        return Ok((c, 0.0));
+    }
+    c1 = c1.min(g.b + 0.5 * (c_max - g.b));
+    // R_o on the plate cut at c, meshed as if cut at `inner` up to there (the second level's
+    // element size, so that the difference is not lost in the first level's error).
+    let at = |c: f64, inner: Option<f64>| -> Result<f64, ContactError> {
+        let g = Geometry {
+            c,
+            inner_cut: inner,
+            ..*g
+        };
+        Ok(solve_level_at(joint, &g, params, 0.5 * h0, None)?.est.r_o)
+    };
+    loop {
+        let c2 = 2.0 * c1;
+        if c2 >= c {
+            return Ok((c, 0.0)); // the whole plate fits
+        }
+        let (r1, r2) = (at(c1, None)?, at(c2, Some(c1))?);
+        let error = 4.0 / 3.0 * (r2 - r1).abs() * (1.0 - (c1 / c).powi(2));
+        if error <= 0.25 * params.tolerance * r2 || 2.0 * c2 > c_max {
+            return Ok((c1, error));
+        }
+        c1 = c2;
+    }
+}
+
+/// [`solve`] on a joint in the units of [`solve`] (thinner plate 1 thick, stiffer modulus 1,
+/// largest bearing pressure 1).
+fn solve_unit(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution, ContactError> {
+    let start = Instant::now();
     let load = joint.load();
     let (a, b) = (joint.hole_radius(), load.outer());
     let d = [joint.upper().thickness(), joint.lower().thickness()];
     let two = params.both_plates || !joint.is_symmetric();
     let c = match joint.outer_radius() {
         OuterRadius::Finite(c) => c,
-        // The report: no difference between infinite plates and C > 5B; take more room.
-        OuterRadius::Infinite => 10.0 * b + 10.0 * (d[0] + d[1]),
+        OuterRadius::Infinite => f64::INFINITY,
     };
-    let g = Geometry {
+    let mut g = Geometry {
         a,
         b,
         c,
+        inner_cut: None,
         d,
         two,
         welded: two && params.interface == InterfaceModel::Welded,
     };
     let h0 = params.coarse * d[0].min(d[1]);
+    let (cut, truncation_error) = truncation(joint, &g, params, c, h0)?;
+    g.c = cut;
     let mut levels = Vec::new();
     let mut values = Vec::new();
-    let mut prev: Option<(LevelSolution, f64, f64)> = None;
+    let mut prev: Option<PreviousLevel> = None;
     let mut r_o_error = f64::INFINITY;
     let mut converged = false;
     let mut rate = None;
     let mut last: Option<LevelSolution> = None;
     for k in 0..params.max_levels {
         let h = h0 / 2f64.powi(k as i32);
-        let r_est = prev.as_ref().map(|p| p.1);
-        let model = mesh(joint, &g, params.element, h, r_est)?;
-        let nodes = model.mesh.n_nodes();
-        let (sol, window, attempts) = solve_adaptive(&model, joint, &g, params, prev.as_ref())?;
-        let est = separation(&sol).ok_or(ContactError::WindowExhausted { radius: g.c })?;
+        let Level { sol, est, record } = solve_level_at(joint, &g, params, h, prev.as_ref())?;
         values.push(est.r_o);
-        levels.push(TwoPlateLevel {
-            h,
-            nodes,
-            dofs: sol.dofs,
-            window,
-            r_o: est.r_o,
-            spread: est.spread,
-            iterations: sol.lcp.iterations,
-            changes: sol.lcp.changes,
-            attempts,
-            report_rule: sol.lcp.prefix,
-            residual: sol.lcp.residual,
-            time_linear: sol.time_linear.as_secs_f64(),
-            time_contact: sol.time_contact.as_secs_f64(),
-        });
+        levels.push(record);
         if values.len() >= 2 {
             let n = values.len();
             r_o_error = (values[n - 1] - values[n - 2]).abs();
             if let Some((_, e)) = level_estimate(&values) {
                 r_o_error = e;
             }
+            r_o_error += truncation_error;
             rate = fitted_rate(&values, 2.0);
             if n >= params.min_levels && r_o_error <= params.tolerance * est.r_o {
                 converged = true;
@@ -275,15 +459,36 @@ pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution,
                 break;
             }
         }
-        prev = Some((sol.clone(), est.r_o, h));
+        prev = Some(PreviousLevel {
+            solution: sol.clone(),
+            r_o: est.r_o,
+            h,
+        });
         last = Some(sol);
     }
-    let sol = last.expect("at least one level");
+    let (Some(sol), Some(&r_o)) = (last, values.last()) else {
+        return Err(InputError::Parameter {
+            field: "TwoPlateParams::max_levels",
+            value: params.max_levels as f64,
+            reason: "no level was solved",
+        }
+        .into());
+    };
     let pressure = closed_pressure(&sol).iter().map(|p| p.max(0.0)).collect();
     let gap_factor = if g.two { 1.0 } else { 2.0 };
+    // A welded zone chosen by the report's rule, or plates that overlap beyond round-off, are
+    // no solution of the contact problem: never reported as converged.
+    let gap_scale = sol.gap.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let overlap = gap_factor * sol.gap.iter().fold(0.0f64, |m, x| m.max(-x));
+    let unilateral = !sol.lcp.prefix && overlap <= 1e-6 * gap_factor * gap_scale;
+    let converged = converged && unilateral;
     Ok(TwoPlateSolution {
-        r_o: *values.last().expect("one level"),
+        r_o,
         r_o_error,
+        converged,
+        full_contact: sol.closed.last() == Some(&true) && cut == c,
+        overlap,
+        report_rule: sol.lcp.prefix,
         radius: sol.radius.clone(),
         force: sol.force.clone(),
         pressure,
@@ -300,8 +505,9 @@ pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution,
             },
             levels,
             rate,
-            converged,
-            time: start.elapsed().as_secs_f64(),
+            cut: (cut < c).then_some(cut),
+            truncation_error,
+            seconds: start.elapsed().as_secs_f64(),
         },
     })
 }

@@ -109,3 +109,10 @@ pub enum FemError {
     #[error("sparse solver: {0}")]
     Solver(String),
 }
+
+impl FemError {
+    /// Whether the failure is bad input (the caller's to fix) rather than a solver failure.
+    pub fn is_input(&self) -> bool {
+        matches!(self, Self::Input(_))
+    }
+}

@@ -99,7 +99,7 @@ impl Spacing {
         breaks.push(x1);
         let mut points = vec![x0];
         for w in breaks.windows(2) {
-            stretch(w[0], w[1], &h, &mut points);
+            stretch(w[0], w[1], &h, &mut points)?;
         }
         Ok(Self { points })
     }
@@ -128,26 +128,65 @@ impl Spacing {
     }
 }
 
+/// Most elements one spacing may hold (a guard on memory; a structured mesh of that many
+/// elements per row would not fit anyway).
+const MAX_ELEMENTS: f64 = 1e7;
+
 /// Appends nodes on (a, b] equally spaced in φ = ∫ dx/h.
-fn stretch(a: f64, b: f64, h: &dyn Fn(f64) -> f64, out: &mut Vec<f64>) {
+///
+/// φ is integrated by the trapezoidal rule on 4000 equal steps where a step spans at most a few
+/// target elements (the meshes of ordinary plates), else on steps of h(x)/20 marched from a,
+/// so that an interval 10³⁰ times the smallest element is integrated in a few thousand steps
+/// (graded sizes grow geometrically) instead of being lost in one step.
+fn stretch(a: f64, b: f64, h: &dyn Fn(f64) -> f64, out: &mut Vec<f64>) -> Result<(), InputError> {
     const STEPS: usize = 4000;
     let dx = (b - a) / STEPS as f64;
-    let mut phi = vec![0.0; STEPS + 1];
-    for i in 0..STEPS {
-        let (xa, xb) = (a + i as f64 * dx, a + (i + 1) as f64 * dx);
-        phi[i + 1] = phi[i] + 0.5 * dx * (1.0 / h(xa) + 1.0 / h(xb));
+    let uniform = dx <= 4.0 * h(a).min(h(b));
+    let (mut xs, mut phi) = (vec![a], vec![0.0]);
+    if uniform {
+        for i in 0..STEPS {
+            let (xa, xb) = (a + i as f64 * dx, a + (i + 1) as f64 * dx);
+            phi.push(phi[i] + 0.5 * dx * (1.0 / h(xa) + 1.0 / h(xb)));
+            xs.push(xb);
+        }
+    } else {
+        let mut x = a;
+        while x < b {
+            let step = (0.05 * h(x)).min(b - x);
+            let next = if b - x - step < 1e-3 * step {
+                b
+            } else {
+                x + step
+            };
+            let k = phi.len() - 1;
+            phi.push(phi[k] + 0.5 * (next - x) * (1.0 / h(x) + 1.0 / h(next)));
+            xs.push(next);
+            x = next;
+            if phi.len() as f64 > 20.0 * MAX_ELEMENTS {
+                break;
+            }
+        }
     }
-    let n = (phi[STEPS] - 1e-9).ceil().max(1.0) as usize;
+    let total = phi[phi.len() - 1];
+    if total.is_nan() || total > MAX_ELEMENTS {
+        return Err(InputError::Parameter {
+            field: "elements along one mesh line",
+            value: total,
+            reason: "exceeds 1e7: the interval is too long for the element size asked",
+        });
+    }
+    let n = (total - 1e-9).ceil().max(1.0) as usize;
     let mut j = 0;
     for i in 1..n {
-        let target = phi[STEPS] * i as f64 / n as f64;
+        let target = total * i as f64 / n as f64;
         while phi[j + 1] < target {
             j += 1;
         }
         let t = (target - phi[j]) / (phi[j + 1] - phi[j]);
-        out.push(a + (j as f64 + t) * dx);
+        out.push(xs[j] + t * (xs[j + 1] - xs[j]));
     }
     out.push(b);
+    Ok(())
 }
 
 fn check_interval(x0: f64, x1: f64) -> Result<(), InputError> {

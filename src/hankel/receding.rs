@@ -162,6 +162,13 @@ pub enum RecedingError {
     },
 }
 
+impl RecedingError {
+    /// Whether the failure is bad input (the caller's to fix) rather than a solver failure.
+    pub fn is_input(&self) -> bool {
+        matches!(self, Self::Input(_))
+    }
+}
+
 /// An elastic layer of thickness D on a frictionless rigid base, pressed on its top face.
 #[derive(Debug, Clone)]
 pub struct Layer {

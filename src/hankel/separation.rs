@@ -59,6 +59,9 @@ pub struct SeparationInfo {
     pub r_o: f64,
     /// Estimated absolute error of R_o.
     pub error: f64,
+    /// Whether `error` met the relative tolerance asked (the slab's `rel_tol`, the hole
+    /// route's `r_o_tolerance`).
+    pub converged: bool,
     /// Midplane σ_z evaluations (scan + root finder).
     pub evaluations: usize,
     /// Slope dσ_z/dr at R_o (pressure per length; positive).
@@ -87,6 +90,13 @@ pub enum SeparationError {
         /// End of the scan.
         searched_to: f64,
     },
+}
+
+impl SeparationError {
+    /// Whether the failure is bad input (the caller's to fix) rather than a solver failure.
+    pub fn is_input(&self) -> bool {
+        matches!(self, Self::Input(_))
+    }
 }
 
 impl Slab {
@@ -150,6 +160,7 @@ impl Slab {
         Ok(SeparationInfo {
             r_o: root.x,
             error,
+            converged: crate::value::meets(root.x, error, params.rel_tol),
             evaluations,
             slope,
             nodes: rule.nodes(),

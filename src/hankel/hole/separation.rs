@@ -27,7 +27,7 @@ use crate::error::positive;
 use crate::hankel::midplane::MidplaneRule;
 use crate::hankel::root::{brent, Root};
 use crate::hankel::separation::{SeparationError, SeparationInfo, SeparationParams};
-use crate::joint::SinglePlate;
+use crate::joint::{OuterRadius, SinglePlate};
 use std::time::Instant;
 
 /// R_o of `plate` with its hole made traction-free (see [`super`]); the hole's fit is
@@ -45,6 +45,24 @@ pub fn single_plate_separation(
     positive("R_o relative tolerance", sep.rel_tol)?;
     positive("scan step", sep.step)?;
     positive("scan reach", sep.reach)?;
+    // A rim farther than B + 30 D is an end effect decaying like e^(−2.1 (C − r)/D) at the
+    // midplane, below f64 resolution of R_o (see `fem::single`): the plate is infinite to
+    // every digit, and its rim correction (whose cost grows with C/D) is skipped.
+    let far = crate::fem::single::FAR_RIM * plate.half_thickness() + plate.load().outer();
+    let infinite;
+    let plate = match plate.outer_radius() {
+        OuterRadius::Finite(c) if c > far => {
+            infinite = SinglePlate::new(
+                plate.hole_radius(),
+                OuterRadius::Infinite,
+                plate.half_thickness(),
+                plate.material(),
+                plate.load().clone(),
+            )?;
+            &infinite
+        }
+        _ => plate,
+    };
     let mut holed = HolePlate::with_terms(plate, hole, hole.terms.unwrap_or(hole.start_terms))?;
     let d = plate.half_thickness();
     let b = plate.load().outer();
@@ -173,6 +191,7 @@ pub fn single_plate_separation(
             let sep_info = SeparationInfo {
                 r_o,
                 error,
+                converged,
                 evaluations: evaluations + scan_cache.len() + 1,
                 slope,
                 nodes: rule.nodes(),
