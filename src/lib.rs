@@ -37,6 +37,7 @@ pub mod hankel;
 pub mod joint;
 pub mod load;
 pub mod material;
+pub mod numerics;
 pub mod plot;
 pub mod reference;
 pub mod rules;

@@ -2,7 +2,7 @@
 //! 6.512.3), including slowly decaying and non-decaying ones; the error estimate must never be
 //! below the actual error.
 
-use boltzone::hankel::quadrature::{integrate_oscillatory, wynn_epsilon, QuadParams};
+use boltzone::numerics::quadrature::{integrate_oscillatory, wynn_epsilon, QuadParams};
 
 fn check(name: &str, value: f64, error: f64, exact: f64, max_err: f64) {
     let actual = (value - exact).abs();

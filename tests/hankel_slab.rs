@@ -4,8 +4,8 @@
 //! quadrature.
 
 use boltzone::hankel::kernel::{midplane, midplane_bound, Kernels};
-use boltzone::hankel::quadrature::gauss_legendre;
 use boltzone::hankel::{MidplaneCurve, MidplaneRule, QuadParams, Slab};
+use boltzone::numerics::quadrature::gauss_legendre;
 use boltzone::{FaceLoad, Material, Peak};
 
 mod common;

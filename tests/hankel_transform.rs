@@ -2,8 +2,8 @@
 //! the slab and the hole correction) against a brute-force Gauss–Legendre integration over r,
 //! which shares none of its closed forms (no Ji₀, no x²J₁ identities).
 
-use boltzone::hankel::quadrature::gauss_legendre;
 use boltzone::hankel::transform::LoadTransform;
+use boltzone::numerics::quadrature::gauss_legendre;
 use boltzone::{FaceLoad, Peak};
 
 /// ∫ p(r) J₀(ξr) r dr by 20-point Gauss–Legendre on every linear piece, split into panels of

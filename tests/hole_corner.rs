@@ -3,13 +3,13 @@
 //! conditions (Hankel inversion), their closed-form face value, equilibrium by differences, and
 //! the corner exponent of their traction on the hole.
 
-use boltzone::hankel::hole::bessel_nu::{gamma, NormalBessel};
 use boltzone::hankel::hole::corner::{corner_exponents, Component, CornerLoads};
 use boltzone::hankel::hole::corner_quad::{expint, expint_sequence};
 use boltzone::hankel::kernel::face_remainders;
 use boltzone::hankel::kernel_shear::shear_face_remainders;
-use boltzone::hankel::quadrature::{integrate_oscillatory, QuadParams};
-use boltzone::hankel::transform::tanh_sinh;
+use boltzone::numerics::bessel_nu::{gamma, NormalBessel};
+use boltzone::numerics::quadrature::{integrate_oscillatory, QuadParams};
+use boltzone::numerics::tanh_sinh::tanh_sinh;
 use num_complex::Complex64;
 
 fn reference() -> Vec<(String, Complex64, f64, Complex64)> {

@@ -1,10 +1,12 @@
-//! The layer kernels of `hankel::layer` against three independent references: the general
+//! The layer kernels of `hankel::receding::layer` against three independent references: the general
 //! four-constant Love solution of the layer (tests/data/receding_layer_kernels.py, exact
 //! rational arithmetic), the slab's midplane kernel of `hankel::kernel` (the bilateral limit),
 //! and the Kirchhoff plate (the thin-layer limit).
 
 use boltzone::hankel::kernel::midplane;
-use boltzone::hankel::layer::{bending, bottom_from_bottom, bottom_from_top, symmetric_remainder};
+use boltzone::hankel::receding::layer::{
+    bending, bottom_from_bottom, bottom_from_top, symmetric_remainder,
+};
 
 /// (x, ν, M_q, M_p) rows of tests/data/receding_layer_kernels.csv.
 fn reference() -> Vec<[f64; 4]> {

@@ -23,11 +23,11 @@
 //! ```
 
 use super::kernel::{face_remainders, Kernels};
-use super::quadrature::{integrate_oscillatory_vec, Estimate, QuadParams};
 use super::transform::LoadTransform;
 use crate::error::{positive, InputError};
 use crate::load::FaceLoad;
 use crate::material::Material;
+use crate::numerics::quadrature::{integrate_oscillatory_vec, Estimate, QuadParams};
 
 /// The infinite slab of half-thickness D (thickness 2D), no hole, loaded by the same p(r) on
 /// both faces.

@@ -30,9 +30,9 @@
 
 use super::field::Slab;
 use super::kernel::midplane;
-use super::quadrature::{gauss_legendre, Estimate};
 use super::transform::LoadTransform;
 use crate::error::{positive, InputError};
+use crate::numerics::quadrature::{gauss_legendre, Estimate};
 use std::f64::consts::PI;
 
 /// Largest node count a [`MidplaneRule`] may use (thin slabs with (r_max + B)/D beyond a few

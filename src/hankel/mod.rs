@@ -3,7 +3,6 @@
 //! The slab −D ≤ z ≤ D (thickness 2D, no hole) is pressed by the same face load p(r) on both
 //! faces: Fernlund's single-plate substitute of a symmetric bolted joint. Split by verb:
 //!
-//! - [`quadrature`]: ∫₀^∞ f(ξ) dξ for oscillatory f (partition–extrapolation, Wynn's ε);
 //! - [`kernel`]: the slab's Hankel kernels in overflow-free form, with their derivation;
 //!   [`kernel_shear`]: the same for a radial shear traction on the faces (the hole's corner
 //!   enrichment loads the faces by both);
@@ -12,11 +11,13 @@
 //! - [`midplane`]: the midplane σ_z(r, 0) fast, on a node set shared by all radii, and the curve;
 //! - [`realspace`]: the midplane σ_z of thin slabs by a localised real-space point kernel;
 //! - [`separation`]: the separation radius R_o (first upward zero of σ_z(r, 0) beyond B).
-//! - [`root`]: the bracketed root finder (Brent) shared by every R_o search;
 //! - [`hole`]: the single plate with a hole (and a finite rim): Lamé and Papkovich–Fadle modes
 //!   fitted on r = A (and r = C), R_o with the hole residual as its error measure;
-//! - [`layer`], [`receding`]: the receding contact of a layer on a frictionless rigid base — the
+//! - [`receding/`](receding): the receding contact of a layer on a frictionless rigid base — the
 //!   two-plate model solved semi-analytically, an independent check of the FE contact solver.
+//!
+//! The generic numerics they use (oscillatory quadrature, Brent, Bessel functions, Chebyshev
+//! interpolation) live in [`crate::numerics`].
 //!
 //! ## Routes, cost and range
 //!
@@ -44,20 +45,19 @@ pub mod field;
 pub mod hole;
 pub mod kernel;
 pub mod kernel_shear;
-pub mod layer;
 pub mod midplane;
-pub mod quadrature;
 pub mod realspace;
 pub mod receding;
-mod receding_search;
-mod receding_system;
-pub mod root;
 pub mod separation;
 pub mod transform;
 
+// Former homes, kept so that old paths work.
+pub use crate::numerics::{quadrature, root};
+pub use receding::layer;
+
+pub use crate::numerics::quadrature::{Estimate, QuadParams};
 pub use field::{
     displacement_for_transform, ring_load, stress_for_transform, Displacement, Slab, Stress,
 };
 pub use midplane::{Midplane, MidplaneCurve, MidplaneRule};
-pub use quadrature::{Estimate, QuadParams};
 pub use separation::{SeparationInfo, SeparationParams};

@@ -27,8 +27,8 @@
 //! ```
 
 use super::kernel::midplane;
-use super::quadrature::{gauss_legendre, Estimate};
 use super::transform::LoadTransform;
+use crate::numerics::quadrature::{gauss_legendre, Estimate};
 use std::f64::consts::PI;
 use std::sync::OnceLock;
 

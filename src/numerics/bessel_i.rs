@@ -1,7 +1,7 @@
 //! Modified Bessel functions I₀ and I₁ of complex argument, exponentially scaled:
 //! `i01_scaled(z)` = (e^(−z) I₀(z), e^(−z) I₁(z)) for Re z > 0.
 //!
-//! The radial factors of the Papkovich–Fadle modes that grow outward ([`super::eigen`], used to
+//! The radial factors of the Papkovich–Fadle modes that grow outward (`hankel::hole::eigen`, used to
 //! free a finite rim r = C) are I₀(λr), I₁(λr) with |arg λ| < 0.5; the scaling removes e^z.
 //!
 //! - |z| < 20: the power series I_ν(z) = (z/2)^ν Σ_k (z²/4)^k/(k!(k+ν)!) (DLMF 10.25.2). Its terms
@@ -13,7 +13,7 @@
 //! Measured against mpmath at 40 digits (`tests/data/hole_bessel_i.py`, `tests/hole_bessel_k.rs`).
 //!
 //! ```
-//! use boltzone::hankel::hole::bessel_i::i01_scaled;
+//! use boltzone::numerics::bessel_i::i01_scaled;
 //! use num_complex::Complex64;
 //! let (i0, i1) = i01_scaled(Complex64::new(1.0, 0.0));
 //! // e^(−1) I₀(1), e^(−1) I₁(1) (Abramowitz & Stegun Table 9.8)

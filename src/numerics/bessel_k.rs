@@ -1,7 +1,7 @@
 //! Modified Bessel functions K₀ and K₁ of complex argument, exponentially scaled:
 //! `k01_scaled(z)` = (e^z K₀(z), e^z K₁(z)) for Re z > 0.
 //!
-//! The radial factors of the Papkovich–Fadle eigenfunctions ([`super::eigen`]) are K₀(λr), K₁(λr)
+//! The radial factors of the Papkovich–Fadle eigenfunctions (`hankel::hole::eigen`) are K₀(λr), K₁(λr)
 //! with complex λ (|arg λ| < 0.5); the scaling removes the e^(−z) that would underflow for large
 //! |z|, so ratios K_ν(λr)/K₁(λA) are formed as scaled ratios times e^(−λ(r−A)).
 //!
@@ -20,7 +20,7 @@
 //! `tests/hole_bessel_k.rs`) for |z| ∈ [0.05, 1e5], |arg z| ≤ 1.1.
 //!
 //! ```
-//! use boltzone::hankel::hole::bessel_k::k01_scaled;
+//! use boltzone::numerics::bessel_k::k01_scaled;
 //! use num_complex::Complex64;
 //! let (k0, k1) = k01_scaled(Complex64::new(1.0, 0.0));
 //! // e·K₀(1) and e·K₁(1) (Abramowitz & Stegun Table 9.8)

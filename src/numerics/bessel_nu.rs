@@ -2,7 +2,7 @@
 //! Λ_ν(x) = Γ(ν + 1)(x/2)^(−ν) J_ν(x) = ₀F₁(; ν + 1; −x²/4) (entire in x, Λ_ν(0) = 1), and the
 //! complex log-Gamma function it needs.
 //!
-//! The corner enrichment of the hole correction ([`super::corner`]) loads the slab inside the
+//! The corner enrichment of the hole correction (`hankel::hole::corner`) loads the slab inside the
 //! hole by (1 − r²/A²)^(λ−1) with λ a complex Williams exponent; Sonine's first finite integral
 //! (DLMF 10.22.19, Watson § 12.11) gives its Hankel transforms in closed form through Λ_λ(ξA)
 //! and Λ_(λ+1)(ξA). For Re ν > 0, x ≥ 0:
@@ -24,7 +24,7 @@
 //! `tests/hole_corner.rs`): relative error below 1e-13 over x ∈ [0, 1e6] for the orders used.
 //!
 //! ```
-//! use boltzone::hankel::hole::bessel_nu::NormalBessel;
+//! use boltzone::numerics::bessel_nu::NormalBessel;
 //! use num_complex::Complex64;
 //! // ν = ½: Λ_½(x) = sin x / x
 //! let b = NormalBessel::new(Complex64::new(0.5, 0.0));

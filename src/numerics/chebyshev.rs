@@ -6,10 +6,10 @@
 //! its samples. For f analytic inside the Bernstein ellipse of parameter ρ the coefficients
 //! fall like ρ^(−k) (Trefethen, *Approximation Theory and Approximation Practice*, ch. 8), and
 //! the interpolation error is at most 2 Σ_{k>M} |c_k| (ch. 4). Used by the hole's slab traction
-//! profile ([`super::profile`]) and the separation search's local midplane interpolant.
+//! profile (`hankel::hole::profile`) and the separation search's local midplane interpolant.
 //!
 //! ```
-//! use boltzone::hankel::hole::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};
+//! use boltzone::numerics::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};
 //! // T₃(x) = 4x³ − 3x is reproduced exactly from its values on the grid of M = 8
 //! let v: Vec<f64> = lobatto_points(8).iter().map(|x| 4.0 * x * x * x - 3.0 * x).collect();
 //! let c = lobatto_coefficients(&v);

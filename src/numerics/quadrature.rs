@@ -22,7 +22,7 @@
 //! the actual error on closed-form Hankel pairs and on the slab's fields.
 //!
 //! ```
-//! use boltzone::hankel::quadrature::{integrate_oscillatory, QuadParams};
+//! use boltzone::numerics::quadrature::{integrate_oscillatory, QuadParams};
 //! // ∫₀^∞ e^(−ξ/10) J₀(2ξ) dξ = 1/√(0.01 + 4)
 //! let est = integrate_oscillatory(|x| (-0.1 * x).exp() * libm::j0(2.0 * x), 2.0, 10.0, &QuadParams::default());
 //! assert!((est.value - 1.0 / (0.01f64 + 4.0).sqrt()).abs() <= est.error);

@@ -38,11 +38,11 @@
 //! }
 //! ```
 
-use super::bessel_nu::NormalBessel;
 use super::corner_quad::{expint_table_extended, tail, ProductSeries};
 use crate::hankel::kernel::{KernelNode, Kernels};
 use crate::hankel::kernel_shear::ShearKernels;
-use crate::hankel::quadrature::gauss_legendre;
+use crate::numerics::bessel_nu::NormalBessel;
+use crate::numerics::quadrature::gauss_legendre;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 use std::sync::OnceLock;

@@ -36,7 +36,7 @@
 //! assert!((e[1] - expint(2.0 * one, one)).norm() < 1e-14);
 //! ```
 
-use super::bessel_nu::{hankel_coefficients, ln_gamma};
+use crate::numerics::bessel_nu::{hankel_coefficients, ln_gamma};
 use num_complex::Complex64;
 use std::f64::consts::PI;
 

@@ -42,8 +42,8 @@
 //! assert!(f.sigma_z.norm() < 1e-13 && f.tau_rz.norm() < 1e-13);
 //! ```
 
-use super::bessel_i::i01_scaled;
-use super::bessel_k::k01_scaled;
+use crate::numerics::bessel_i::i01_scaled;
+use crate::numerics::bessel_k::k01_scaled;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 

@@ -71,7 +71,7 @@
 //! hole is computed once, at M/2 + 1 Chebyshev–Lobatto heights (M = 24–72 on Table 1, predicted
 //! from the load edge's distance to the hole, [`profile`]), 4–12 thousand ξ-nodes, 1.1–3.0 ms
 //! (criterion; Wynn's ε updated in O(window) per panel,
-//! [`crate::hankel::quadrature::WynnWindow`]): ~30 % of a run. Each N then costs the corner
+//! [`crate::numerics::quadrature::WynnWindow`]): ~30 % of a run. Each N then costs the corner
 //! fields' tractions at the new heights (12-point panels, decayed contributions skipped, one
 //! backward recurrence and one E_p table per family of exponents λ₁ + j: ~25–35 % of a run),
 //! the fit (Householder QR) and residual, and a root search on the modes' closed forms: the
@@ -103,10 +103,6 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-pub mod bessel_i;
-pub mod bessel_k;
-pub mod bessel_nu;
-pub mod chebyshev;
 pub mod corner;
 pub mod corner_quad;
 pub mod eigen;
@@ -116,6 +112,8 @@ pub mod profile;
 mod separation;
 pub mod traction;
 
+// Former homes, kept so that old paths work.
+pub use crate::numerics::{bessel_i, bessel_k, bessel_nu, chebyshev};
 pub use plate::HolePlate;
 pub use profile::TractionProfile;
 pub use separation::single_plate_separation;

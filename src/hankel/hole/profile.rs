@@ -47,11 +47,11 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};
 use super::traction::{hole_tractions, HoleTraction};
 use crate::hankel::field::Slab;
-use crate::hankel::quadrature::QuadParams;
 use crate::load::FaceLoad;
+use crate::numerics::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};
+use crate::numerics::quadrature::QuadParams;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 

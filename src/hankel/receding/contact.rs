@@ -20,7 +20,7 @@
 //! so that ∫₀^∞ q̄ J₀(ξr) dξ = ∫₀^r φ(t)/√(r² − t²) dt (from ∫₀^∞ cos ξt J₀(ξr) dξ =
 //! H(r − t)/√(r² − t²)). The contact condition w = const on r ≤ c, inverted by Abel's formula
 //! (which maps J₀(ξr) to (2/π) cos ξt and a constant to a constant), becomes a Fredholm equation
-//! of the second kind (module `receding_system`). The bending kernel is made integrable by
+//! of the second kind ([`super::system`]). The bending kernel is made integrable by
 //! equilibrium: with ∫₀^c φ dt = q̄(0) = p̄(0), the product M_p(q̄ − p̄) is used with J₀(ξr) − 1
 //! (displacements relative to the axis; the constant joins the unknown rigid translation C₀).
 //! φ(c) is the coefficient of the inverse-square-root edge singularity: a smooth receding
@@ -40,7 +40,7 @@
 //!
 //! **Checks** (tests/receding_*.rs): the kernels against a general Love solution and the
 //! Kirchhoff plate; the bilateral limit (contact forced on r ≤ B + 12D) reproduces the midplane
-//! σ_z of the slab of half-thickness D ([`super::midplane`]) to 1e-12·p; 2π∫q r dr = F to
+//! σ_z of the slab of half-thickness D ([`crate::hankel::midplane`]) to 1e-12·p; 2π∫q r dr = F to
 //! 1e-15; q ~ (R_o − r)^(1/2) and g ~ (r − R_o)^(3/2); R_o independent of the load's scale and
 //! of ν; and the FE two-plate solver, which converges to the same R_o as its outer radius C
 //! grows (difference ∝ C⁻², extrapolated agreement ~1e-5·R_o). Cost: about 20 Nyström solves
@@ -58,10 +58,10 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::receding_search::{root, verify, Search};
-use super::receding_system::{Nystrom, XiRule};
-use super::transform::LoadTransform;
+use super::search::{root, unilateral, RuleCache, Scan};
+use super::system::{Nystrom, XiRule};
 use crate::error::{positive, InputError};
+use crate::hankel::transform::LoadTransform;
 use crate::load::FaceLoad;
 use crate::material::Material;
 use std::time::Instant;
@@ -231,7 +231,7 @@ impl ContactSolution {
     pub fn total_force(&self) -> f64 {
         let c = self.radius();
         2.0 * std::f64::consts::PI
-            * super::quadrature::gauss_legendre(40)
+            * crate::numerics::quadrature::gauss_legendre(40)
                 .iter()
                 .map(|&(x, w)| {
                     let u = 0.5 * (1.0 + x);
@@ -341,16 +341,42 @@ impl Layer {
         let coarse_n = (3 * n).div_ceil(4).max(4);
         // one ξ-rule (it does not depend on n) for radii up to B + 2D, widened if the search
         // goes beyond: the load transform is evaluated once per node, not once per solve
-        let mut search = Search {
+        let mut cache = RuleCache {
             cap: self.transform.outer() + 2.0 * self.d,
             rule: self.rule(self.transform.outer() + 2.0 * self.d, params.quad_tol),
             solves: 0,
         };
-        let r_o = root(self, n, params, None, &mut search)?;
-        let coarse = root(self, coarse_n, params, Some(r_o), &mut search)?;
-        let solution = search.solve(self, r_o, n, params.quad_tol)?;
-        let solves = search.solves;
-        let (min_pressure, min_gap) = verify(&solution, self.transform.eval(0.0))?;
+        let p0 = self.transform.eval(0.0);
+        let solve = |c: f64, n: usize, cache: &mut RuleCache| {
+            let rule = cache.rule_for(c, self.d, |cap| self.rule(cap, params.quad_tol));
+            self.solve(rule, c, n)
+        };
+        let b = self.transform.outer();
+        let scan = Scan {
+            b,
+            d: self.d,
+            step: params.step * self.d,
+            end: b + params.reach * self.d,
+            tol: params.rel_tol * self.d,
+            max_iterations: params.max_iterations,
+        };
+        let not_found = RecedingError::NotFound {
+            from: b,
+            to: scan.end,
+        };
+        let mut root_with = |n: usize, near: Option<f64>| {
+            let mut edge = |c: f64| {
+                Ok::<f64, RecedingError>(c * solve(c, n, &mut cache)?.edge_coefficient() / p0)
+            };
+            root(&mut edge, &scan, near)?.ok_or_else(|| not_found.clone())
+        };
+        let r_o = root_with(n, None)?;
+        let coarse = root_with(coarse_n, Some(r_o))?;
+        let solution = solve(r_o, n, &mut cache)?;
+        let solves = cache.solves;
+        let (min_pressure, min_gap) =
+            unilateral(r_o, p0, |r| solution.pressure(r), |r| solution.gap(r))
+                .map_err(|(what, r, value)| RecedingError::NotUnilateral { what, r, value })?;
         let info = RecedingInfo {
             min_pressure,
             min_gap,

@@ -1,5 +1,5 @@
 //! Hankel kernels of an elastic layer 0 ≤ z ≤ D pressed on both faces: the vertical
-//! displacement of its bottom face, for the receding-contact solver [`super::receding`].
+//! displacement of its bottom face, for the receding-contact solver [`super::contact`].
 //!
 //! **Problem.** Top face z = D: σ_z = −p(r), τ_rz = 0; bottom face z = 0: σ_z = −q(r),
 //! τ_rz = 0 (p, q > 0 press on the layer; compression negative; w positive upward). With
@@ -12,7 +12,7 @@
 //!
 //! **Derivation.** Split the loads into a part symmetric about the layer's midplane,
 //! (p + q)/2 on both faces, and an antisymmetric part ±(p − q)/2. The symmetric part is the
-//! slab of [`super::kernel`] with half-thickness D/2: its face moves by
+//! slab of [`crate::hankel::kernel`] with half-thickness D/2: its face moves by
 //! ((1−ν)/G)∫ s̄ S(x) J₀ dξ with S(x) = (cosh x − 1)/(sinh x + x) (there K_w on the face equals
 //! 2(1−ν)·S(2t), t = ξD/2). The antisymmetric part (Love's strain function odd in the
 //! midplane coordinate, Timoshenko & Goodier §§ 130–131) bends the layer; its faces move by
@@ -23,19 +23,19 @@
 //!
 //! Checks: Λ ~ 12/x³ as x → 0, so w̄ → (q̄ − p̄)/(𝒟ξ⁴) with 𝒟 = E D³/(12(1 − ν²)), the
 //! Kirchhoff plate; M_p/M_q = 2(sinh x + x cosh x)/(sinh 2x + 2x), the midplane kernel of the
-//! slab of half-thickness D ([`super::kernel::midplane`]), which is the bilateral limit (two
+//! slab of half-thickness D ([`crate::hankel::kernel::midplane`]), which is the bilateral limit (two
 //! equal plates welded at the interface); and the values of a general four-constant Love
 //! solution of the layer (`tests/data/receding_layer_kernels.py`). All three are tests.
 //! None of the kernels depends on ν: neither does the receding contact radius.
 //!
 //! **Overflow-free form.** With e = e^(−x): S − 1 = −2e(1 + x − e)/(1 − e² + 2xe) (taken from
-//! the slab's exponentially small face remainder, [`super::kernel::face_remainders`]) and
+//! the slab's exponentially small face remainder, [`crate::hankel::kernel::face_remainders`]) and
 //! Λ − 1 = 2e(1 + x + e)/(2e·(sinh x − x)) with 2e(sinh x − x) = 1 − e² − 2xe for x ≥ 1 and by
 //! its power series below (where the difference would cancel). Λ → 1 + 4(1+x)e and
 //! M_p → 2(1 + x)e^(−x) as x → ∞; no exponential grows.
 //!
 //! ```
-//! use boltzone::hankel::layer::{bending, bottom_from_top, symmetric_remainder};
+//! use boltzone::hankel::receding::layer::{bending, bottom_from_top, symmetric_remainder};
 //! // Kirchhoff limit: Λ(x)·x³ → 12
 //! assert!((bending(1e-3) * 1e-9 - 12.0).abs() < 1e-4);
 //! // exponentially small at large x, never NaN
@@ -43,7 +43,7 @@
 //! assert!((symmetric_remainder(1e-9) + 1.0).abs() < 1e-8);
 //! ```
 
-use super::kernel::face_remainders;
+use crate::hankel::kernel::face_remainders;
 
 /// Smallest x used by [`bending`] and [`bottom_from_top`] (their 12/x³ and 6/x³ poles would
 /// overflow near x ≈ 1e-103; callers multiply them by factors O(x⁴), so clamping is harmless).
@@ -88,7 +88,7 @@ pub fn bending_remainder(x: f64) -> f64 {
 
 /// S(x) − 1 with S(x) = (cosh x − 1)/(sinh x + x): the symmetric (slab of half-thickness D/2)
 /// face displacement kernel minus its half-space limit; −1 at x = 0, ≈ −2(1 + x)e^(−x) at
-/// large x. Taken from [`super::kernel::face_remainders`] (K_w = 2(1−ν)S on the slab's face).
+/// large x. Taken from [`crate::hankel::kernel::face_remainders`] (K_w = 2(1−ν)S on the slab's face).
 pub fn symmetric_remainder(x: f64) -> f64 {
     // K_w remainder = 2(1−ν)(S − 1) for any ν; ν = 0 picks S − 1 · 2
     face_remainders(0.5 * x.min(X_MAX), 0.0).w / 2.0

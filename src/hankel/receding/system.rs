@@ -1,5 +1,5 @@
 //! The Fredholm equation of the layer in contact with a rigid base over r ≤ c, discretised by
-//! Nyström's method: the numerical core of [`super::receding`] (derivation there).
+//! Nyström's method: the numerical core of [`super::contact`] (derivation there).
 //!
 //! φ(t) + ∫₀^c K(t, s) φ(s) ds − C₀ = f(t) on 0 ≤ t ≤ c,  ∫₀^c φ(s) ds = p̄(0),
 //!
@@ -14,8 +14,8 @@
 //! ≈ D about the real axis.
 
 use super::layer::{bottom_from_top, symmetric_remainder};
-use super::quadrature::{gauss_legendre, panel};
-use super::transform::LoadTransform;
+use crate::hankel::transform::LoadTransform;
+use crate::numerics::quadrature::{gauss_legendre, panel};
 use nalgebra::{DMatrix, DVector};
 use std::f64::consts::{FRAC_PI_2, PI};
 
