@@ -4,8 +4,9 @@
 //!
 //! Run: `cargo run --release --example 02_lame_convergence [max_n]` (default 64).
 
-use boltzone::fem::lame::{lame_error, observed_order, LameCase};
+use boltzone::fem::lame::{lame_error, LameCase};
 use boltzone::fem::ElementKind;
+use boltzone::numerics::convergence::log_log_slope;
 use std::time::Instant;
 
 fn main() -> anyhow::Result<()> {
@@ -48,10 +49,9 @@ pub fn run(max_n: usize) -> anyhow::Result<()> {
                 println!("{:>8} {:>6} {:>12.3e} {rate}", format!("{kind:?}"), n, e);
             }
             let expected = if kind == ElementKind::Q9 { 3.0 } else { 2.0 };
-            let p = observed_order(
-                &ns[ns.len().saturating_sub(3)..],
-                &errs[errs.len().saturating_sub(3)..],
-            );
+            let last: Vec<(f64, f64)> =
+                ns.iter().zip(&errs).map(|(&n, &e)| (n as f64, e)).collect();
+            let p = -log_log_slope(&last[last.len().saturating_sub(3)..]);
             println!(
                 "  observed order (last 3 levels) {p:.3}, expected {expected}, {:.2} s",
                 t.elapsed().as_secs_f64()

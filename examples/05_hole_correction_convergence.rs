@@ -35,6 +35,7 @@
 use boltzone::fem::single::{single_plate_r_o, SingleParams};
 use boltzone::hankel::hole::{single_plate_separation, HoleParams, HolePlate};
 use boltzone::hankel::{SeparationParams, Slab};
+use boltzone::numerics::convergence;
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 use std::time::Instant;
 
@@ -262,7 +263,7 @@ fn convergence_table(
         n *= 2;
     }
     if log_n_res.len() >= 2 {
-        let slope = fit_slope(&log_n_res);
+        let slope = convergence::slope(&log_n_res);
         let (bound, theory) = if corner_terms == 0 {
             (-1.2, "corner singularity predicts N^-1.74")
         } else {
@@ -275,15 +276,4 @@ fn convergence_table(
         );
     }
     Ok(())
-}
-
-/// Least-squares slope of y against x.
-fn fit_slope(p: &[(f64, f64)]) -> f64 {
-    let n = p.len() as f64;
-    let (sx, sy) = p.iter().fold((0.0, 0.0), |(a, b), (x, y)| (a + x, b + y));
-    let (mx, my) = (sx / n, sy / n);
-    let (num, den) = p.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
-        (a + (x - mx) * (y - my), b + (x - mx) * (x - mx))
-    });
-    num / den
 }

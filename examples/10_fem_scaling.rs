@@ -153,7 +153,8 @@ fn main() -> anyhow::Result<()> {
             .collect::<Result<_, _>>()?;
         if runs.len() >= 2 {
             let (a, b) = (runs[0], runs[runs.len() - 1]);
-            let p = (b.1 / a.1).ln() / (b.0 as f64 / a.0 as f64).ln();
+            let p =
+                boltzone::numerics::convergence::order_between(b.0 as f64, b.1, a.0 as f64, a.1);
             println!(
                 "{kind:?}: total time ∝ dofs^{p:.2} between {} and {} dofs",
                 a.0, b.0

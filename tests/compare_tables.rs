@@ -40,7 +40,7 @@ fn table1_end_to_end() {
         );
         // Second method for the single plate (regression: at A/D = 1, B/A = 1.3 a Richardson
         // step on three irregular FE levels once put the FE value 2.8e-3 A off with an estimate
-        // of 1.6e-3 A; see `fem::single::level_estimate`) (C = ∞ vs C = 1.54: the rim moves σ_z by
+        // of 1.6e-3 A; see `numerics::convergence::level_estimate`) (C = ∞ vs C = 1.54: the rim moves σ_z by
         // ~e^(−2.1(C − R_o)/D) ≲ 3e-5 P here, below 0.05 % in R_o, the FE model's specification).
         let h = c.single_hankel.expect("hankel check on");
         assert!(
@@ -126,7 +126,7 @@ fn table2_end_to_end() {
 
 #[test]
 fn fe_level_estimate_covers_an_overshooting_sequence() {
-    use boltzone::fem::single::level_estimate;
+    use boltzone::numerics::convergence::level_estimate;
     // R_o of the single plate at A/D = 1, B/A = 1.3 on six nested FE levels (`boltzone single
     // --a 0.1 --b 0.13 --d 0.1 --c 1.54 --method fem --levels 6`): level 3 overshoots.
     let v = [

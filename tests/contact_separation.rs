@@ -1,6 +1,7 @@
 //! The R_o estimators on synthetic data with a known separation radius.
 
-use boltzone::contact::separation::{estimate, fitted_rate, NodalInterface};
+use boltzone::contact::separation::{estimate, NodalInterface};
+use boltzone::numerics::convergence::fitted_rate;
 
 /// Nodes spaced h from 0.1, pressure c√(R−r)(1 + a(R−r)), gap (r−R)^{3/2}(1 + a(r−R)).
 fn synthetic(h: f64, r_o: f64, a: f64) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
@@ -70,17 +71,8 @@ fn second_order_with_curvature_and_spread_bounds_error() {
         hs.push(h);
     }
     // Least-squares slope of log error against log h: the gap estimator is second order.
-    let n = errs.len() as f64;
-    let (lx, ly): (Vec<f64>, Vec<f64>) =
-        hs.iter().zip(&errs).map(|(h, e)| (h.ln(), e.ln())).unzip();
-    let mx = lx.iter().sum::<f64>() / n;
-    let my = ly.iter().sum::<f64>() / n;
-    let slope = lx
-        .iter()
-        .zip(&ly)
-        .map(|(x, y)| (x - mx) * (y - my))
-        .sum::<f64>()
-        / lx.iter().map(|x| (x - mx).powi(2)).sum::<f64>();
+    let pts: Vec<(f64, f64)> = hs.iter().copied().zip(errs.iter().copied()).collect();
+    let slope = boltzone::numerics::convergence::log_log_slope(&pts);
     assert!((1.8..2.3).contains(&slope), "observed order {slope}");
 }
 

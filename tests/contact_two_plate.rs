@@ -407,15 +407,9 @@ fn r_o_converges_at_the_observed_rate() {
     let l = &s.info.levels;
     let pts: Vec<(f64, f64)> = l
         .windows(2)
-        .map(|w| (w[1].h.ln(), (w[1].r_o - w[0].r_o).abs().ln()))
+        .map(|w| (w[1].h, (w[1].r_o - w[0].r_o).abs()))
         .collect();
-    let n = pts.len() as f64;
-    let (mx, my) = (
-        pts.iter().map(|p| p.0).sum::<f64>() / n,
-        pts.iter().map(|p| p.1).sum::<f64>() / n,
-    );
-    let slope = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>()
-        / pts.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+    let slope = boltzone::numerics::convergence::log_log_slope(&pts);
     // The gap estimator is second order, Q9 displacements third: expect 2..3.5.
     assert!((1.8..3.8).contains(&slope), "observed rate {slope}");
     assert!(s.r_o_error < 1e-4 * s.r_o);

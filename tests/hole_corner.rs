@@ -316,11 +316,7 @@ fn traction_on_the_hole_has_the_corner_exponent() {
                 (y.ln(), d3.norm().ln())
             })
             .collect();
-        let n = pts.len() as f64;
-        let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
-        let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
-        let slope = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>()
-            / pts.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+        let slope = boltzone::numerics::convergence::slope(&pts);
         eprintln!(
             "column {col}: slope {slope:.4} (Re λ − 4 = {:.4})",
             l.re - 4.0

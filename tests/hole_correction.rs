@@ -6,6 +6,7 @@
 use boltzone::hankel::hole::eigen::ModeField;
 use boltzone::hankel::hole::{single_plate_separation, HoleParams, HolePlate};
 use boltzone::hankel::{MidplaneRule, QuadParams, SeparationParams, Slab};
+use boltzone::numerics::convergence::slope;
 use boltzone::{FaceLoad, InputError, Material, OuterRadius, SinglePlate};
 use gauss_quad::GaussLegendre;
 use std::f64::consts::PI;
@@ -27,16 +28,6 @@ fn fixed(n: usize) -> HoleParams {
         terms: Some(n),
         ..HoleParams::default()
     }
-}
-
-/// Least-squares slope of y against x.
-fn slope(p: &[(f64, f64)]) -> f64 {
-    let n = p.len() as f64;
-    let mx = p.iter().map(|q| q.0).sum::<f64>() / n;
-    let my = p.iter().map(|q| q.1).sum::<f64>() / n;
-    let num: f64 = p.iter().map(|(x, y)| (x - mx) * (y - my)).sum();
-    let den: f64 = p.iter().map(|(x, _)| (x - mx) * (x - mx)).sum();
-    num / den
 }
 
 #[test]

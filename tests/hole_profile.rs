@@ -93,12 +93,7 @@ fn coefficients_fall_at_the_rate_of_the_nearest_load_edge() {
             .filter(|(_, l)| *l > (1e-12f64).ln() && *l < (1e-3f64).ln())
             .collect();
         assert!(env.len() >= 3, "{env:?}");
-        let n = env.len() as f64;
-        let (mx, my) = env
-            .iter()
-            .fold((0.0, 0.0), |(x, y), p| (x + p.0 / n, y + p.1 / n));
-        let slope = env.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>()
-            / env.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+        let slope = boltzone::numerics::convergence::slope(&env);
         let predicted = -p.rho().ln();
         println!(
             "B {b} D {d}: fitted decay {slope:.4} per k, predicted {predicted:.4} (ρ {:.3})",

@@ -6,6 +6,7 @@
 
 use boltzone::hankel::receding::{Layer, RecedingError, RecedingParams};
 use boltzone::hankel::{MidplaneRule, Slab};
+use boltzone::numerics::convergence::slope;
 use boltzone::{FaceLoad, InputError, Material};
 
 fn layer(d: f64, load: FaceLoad, nu: f64) -> Layer {
@@ -14,15 +15,6 @@ fn layer(d: f64, load: FaceLoad, nu: f64) -> Layer {
 
 fn disk(b: f64, p: f64) -> FaceLoad {
     FaceLoad::uniform(0.0, b, p).unwrap()
-}
-
-/// Least-squares slope of y against x.
-fn slope(x: &[f64], y: &[f64]) -> f64 {
-    let n = x.len() as f64;
-    let (mx, my) = (x.iter().sum::<f64>() / n, y.iter().sum::<f64>() / n);
-    let sxy: f64 = x.iter().zip(y).map(|(a, b)| (a - mx) * (b - my)).sum();
-    let sxx: f64 = x.iter().map(|a| (a - mx) * (a - mx)).sum();
-    sxy / sxx
 }
 
 #[test]
@@ -69,7 +61,10 @@ fn complementarity_and_edge_exponents() {
         .map(|e| c.solution.pressure(r_o - e).ln())
         .collect();
     let lg: Vec<f64> = es.iter().map(|e| c.solution.gap(r_o + e).ln()).collect();
-    let (sq, sg) = (slope(&le, &lq), slope(&le, &lg));
+    let zip = |x: &[f64], y: &[f64]| -> Vec<(f64, f64)> {
+        x.iter().copied().zip(y.iter().copied()).collect()
+    };
+    let (sq, sg) = (slope(&zip(&le, &lq)), slope(&zip(&le, &lg)));
     assert!(
         (sq - 0.5).abs() < 0.05 && (sg - 1.5).abs() < 0.05,
         "{sq} {sg}"
@@ -118,7 +113,8 @@ fn geometric_convergence_in_the_basis_size() {
                 .ln()
         })
         .collect();
-    let rate = slope(&ns, &errs);
+    let pts: Vec<(f64, f64)> = ns.iter().copied().zip(errs.iter().copied()).collect();
+    let rate = slope(&pts);
     assert!(rate < -1.5, "rate {rate}");
     // the default run's error estimate is not below its actual error
     let c = l.receding_contact(&RecedingParams::default()).unwrap();

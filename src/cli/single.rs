@@ -2,7 +2,7 @@
 //! hole, loaded on both faces by a uniform pressure over A..B) and its separation radius R_o.
 //! `--method fem` runs [`boltzone::fem::single::single_plate_r_o`] (refinement levels halving the
 //! elements at A, B and the previous R_o; error estimate max(|d₃|, |d₂|/4, |d₁|/16) of the last
-//! level changes, [`boltzone::fem::single::level_estimate`]); `--method hankel` runs
+//! level changes, [`boltzone::numerics::convergence::level_estimate`]); `--method hankel` runs
 //! [`boltzone::hankel::hole::single_plate_separation`] (infinite slab + hole correction, and a
 //! rim correction when `--c` is given).
 

@@ -95,23 +95,3 @@ pub fn estimate(data: &NodalInterface<'_>) -> Option<SeparationEstimate> {
         spread,
     })
 }
-
-/// Convergence rate fitted to a whole sequence on meshes refined by the factor f: the
-/// least-squares slope of log |x_{k+1} − x_k| against k log f. None with fewer than two changes
-/// or a change that vanishes exactly.
-pub fn fitted_rate(values: &[f64], factor: f64) -> Option<f64> {
-    let pts: Vec<(f64, f64)> = values
-        .windows(2)
-        .enumerate()
-        .map(|(k, w)| (k as f64 * factor.ln(), (w[1] - w[0]).abs().ln()))
-        .collect();
-    if pts.len() < 2 || pts.iter().any(|p| !p.1.is_finite()) {
-        return None;
-    }
-    let n = pts.len() as f64;
-    let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
-    let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    Some(-sxy / sxx)
-}

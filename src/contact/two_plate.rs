@@ -19,7 +19,7 @@
 //! handful of points near the edge stay unknown. Levels continue (at least three) until the
 //! error estimate of R_o falls below the tolerance: the last level's value, not extrapolated,
 //! with the error max(|d₃|, |d₂|/4, |d₁|/16) of the last three changes
-//! ([`crate::fem::single::level_estimate`], shared with the single-plate model). A Richardson
+//! ([`crate::numerics::convergence::level_estimate`], shared with the single-plate model). A Richardson
 //! step with the rate capped at 2 (the estimate used before) was up to 1.5 times optimistic over
 //! the design map (68 geometries, A/D ∈ [0.2, 5], B/A ∈ [1.1, 5], C = 15.4 A, at tolerance 1e-3
 //! against runs converged to 3e-6); with this estimate no actual error exceeded it there at
@@ -45,12 +45,12 @@
 use super::lcp::LcpParams;
 use super::level::LevelSolution;
 use super::refine::{mesh, solve_adaptive, Geometry};
-use super::separation::{estimate, fitted_rate, NodalInterface, SeparationEstimate};
+use super::separation::{estimate, NodalInterface, SeparationEstimate};
 use super::ContactError;
 use crate::error::InputError;
-use crate::fem::single::level_estimate;
 use crate::fem::ElementKind;
 use crate::joint::{Joint, OuterRadius};
+use crate::numerics::convergence::{fitted_rate, level_estimate};
 use serde::Serialize;
 use std::time::Instant;
 
@@ -190,7 +190,7 @@ pub struct TwoPlateInfo {
 pub struct TwoPlateSolution {
     /// Separation radius.
     pub r_o: f64,
-    /// Its estimated absolute error ([`crate::fem::single::level_estimate`] of the levels).
+    /// Its estimated absolute error ([`crate::numerics::convergence::level_estimate`] of the levels).
     pub r_o_error: f64,
     /// Interface node radii of the finest level.
     pub radius: Vec<f64>,

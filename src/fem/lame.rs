@@ -76,16 +76,3 @@ pub fn lame_error(case: &LameCase, kind: ElementKind, n: usize) -> Result<f64, F
     }
     Ok((num / den).sqrt())
 }
-
-/// Least-squares slope of log(err) against log(n): the observed order is −slope.
-pub fn observed_order(ns: &[usize], errs: &[f64]) -> f64 {
-    let xs: Vec<f64> = ns.iter().map(|&n| (n as f64).ln()).collect();
-    let ys: Vec<f64> = errs.iter().map(|e| e.ln()).collect();
-    let (mx, my) = (
-        xs.iter().sum::<f64>() / xs.len() as f64,
-        ys.iter().sum::<f64>() / ys.len() as f64,
-    );
-    let sxy: f64 = xs.iter().zip(&ys).map(|(x, y)| (x - mx) * (y - my)).sum();
-    let sxx: f64 = xs.iter().map(|x| (x - mx).powi(2)).sum();
-    -sxy / sxx
-}

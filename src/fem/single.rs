@@ -63,6 +63,7 @@ use super::spacing::Spacing;
 use super::FemError;
 use crate::error::InputError;
 use crate::joint::{OuterRadius, SinglePlate};
+pub use crate::numerics::convergence::level_estimate;
 use std::time::Instant;
 
 /// How the bolt head (and nut) load the faces.
@@ -489,26 +490,6 @@ pub fn single_plate_r_o(
     ))
 }
 
-/// The last value of a refinement sequence and its estimated error max(|d₃|, |d₂|/4, |d₁|/16),
-/// d₃ the last change, d₂ and d₁ the two before (module docs); with three values only,
-/// max(|d₃|, |d₂|/4). None with fewer than three values. The last change bounds the remaining
-/// error when each further level at least halves it; the earlier changes shrunk at rate 2 per
-/// level guard against a last change (or two) that is small by accident, as when the crossing
-/// stalls for two levels before moving on.
-pub fn level_estimate(v: &[f64]) -> Option<(f64, f64)> {
-    let n = v.len();
-    if n < 3 {
-        return None;
-    }
-    let error = v[n.saturating_sub(4)..]
-        .windows(2)
-        .rev()
-        .zip([1.0, 0.25, 0.0625])
-        .map(|(w, f)| f * (w[1] - w[0]).abs())
-        .fold(0.0, f64::max);
-    Some((v[n - 1], error))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -551,28 +532,5 @@ mod tests {
             assert_eq!(Refinement::Auto.for_element(k), Refinement::Uniform);
             assert_eq!(Refinement::Graded.for_element(k), Refinement::Graded);
         }
-    }
-
-    #[test]
-    fn level_estimate_is_the_largest_of_the_last_changes_shrunk_at_rate_two() {
-        // a last change small by accident: the change before decides
-        let (x, e) = level_estimate(&[1.0, 1.1, 1.1 + 1e-6]).unwrap();
-        assert_eq!(x, 1.1 + 1e-6);
-        assert!((e - 0.025).abs() < 1e-15);
-        // oscillating, last change large: the last change decides
-        let (_, e) = level_estimate(&[1.0, 1.1, 1.05]).unwrap();
-        assert!((e - 0.05).abs() < 1e-15);
-        // a stall of two levels (the map's A/D 0.447, B/A 5 at levels 1–3 behaved so): the
-        // change three back decides
-        let (_, e) = level_estimate(&[0.0, 1.0, 1.0 + 1e-6, 1.0 + 2e-6]).unwrap();
-        assert!((e - 1.0 / 16.0).abs() < 1e-15);
-        // only the last three changes count
-        let (_, e) = level_estimate(&[-100.0, 0.0, 1.0, 1.0 + 1e-6, 1.0 + 2e-6]).unwrap();
-        assert!((e - 1.0 / 16.0).abs() < 1e-15);
-        // v_l = 1 + 2^(−l) (rate 1): the error 2^(−l) equals the last change exactly
-        let v: Vec<f64> = (0..5).map(|l| 1.0 + 2f64.powi(-l)).collect();
-        let (x, e) = level_estimate(&v).unwrap();
-        assert!((e - (x - 1.0)).abs() < 1e-15);
-        assert!(level_estimate(&[1.0, 2.0]).is_none());
     }
 }

@@ -1,5 +1,5 @@
 //! Generic numerics, free of the physics: quadrature, roots, special functions, interpolation
-//! and convergence estimates. Nothing here imports another module of the crate.
+//! and convergence estimates. Nothing here imports from the rest of the crate.
 //!
 //! - [`quadrature`]: Gauss–Legendre panels and ∫₀^∞ f(ξ) dξ for oscillatory f
 //!   (partition–extrapolation with Wynn's ε);
@@ -8,6 +8,7 @@
 //! - [`integral_j0`]: Ji₀(x) = ∫₀^x J₀; [`bessel_i`], [`bessel_k`]: I₀, I₁, K₀, K₁ of complex
 //!   argument; [`bessel_nu`]: J_ν of complex order and Γ;
 //! - [`chebyshev`]: interpolation on the Chebyshev–Lobatto grid;
+//! - [`convergence`]: level estimates, fitted rates and observed orders of refinement sequences.
 //!
 //! ```
 //! use boltzone::numerics::root::brent;
@@ -21,6 +22,7 @@ pub mod bessel_i;
 pub mod bessel_k;
 pub mod bessel_nu;
 pub mod chebyshev;
+pub mod convergence;
 pub mod integral_j0;
 pub mod quadrature;
 pub mod root;
