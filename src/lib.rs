@@ -33,6 +33,7 @@ pub mod compare;
 pub mod contact;
 pub mod error;
 pub mod fem;
+pub mod fsutil;
 pub mod hankel;
 pub mod joint;
 pub mod load;

@@ -9,6 +9,7 @@
 //!   with a Murty fallback; [`pgs`]: projected Gauss–Seidel as an independent check;
 //! - [`separation`]: R_o finer than one element from the √(R_o − r) pressure and the
 //!   (r − R_o)^{3/2} gap of a smooth separation;
+//! - [`params`]: the model's input (interface model, loading, edge support, study knobs);
 //! - [`two_plate`]: the model (symmetric pair on a rigid plane, unequal or dissimilar pairs
 //!   welded or frictionless, the report's load variants), level after level of a mesh refined at
 //!   R_o; [`level`]: one mesh level on [`crate::fem`] (one factorization, a Schur complement on
@@ -25,6 +26,7 @@
 mod error;
 pub mod lcp;
 pub mod level;
+pub mod params;
 pub mod pgs;
 mod refine;
 pub mod separation;

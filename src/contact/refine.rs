@@ -20,7 +20,7 @@
 //! ```
 
 use super::level::{solve_level, LevelSetup, LevelSolution, Model};
-use super::two_plate::{EdgeSupport, Loading, TwoPlateParams};
+use super::params::{EdgeSupport, Loading, TwoPlateParams};
 use super::ContactError;
 use crate::fem::{Component, ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
 use crate::joint::Joint;
@@ -33,6 +33,17 @@ pub(crate) struct Geometry {
     pub d: [f64; 2],
     pub two: bool,
     pub welded: bool,
+}
+
+/// What a level keeps of the one before it: its solution, its R_o estimate and element size.
+#[derive(Clone)]
+pub(crate) struct PreviousLevel {
+    /// The previous level's solution.
+    pub solution: LevelSolution,
+    /// Its estimate of R_o.
+    pub r_o: f64,
+    /// Its element size at R_o.
+    pub h: f64,
 }
 
 /// The mesh of one level: radial grading at A, B and the estimate of R_o, axial grading at the
@@ -91,7 +102,7 @@ pub(crate) fn solve_adaptive(
     joint: &Joint,
     g: &Geometry,
     params: &TwoPlateParams,
-    prev: Option<&(LevelSolution, f64, f64)>,
+    prev: Option<&PreviousLevel>,
 ) -> Result<(LevelSolution, usize, usize), ContactError> {
     let r = model.mesh.radial_nodes().to_vec();
     let load = joint.load();
@@ -180,8 +191,12 @@ pub(crate) fn solve_adaptive(
 
 /// Ties and window from the previous level: points closed there and farther than three old
 /// elements from every contact boundary are tied; the rest up to R_o + 6 old elements are unknown.
-fn refined_plan(r: &[f64], prev: &(LevelSolution, f64, f64)) -> Option<(Vec<usize>, Vec<usize>)> {
-    let (s, r_o, h) = prev;
+fn refined_plan(r: &[f64], prev: &PreviousLevel) -> Option<(Vec<usize>, Vec<usize>)> {
+    let PreviousLevel {
+        solution: s,
+        r_o,
+        h,
+    } = prev;
     let margin = 3.0 * h;
     let mut bounds: Vec<f64> = s
         .closed
