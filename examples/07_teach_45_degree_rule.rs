@@ -33,7 +33,7 @@
 use anyhow::{ensure, Context};
 use boltzone::compare::{compare, CompareParams, Geometry};
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
-use boltzone::fem::single::{coarse_radial_spacing, solve_midplane, Loading, SingleParams};
+use boltzone::fem::single::{coarse_radial_spacing, solve_midplane, FaceCondition, SingleParams};
 use boltzone::fem::{ElementKind, SolveParams};
 use boltzone::plot::{write_figure, Curve, CurveFigure, Marker};
 use boltzone::reference;
@@ -101,7 +101,7 @@ pub fn run(out: &Path) -> anyhow::Result<Summary> {
     let radial = coarse_radial_spacing(&plate, &sp)?.refined(8);
     let mid = solve_midplane(
         &plate,
-        Loading::Pressure,
+        FaceCondition::Pressure,
         ElementKind::Q9,
         &radial,
         16,

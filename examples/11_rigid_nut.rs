@@ -7,7 +7,7 @@
 //! Run: `cargo run --release --example 11_rigid_nut [levels]` (default 5).
 
 use boltzone::compare::Geometry;
-use boltzone::fem::single::{single_plate_r_o, Loading, SingleParams};
+use boltzone::fem::single::{single_plate_r_o, FaceCondition, SingleParams};
 use boltzone::OuterRadius;
 
 fn main() -> anyhow::Result<()> {
@@ -33,7 +33,7 @@ pub fn run(levels: usize) -> anyhow::Result<()> {
         let plate = Geometry::new(a, row.b(), row.d(), 1.54, 0.3)?
             .single_plate(OuterRadius::Finite(1.54))?;
         let mut res = Vec::new();
-        for loading in [Loading::Pressure, Loading::UniformDisplacement] {
+        for loading in [FaceCondition::Pressure, FaceCondition::UniformDisplacement] {
             let params = SingleParams {
                 loading,
                 levels,

@@ -10,7 +10,7 @@
 //!
 //! Run: `cargo run --release --example 12_report_mesh [rows]` (default 12).
 
-use boltzone::fem::single::{single_plate_r_o, solve_half_plate, Loading, SingleParams};
+use boltzone::fem::single::{single_plate_r_o, solve_half_plate, FaceCondition, SingleParams};
 use boltzone::fem::{centre_stresses, ElementKind, SolveParams, Spacing};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
@@ -44,7 +44,7 @@ pub fn run(rows: usize) -> anyhow::Result<()> {
         let axial = Spacing::uniform(0.0, row.d(), nz)?;
         let h = solve_half_plate(
             &plate,
-            Loading::Pressure,
+            FaceCondition::Pressure,
             ElementKind::Cst4,
             &radial,
             &axial,

@@ -4,7 +4,7 @@
 //! uniform load (jumps at A and B) and a tent-shaped load (continuous) are compared.
 
 use boltzone::fem::single::{
-    coarse_radial_spacing, single_plate_r_o, solve_midplane, Loading, SingleParams,
+    coarse_radial_spacing, single_plate_r_o, solve_midplane, FaceCondition, SingleParams,
 };
 use boltzone::fem::{ElementKind, SolveParams};
 use boltzone::hankel::{MidplaneRule, SeparationParams, Slab};
@@ -31,7 +31,7 @@ fn midplane_differences(plate: &SinglePlate, slab: &Slab) -> Vec<f64> {
         let k = 1 << l;
         let m = solve_midplane(
             plate,
-            Loading::Pressure,
+            FaceCondition::Pressure,
             ElementKind::Q9,
             &coarse.refined(k),
             2 * k,

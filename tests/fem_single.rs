@@ -7,7 +7,8 @@
 //! carries the applied force.
 
 use boltzone::fem::single::{
-    coarse_radial_spacing, single_plate_r_o, solve_midplane, Loading, Refinement, SingleParams,
+    coarse_radial_spacing, single_plate_r_o, solve_midplane, FaceCondition, Refinement,
+    SingleParams,
 };
 use boltzone::fem::{ElementKind, SolveParams};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -77,7 +78,7 @@ fn midplane_traction_carries_the_applied_force() {
     let radial = coarse_radial_spacing(&plate, &params).unwrap().refined(2);
     let m = solve_midplane(
         &plate,
-        Loading::Pressure,
+        FaceCondition::Pressure,
         ElementKind::Q9,
         &radial,
         4,

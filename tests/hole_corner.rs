@@ -3,7 +3,7 @@
 //! conditions (Hankel inversion), their closed-form face value, equilibrium by differences, and
 //! the corner exponent of their traction on the hole.
 
-use boltzone::hankel::hole::corner::{corner_exponents, Component, CornerLoads};
+use boltzone::hankel::hole::corner::{corner_exponents, CornerLoads, FieldComponent};
 use boltzone::hankel::hole::corner_quad::{expint, expint_sequence};
 use boltzone::hankel::kernel::face_remainders;
 use boltzone::hankel::kernel_shear::shear_face_remainders;
@@ -146,7 +146,7 @@ fn faces_carry_exactly_the_loads() {
     let loads = CornerLoads::new(a, d, 0.3, 1.0, 3);
     for r in [0.05, 0.09, 0.0999, 0.1, 0.1001, 0.13, 0.3] {
         for z in [d, -d] {
-            let f = loads.fields(r, &[z], &[Component::SigmaZ, Component::TauRz]);
+            let f = loads.fields(r, &[z], &[FieldComponent::SigmaZ, FieldComponent::TauRz]);
             for (k, c) in f[0].iter().enumerate() {
                 let (q, s) = loads.loads(k, r);
                 let sign = z.signum();
@@ -176,7 +176,7 @@ fn face_value_at_the_corner_matches_weber_schafheitlin() {
     // expansion nor the finite-part rule.
     let (a, d, nu) = (0.1, 0.1, 0.3);
     let loads = CornerLoads::new(a, d, nu, 1.0, 2);
-    let f = loads.fields(a, &[d], &[Component::SigmaR]);
+    let f = loads.fields(a, &[d], &[FieldComponent::SigmaR]);
     let q = QuadParams {
         rel_tol: 1e-14,
         abs_tol: 1e-16,
@@ -233,7 +233,7 @@ type Fields = Vec<Vec<[Complex64; 2]>>;
 
 #[test]
 fn fields_are_in_equilibrium_and_obey_hookes_law() {
-    use Component::*;
+    use FieldComponent::*;
     let (a, d, nu, g) = (0.1, 0.2, 0.3, 1.0);
     let loads = CornerLoads::new(a, d, nu, g, 2);
     let comps = [SigmaR, SigmaTheta, SigmaZ, TauRz, U, W];
@@ -333,7 +333,7 @@ fn fields_do_not_depend_on_where_the_tail_starts() {
     // The finite Gauss–Legendre part and the closed-form tail (Hankel expansions, E_p) must add
     // up to the same integral wherever the split lies: moving it from the default (ξA ≈ 34) to
     // 2× and 4× (panels and tail terms change completely) may change nothing but rounding.
-    use Component::*;
+    use FieldComponent::*;
     let (a, d) = (0.1, 0.1);
     let base = CornerLoads::new(a, d, 0.3, 1.0, 3);
     let x0 = base.tail_start();

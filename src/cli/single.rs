@@ -7,7 +7,7 @@
 //! rim correction when `--c` is given).
 
 use super::args::{Element, Geometry};
-use boltzone::fem::single::{single_plate_r_o, Loading, SingleParams};
+use boltzone::fem::single::{single_plate_r_o, FaceCondition, SingleParams};
 use boltzone::fem::ElementKind;
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -80,8 +80,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
     let kind = ElementKind::from(args.element);
     let loading = match args.nut {
-        Nut::Pressure => Loading::Pressure,
-        Nut::Rigid => Loading::UniformDisplacement,
+        Nut::Pressure => FaceCondition::Pressure,
+        Nut::Rigid => FaceCondition::UniformDisplacement,
     };
     let params = SingleParams {
         loading,

@@ -26,7 +26,7 @@ use crate::fem::{Component, ElementKind, Loads, Mesh, PlateSpec, Spacing, Suppor
 use crate::joint::Joint;
 
 /// Radii and thicknesses of the joint as meshed.
-pub(crate) struct Geometry {
+pub(crate) struct MeshLayout {
     pub a: f64,
     pub b: f64,
     pub c: f64,
@@ -50,7 +50,7 @@ pub(crate) struct PreviousLevel {
 /// interface and the outer faces; materials by plate.
 pub(crate) fn mesh(
     joint: &Joint,
-    g: &Geometry,
+    g: &MeshLayout,
     kind: ElementKind,
     h: f64,
     r_est: Option<f64>,
@@ -100,7 +100,7 @@ pub(crate) fn mesh(
 pub(crate) fn solve_adaptive(
     model: &Model,
     joint: &Joint,
-    g: &Geometry,
+    g: &MeshLayout,
     params: &TwoPlateParams,
     prev: Option<&PreviousLevel>,
 ) -> Result<(LevelSolution, usize, usize), ContactError> {
@@ -247,7 +247,7 @@ fn centroid(load: &crate::load::FaceLoad) -> f64 {
 fn boundary(
     model: &Model,
     joint: &Joint,
-    g: &Geometry,
+    g: &MeshLayout,
     params: &TwoPlateParams,
 ) -> Result<(Supports, Loads), ContactError> {
     let mesh = &model.mesh;

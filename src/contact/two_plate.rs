@@ -44,7 +44,7 @@
 
 use super::level::LevelSolution;
 pub use super::params::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
-use super::refine::{mesh, solve_adaptive, Geometry, PreviousLevel};
+use super::refine::{mesh, solve_adaptive, MeshLayout, PreviousLevel};
 use super::separation::{estimate, NodalInterface, SeparationEstimate};
 use super::ContactError;
 use crate::error::InputError;
@@ -139,7 +139,7 @@ pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution,
         // The report: no difference between infinite plates and C > 5B; take more room.
         OuterRadius::Infinite => 10.0 * b + 10.0 * (d[0] + d[1]),
     };
-    let g = Geometry {
+    let g = MeshLayout {
         a,
         b,
         c,

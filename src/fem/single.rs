@@ -37,7 +37,7 @@
 //! Units: any consistent set; R_o in the length unit of A, B, D. Sign: compression negative.
 //!
 //! ```
-//! use boltzone::fem::single::{single_plate_r_o, Loading, SingleParams};
+//! use boltzone::fem::single::{single_plate_r_o, FaceCondition, SingleParams};
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 //! let load = FaceLoad::uniform(0.1, 0.22, 1.0)?;
 //! let plate = SinglePlate::new(0.1, OuterRadius::Finite(1.54), 0.1,
@@ -46,7 +46,7 @@
 //! assert!((r_o / 0.1 - 3.3).abs() < 0.2); // Table 1 (A/D = 1, B/A = 2.2): 3.3 ± its 0.15 grid
 //! assert_eq!(info.levels.len(), 5);
 //! assert!(info.error_estimate < 1e-3 * r_o);
-//! let nut = SingleParams { loading: Loading::UniformDisplacement, ..SingleParams::default() };
+//! let nut = SingleParams { loading: FaceCondition::UniformDisplacement, ..SingleParams::default() };
 //! assert!(single_plate_r_o(&plate, &nut)?.0 > r_o); // a rigid nut reaches further
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
@@ -68,7 +68,7 @@ use std::time::Instant;
 
 /// How the bolt head (and nut) load the faces.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Loading {
+pub enum FaceCondition {
     /// The face pressure p(r) of the plate's [`crate::FaceLoad`] (Table 1).
     #[default]
     Pressure,
@@ -109,7 +109,7 @@ impl Refinement {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SingleParams {
     /// Face pressure or rigid-nut displacement (default pressure).
-    pub loading: Loading,
+    pub loading: FaceCondition,
     /// Element kind (default Q9).
     pub kind: ElementKind,
     /// Graded or uniform refinement levels (default: graded for Q9, uniform otherwise).
@@ -133,7 +133,7 @@ pub struct SingleParams {
 impl Default for SingleParams {
     fn default() -> Self {
         Self {
-            loading: Loading::Pressure,
+            loading: FaceCondition::Pressure,
             kind: ElementKind::Q9,
             refinement: Refinement::Auto,
             coarse_size: 0.5,
@@ -165,7 +165,7 @@ pub struct SingleInfo {
 
 /// The midplane of one solved single-plate mesh.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Midplane {
+pub struct MidplaneNodes {
     /// Radii of the midplane nodes.
     pub r: Vec<f64>,
     /// σ_z at those nodes (compression negative).
@@ -242,7 +242,7 @@ pub struct HalfPlate {
 /// Solves the upper half plate on the mesh `radial` × `axial` (0 ≤ z ≤ D).
 pub fn solve_half_plate(
     plate: &SinglePlate,
-    loading: Loading,
+    loading: FaceCondition,
     kind: ElementKind,
     radial: &Spacing,
     axial: &Spacing,
@@ -267,8 +267,10 @@ pub fn solve_half_plate(
     }
     let mut loads = Loads::new(mesh.n_nodes());
     match loading {
-        Loading::Pressure => loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, plate.load())?,
-        Loading::UniformDisplacement => {
+        FaceCondition::Pressure => {
+            loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, plate.load())?
+        }
+        FaceCondition::UniformDisplacement => {
             let (a, b) = (plate.load().inner(), plate.load().outer());
             let tol = 1e-12 * b;
             for n in mesh.top(0) {
@@ -306,12 +308,12 @@ pub fn solve_half_plate(
 /// midplane σ_z from the roller reactions.
 pub fn solve_midplane(
     plate: &SinglePlate,
-    loading: Loading,
+    loading: FaceCondition,
     kind: ElementKind,
     radial: &Spacing,
     nz: usize,
     solve: &SolveParams,
-) -> Result<Midplane, FemError> {
+) -> Result<MidplaneNodes, FemError> {
     let z = Spacing::uniform(0.0, plate.half_thickness(), nz)?;
     solve_midplane_on(plate, loading, kind, radial, &z, solve)
 }
@@ -319,18 +321,18 @@ pub fn solve_midplane(
 /// As [`solve_midplane`] on the mesh `radial` × `axial` (0 ≤ z ≤ D).
 pub fn solve_midplane_on(
     plate: &SinglePlate,
-    loading: Loading,
+    loading: FaceCondition,
     kind: ElementKind,
     radial: &Spacing,
     axial: &Spacing,
     solve: &SolveParams,
-) -> Result<Midplane, FemError> {
+) -> Result<MidplaneNodes, FemError> {
     let h = solve_half_plate(plate, loading, kind, radial, axial, solve)?;
     let mid = h.mesh.bottom(0);
     let reac = reactions(&h.mesh, &[plate.material()], &h.u, &h.loads)?;
     let rz: Vec<f64> = mid.iter().map(|&n| reac[n][1]).collect();
     let t = line_traction(&h.mesh, &mid, &rz)?;
-    Ok(Midplane {
+    Ok(MidplaneNodes {
         r: mid.iter().map(|&n| h.mesh.nodes()[n][0]).collect(),
         sigma_z: t.iter().map(|t| -t).collect(),
         order: kind.order(),
@@ -339,7 +341,7 @@ pub fn solve_midplane_on(
     })
 }
 
-impl Midplane {
+impl MidplaneNodes {
     /// The first radius ≥ `from` where σ_z goes from ≤ 0 to > 0, interpolated within the element
     /// edge (linear or quadratic); None if σ_z never turns tensile.
     pub fn first_tensile_crossing(&self, from: f64) -> Option<f64> {
@@ -494,8 +496,8 @@ pub fn single_plate_r_o(
 mod tests {
     use super::*;
 
-    fn mid(r: Vec<f64>, s: Vec<f64>, order: usize) -> Midplane {
-        Midplane {
+    fn mid(r: Vec<f64>, s: Vec<f64>, order: usize) -> MidplaneNodes {
+        MidplaneNodes {
             r,
             sigma_z: s,
             order,

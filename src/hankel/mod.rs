@@ -57,7 +57,7 @@ pub use receding::layer;
 
 pub use crate::numerics::quadrature::{Estimate, QuadParams};
 pub use field::{
-    displacement_for_transform, ring_load, stress_for_transform, Displacement, Slab, Stress,
+    displacement_for_transform, ring_load, stress_for_transform, Displacement, Slab, StressEstimate,
 };
 pub use midplane::{Midplane, MidplaneCurve, MidplaneRule};
 pub use separation::{SeparationInfo, SeparationParams};
