@@ -4,7 +4,7 @@
 //! 10⁶ equations; peak resident memory (VmHWM) after each size, the fitted scaling exponent
 //! of the total time, and the relative residual ‖K x − b‖/‖b‖ as a check of the solve.
 //!
-//! Run: `cargo run --release --example 10_fem_scaling [dofs…]` (default 1e4 1e5 1e6). For the
+//! Run: `cargo run --release --example 08_fem_scaling [dofs…]` (default 1e4 1e5 1e6). For the
 //! peak memory of one size alone, run that size by itself. Environment: FEM_ORDER=amd uses faer's
 //! AMD instead of the mesh's nested dissection; FEM_THICKNESS=0.1 a plate-shaped section;
 //! FEM_PARALLEL=1 faer's threads; FEM_ELEMENT=q4 or q9 only one element kind.

@@ -4,7 +4,7 @@
 //! concentrates the bearing pressure at the load's edges (square-root singular at r = B), which
 //! moves R_o outward; the estimate converges more slowly (the singularity is stronger).
 //!
-//! Run: `cargo run --release --example 11_rigid_nut [levels]` (default 5).
+//! Run: `cargo run --release --example 09_rigid_nut [levels]` (default 5).
 
 use boltzone::compare::Geometry;
 use boltzone::fem::single::{single_plate_r_o, FaceCondition, SingleParams};

@@ -8,7 +8,7 @@
 //! This separates the two reasons our converged R_o differs from 1970: the coarse element and
 //! its one-interval resolution, and σ_z taken half an element above the midplane.
 //!
-//! Run: `cargo run --release --example 12_report_mesh [rows]` (default 12).
+//! Run: `cargo run --release --example 10_single_report_mesh [rows]` (default 12).
 
 use boltzone::fem::single::{single_plate_r_o, solve_half_plate, FaceCondition, SingleParams};
 use boltzone::fem::{centre_stresses, ElementKind, SolveParams, Spacing};

@@ -1,4 +1,4 @@
-//! Example 15: the report's load variants for the 1/4 in and 1/8 in steel pairs (Figs. 18–22, 24).
+//! Example 11: the report's load variants for the 1/4 in and 1/8 in steel pairs (Figs. 18–22, 24).
 //!
 //! 304 steel (E = 28·10⁶ psi, ν = 0.3), A = 0.1285 in, B = 0.211 in, C = 2.0 in, bolt force
 //! 1100 lb. For the 0.253 in pair: uniform bearing pressure (Fig. 18), triangular with the peak at

@@ -1,4 +1,4 @@
-//! Example 16: why the report's two-plate R_o are larger than ours — its mesh and its criterion.
+//! Example 12: why the report's two-plate R_o are larger than ours — its mesh and its criterion.
 //!
 //! The report (Chapter II.B) meshed with "typical spacings between nodal points … 0.015 inch
 //! radially and 0.03 inch in the z-direction", used quadrilaterals of four constant-strain

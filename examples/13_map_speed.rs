@@ -14,7 +14,7 @@
 //! actual error relative to R_o, and their ratio. It fails if an estimate exceeds the
 //! tolerance or if an actual error exceeds its estimate plus the reference's own estimate.
 //!
-//! Run: `cargo run --release --example 17_map_speed [n] [tolerance]`: an n × n log-spaced grid
+//! Run: `cargo run --release --example 13_map_speed [n] [tolerance]`: an n × n log-spaced grid
 //! over A/D ∈ [0.2, 5] × B/A ∈ [1.1, 5] plus Table 1's twelve geometries (default n = 6,
 //! tolerance 1e-3).
 

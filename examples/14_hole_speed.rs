@@ -22,7 +22,7 @@
 //! Times are wall-clock, the minimum and median of `reps` runs (the machine is shared: state
 //! its load beside them).
 //!
-//! Run: `cargo run --release --example 18_hole_speed [rows] [n_ref] [reps]` (default 12 rows,
+//! Run: `cargo run --release --example 14_hole_speed [rows] [n_ref] [reps]` (default 12 rows,
 //! n_ref = 128, 15 repetitions).
 
 use boltzone::hankel::hole::{single_plate_separation, HoleInfo, HoleParams, SlabSampling};

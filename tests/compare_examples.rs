@@ -1,6 +1,6 @@
 //! Runs example 07 (why the 45° rule overpredicts contact; it checks itself: equilibrium of both
 //! models, complementarity, the curve's zero against R_o, the ordering of the radii) and checks
-//! the figures it writes are a PNG and an SVG. Runs example 17 (design-map speed) on five map
+//! the figures it writes are a PNG and an SVG. Runs example 13 (design-map speed) on five map
 //! points: both models' error estimates hold against tight references.
 
 #[path = "../examples/07_teach_45_degree_rule.rs"]
@@ -18,13 +18,13 @@ fn example_07_teaches_the_45_degree_rule() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
-#[path = "../examples/17_map_speed.rs"]
+#[path = "../examples/13_map_speed.rs"]
 #[allow(dead_code)]
 mod ex17;
 
 #[test]
 fn map_error_estimates_cover_the_actual_errors_at_the_corners_and_a_table1_point() {
-    // Example 17 fails itself if an estimate exceeds the tolerance or an actual error (against
+    // Example 13 fails itself if an estimate exceeds the tolerance or an actual error (against
     // a run converged 50 times tighter) exceeds its estimate plus the reference's estimate.
     // The four corners of the map's range and Table 1's narrowest load (A/D 1, B/A 1.3, where
     // Richardson steps once went wrong).

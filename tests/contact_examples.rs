@@ -11,7 +11,7 @@ fn example_04_two_plate_tables_quick() {
     ex04::main();
 }
 
-#[path = "../examples/15_two_plate_variants.rs"]
+#[path = "../examples/11_two_plate_variants.rs"]
 mod ex15;
 
 #[test]
@@ -20,7 +20,7 @@ fn example_15_two_plate_variants_quick() {
     ex15::main();
 }
 
-#[path = "../examples/16_report_mesh.rs"]
+#[path = "../examples/12_two_plate_report_mesh.rs"]
 mod ex16;
 
 #[test]

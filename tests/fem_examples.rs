@@ -20,7 +20,7 @@ fn table1_example_runs_on_two_rows() {
 }
 
 #[allow(dead_code)]
-#[path = "../examples/11_rigid_nut.rs"]
+#[path = "../examples/09_rigid_nut.rs"]
 mod ex11;
 
 #[test]
@@ -29,7 +29,7 @@ fn rigid_nut_example_runs() {
 }
 
 #[allow(dead_code)]
-#[path = "../examples/12_report_mesh.rs"]
+#[path = "../examples/10_single_report_mesh.rs"]
 mod ex12;
 
 #[test]

@@ -448,7 +448,7 @@ fn r_o_estimate_bounds_the_actual_error_beyond_table_1() {
     // (thick and thin plates, narrow and wide loads; stopping at N = 8 on a halved residual,
     // and at N = 16 on halving changes): the actual error against N = 64 with 100× tighter slab
     // data is within the estimate plus the reference's own uncertainty (its change from N = 32).
-    // Measured: actual/estimate ≤ 0.05 (examples 18 and the geometries here).
+    // Measured: actual/estimate ≤ 0.05 (examples 14 and the geometries here).
     for (a_over_d, b_over_a) in [(0.35, 3.0), (2.0, 1.1), (0.2, 3.0)] {
         let p = plate(0.1, 0.1 * b_over_a, 0.1 / a_over_d);
         let sep = SeparationParams::default();

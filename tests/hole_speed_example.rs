@@ -1,9 +1,9 @@
-//! Runs example 18 (time against achieved R_o error, profile vs direct slab sampling) on a small
+//! Runs example 14 (time against achieved R_o error, profile vs direct slab sampling) on a small
 //! size so it cannot go stale; it checks itself (every actual error within its estimate plus
 //! the reference's uncertainty, the two routes' R_o within their data errors).
 
 #[allow(dead_code)]
-#[path = "../examples/18_hole_speed.rs"]
+#[path = "../examples/14_hole_speed.rs"]
 mod ex17;
 
 #[test]

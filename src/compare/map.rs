@@ -7,7 +7,7 @@
 //!
 //! Cost: the default 40 × 40 map at 1e-3 took 48.4 s of CPU (≈ 30 ms per point; 40.4 s of
 //! wall time at 119 % CPU beside another job, about 25 s on two idle cores) —
-//! `examples/17_map_speed.rs` times both models point by point against the
+//! `examples/13_map_speed.rs` times both models point by point against the
 //! error they achieve.
 //!
 //! ```

@@ -23,7 +23,7 @@
 //! step with the rate capped at 2 (the estimate used before) was up to 1.5 times optimistic over
 //! the design map (68 geometries, A/D ∈ [0.2, 5], B/A ∈ [1.1, 5], C = 15.4 A, at tolerance 1e-3
 //! against runs converged to 3e-6); with this estimate no actual error exceeded it there at
-//! tolerances from 2e-3 to 1e-4 (at most 0.57 of it; `examples/17_map_speed.rs` repeats the
+//! tolerances from 2e-3 to 1e-4 (at most 0.57 of it; `examples/13_map_speed.rs` repeats the
 //! check point by point).
 //! Welded dissimilar plates may have no sign-consistent contact edge; the level record then says
 //! that the report's rule decided ([`TwoPlateLevel::report_rule`]).

@@ -29,7 +29,7 @@
 //! (a 12 × 12 grid and Table 1) against level 8 (h = D/512 at the foci), at tolerances from
 //! 2e-3 to 1e-4: no actual error above its estimate (at most 0.51 of it); the two-change form
 //! max(|d₃|, |d₂|/4) exceeded its estimate at 3–8 of the points, by up to 2.1 times.
-//! `examples/17_map_speed.rs` repeats the check point by point.
+//! `examples/13_map_speed.rs` repeats the check point by point.
 //!
 //! An infinite plate is truncated at C = B + 30 D (the midplane stress decays like e^(−r/D)·…;
 //! beyond a few D the rim is invisible to R_o at the 10⁻⁶ level).

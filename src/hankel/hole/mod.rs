@@ -62,9 +62,9 @@
 //! [`HoleParams::r_o_tolerance`]·R_o (the residual target alone is not enough: at N = 4 its bound
 //! is 1.08e-6 R_o for A/D = 1, B/A = 3.1); ten of Table 1's rows stop at N = 8, the two narrowest
 //! (B/A = 1.3, A/D ≤ 0.75) at N = 16, with estimates of 1.3e-8–8.8e-7 R_o and actual errors of
-//! 9e-14–9e-8 R_o (example 18).
+//! 9e-14–9e-8 R_o (example 14).
 //!
-//! **Cost** (R_o to 1e-6, default parameters, A = 0.1, ν = 0.3; example 18, minimum of 21 runs,
+//! **Cost** (R_o to 1e-6, default parameters, A = 0.1, ν = 0.3; example 14, minimum of 21 runs,
 //! one thread, load ≈ 1 on the 2-core machine; medians 2–4 % higher): 4.6–6.5 ms for the ten
 //! rows that stop at N = 8, 8.7 ms for the two at N = 16 (72 ms for all twelve; before the
 //! R_o-based stopping rule and the work below, 7.2–26 ms and 171 ms). The slab's traction on the

@@ -137,7 +137,7 @@ pub fn single_plate_separation(
         // on what is measured: the last two changes (the last at most half the one before),
         // or after one doubling the residual (met, or at least halved). Without it, the
         // larger of the last two changes (or of the change and the bound). (With the corner
-        // enrichment R_o's error falls 3–300× per doubling on Table 1: example 18.)
+        // enrichment R_o's error falls 3–300× per doubling on Table 1: example 14.)
         let bound = residual_max * p_ref / slope.abs();
         let history = &holed.info().history;
         let hole_error = match changes.len() {
