@@ -3,13 +3,18 @@
 //! (least-squares slope), and ν = 0.499 to show volumetric locking of Q4 and its cure (B-bar, Q9).
 //!
 //! Run: `cargo run --release --example 02_lame_convergence [max_n]` (default 64).
+//!
+//! Builds on: nothing (the finite elements, `boltzone::fem`).
 
 use boltzone::fem::lame::{lame_error, LameCase};
 use boltzone::fem::ElementKind;
 use boltzone::numerics::convergence::log_log_slope;
 use std::time::Instant;
 
-fn main() -> anyhow::Result<()> {
+pub fn main() -> anyhow::Result<()> {
+    if std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1") {
+        return run(16);
+    }
     let max_n: usize = std::env::args()
         .nth(1)
         .map(|s| s.parse())

@@ -26,6 +26,8 @@
 //! Literature: Keer, Dundurs & Tsai (1972, *J. Appl. Mech.* 39, 1115–1120) tabulate the
 //! contact radius of a layer on a half-space against the load radius; their values for a rigid
 //! base were not found in the sources searched, so none are printed here.
+//!
+//! Builds on: example 01 (the slab's kernels) and 04 (the FE two-plate model it checks).
 
 use boltzone::contact::two_plate::{solve as solve_fe, TwoPlateParams, TwoPlateSolution};
 use boltzone::hankel::receding::{Layer, RecedingContact, RecedingParams};

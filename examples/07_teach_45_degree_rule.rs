@@ -29,6 +29,8 @@
 //! single plate's midplane force each equal the applied force πP(B² − A²) (equilibrium);
 //! p ≥ 0 everywhere and p = 0 beyond R_o; the single-plate σ_z curve changes sign within one
 //! element of its separately computed R_o; and R_o(two) < R_o(single) < R(45°) here.
+//!
+//! Builds on: examples 03 and 04 (the two models it draws).
 
 use anyhow::{ensure, Context};
 use boltzone::compare::{compare, CompareParams, Geometry};
@@ -258,7 +260,12 @@ pub fn run(out: &Path) -> anyhow::Result<Summary> {
 }
 
 #[allow(dead_code)]
-fn main() -> anyhow::Result<()> {
+pub fn main() -> anyhow::Result<()> {
+    if std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1") {
+        let dir = std::env::temp_dir().join(format!("boltzone_ex07_{}", std::process::id()));
+        run(&dir)?;
+        return Ok(std::fs::remove_dir_all(&dir)?);
+    }
     let out = std::env::args()
         .nth(1)
         .map(PathBuf::from)

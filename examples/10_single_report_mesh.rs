@@ -3,18 +3,29 @@
 //! (the element-average σ_z of the elements along the midplane, printed at element centres,
 //! z = h_z/2 above the midplane). R_o is taken as the inner edge and as the centre of the first
 //! element beyond B whose σ_z is tensile, beside the report's single-plate column and our
-//! converged midplane value (Q9, Richardson, example 03).
+//! converged midplane value (Q9, level-change estimate, example 03).
 //!
 //! This separates the two reasons our converged R_o differs from 1970: the coarse element and
 //! its one-interval resolution, and σ_z taken half an element above the midplane.
 //!
+//! Self-check (exit code 1): the converged column agrees with the Hankel route with the hole
+//! and the same rim (`boltzone::hankel::hole`, an independent method) within the two error
+//! estimates. `BOLTZONE_QUICK=1` runs Table 1's first row (the test suite does).
+//!
 //! Run: `cargo run --release --example 10_single_report_mesh [rows]` (default 12).
+//!
+//! Builds on: example 03 (the converged column).
 
 use boltzone::fem::single::{single_plate_r_o, solve_half_plate, FaceCondition, SingleParams};
 use boltzone::fem::{centre_stresses, ElementKind, SolveParams, Spacing};
+use boltzone::hankel::hole::{single_plate_separation, HoleParams};
+use boltzone::hankel::SeparationParams;
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
-fn main() -> anyhow::Result<()> {
+pub fn main() -> anyhow::Result<()> {
+    if std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1") {
+        return run(1);
+    }
     let rows: usize = std::env::args()
         .nth(1)
         .map(|s| s.parse())
@@ -60,7 +71,19 @@ pub fn run(rows: usize) -> anyhow::Result<()> {
             .iter()
             .find(|(r, s)| *r > row.b() && *s > 0.0)
             .ok_or_else(|| anyhow::anyhow!("no tensile element"))?;
-        let (converged, _) = single_plate_r_o(&plate, &SingleParams::default())?;
+        let (converged, info) = single_plate_r_o(&plate, &SingleParams::default())?;
+        // the converged column against the Hankel route with the hole and the same rim
+        let (hankel, _) =
+            single_plate_separation(&plate, &SeparationParams::default(), &HoleParams::default())?;
+        let gap = (converged - hankel.r_o).abs();
+        if gap > info.error_estimate + hankel.error {
+            anyhow::bail!(
+                "A/D {} B/A {}: FE R_o {converged} and Hankel {} differ by {gap:e}, more than their estimates",
+                row.a_over_d,
+                row.b_over_a,
+                hankel.r_o
+            );
+        }
         println!(
             "{:>6} {:>5} | {:>7.3} {:>7.3} | {:>7.3} | {:>9.3}",
             row.a_over_d,

@@ -17,6 +17,8 @@
 //! Run: `cargo run --release --example 13_map_speed [n] [tolerance]`: an n × n log-spaced grid
 //! over A/D ∈ [0.2, 5] × B/A ∈ [1.1, 5] plus Table 1's twelve geometries (default n = 6,
 //! tolerance 1e-3).
+//!
+//! Builds on: examples 03 and 04 (the two models, timed over the map).
 
 use boltzone::compare::map::log_spaced;
 use boltzone::compare::single::single_fem;
@@ -55,7 +57,15 @@ pub struct PointRun {
     pub two: ModelRun,
 }
 
-fn main() -> anyhow::Result<()> {
+/// The quick set: the four corners of the map's range and Table 1's narrowest load (A/D 1,
+/// B/A 1.3).
+pub const QUICK_POINTS: [(f64, f64); 5] =
+    [(0.2, 1.1), (0.2, 5.0), (5.0, 1.1), (5.0, 5.0), (1.0, 1.3)];
+
+pub fn main() -> anyhow::Result<()> {
+    if std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1") {
+        return run(&QUICK_POINTS, 1e-3).map(|runs| summary(&runs, 1e-3));
+    }
     let mut args = std::env::args().skip(1);
     let n: usize = args.next().map(|s| s.parse()).transpose()?.unwrap_or(6);
     let tol: f64 = args.next().map(|s| s.parse()).transpose()?.unwrap_or(1e-3);

@@ -106,9 +106,22 @@ fn table2_end_to_end() {
         if !equal {
             assert_eq!(r.model, "welded");
         }
-        // The report's definition of the discrepancy, recomputed from the printed average.
-        let d = (r.two_r_o.value - r.report.rubbing.average).abs() / r.two_r_o.value * 100.0;
-        assert!((d - r.discrepancy_rubbing_percent).abs() < 1e-12);
+        // The discrepancy function against the report's own numbers: applied to the report's
+        // computed 2R_o and the printed test average it gives the printed percentage, to the
+        // printing (percent to 0.1, the average to 0.01 in); and each row uses that function.
+        let tested = r.report.rubbing.average;
+        let theirs = table2::discrepancy(r.report.computed, tested);
+        let rounding = 0.005 / r.report.computed * 100.0 + 0.05;
+        assert!(
+            (theirs - r.report.discrepancy_rubbing_percent).abs() <= rounding,
+            "case {}: {theirs} vs printed {}",
+            r.report.case,
+            r.report.discrepancy_rubbing_percent
+        );
+        assert_eq!(
+            r.discrepancy_rubbing_percent,
+            table2::discrepancy(r.two_r_o.value, tested)
+        );
     }
     let v = |case: usize| rows[case - 1].two_r_o.value;
     // Thicker plates under the same nut spread the contact farther (cases 1-4), and so do

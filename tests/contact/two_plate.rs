@@ -395,11 +395,16 @@ fn report_load_variants() {
 
 #[test]
 fn r_o_converges_at_the_observed_rate() {
-    // Five levels regardless of tolerance: fit the log-log slope of successive changes.
+    // Eight levels regardless of tolerance: fit the log-log slope of successive changes against
+    // the element size at R_o. The gap estimator is second order (the (r − R_o)^{3/2} gap fitted
+    // on elements of size h), Q9 displacements third: the nearest integer to the observed order
+    // must be 2, both over all levels and without the first (pre-asymptotic) change. The
+    // successive rates alternate (3.6, 2.1, 1.6, 2.3, 1.2, 2.4 as R_o crosses elements); the
+    // fits measured 2.05 and 1.85.
     let p = TwoPlateParams {
         tolerance: 1e-12,
-        min_levels: 5,
-        max_levels: 5,
+        min_levels: 8,
+        max_levels: 8,
         ..Default::default()
     };
     let s = solve(&joint(0.31, 0.1, 0.1, None), &p).unwrap();
@@ -409,10 +414,12 @@ fn r_o_converges_at_the_observed_rate() {
         .windows(2)
         .map(|w| (w[1].h, (w[1].r_o - w[0].r_o).abs()))
         .collect();
-    let slope = boltzone::numerics::convergence::log_log_slope(&pts);
-    // The gap estimator is second order, Q9 displacements third: expect 2..3.5.
-    assert!((1.8..3.8).contains(&slope), "observed rate {slope}");
-    assert!(s.r_o_error < 1e-4 * s.r_o);
+    let all = boltzone::numerics::convergence::log_log_slope(&pts);
+    let late = boltzone::numerics::convergence::log_log_slope(&pts[1..]);
+    println!("observed order {all} (all levels), {late} (without the first change)");
+    assert!((all - 2.0).abs() < 0.5, "observed order {all}");
+    assert!((late - 2.0).abs() < 0.5, "observed order {late}");
+    assert!(s.r_o_error < 1e-5 * s.r_o);
 }
 
 #[test]

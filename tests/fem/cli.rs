@@ -1,6 +1,6 @@
 //! `boltzone single --method fem`: JSON keys, agreement with the library, named errors.
 
-mod common;
+use crate::common;
 
 fn single(args: &[&str]) -> std::process::Output {
     common::boltzone(&[&["single"], args].concat())

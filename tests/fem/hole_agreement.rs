@@ -3,7 +3,7 @@
 //! (the widest load on the thinnest-relative plate and the narrowest on the thickest), and a rim
 //! so close to the load (C = B + 1.3D, R_o within 0.05 of C) that the rim correction matters
 //! (it moves R_o by 3 %). The models are independent (eigenfunctions and Hankel integrals vs
-//! graded Q9 meshes with Richardson extrapolation); the issue asks for 0.05 %.
+//! graded Q9 meshes, error from the level changes); the issue asks for 0.05 %.
 
 use boltzone::fem::single::{single_plate_r_o, SingleParams};
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
@@ -40,7 +40,8 @@ fn hankel_with_hole_agrees_with_finite_elements_on_table1() {
             "differ by {:.4} %",
             100.0 * diff / r_fe
         );
-        // Both estimates are of the error's size, not strict bounds: allow three times their sum.
-        assert!(diff <= 3.0 * (hk.error + fe.error_estimate), "{diff:e}");
+        // Each model's estimate bounds its own error (their module docs; measured here
+        // diff/(sum of estimates) = 0.30, 0.06, 0.10): the difference is within their sum.
+        assert!(diff <= hk.error + fe.error_estimate, "{diff:e}");
     }
 }

@@ -3,7 +3,7 @@
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
-mod common;
+use crate::common;
 
 #[test]
 fn single_hankel_json_matches_the_library() {

@@ -13,7 +13,7 @@ use boltzone::numerics::tanh_sinh::tanh_sinh;
 use num_complex::Complex64;
 
 fn reference() -> Vec<(String, Complex64, f64, Complex64)> {
-    let text = include_str!("data/hole_bessel_nu.csv");
+    let text = include_str!("../data/hole_bessel_nu.csv");
     text.lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with("kind"))
         .map(|l| {

@@ -10,7 +10,7 @@ use boltzone::hankel::receding::layer::{
 
 /// (x, ν, M_q, M_p) rows of tests/data/receding_layer_kernels.csv.
 fn reference() -> Vec<[f64; 4]> {
-    let text = include_str!("data/receding_layer_kernels.csv");
+    let text = include_str!("../data/receding_layer_kernels.csv");
     text.lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with('x'))
         .map(|l| {

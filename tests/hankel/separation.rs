@@ -4,7 +4,7 @@
 use boltzone::hankel::{realspace, Midplane, MidplaneRule, QuadParams, SeparationParams, Slab};
 use boltzone::{FaceLoad, Material};
 
-mod common;
+use crate::common;
 use common::uniform_slab as slab;
 
 #[test]

@@ -10,7 +10,7 @@ fn arr(k: &ShearKernels) -> [f64; 6] {
 
 #[test]
 fn kernels_match_the_symbolic_derivation() {
-    let text = include_str!("data/shear_kernels.csv");
+    let text = include_str!("../data/shear_kernels.csv");
     let mut rows = 0;
     for line in text
         .lines()

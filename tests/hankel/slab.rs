@@ -8,7 +8,7 @@ use boltzone::hankel::{MidplaneCurve, MidplaneRule, QuadParams, Slab};
 use boltzone::numerics::quadrature::gauss_legendre;
 use boltzone::{FaceLoad, Material, Peak};
 
-mod common;
+use crate::common;
 use common::uniform_slab as slab;
 
 #[test]

@@ -4,7 +4,7 @@ use boltzone::numerics::bessel_k::k01_scaled;
 use num_complex::Complex64;
 
 fn reference() -> Vec<[f64; 6]> {
-    include_str!("data/hole_bessel_k.csv")
+    include_str!("../data/hole_bessel_k.csv")
         .lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with("re_z"))
         .map(|l| {
@@ -53,7 +53,7 @@ fn derivative_recurrence_holds() {
 
 #[test]
 fn scaled_i0_i1_match_mpmath() {
-    let rows: Vec<[f64; 6]> = include_str!("data/hole_bessel_i.csv")
+    let rows: Vec<[f64; 6]> = include_str!("../data/hole_bessel_i.csv")
         .lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with("re_z"))
         .map(|l| {
