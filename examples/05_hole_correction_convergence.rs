@@ -5,7 +5,7 @@
 //! **Problem.** Single plate 2D thick with a hole of radius A = 0.1, uniform pressure P on
 //! A ≤ r ≤ B on both faces, ν = 0.3, infinite outer radius (the report's C = 1.54 in is more
 //! than 5D beyond R_o for every row: freeing that rim too moves R_o by less than e^(−10), see
-//! `tests/hole_correction.rs`; the rim doubles the slab work, since its integrands oscillate
+//! `tests/hankel/hole_correction.rs`; the rim doubles the slab work, since its integrands oscillate
 //! (C + B)/(A + B) times faster). Solution: slab with the load continued into the hole + Lamé
 //! field + N modes fitted on r = A (`boltzone::hankel::hole`).
 //!

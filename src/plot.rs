@@ -211,7 +211,7 @@ impl Figure for CurveFigure {
 pub struct HeatPanel {
     /// Caption.
     pub title: String,
-    /// Values, z[i·len(y) + j] at (x[i], y[j]).
+    /// Values, z\[i·len(y) + j\] at (x\[i\], y\[j\]).
     pub z: Vec<f64>,
 }
 

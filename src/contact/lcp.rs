@@ -42,7 +42,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::ContactError;
+use super::error::ContactError;
 use crate::error::InputError;
 use nalgebra::{DMatrix, DVector};
 use std::collections::HashSet;

@@ -1,6 +1,6 @@
 //! The input of the two-plate model ([`super::two_plate::solve`]): how the plates interact,
 //! what presses them, how the outer edge is held, and the knobs of the level study. Kept apart
-//! from the driver so that the level-by-level machinery ([`super::refine`]) can read them
+//! from the driver so that the level-by-level machinery (module `refine`) can read them
 //! without importing the driver.
 
 use super::lcp::LcpParams;
@@ -35,7 +35,7 @@ pub enum EdgeSupport {
     Fixed,
 }
 
-/// Knobs of [`solve`].
+/// Knobs of [`super::two_plate::solve`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TwoPlateParams {
     /// Element (default Q9). Q4, Q4Bbar and the report's Cst4 work as well and are about four

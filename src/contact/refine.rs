@@ -19,9 +19,9 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use super::error::ContactError;
 use super::level::{solve_level, LevelSetup, LevelSolution, Model};
 use super::params::{EdgeSupport, Loading, TwoPlateParams};
-use super::ContactError;
 use crate::fem::{Component, ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
 use crate::joint::Joint;
 

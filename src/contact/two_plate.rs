@@ -42,11 +42,11 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use super::error::ContactError;
 use super::level::LevelSolution;
 pub use super::params::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use super::refine::{mesh, solve_adaptive, MeshLayout, PreviousLevel};
 use super::separation::{estimate, NodalInterface, SeparationEstimate};
-use super::ContactError;
 use crate::error::InputError;
 use crate::joint::{Joint, OuterRadius};
 use crate::numerics::convergence::{fitted_rate, level_estimate};

@@ -95,7 +95,7 @@ pub fn midplane_bound(t: f64) -> f64 {
 /// the scaled S(t), C(t) and 4/Q(t).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct KernelNode {
-    /// t = ξD (at least [`T_MIN`]).
+    /// t = ξD (at least 1e-300, so that every division by t stays finite).
     pub t: f64,
     /// S(t) = sinh t·e^(−t).
     pub st: f64,

@@ -30,7 +30,7 @@
 //! **Overflow-free form.** As in [`super::kernel`]: every kernel is 4e^(s−t)·(polynomial in the
 //! scaled S, C, s, t)/Q with Q = e^(−2t)·2Δ, so nothing overflows for any t and 0 ≤ s ≤ t.
 //!
-//! Checked in `tests/hankel_shear_kernels.rs`: face conditions, equilibrium and Hooke's law
+//! Checked in `tests/hankel/shear_kernels.rs`: face conditions, equilibrium and Hooke's law
 //! (stresses from the displacements) by finite differences at fixed ξ, the half-space limits,
 //! and an exact-rational solution of the two face conditions (sympy,
 //! `tests/data/shear_kernels.py`).

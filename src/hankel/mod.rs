@@ -29,7 +29,7 @@
 //!   hundred to 50 000 nodes, cost ∝ (r_max + B)/D), or, for thin slabs where that would need
 //!   more, the real-space superposition of a point kernel localised within 18D ([`realspace`]),
 //!   whose cost does not grow with B/D or r/D. The two routes agree to ~1e-15 where both run
-//!   (tests/hankel_separation.rs). This keeps D/A ∈ [1e-3, 1e3], B/A ∈ [1.001, 1e3] and
+//!   (tests/hankel/separation.rs). This keeps D/A ∈ [1e-3, 1e3], B/A ∈ [1.001, 1e3] and
 //!   r ≤ 10³B finite and accurate.
 //! - R_o ([`Slab::separation_radius`]): only midplane σ_z, on one [`Midplane`] evaluator.
 //!

@@ -10,7 +10,7 @@
 //! - |z| ≥ 20: the Hankel expansion e^(−z) I_ν(z) ≈ Σ_k (−1)^k a_k(ν)/z^k / √(2πz) (DLMF 10.40.1);
 //!   the omitted exponentially small part is ≈ e^(−2 Re z) < 5e-14 for |arg z| ≤ 0.7.
 //!
-//! Measured against mpmath at 40 digits (`tests/data/hole_bessel_i.py`, `tests/hole_bessel_k.rs`).
+//! Measured against mpmath at 40 digits (`tests/data/hole_bessel_i.py`, `tests/numerics/bessel_ik.rs`).
 //!
 //! ```
 //! use boltzone::numerics::bessel_i::i01_scaled;

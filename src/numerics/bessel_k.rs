@@ -17,7 +17,7 @@
 //!   below the first omitted term, ≈ e^(−2|z|) < 5e-18.
 //!
 //! Accuracy measured against mpmath at 40 digits (`tests/data/hole_bessel_k.py`,
-//! `tests/hole_bessel_k.rs`) for |z| ∈ [0.05, 1e5], |arg z| ≤ 1.1.
+//! `tests/numerics/bessel_ik.rs`) for |z| ∈ [0.05, 1e5], |arg z| ≤ 1.1.
 //!
 //! ```
 //! use boltzone::numerics::bessel_k::k01_scaled;

@@ -21,7 +21,7 @@
 //! the imaginary part is correct modulo 2π, which is all exp needs).
 //!
 //! Checked against mpmath's `hyp0f1` and `loggamma` at 40 digits (`tests/data/hole_bessel_nu.py`,
-//! `tests/hole_corner.rs`): relative error below 1e-13 over x ∈ [0, 1e6] for the orders used.
+//! `tests/hankel/hole_corner.rs`): relative error below 1e-13 over x ∈ [0, 1e6] for the orders used.
 //!
 //! ```
 //! use boltzone::numerics::bessel_nu::NormalBessel;

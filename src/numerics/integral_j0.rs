@@ -5,7 +5,7 @@
 //! Hankel's asymptotic expansion for x ≥ 40 (see [`integral_j0`]).
 //!
 //! Accuracy: ~20ε absolute; checked against mpmath (Struve form) in `tests/numerics/`
-//! (module `bessel`). Cost: O(1) per call after the table is built once (20 panels).
+//! (module `bessel_j`). Cost: O(1) per call after the table is built once (20 panels).
 //!
 //! ```
 //! use boltzone::numerics::integral_j0::integral_j0;
@@ -79,11 +79,11 @@ fn ji0_table(x: f64) -> f64 {
 }
 
 /// Ji₀(x) = ∫₀^x J₀(t) dt for x ≥ 0: power series for x ≤ 2, a table of piecewise Chebyshev
-/// interpolants for 2 < x < 40 ([`ji0_table`]), and for x ≥ 40 the asymptotic expansion
+/// interpolants for 2 < x < 40 (`ji0_table`), and for x ≥ 40 the asymptotic expansion
 /// Ji₀ = 1 − Re F, F(x) = ∫ₓ^∞ H₀⁽¹⁾ = √(2/π) e^(i(x−π/4)) x^(−1/2) Σ b_k x^(−k), where
 /// b₀ = i, b_k = i^(k+1) a_k − i(k − ½) b_(k−1) follows from F′ = −H₀⁽¹⁾ with Hankel's
 /// a_k = a_(k−1)·(−(2k−1)²)/(8k) (DLMF 10.17.1); summed to its smallest term (≈ e^(−x) < 5e-18).
-/// Checked against mpmath (Struve form) in tests/hankel_bessel.rs.
+/// Checked against mpmath (Struve form) in `tests/numerics/` (module `bessel_j`).
 pub fn integral_j0(x: f64) -> f64 {
     let x = x.abs();
     if x <= 2.0 {

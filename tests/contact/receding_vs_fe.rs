@@ -19,7 +19,7 @@
 //! +0.9e-5 for the annulus), below the 0.05 % target but above the FE's own error estimates
 //! (~2e-6 R_o at its 1e-5 tolerance). The Hankel side: error estimate < 1e-9, the displacement
 //! integral flat on the contact zone to 4e-14, the slab midplane stress met to 1e-12 in the
-//! bilateral limit (tests/receding_contact.rs). Independently of the Hankel solution, the FE's
+//! bilateral limit (tests/hankel/receding_contact.rs). Independently of the Hankel solution, the FE's
 //! extrapolated R_o moves with ν (+1.7e-5, +1.2e-5, −0.8e-5 relative at ν = 0, 0.3, 0.45;
 //! example 06) although the exact R_o cannot (no kernel of the layer depends on ν): the
 //! ~1e-5 discrepancy is an FE bias its estimate does not see at tight tolerances (at the

@@ -30,7 +30,7 @@ fn json_has_the_slab_keys_and_mesh_size() {
 
 #[test]
 fn bad_input_gives_named_errors() {
-    // (`--method hankel` now runs: tests/hole_cli.rs)
+    // (`--method hankel` now runs: tests/hankel/hole_cli.rs)
     let out = single(&["--a", "0.1", "--b", "0.05", "--d", "0.1"]);
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("B = 0.05"));

@@ -96,7 +96,7 @@ fn corner_enrichment_makes_the_residual_fall_much_faster() {
 fn fitted_correction_is_homogeneous() {
     let h = HolePlate::new(&plate(0.1, 0.16, 0.1333), &fixed(16)).unwrap();
     let scale = h.correction(0.1, 0.0).sigma_r.abs().max(1e-3);
-    // Faces free: each mode's face traction cancels to rounding (tests/hole_eigen.rs); the sum of
+    // Faces free: each mode's face traction cancels to rounding (tests/hankel/hole_eigen.rs); the sum of
     // 16 modes with O(1) amplitudes keeps that to ~1e-13 of the correction's size.
     for r in [0.1, 0.101, 0.13, 0.3] {
         for z in [0.1333, -0.1333] {

@@ -178,7 +178,7 @@ impl Mode {
     /// An upper bound of |[`Self::midplane_sigma_z`]| at r ≥ A for a decaying mode:
     /// 2|α − (1 − 2ν)|e^(−Re λ (r − A)) (the scaled K₀(λr)/K₁(λA) is at most 1 in size —
     /// Hankel's expansions, √(A/r)(1 + O(1/λA)), and K₀ < K₁ at small λA — the 2 a margin;
-    /// checked in `tests/hole_eigen.rs`), ∞ for a growing mode. Sums skip modes whose bound
+    /// checked in `tests/hankel/hole_eigen.rs`), ∞ for a growing mode. Sums skip modes whose bound
     /// times their amplitude is negligible.
     pub fn midplane_bound(&self, r: f64) -> f64 {
         if self.growing {

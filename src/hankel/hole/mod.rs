@@ -84,7 +84,7 @@
 //! unknowns, and the fit collocates on both cylinders. A rim changes the midplane σ_z only
 //! through the modes, ≈ e^(−2.1(C − R_o)/D) (the Lamé and uniform states have no σ_z): nothing
 //! for the report's C = 1.54 in, 3 % of R_o for a rim 1.3D beyond the load (checked against the
-//! finite-element plate in `tests/hole_fem_agreement.rs`).
+//! finite-element plate in `tests/fem/hole_agreement.rs`).
 //!
 //! Sign convention: compression negative; residuals relative to the mean pressure P.
 //!

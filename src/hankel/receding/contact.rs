@@ -20,7 +20,7 @@
 //! so that ∫₀^∞ q̄ J₀(ξr) dξ = ∫₀^r φ(t)/√(r² − t²) dt (from ∫₀^∞ cos ξt J₀(ξr) dξ =
 //! H(r − t)/√(r² − t²)). The contact condition w = const on r ≤ c, inverted by Abel's formula
 //! (which maps J₀(ξr) to (2/π) cos ξt and a constant to a constant), becomes a Fredholm equation
-//! of the second kind ([`super::system`]). The bending kernel is made integrable by
+//! of the second kind (module `system`). The bending kernel is made integrable by
 //! equilibrium: with ∫₀^c φ dt = q̄(0) = p̄(0), the product M_p(q̄ − p̄) is used with J₀(ξr) − 1
 //! (displacements relative to the axis; the constant joins the unknown rigid translation C₀).
 //! φ(c) is the coefficient of the inverse-square-root edge singularity: a smooth receding
@@ -38,7 +38,7 @@
 //! pressure ≥ 0 inside R_o and gap ≥ 0 beyond, sampled (else [`RecedingError::NotUnilateral`]:
 //! the contact zone is then not a disk, as under a wide ring on a thin plate).
 //!
-//! **Checks** (tests/receding_*.rs): the kernels against a general Love solution and the
+//! **Checks** (tests/hankel/receding_*.rs, tests/contact/receding_vs_fe.rs): the kernels against a general Love solution and the
 //! Kirchhoff plate; the bilateral limit (contact forced on r ≤ B + 12D) reproduces the midplane
 //! σ_z of the slab of half-thickness D ([`crate::hankel::midplane`]) to 1e-12·p; 2π∫q r dr = F to
 //! 1e-15; q ~ (R_o − r)^(1/2) and g ~ (r − R_o)^(3/2); R_o independent of the load's scale and

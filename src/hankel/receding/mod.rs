@@ -3,8 +3,8 @@
 //! of the finite-element contact solver ([`crate::contact`]) that shares no FE code.
 //!
 //! - [`layer`]: the layer's Hankel kernels (bottom-face displacement under face pressures);
-//! - [`system`]: the Fredholm equation of a contact disk r ≤ c, by Nyström's method;
-//! - [`search`]: the scan and root search for R_o and the check of the unilateral conditions;
+//! - `system`: the Fredholm equation of a contact disk r ≤ c, by Nyström's method;
+//! - `search`: the scan and root search for R_o and the check of the unilateral conditions;
 //! - [`contact`]: the solver ([`Layer::receding_contact`]) and its results (derivation,
 //!   accuracy and cost there).
 //!
