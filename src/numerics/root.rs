@@ -5,7 +5,7 @@
 //! of the crate (slab, slab with a hole, receding layer).
 //!
 //! Accuracy: the root to the half-width asked; Brent's superlinear convergence is checked in
-//! `tests/numerics/` (module `root`). Cost: one evaluation per scan point and per iteration.
+//! `tests/numerics/root.rs`. Cost: one evaluation per scan point and per iteration.
 //!
 //! ```
 //! use boltzone::numerics::root::brent;

@@ -4,3 +4,5 @@
 mod bessel_ik;
 mod bessel_j;
 mod quadrature;
+mod root;
+mod tanh_sinh;
