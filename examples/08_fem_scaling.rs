@@ -89,7 +89,7 @@ pub fn run_size(
         .sum::<f64>()
         .sqrt()
         / b.iter().map(|c| c * c).sum::<f64>().sqrt();
-    if !(res < 1e-10) {
+    if res.is_nan() || res >= 1e-10 {
         anyhow::bail!(
             "{kind:?}, {} equations: relative residual {res:e} > 1e-10",
             dm.n_equations()
