@@ -14,7 +14,11 @@ fn brent_finds_wallis_root_superlinearly() {
     let Ok(r) = brent(&mut f, 2.0, -1.0, 3.0, 16.0, 1e-15, 100);
     assert!((r.x - 2.094_551_481_542_326_5).abs() < 1e-15, "{}", r.x);
     // the stopping half-width: tol/2 plus the rounding floor 2ε|x|, doubled at most
-    assert!(r.half_width <= 1e-15 + 4.0 * f64::EPSILON * r.x.abs(), "{}", r.half_width);
+    assert!(
+        r.half_width <= 1e-15 + 4.0 * f64::EPSILON * r.x.abs(),
+        "{}",
+        r.half_width
+    );
     // bisection alone would need ~50 evaluations for 1e-15 on [2, 3]
     assert!(evals <= 12, "{evals} evaluations");
 }

@@ -11,7 +11,13 @@ fn singular_and_smooth_integrals_match_their_closed_forms() {
     let cases: [Case; 3] = [
         ("ln x on [0, 1]", |x| x.ln(), 0.0, 1.0, -1.0),
         // ∫₀¹ ln x ln(1 − x) dx = 2 − π²/6 (Gradshteyn & Ryzhik 4.221.1)
-        ("ln x ln(1-x) on [0, 1]", |x| x.ln() * (-x).ln_1p(), 0.0, 1.0, 2.0 - PI * PI / 6.0),
+        (
+            "ln x ln(1-x) on [0, 1]",
+            |x| x.ln() * (-x).ln_1p(),
+            0.0,
+            1.0,
+            2.0 - PI * PI / 6.0,
+        ),
         ("sin on [0, pi]", f64::sin, 0.0, PI, 2.0),
     ];
     for (name, f, a, b, exact) in cases {
@@ -32,7 +38,13 @@ fn inverse_square_root_singularities_are_not_hidden() {
     let cases: [Case; 2] = [
         ("x^(-1/2) on [0, 1]", |x| 1.0 / x.sqrt(), 0.0, 1.0, 2.0),
         // ∫₀² (4 − x²)^(−1/2) dx = π/2: the singularity at the upper end
-        ("(4 - x^2)^(-1/2) on [0, 2]", |x| 1.0 / (4.0 - x * x).sqrt(), 0.0, 2.0, PI / 2.0),
+        (
+            "(4 - x^2)^(-1/2) on [0, 2]",
+            |x| 1.0 / (4.0 - x * x).sqrt(),
+            0.0,
+            2.0,
+            PI / 2.0,
+        ),
     ];
     for (name, f, a, b, exact) in cases {
         let (v, e, _) = tanh_sinh(a, b, 1e-13, f);
