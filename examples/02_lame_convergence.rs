@@ -8,7 +8,7 @@
 
 use boltzone::fem::lame::{lame_error, LameCase};
 use boltzone::fem::ElementKind;
-use boltzone::numerics::convergence::log_log_slope;
+use boltzone::numerics::convergence::{log_log_slope, order_between};
 use std::time::Instant;
 
 pub fn main() -> anyhow::Result<()> {
@@ -47,7 +47,10 @@ pub fn run(max_n: usize) -> anyhow::Result<()> {
                 .collect::<Result<_, _>>()?;
             for (i, (n, e)) in ns.iter().zip(&errs).enumerate() {
                 let rate = if i > 0 {
-                    format!("{:8.3}", (errs[i - 1] / e).log2())
+                    format!(
+                        "{:8.3}",
+                        order_between(1.0 / ns[i - 1] as f64, errs[i - 1], 1.0 / *n as f64, *e)
+                    )
                 } else {
                     String::new()
                 };
