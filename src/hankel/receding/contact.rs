@@ -25,8 +25,9 @@
 //! (displacements relative to the axis; the constant joins the unknown rigid translation C₀).
 //! φ(c) is the coefficient of the inverse-square-root edge singularity: a smooth receding
 //! contact has φ(c) = 0, so R_o is the root of φ(c; c) = 0, found by a scan from the load's
-//! outer radius and the Illinois variant of regula falsi. Since the equation is linear in the
-//! load and none of its kernels depends on ν, R_o depends on the load's shape and B/D only.
+//! outer radius and Brent's method ([`crate::numerics::root`]). Since the equation is linear
+//! in the load and none of its kernels depends on ν, R_o depends on the load's shape and B/D
+//! only.
 //!
 //! **Discretisation and error.** Nyström's method with an n-point Gauss–Legendre rule on
 //! [0, c]: the kernels are analytic, so R_o converges geometrically in n. The error estimate of
@@ -38,13 +39,15 @@
 //! pressure ≥ 0 inside R_o and gap ≥ 0 beyond, sampled (else [`RecedingError::NotUnilateral`]:
 //! the contact zone is then not a disk, as under a wide ring on a thin plate).
 //!
-//! **Checks** (tests/hankel/receding_*.rs, tests/contact/receding_vs_fe.rs): the kernels against a general Love solution and the
+//! **Accuracy** (`tests/hankel/receding_contact.rs`, `tests/hankel/receding_kernels.rs`,
+//! `tests/contact/receding_vs_fe.rs`): the kernels against a general Love solution and the
 //! Kirchhoff plate; the bilateral limit (contact forced on r ≤ B + 12D) reproduces the midplane
-//! σ_z of the slab of half-thickness D ([`crate::hankel::midplane`]) to 1e-12·p; 2π∫q r dr = F to
-//! 1e-15; q ~ (R_o − r)^(1/2) and g ~ (r − R_o)^(3/2); R_o independent of the load's scale and
-//! of ν; and the FE two-plate solver, which converges to the same R_o as its outer radius C
-//! grows (difference ∝ C⁻², extrapolated agreement ~1e-5·R_o). Cost: about 20 Nyström solves
-//! per R_o, ~20 ms at B = D (examples/06_receding_contact.rs).
+//! σ_z of the slab of half-thickness D ([`crate::hankel::midplane`]) to 1e-12·p; 2π∫q r dr = F
+//! to 1e-15; q ~ (R_o − r)^(1/2) and g ~ (r − R_o)^(3/2); R_o independent of the load's scale
+//! and of ν; and the FE two-plate solver, which converges to the same R_o as its outer radius C
+//! grows (difference ∝ C⁻², extrapolated agreement ~1e-5·R_o).
+//!
+//! **Cost.** About 20 Nyström solves per R_o, ~20 ms at B = D (example 06).
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material};
