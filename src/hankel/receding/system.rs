@@ -93,7 +93,7 @@ pub(crate) struct Nystrom {
     /// h_m = a_m q̄(ξ_m).
     h: Vec<f64>,
     /// The θ-rule of H(r) with φ folded in, (c sin θ_k, w_k φ(c sin θ_k) c cos θ_k), and H(c);
-    /// built on first use by [`Self::gap_scaled`] (it does not depend on r).
+    /// built on first use by [`Self::abel`] (it does not depend on r).
     abel_rule: std::sync::OnceLock<(Vec<(f64, f64)>, f64)>,
 }
 
