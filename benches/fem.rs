@@ -1,6 +1,6 @@
 //! Criterion benchmarks of the FE pipeline: mesh + assembly + sparse Cholesky + one solve at
 //! about 10⁴ and 10⁵ equations (the 10⁶ case takes ~10–25 s per run: time it with
-//! `cargo run --release --example 10_fem_scaling`), and the single-plate R_o of Table 1's first
+//! `cargo run --release --example 08_fem_scaling`), and the single-plate R_o of Table 1's first
 //! geometry to 0.05 %.
 //!
 //! Run: `cargo bench --bench fem`.
@@ -11,7 +11,7 @@ use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 use criterion::{criterion_group, criterion_main, Criterion};
 
 #[allow(dead_code)]
-#[path = "../examples/10_fem_scaling.rs"]
+#[path = "../examples/08_fem_scaling.rs"]
 mod scaling;
 
 fn pipeline(c: &mut Criterion) {

@@ -3,7 +3,7 @@
 //! Table 1's geometries, by the default route (slab traction on the hole as a Chebyshev profile
 //! in z) and by the direct per-height route it replaced; then the pieces: the slab's traction
 //! profile alone, and the hole fit alone at N = 16. Time against error for all twelve
-//! geometries: `examples/18_hole_speed.rs`.
+//! geometries: `examples/14_hole_speed.rs`.
 use boltzone::hankel::hole::plate::extended_load;
 use boltzone::hankel::hole::TractionProfile;
 use boltzone::hankel::hole::{single_plate_separation, HoleParams, HolePlate, SlabSampling};

@@ -3,12 +3,18 @@
 //! (least-squares slope), and ν = 0.499 to show volumetric locking of Q4 and its cure (B-bar, Q9).
 //!
 //! Run: `cargo run --release --example 02_lame_convergence [max_n]` (default 64).
+//!
+//! Builds on: nothing (the finite elements, `boltzone::fem`).
 
-use boltzone::fem::lame::{lame_error, observed_order, LameCase};
+use boltzone::fem::lame::{lame_error, LameCase};
 use boltzone::fem::ElementKind;
+use boltzone::numerics::convergence::{log_log_slope, order_between};
 use std::time::Instant;
 
-fn main() -> anyhow::Result<()> {
+pub fn main() -> anyhow::Result<()> {
+    if std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1") {
+        return run(16);
+    }
     let max_n: usize = std::env::args()
         .nth(1)
         .map(|s| s.parse())
@@ -41,17 +47,19 @@ pub fn run(max_n: usize) -> anyhow::Result<()> {
                 .collect::<Result<_, _>>()?;
             for (i, (n, e)) in ns.iter().zip(&errs).enumerate() {
                 let rate = if i > 0 {
-                    format!("{:8.3}", (errs[i - 1] / e).log2())
+                    format!(
+                        "{:8.3}",
+                        order_between(1.0 / ns[i - 1] as f64, errs[i - 1], 1.0 / *n as f64, *e)
+                    )
                 } else {
                     String::new()
                 };
                 println!("{:>8} {:>6} {:>12.3e} {rate}", format!("{kind:?}"), n, e);
             }
             let expected = if kind == ElementKind::Q9 { 3.0 } else { 2.0 };
-            let p = observed_order(
-                &ns[ns.len().saturating_sub(3)..],
-                &errs[errs.len().saturating_sub(3)..],
-            );
+            let last: Vec<(f64, f64)> =
+                ns.iter().zip(&errs).map(|(&n, &e)| (n as f64, e)).collect();
+            let p = -log_log_slope(&last[last.len().saturating_sub(3)..]);
             println!(
                 "  observed order (last 3 levels) {p:.3}, expected {expected}, {:.2} s",
                 t.elapsed().as_secs_f64()

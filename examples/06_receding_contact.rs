@@ -12,7 +12,7 @@
 //! (3) other load shapes (annulus with a tiny inner radius, triangular loads);
 //! (4) the finite-element two-plate solver (`contact::two_plate`) beside it: FE at outer radii
 //! C = 8, 16, 32 R_o (its plate is finite; the C-effect is O((R_o/C)²), see
-//! tests/receding_vs_fe.rs), the ratio of successive differences (≈ 4 for C⁻²), the
+//! tests/contact/receding_vs_fe.rs), the ratio of successive differences (≈ 4 for C⁻²), the
 //! C⁻²-extrapolated FE value and its difference from ours; FE's extrapolated R_o for several ν
 //! (the exact R_o does not depend on ν); then pressure and gap curves.
 //!
@@ -26,6 +26,8 @@
 //! Literature: Keer, Dundurs & Tsai (1972, *J. Appl. Mech.* 39, 1115–1120) tabulate the
 //! contact radius of a layer on a half-space against the load radius; their values for a rigid
 //! base were not found in the sources searched, so none are printed here.
+//!
+//! Builds on: example 01 (the slab's kernels) and 04 (the FE two-plate model it checks).
 
 use boltzone::contact::two_plate::{solve as solve_fe, TwoPlateParams, TwoPlateSolution};
 use boltzone::hankel::receding::{Layer, RecedingContact, RecedingParams};

@@ -29,11 +29,13 @@
 //! single plate's midplane force each equal the applied force πP(B² − A²) (equilibrium);
 //! p ≥ 0 everywhere and p = 0 beyond R_o; the single-plate σ_z curve changes sign within one
 //! element of its separately computed R_o; and R_o(two) < R_o(single) < R(45°) here.
+//!
+//! Builds on: examples 03 and 04 (the two models it draws).
 
 use anyhow::{ensure, Context};
 use boltzone::compare::{compare, CompareParams, Geometry};
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
-use boltzone::fem::single::{coarse_radial_spacing, solve_midplane, Loading, SingleParams};
+use boltzone::fem::single::{coarse_radial_spacing, solve_midplane, FaceCondition, SingleParams};
 use boltzone::fem::{ElementKind, SolveParams};
 use boltzone::plot::{write_figure, Curve, CurveFigure, Marker};
 use boltzone::reference;
@@ -101,7 +103,7 @@ pub fn run(out: &Path) -> anyhow::Result<Summary> {
     let radial = coarse_radial_spacing(&plate, &sp)?.refined(8);
     let mid = solve_midplane(
         &plate,
-        Loading::Pressure,
+        FaceCondition::Pressure,
         ElementKind::Q9,
         &radial,
         16,
@@ -258,7 +260,12 @@ pub fn run(out: &Path) -> anyhow::Result<Summary> {
 }
 
 #[allow(dead_code)]
-fn main() -> anyhow::Result<()> {
+pub fn main() -> anyhow::Result<()> {
+    if std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1") {
+        let dir = std::env::temp_dir().join(format!("boltzone_ex07_{}", std::process::id()));
+        run(&dir)?;
+        return Ok(std::fs::remove_dir_all(&dir)?);
+    }
     let out = std::env::args()
         .nth(1)
         .map(PathBuf::from)

@@ -2,20 +2,32 @@
 //!
 //! Where do two bolted plates stay in contact, and under what pressure? boltzone rebuilds the
 //! system of Gould & Mikic, *Areas of contact and pressure distribution in bolted joints* (MIT
-//! Engineering Projects Laboratory, Report DSR 71821-68, 1970) and goes beyond it:
+//! Engineering Projects Laboratory, Report DSR 71821-68, 1970) and goes beyond it: the report's finite-element models, an
+//! independent semi-analytic route for each, error estimates on every result, and the rules of
+//! thumb compared with both.
 //!
-//! - [`hankel`]: the semi-analytic infinite-slab solution (Sneddon 1946) of a plate loaded
-//!   symmetrically on both faces, with its own oscillatory quadrature and error estimates; the
-//!   single-plate separation radius R_o of Fernlund's substitution;
-//! - [`fem`]: an axisymmetric finite-element solver (the report's Appendices A and B);
-//! - [`contact`]: the report's two-plate model, unilateral contact found automatically, R_o
-//!   resolved below one element (`boltzone two`);
-//! - [`material`], [`load`], [`joint`]: the input types, validated with typed errors ([`error`]);
-//! - [`reference`]: the report's Tables 1 and 2 and the Chapter V table, as data.
-//! - [`compare`]: single- vs two-plate R_o and the rules of thumb: Tables 1 and 2 recomputed,
-//!   the design map; [`plot`]: SVG/PNG figures.
-//! - [`value`]: the one value-with-error type ([`Value`]: value, error, converged) of every result.
-//! - [`rules`]: the 45° cone of Rötscher, the VDI 2230 deformation cone and other cone rules.
+//! ## Layers, top to bottom
+//!
+//! A module imports only modules of the layers below it, and siblings on one layer do not
+//! import each other: the import graph has no circles and no upward arrow. Each folder's
+//! `mod.rs` opens with what the folder computes and lists its files.
+//!
+//! 1. the `boltzone` command (`src/cli/`, `src/main.rs`): one module per subcommand, no
+//!    numerics;
+//! 2. [`compare`]: single- vs two-plate R_o and the rules of thumb: Tables 1 and 2 recomputed,
+//!    the design map;
+//! 3. [`contact`]: the report's two-plate model on the finite elements, unilateral contact
+//!    found automatically, R_o resolved below one element (`boltzone two`);
+//! 4. [`hankel`] | [`fem`]: the semi-analytic slab solutions (the slab, `hankel::hole`, the
+//!    receding contact `hankel::receding`) | the axisymmetric finite elements (the report's
+//!    Appendices A and B, the single plate);
+//! 5. [`joint`]: the plates and the joint;
+//! 6. [`material`], [`load`], [`rules`] (the 45° cone of Rötscher, the VDI 2230 cone and other
+//!    cone rules), [`plot`] (SVG/PNG figures);
+//! 7. [`numerics`] (quadrature, roots, special functions, interpolation, convergence
+//!    estimates), [`error`] (typed input errors), [`reference`](mod@reference) (the report's
+//!    Tables 1 and 2 and the Chapter V table, as data), [`fsutil`] (files written whole or not
+//!    at all), [`value`] (the one value-with-error type [`Value`]: value, error, converged).
 //!
 //! Sign convention throughout: compression negative (σ_z = −p under a face pressure p > 0); z is
 //! measured from the midplane (single plate) or the interface (joint); lengths and stresses in
@@ -34,10 +46,12 @@ pub mod compare;
 pub mod contact;
 pub mod error;
 pub mod fem;
+pub mod fsutil;
 pub mod hankel;
 pub mod joint;
 pub mod load;
 pub mod material;
+pub mod numerics;
 pub mod plot;
 pub mod reference;
 pub mod rules;

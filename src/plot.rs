@@ -1,7 +1,8 @@
 //! Figures as SVG or PNG (by the file's extension) with plotters: curves against one axis with
 //! marked radii ([`CurveFigure`]), and heat maps over a log–log grid with colour bars
-//! ([`HeatMapFigure`]). Files are written to a temporary name beside the target and renamed into
-//! place ([`write_atomic`]), so a reader never sees half a figure.
+//! ([`HeatMapFigure`]). Files are written whole or not at all ([`crate::fsutil`]: a temporary
+//! name beside the target, renamed into place; [`write_atomic`]), so a reader never sees half a
+//! figure.
 //!
 //! PNG text is drawn with the DejaVu Sans font shipped in `assets/` (licence beside it), compiled
 //! in and registered on first use: plotters' `ab_glyph` backend has no system fonts.
@@ -47,25 +48,12 @@ fn pe<E: std::fmt::Display>(e: E) -> PlotError {
     PlotError::Draw(e.to_string())
 }
 
-/// Writes `bytes` to a temporary file beside `path`, then renames it to `path`.
+/// Writes `bytes` to `path` atomically ([`crate::fsutil::write_atomic`]).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
-    let tmp = temp_path(path);
-    let io = |source| PlotError::Io {
+    crate::fsutil::write_atomic(path, bytes).map_err(|source| PlotError::Io {
         path: path.to_path_buf(),
         source,
-    };
-    let written = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path));
-    if written.is_err() {
-        let _ = std::fs::remove_file(&tmp); // nothing half-written stays behind
-    }
-    written.map_err(io)
-}
-
-/// `dir/.name.tmp<pid>.ext`: same directory (rename stays on one file system), same extension.
-fn temp_path(path: &Path) -> PathBuf {
-    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("out");
-    let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("tmp");
-    path.with_file_name(format!(".{name}.tmp{}.{ext}", std::process::id()))
+    })
 }
 
 fn register_font() {
@@ -98,21 +86,16 @@ pub fn write_figure<F: Figure>(fig: &F, path: &Path, size: (u32, u32)) -> Result
             write_atomic(path, s.as_bytes())
         }
         Some("png") => {
-            let tmp = temp_path(path);
-            let drawn = (|| {
-                let root = BitMapBackend::new(&tmp, size).into_drawing_area();
+            let io = |source| PlotError::Io {
+                path: path.to_path_buf(),
+                source,
+            };
+            let draw = |tmp: &Path| {
+                let root = BitMapBackend::new(tmp, size).into_drawing_area();
                 fig.draw(&root)?;
-                root.present().map_err(pe)?;
-                drop(root);
-                std::fs::rename(&tmp, path).map_err(|source| PlotError::Io {
-                    path: path.to_path_buf(),
-                    source,
-                })
-            })();
-            if drawn.is_err() {
-                let _ = std::fs::remove_file(&tmp); // nothing half-written stays behind
-            }
-            drawn
+                root.present().map_err(pe)
+            };
+            crate::fsutil::replace_with(path, draw, io)
         }
         _ => Err(PlotError::Format(path.to_path_buf())),
     }
@@ -228,7 +211,7 @@ impl Figure for CurveFigure {
 pub struct HeatPanel {
     /// Caption.
     pub title: String,
-    /// Values, z[i·len(y) + j] at (x[i], y[j]).
+    /// Values, z\[i·len(y) + j\] at (x\[i\], y\[j\]).
     pub z: Vec<f64>,
 }
 

@@ -2,14 +2,14 @@
 //! hole, loaded on both faces by a uniform pressure over A..B) and its separation radius R_o.
 //! `--method fem` runs [`boltzone::fem::single::single_plate_r_o`] (refinement levels halving the
 //! elements at A, B and the previous R_o; error estimate max(|d₃|, |d₂|/4, |d₁|/16) of the last
-//! level changes, [`boltzone::fem::single::level_estimate`]); `--method hankel` runs
+//! level changes, [`boltzone::numerics::convergence::level_estimate`]); `--method hankel` runs
 //! [`boltzone::hankel::hole::single_plate_separation`] (infinite slab + hole correction, and a
 //! rim correction when `--c` is given).
 
 use super::args::{Element, Geometry};
 use super::check;
 use super::exit::{num, sig, Status};
-use boltzone::fem::single::{solve, Loading, SingleParams};
+use boltzone::fem::single::{solve, FaceCondition, SingleParams};
 use boltzone::fem::ElementKind;
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
 use boltzone::hankel::SeparationParams;
@@ -125,8 +125,8 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     }
     let kind = ElementKind::from(args.element);
     let loading = match args.nut {
-        Nut::Pressure => Loading::Pressure,
-        Nut::Rigid => Loading::UniformDisplacement,
+        Nut::Pressure => FaceCondition::Pressure,
+        Nut::Rigid => FaceCondition::UniformDisplacement,
     };
     let params = SingleParams {
         loading,

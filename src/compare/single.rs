@@ -2,7 +2,7 @@
 //!
 //! - [`single_fem`]: the FE model of [`crate::fem::single`] (Q9, half plate with a midplane
 //!   roller, finite rim C) on its refinement levels (element size halved at A, B and the
-//!   previous R_o) until the error estimate of [`crate::fem::single::level_estimate`] (the
+//!   previous R_o) until the error estimate of [`crate::numerics::convergence::level_estimate`] (the
 //!   largest of the last three changes shrunk at rate 2 per level; no extrapolation) falls
 //!   below the tolerance; at least three levels. [`crate::fem::single::single_plate_r_o`] runs the
 //!   same levels and estimate with a fixed number of levels.

@@ -31,6 +31,11 @@
 //! inside out without tension ([`LcpInfo::prefix`]). Both are bounded by
 //! [`LcpParams::max_iterations`]; beyond it the solver returns [`ContactError::NotConverged`].
 //!
+//! **Accuracy.** Against brute-force enumeration of active sets on random problems, the KKT
+//! conditions and projected Gauss–Seidel (`tests/contact/lcp.rs`). **Cost.** A few dense
+//! solves of the window's size per level; its share of a two-plate run is printed by
+//! `cargo bench --bench contact`.
+//!
 //! ```
 //! use boltzone::contact::{solve_lcp, Lcp, LcpParams};
 //! use nalgebra::{DMatrix, DVector};
@@ -42,7 +47,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::ContactError;
+use super::error::ContactError;
 use crate::error::InputError;
 use nalgebra::{DMatrix, DVector};
 use std::collections::HashSet;

@@ -42,9 +42,9 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use super::error::ContactError;
 use super::lcp::{solve_lcp, Lcp, LcpInfo, LcpParams};
 use super::tie::Ties;
-use super::ContactError;
 use crate::fem::{
     assemble, nested_dissection, Component, DofMap, Factorization, Loads, Mesh, Pattern,
     SolveParams, Supports,

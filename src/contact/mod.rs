@@ -9,10 +9,19 @@
 //!   with a Murty fallback; [`pgs`]: projected Gauss–Seidel as an independent check;
 //! - [`separation`]: R_o finer than one element from the √(R_o − r) pressure and the
 //!   (r − R_o)^{3/2} gap of a smooth separation;
+//! - [`params`]: the model's input (interface model, loading, edge support, study knobs);
 //! - [`two_plate`]: the model (symmetric pair on a rigid plane, unequal or dissimilar pairs
 //!   welded or frictionless, the report's load variants), level after level of a mesh refined at
 //!   R_o; [`level`]: one mesh level on [`crate::fem`] (one factorization, a Schur complement on
 //!   the interface window, the LCP); [`tie`]: tied unknowns of closed pairs.
+//!
+//! The semi-analytic check of the symmetric case is [`crate::hankel::receding`].
+//!
+//! **Accuracy.** `tests/contact/`: the LCP solver against brute-force enumeration of active
+//! sets, projected Gauss–Seidel and the KKT conditions (`lcp.rs`); the R_o estimators on
+//! synthetic data with a known R_o (`separation.rs`); the model's equilibrium,
+//! complementarity, observed order and error estimate (`two_plate.rs`); the semi-analytic
+//! receding contact (`receding_vs_fe.rs`). **Cost.** `cargo bench --bench contact`.
 //!
 //! ```
 //! use boltzone::contact::{solve_lcp, Lcp, LcpParams};
@@ -25,6 +34,7 @@
 mod error;
 pub mod lcp;
 pub mod level;
+pub mod params;
 pub mod pgs;
 mod refine;
 pub mod separation;

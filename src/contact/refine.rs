@@ -19,14 +19,14 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use super::error::ContactError;
 use super::level::{solve_level, LevelSetup, LevelSolution, Model};
-use super::two_plate::{EdgeSupport, Loading, TwoPlateParams};
-use super::ContactError;
+use super::params::{EdgeSupport, Loading, TwoPlateParams};
 use crate::fem::{Component, ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
 use crate::joint::Joint;
 
 /// Radii and thicknesses of the joint as meshed.
-pub(crate) struct Geometry {
+pub(crate) struct MeshLayout {
     pub a: f64,
     pub b: f64,
     pub c: f64,
@@ -38,12 +38,12 @@ pub(crate) struct Geometry {
     pub welded: bool,
 }
 
-/// The previous mesh level: its solution, its R_o and its element size at R_o.
-#[derive(Debug, Clone)]
+/// What a level keeps of the one before it: its solution, its R_o estimate and element size.
+#[derive(Clone)]
 pub(crate) struct PreviousLevel {
-    /// The level's solution.
+    /// The previous level's solution.
     pub solution: LevelSolution,
-    /// Its R_o.
+    /// Its estimate of R_o.
     pub r_o: f64,
     /// Its element size at R_o.
     pub h: f64,
@@ -57,7 +57,7 @@ const H_MAX_OVER_D: f64 = 50.0;
 /// interface and the outer faces; materials by plate.
 pub(crate) fn mesh(
     joint: &Joint,
-    g: &Geometry,
+    g: &MeshLayout,
     kind: ElementKind,
     h: f64,
     r_est: Option<f64>,
@@ -111,7 +111,7 @@ pub(crate) fn mesh(
 pub(crate) fn solve_adaptive(
     model: &Model,
     joint: &Joint,
-    g: &Geometry,
+    g: &MeshLayout,
     params: &TwoPlateParams,
     prev: Option<&PreviousLevel>,
 ) -> Result<(LevelSolution, usize, usize), ContactError> {
@@ -203,8 +203,12 @@ pub(crate) fn solve_adaptive(
 /// Ties and window from the previous level: points closed there and farther than three old
 /// elements from every contact boundary are tied; the rest up to R_o + 6 old elements are unknown.
 fn refined_plan(r: &[f64], prev: &PreviousLevel) -> Option<(Vec<usize>, Vec<usize>)> {
-    let (s, r_o) = (&prev.solution, &prev.r_o);
-    let margin = 3.0 * prev.h;
+    let PreviousLevel {
+        solution: s,
+        r_o,
+        h,
+    } = prev;
+    let margin = 3.0 * h;
     let mut bounds: Vec<f64> = s
         .closed
         .windows(2)
@@ -254,7 +258,7 @@ fn centroid(load: &crate::load::FaceLoad) -> f64 {
 fn boundary(
     model: &Model,
     joint: &Joint,
-    g: &Geometry,
+    g: &MeshLayout,
     params: &TwoPlateParams,
 ) -> Result<(Supports, Loads), ContactError> {
     let mesh = &model.mesh;

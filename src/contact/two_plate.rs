@@ -19,14 +19,19 @@
 //! handful of points near the edge stay unknown. Levels continue (at least three) until the
 //! error estimate of R_o falls below the tolerance: the last level's value, not extrapolated,
 //! with the error max(|d₃|, |d₂|/4, |d₁|/16) of the last three changes
-//! ([`crate::fem::single::level_estimate`], shared with the single-plate model). A Richardson
-//! step with the rate capped at 2 (the estimate used before) was up to 1.5 times optimistic over
-//! the design map (68 geometries, A/D ∈ [0.2, 5], B/A ∈ [1.1, 5], C = 15.4 A, at tolerance 1e-3
-//! against runs converged to 3e-6); with this estimate no actual error exceeded it there at
-//! tolerances from 2e-3 to 1e-4 (at most 0.57 of it; `examples/17_map_speed.rs` repeats the
-//! check point by point).
+//! ([`crate::numerics::convergence::level_estimate`], shared with the single-plate model).
 //! Welded dissimilar plates may have no sign-consistent contact edge; the level record then says
 //! that the report's rule decided ([`TwoPlateLevel::report_rule`]).
+//!
+//! **Accuracy.** Over the design map (68 geometries, A/D ∈ [0.2, 5], B/A ∈ [1.1, 5],
+//! C = 15.4 A) no actual error exceeded the estimate at tolerances from 2e-3 to 1e-4 (at most
+//! 0.57 of it, against runs converged to 3e-6): example 13 repeats the check point by point,
+//! `tests/contact/two_plate.rs` (`error_estimate_measures_the_actual_error`) on two
+//! geometries; R_o converges at order 2 in the element size at R_o (same file,
+//! `r_o_converges_at_the_observed_rate`); the semi-analytic receding contact agrees within both
+//! estimates (`tests/contact/receding_vs_fe.rs`).
+//!
+//! **Cost.** `cargo bench --bench contact`: one Table 1 geometry to 0.05 %, and all of Table 1.
 //!
 //! Units: any consistent set (inches, psi). Forces are totals around the circle; p > 0 is
 //! compression; g > 0 an open gap; the nut deflection is negative toward the interface.
@@ -42,100 +47,16 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::lcp::LcpParams;
+use super::error::ContactError;
 use super::level::LevelSolution;
-use super::refine::{mesh, solve_adaptive, Geometry, PreviousLevel};
-use super::separation::{estimate, fitted_rate, NodalInterface, SeparationEstimate};
-use super::ContactError;
+pub use super::params::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
+use super::refine::{mesh, solve_adaptive, MeshLayout, PreviousLevel};
+use super::separation::{estimate, NodalInterface, SeparationEstimate};
 use crate::error::InputError;
-use crate::fem::single::level_estimate;
-use crate::fem::ElementKind;
 use crate::joint::{Joint, OuterRadius, Plate};
+use crate::numerics::convergence::{fitted_rate, level_estimate};
 use serde::Serialize;
 use std::time::Instant;
-
-/// How the two plates interact inside the contact zone.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-pub enum InterfaceModel {
-    /// u and w tied where in contact (the report's model).
-    Welded,
-    /// Only w tied, unilaterally; no shear.
-    Frictionless,
-}
-
-/// What presses the plates together.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub enum Loading {
-    /// The joint's face pressure on both outer faces over A..B.
-    Pressure,
-    /// A uniform axial displacement δ of each outer face over A..B toward the interface
-    /// (report Fig. 21: 50 µin under each nut); u is free there.
-    NutDisplacement(f64),
-}
-
-/// Support of the outer edge r = C.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-pub enum EdgeSupport {
-    /// Traction-free (the report's standard case).
-    Free,
-    /// u = w = 0 on r = C for both plates (report Fig. 20(c)).
-    Fixed,
-}
-
-/// Knobs of [`solve`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct TwoPlateParams {
-    /// Element (default Q9). Q4, Q4Bbar and the report's Cst4 work as well and are about four
-    /// times cheaper per level, but their R_o sequences are erratic: over Table 1 and Table 2
-    /// case 5 at the default tolerance their actual error reached 1.3–1.6e-3 (the tolerance is
-    /// 5e-4) and exceeded the error estimate by up to 150 times, against at most 2.2e-4 and
-    /// 1.2 times with Q9. Trust `r_o_error` with Q9 only.
-    pub element: ElementKind,
-    /// Interface model for unequal or dissimilar plates (default frictionless); equal plates of
-    /// one material use the exact symmetric model whatever this says.
-    pub interface: InterfaceModel,
-    /// Load (default: the joint's face pressure).
-    pub loading: Loading,
-    /// Outer edge (default free).
-    pub edge: EdgeSupport,
-    /// Wanted relative error of R_o (default 5e-4 = 0.05 %).
-    pub tolerance: f64,
-    /// Fewest mesh levels (default 3, so that a convergence rate is observed).
-    pub min_levels: usize,
-    /// Most mesh levels (default 9).
-    pub max_levels: usize,
-    /// Element size at R_o, A and B on the first level, as a fraction of the thinner plate's
-    /// D (default 0.25); halved on each further level. (A load narrower than that is one
-    /// element wide on the first level: A and B are always nodes. Over the design map, first
-    /// sizes of 0.125, 0.25 and 0.5 D, and the earlier min(0.25 D, B − A), all met the
-    /// tolerance; 0.25 D was the cheapest.)
-    pub coarse: f64,
-    /// The first level's LCP window reaches from A to B + `window`·D (thickest plate; default
-    /// 3); it doubles while points beyond it would penetrate.
-    pub window: f64,
-    /// Mesh both plates even for a symmetric joint (default false; for cross-checks).
-    pub both_plates: bool,
-    /// LCP knobs.
-    pub lcp: LcpParams,
-}
-
-impl Default for TwoPlateParams {
-    fn default() -> Self {
-        Self {
-            element: ElementKind::Q9,
-            interface: InterfaceModel::Frictionless,
-            loading: Loading::Pressure,
-            edge: EdgeSupport::Free,
-            tolerance: 5e-4,
-            min_levels: 3,
-            max_levels: 9,
-            coarse: 0.25,
-            window: 3.0,
-            both_plates: false,
-            lcp: LcpParams::default(),
-        }
-    }
-}
 
 /// One mesh level of the study.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -192,7 +113,7 @@ pub struct TwoPlateInfo {
 pub struct TwoPlateSolution {
     /// Separation radius.
     pub r_o: f64,
-    /// Its estimated absolute error ([`crate::fem::single::level_estimate`] of the levels).
+    /// Its estimated absolute error ([`crate::numerics::convergence::level_estimate`] of the levels).
     pub r_o_error: f64,
     /// Whether `r_o_error` met the tolerance (relative to R_o).
     pub converged: bool,
@@ -325,7 +246,7 @@ struct Level {
 /// Solves the level of element size `h` at R_o, A and B on the plates cut at `g.c`.
 fn solve_level_at(
     joint: &Joint,
-    g: &Geometry,
+    g: &MeshLayout,
     params: &TwoPlateParams,
     h: f64,
     prev: Option<&PreviousLevel>,
@@ -374,7 +295,7 @@ fn solve_level_at(
 /// [`C_MAX_OVER_D`]·D; returns (C₁, its error), or (C, 0) when the plate fits whole.
 fn truncation(
     joint: &Joint,
-    g: &Geometry,
+    g: &MeshLayout,
     params: &TwoPlateParams,
     c: f64,
     h0: f64,
@@ -388,7 +309,7 @@ fn truncation(
     // R_o on the plate cut at c, meshed as if cut at `inner` up to there (the second level's
     // element size, so that the difference is not lost in the first level's error).
     let at = |c: f64, inner: Option<f64>| -> Result<f64, ContactError> {
-        let g = Geometry {
+        let g = MeshLayout {
             c,
             inner_cut: inner,
             ..*g
@@ -421,7 +342,7 @@ fn solve_unit(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution
         OuterRadius::Finite(c) => c,
         OuterRadius::Infinite => f64::INFINITY,
     };
-    let mut g = Geometry {
+    let mut g = MeshLayout {
         a,
         b,
         c,

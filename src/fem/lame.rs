@@ -8,6 +8,10 @@
 //! the relative L2 error of the displacement, ‖u_h − u‖ / ‖u‖ with ‖v‖² = ∫ |v|² 2πr dV,
 //! evaluated at the elements' quadrature points.
 //!
+//! **Accuracy.** The observed orders are 2 (Cst4, Q4, Q4 B-bar) and 3 (Q9) at ν = 0.3, and
+//! B-bar and Q9 do not lock at ν = 0.499 (`tests/fem/lame.rs`, example 02).
+//! **Cost.** One assembly and factorization per mesh (example 02 to 64 elements).
+//!
 //! ```
 //! use boltzone::fem::lame::{lame_error, LameCase};
 //! use boltzone::fem::ElementKind;
@@ -75,17 +79,4 @@ pub fn lame_error(case: &LameCase, kind: ElementKind, n: usize) -> Result<f64, F
         den += p.weight * ue * ue;
     }
     Ok((num / den).sqrt())
-}
-
-/// Least-squares slope of log(err) against log(n): the observed order is −slope.
-pub fn observed_order(ns: &[usize], errs: &[f64]) -> f64 {
-    let xs: Vec<f64> = ns.iter().map(|&n| (n as f64).ln()).collect();
-    let ys: Vec<f64> = errs.iter().map(|e| e.ln()).collect();
-    let (mx, my) = (
-        xs.iter().sum::<f64>() / xs.len() as f64,
-        ys.iter().sum::<f64>() / ys.len() as f64,
-    );
-    let sxy: f64 = xs.iter().zip(&ys).map(|(x, y)| (x - mx) * (y - my)).sum();
-    let sxx: f64 = xs.iter().map(|x| (x - mx).powi(2)).sum();
-    -sxy / sxx
 }

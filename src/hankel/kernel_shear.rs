@@ -30,10 +30,15 @@
 //! **Overflow-free form.** As in [`super::kernel`]: every kernel is 4e^(s−t)·(polynomial in the
 //! scaled S, C, s, t)/Q with Q = e^(−2t)·2Δ, so nothing overflows for any t and 0 ≤ s ≤ t.
 //!
-//! Checked in `tests/hankel_shear_kernels.rs`: face conditions, equilibrium and Hooke's law
+//! Checked in `tests/hankel/shear_kernels.rs`: face conditions, equilibrium and Hooke's law
 //! (stresses from the displacements) by finite differences at fixed ξ, the half-space limits,
 //! and an exact-rational solution of the two face conditions (sympy,
 //! `tests/data/shear_kernels.py`).
+//!
+//! **Accuracy.** Against the symbolic derivation (`tests/hankel/shear_kernels.rs`,
+//! `kernels_match_the_symbolic_derivation`), the face remainders and half-space limits, and
+//! equilibrium and Hooke's law by differences. **Cost.** Shares [`super::kernel::KernelNode`]
+//! and [`super::kernel::KernelHeight`] with the pressure kernels: a few products per height.
 //!
 //! ```
 //! use boltzone::hankel::kernel_shear::ShearKernels;

@@ -18,6 +18,10 @@
 //! coefficients as the error estimate, so a curve of 1000 radii costs a few dozen rule
 //! evaluations per panel.
 //!
+//! **Accuracy.** The shared rule and the curve agree with per-point quadrature within their
+//! estimates (`tests/hankel/slab.rs`, `fast_midplane_rule_and_curve_match_direct_quadrature`).
+//! **Cost.** `cargo bench --bench hankel` (the 1000-radius curve to 1e-10); example 01.
+//!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{Slab, MidplaneRule}};
 //! let slab = Slab::new(0.1, Material::unit(0.3)?, FaceLoad::uniform(0.1, 0.31, 1.0)?)?;
@@ -30,9 +34,9 @@
 
 use super::field::Slab;
 use super::kernel::midplane;
-use super::quadrature::{gauss_legendre, Estimate};
 use super::transform::LoadTransform;
 use crate::error::{positive, InputError};
+use crate::numerics::quadrature::{gauss_legendre, Estimate};
 use std::f64::consts::PI;
 
 /// Largest node count a [`MidplaneRule`] may use (thin slabs with (r_max + B)/D beyond a few

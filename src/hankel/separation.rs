@@ -12,6 +12,11 @@
 //! so the error estimate is the final bracket half-width plus the σ_z error divided by the
 //! slope at the root.
 //!
+//! **Accuracy.** R_o is the first upward zero of directly integrated σ_z
+//! (`tests/hankel/separation.rs`, `r_o_is_the_first_upward_zero_of_direct_midplane_stress`);
+//! the achieved error is below the estimate for tolerances 1e-4 … 1e-12 (example 01).
+//! **Cost.** `cargo bench --bench hankel` (R_o to 1e-10); example 01 (time against error).
+//!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{Slab, SeparationParams}};
 //! let slab = Slab::new(0.1, Material::unit(0.3)?, FaceLoad::uniform(0.1, 0.31, 1.0)?)?;
@@ -23,8 +28,8 @@
 
 use super::field::Slab;
 use super::midplane::Midplane;
-use super::root::brent;
 use crate::error::{positive, InputError};
+use crate::numerics::root::first_upward_root;
 use std::time::Instant;
 
 /// Knobs of the R_o search.
@@ -129,30 +134,24 @@ impl Slab {
             evaluations += 1;
             sign * rule.eval(r).value
         };
-        let h = params.step * d;
-        let (mut lo, mut f_lo) = (b, f(b));
-        if f_lo > 0.0 {
+        let f_b = f(b);
+        if f_b > 0.0 {
             // the contact would end inside the load: not the situation R_o describes
             return Err(SeparationError::TensileAtLoadEdge {
-                sigma_z: sign * f_lo,
+                sigma_z: sign * f_b,
             });
         }
-        let mut bracket = None;
-        let mut k = 1;
-        while lo < r_end {
-            let hi = (b + k as f64 * h).min(r_end);
-            let f_hi = f(hi);
-            if f_lo <= 0.0 && f_hi > 0.0 {
-                bracket = Some((lo, f_lo, hi, f_hi));
-                break;
-            }
-            (lo, f_lo) = (hi, f_hi);
-            k += 1;
-        }
-        let (a, fa, c, fc) = bracket.ok_or(SeparationError::NotFound { searched_to: r_end })?;
         let mut g = |x: f64| Ok::<f64, std::convert::Infallible>(f(x));
         let tol = params.rel_tol * b * 0.25;
-        let Ok(root) = brent(&mut g, a, fa, c, fc, tol, params.max_iterations);
+        let Ok(root) = first_upward_root(
+            &mut g,
+            (b, f_b),
+            params.step * d,
+            r_end,
+            tol,
+            params.max_iterations,
+        );
+        let root = root.ok_or(SeparationError::NotFound { searched_to: r_end })?;
         // slope by a central difference on the σ_z scale of the bracket
         let dr = (1e-4 * d).max(1e-6 * root.x);
         let slope = (f(root.x + dr) - f(root.x - dr)) / (2.0 * dr);

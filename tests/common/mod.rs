@@ -1,5 +1,5 @@
-//! Helpers shared by the integration tests (each test file includes this with `mod common;`
-//! and uses what it needs).
+//! Helpers shared by the integration-test crates (a crate's `main.rs` includes this with
+//! `#[path = "../common/mod.rs"] mod common;`, its modules use `crate::common`).
 #![allow(dead_code)]
 
 use boltzone::hankel::Slab;

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Reference values of the exponentially scaled modified Bessel functions of the first kind of
-complex argument, e^-z I0(z) and e^-z I1(z), for tests/hole_bessel_k.rs.
+complex argument, e^-z I0(z) and e^-z I1(z), for tests/numerics/bessel_ik.rs.
 
 Source: mpmath (arbitrary precision, 40 significant digits), independent of boltzone's
 power-series / asymptotic-series implementation. Run: python3 hole_bessel_i.py > hole_bessel_i.csv

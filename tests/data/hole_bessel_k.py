@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Reference values of the exponentially scaled modified Bessel functions of complex argument,
-e^z K0(z) and e^z K1(z), for tests/hole_bessel_k.rs.
+e^z K0(z) and e^z K1(z), for tests/numerics/bessel_ik.rs.
 
 Source: mpmath (arbitrary precision, 40 significant digits), independent of boltzone's
 trapezoid-rule / asymptotic-series implementation. Run: python3 hole_bessel_k.py > hole_bessel_k.csv

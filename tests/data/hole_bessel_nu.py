@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Reference values of the normalised Bessel function of complex order
 Lambda_nu(x) = Gamma(nu+1) (x/2)^(-nu) J_nu(x) = 0F1(; nu+1; -x^2/4) and of ln Gamma(z), for
-tests/hole_corner.rs.
+tests/hankel/hole_corner.rs.
 
 Source: mpmath (hyp0f1, besselj, loggamma at 40 digits), independent of boltzone's series /
 Miller / Hankel-expansion implementation. The orders are the corner exponents lambda_1, lambda_2,

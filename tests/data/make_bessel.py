@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference values of J0, J1 and Ji0(x) = integral of J0 over [0, x] for tests/hankel_bessel.rs.
+"""Reference values of J0, J1 and Ji0(x) = integral of J0 over [0, x] for tests/numerics/bessel_j.rs.
 
 Independent high-precision source: mpmath (arbitrary precision, 50 significant digits here).
 Points: 400 log-spaced x in [1e-6, 1e4] plus the first 40 zeros of J0 and J1 (where only the

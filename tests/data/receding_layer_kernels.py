@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference values of the layer kernels M_q, M_p of src/hankel/layer.rs, computed
+"""Reference values of the layer kernels M_q, M_p of src/hankel/receding/layer.rs, computed
 independently of that module's symmetric/antisymmetric split: the general four-constant
 Love-function solution of a layer 0 <= z <= D (Timoshenko & Goodier, sec. 130-131),
     phi = (A + B xi z) e^(-xi z) + (C + E xi (D - z)) e^(-xi (D - z)),

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Reference values of the slab's shear-load kernels (boltzone::hankel::kernel_shear) for
-tests/hankel_shear_kernels.rs, derived independently of the hand derivation in the module docs.
+tests/hankel/shear_kernels.rs, derived independently of the hand derivation in the module docs.
 
 Love's strain function phi = (a sinh(xi z) + b xi z cosh(xi z)) J0(xi r) is differentiated by sympy
 (Love's formulas: sigma_z = d/dz[(2-nu) lap phi - phi_zz], tau_rz = d/dr[(1-nu) lap phi - phi_zz],

@@ -21,7 +21,7 @@
 //! On [0, X] panels no wider than a half-period π/(A + r) of the fastest oscillation and 1.5/D
 //! (the kernels' scale) carry a 12-point Gauss–Legendre rule (error ≈ 1e-20 of the amplitude;
 //! see `NODES_PER_PANEL` in [`super::corner`]). The transforms Λ_λ(ξA), Λ_(λ+1)(ξA) and J₀, J₁ are shared by
-//! every height and component at a node. Checked in `tests/hole_corner.rs` (E_p against mpmath,
+//! every height and component at a node. Checked in `tests/hankel/hole_corner.rs` (E_p against mpmath,
 //! face conditions by Hankel inversion, the closed-form face value, equilibrium).
 //!
 //! ```
@@ -36,7 +36,7 @@
 //! assert!((e[1] - expint(2.0 * one, one)).norm() < 1e-14);
 //! ```
 
-use super::bessel_nu::{hankel_coefficients, ln_gamma};
+use crate::numerics::bessel_nu::{hankel_coefficients, ln_gamma};
 use num_complex::Complex64;
 use std::f64::consts::PI;
 

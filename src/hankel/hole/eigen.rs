@@ -33,6 +33,10 @@
 //! Stresses are dimensionless multiples of the mode's (free) amplitude, displacements carry
 //! 1/(2G); compression negative.
 //!
+//! **Accuracy.** `tests/hankel/hole_eigen.rs`: the roots solve the symmetric Fadle equation,
+//! free faces, equilibrium and Hooke's law by differences, each mode self-equilibrated in z,
+//! the midplane bound. **Cost.** One complex K₀, K₁ pair per mode and point.
+//!
 //! ```
 //! use boltzone::hankel::hole::eigen::{symmetric_roots, Mode};
 //! let x = symmetric_roots(1)[0];
@@ -42,8 +46,8 @@
 //! assert!(f.sigma_z.norm() < 1e-13 && f.tau_rz.norm() < 1e-13);
 //! ```
 
-use super::bessel_i::i01_scaled;
-use super::bessel_k::k01_scaled;
+use crate::numerics::bessel_i::i01_scaled;
+use crate::numerics::bessel_k::k01_scaled;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 
@@ -178,7 +182,7 @@ impl Mode {
     /// An upper bound of |[`Self::midplane_sigma_z`]| at r ≥ A for a decaying mode:
     /// 2|α − (1 − 2ν)|e^(−Re λ (r − A)) (the scaled K₀(λr)/K₁(λA) is at most 1 in size —
     /// Hankel's expansions, √(A/r)(1 + O(1/λA)), and K₀ < K₁ at small λA — the 2 a margin;
-    /// checked in `tests/hole_eigen.rs`), ∞ for a growing mode. Sums skip modes whose bound
+    /// checked in `tests/hankel/hole_eigen.rs`), ∞ for a growing mode. Sums skip modes whose bound
     /// times their amplitude is negligible.
     pub fn midplane_bound(&self, r: f64) -> f64 {
         if self.growing {

@@ -25,6 +25,12 @@
 //! on the union of collocation and check heights, max and RMS (trapezoid in θ, the Chebyshev
 //! measure), divided by P.
 //!
+//! **Accuracy.** The residual falls at the corner exponent's rate with modes alone and much
+//! faster with the enrichment; the fitted correction is homogeneous; the hole is free and the
+//! faces loaded between the fitted heights (`tests/hankel/hole_correction.rs`). **Cost.** A
+//! Householder QR of (2N + 4·corner terms) columns per N (`cargo bench --bench hole`, fit at
+//! N = 16).
+//!
 //! ```
 //! use boltzone::hankel::hole::fit::heights;
 //! let z = heights(0.1, 8);

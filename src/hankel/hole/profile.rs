@@ -33,6 +33,11 @@
 //!
 //! Units: the load's pressure units; compression negative.
 //!
+//! **Accuracy.** The profile matches direct integrals off its grid; its coefficients fall at
+//! the predicted rate of the nearest load edge; R_o through the profile equals the direct
+//! route (`tests/hankel/hole_profile.rs`). **Cost.** ~30 % of a hole run, 1.1–3.0 ms on Table 1
+//! (`cargo bench --bench hole`, the profile alone).
+//!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{QuadParams, Slab}};
 //! use boltzone::hankel::hole::profile::TractionProfile;
@@ -47,11 +52,11 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};
 use super::traction::{hole_tractions, HoleTraction};
 use crate::hankel::field::Slab;
-use crate::hankel::quadrature::QuadParams;
 use crate::load::FaceLoad;
+use crate::numerics::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};
+use crate::numerics::quadrature::QuadParams;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 

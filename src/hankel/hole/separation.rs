@@ -1,7 +1,7 @@
 //! R_o of the single plate with a hole: the first radius beyond B where the midplane σ_z of
 //! slab (extended load) + hole correction turns tensile. An outward scan from B in steps of
 //! `step`·D finds the first compressive→tensile sign change; Brent's method
-//! ([`crate::hankel::root::brent`]) narrows it. The midplane σ_z is a
+//! ([`crate::numerics::root::brent`]) narrows it. The midplane σ_z is a
 //! [`MidplaneRule`] of the slab (one node set for all radii) plus the modes' closed forms.
 //!
 //! The slab's part does not change as N doubles, and the root stays in the same scan interval
@@ -17,17 +17,21 @@
 //! error joins R_o's estimate), each on a node set sized for the radii it serves.
 //!
 //! N doubles until R_o's whole error estimate is below `r_o_tolerance`·R_o (see [`super`] for
-//! the hole's share of it).
+//! the hole's share of it). The scan is [`crate::numerics::root::first_upward_crossing`].
+//!
+//! **Accuracy.** The estimate bounds the actual error beyond Table 1
+//! (`tests/hankel/hole_correction.rs`, `r_o_estimate_bounds_the_actual_error_beyond_table_1`)
+//! and on Table 1 (example 14). **Cost.** ~15 % of a hole run (`cargo bench --bench hole`).
 
-use super::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};
 use super::corner::CornerMidplaneRule;
 use super::plate::dot;
 use super::{HoleInfo, HoleParams, HolePlate};
 use crate::error::positive;
 use crate::hankel::midplane::MidplaneRule;
-use crate::hankel::root::{brent, Root};
 use crate::hankel::separation::{SeparationError, SeparationInfo, SeparationParams};
 use crate::joint::{OuterRadius, SinglePlate};
+use crate::numerics::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};
+use crate::numerics::root::{brent, first_upward_crossing, scan_steps, Root};
 use std::time::Instant;
 
 /// R_o of `plate` with its hole made traction-free (see [`super`]); the hole's fit is
@@ -104,9 +108,13 @@ pub fn single_plate_separation(
             let value = slab + holed.modes_midplane(r) + dot(&weights, corner);
             (r, sign * value)
         };
-        let bracket = first_upward_crossing(&mut scan, r_end)?;
+        let Ok(crossing) = first_upward_crossing(
+            |k| Ok::<_, std::convert::Infallible>(scan(k)),
+            scan_steps(b, r_end, h),
+        );
+        let crossing = crossing.ok_or(SeparationError::NotFound { searched_to: r_end })?;
         let tol = rel_tol * b * 0.25;
-        let ((a, fa), (c, fc)) = bracket;
+        let ((a, fa), (c, fc)) = (crossing.before, crossing.after);
         if local.as_ref().is_none_or(|l| l.0.lo != a || l.0.hi != c) {
             let slab = LocalMidplane::new(|r| vec![rule.eval(r).value], a, c, |_, _| sigma_tol);
             // the corner fields to ~1e-13 of their size (the rounding of their sums)
@@ -151,7 +159,7 @@ pub fn single_plate_separation(
         // on what is measured: the last two changes (the last at most half the one before),
         // or after one doubling the residual (met, or at least halved). Without it, the
         // larger of the last two changes (or of the change and the bound). (With the corner
-        // enrichment R_o's error falls 3–300× per doubling on Table 1: example 18.)
+        // enrichment R_o's error falls 3–300× per doubling on Table 1: example 14.)
         let bound = residual_max * p_ref / slope.abs();
         let history = &holed.info().history;
         let hole_error = match changes.len() {
@@ -207,27 +215,6 @@ pub fn single_plate_separation(
 fn corner_basis(holed: &HolePlate, rule: Option<&CornerMidplaneRule>, r: f64) -> Vec<f64> {
     rule.and_then(|q| q.basis(r))
         .unwrap_or_else(|| holed.corner_midplane_basis(r))
-}
-
-/// The first compressive→tensile sign change of the scan `(r_k, f(r_k))`, k = 0, 1, … (r_0 = B,
-/// steps of `step`·D, up to `r_end`): the bracket ((r_{k−1}, f), (r_k, f)).
-#[allow(clippy::type_complexity)]
-fn first_upward_crossing(
-    scan: &mut impl FnMut(usize) -> (f64, f64),
-    r_end: f64,
-) -> Result<((f64, f64), (f64, f64)), SeparationError> {
-    let mut lo = scan(0);
-    for k in 1.. {
-        let hi = scan(k);
-        if lo.1 <= 0.0 && hi.1 > 0.0 {
-            return Ok((lo, hi));
-        }
-        if hi.0 >= r_end {
-            break;
-        }
-        lo = hi;
-    }
-    Err(SeparationError::NotFound { searched_to: r_end })
 }
 
 /// Functions of r on one scan interval [lo, hi] (the slab's midplane σ_z(r, 0), or the corner

@@ -2,7 +2,7 @@
 //! τ_rz(R, z), at many heights at once.
 //!
 //! The same Hankel integrals as [`crate::hankel::Slab::stress`] (kernels of
-//! [`crate::hankel::kernel`], partition–extrapolation of [`crate::hankel::quadrature`]):
+//! [`crate::hankel::kernel`], partition–extrapolation of [`crate::numerics::quadrature`]):
 //!
 //! σ_r = −∫ ξp̄ [K_r J₀(ξR) − K_m J₁(ξR)/(ξR)] dξ,  τ_rz = −∫ ξp̄ K_τ J₁(ξR) dξ,
 //!
@@ -18,7 +18,7 @@
 //! others freeze every panel pays Wynn's ε (window 13, twice with the whole-period check) for
 //! each of them — with the Bessel calls, the two dominant costs (a profile of the quadrature
 //! spent ~45 % in Wynn's ε, ~25 % in Bessel functions, before the ε-table was updated
-//! incrementally, [`crate::hankel::quadrature::WynnWindow`], which cut the profile by ~25 %):
+//! incrementally, [`crate::numerics::quadrature::WynnWindow`], which cut the profile by ~25 %):
 //! so a batch only takes heights within a factor 4 of distance to the face (see
 //! [`hole_tractions`]); that cut the profile's CPU time by 8–17 % against fixed batches of 8. The tolerance applies to the largest value in the
 //! batch.
@@ -29,6 +29,10 @@
 //! of order 10³–10⁴ ξ-nodes, growing roughly like ζ^(−1/2) (the integrand's tail decays only like
 //! e^(−ξζ) and beats at the frequency B − A): which is why [`super::profile`] samples only a few
 //! Chebyshev heights and interpolates.
+//!
+//! **Accuracy.** The batched tractions match the slab solver's per-point integrals
+//! (`tests/hankel/hole_correction.rs`, `batched_hole_tractions_match_the_slab_solver`).
+//! **Cost.** See [`super::profile`].
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{QuadParams, Slab}};
@@ -42,8 +46,8 @@
 //! ```
 
 use crate::hankel::field::Slab;
-use crate::hankel::quadrature::{integrate_oscillatory_vec, QuadParams};
 use crate::hankel::transform::LoadTransform;
+use crate::numerics::quadrature::{integrate_oscillatory_vec, QuadParams};
 
 /// Heights per shared node set.
 pub const BATCH: usize = 8;

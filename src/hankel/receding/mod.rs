@@ -1,0 +1,28 @@
+//! The receding contact of an elastic layer on a frictionless rigid base: the report's
+//! two-plate model (Ch. II.B, two equal plates) solved semi-analytically, an independent check
+//! of the finite-element contact solver ([`crate::contact`]) that shares no FE code.
+//!
+//! - [`layer`]: the layer's Hankel kernels (bottom-face displacement under face pressures);
+//! - `system`: the Fredholm equation of a contact disk r ≤ c, by Nyström's method;
+//! - `search`: the scan and root search for R_o and the check of the unilateral conditions;
+//! - [`contact`]: the solver ([`Layer::receding_contact`]) and its results (derivation,
+//!   accuracy and cost there).
+//!
+//! ```
+//! use boltzone::{FaceLoad, Material};
+//! use boltzone::hankel::receding::{Layer, RecedingParams};
+//! let layer = Layer::new(1.0, Material::unit(0.3)?, FaceLoad::uniform(0.0, 1.0, 1.0)?)?;
+//! let contact = layer.receding_contact(&RecedingParams::default())?;
+//! assert!(contact.r_o > 1.0 && contact.info.error < 1e-8);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+pub mod contact;
+pub mod layer;
+mod search;
+mod system;
+
+pub use contact::{
+    contact_radius, nodes, ContactSolution, Layer, RecedingContact, RecedingError, RecedingInfo,
+    RecedingParams,
+};

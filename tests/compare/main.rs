@@ -1,0 +1,7 @@
+//! Integration tests of `boltzone::compare` and `boltzone::reference`: Tables 1 and 2, the
+//! design map, the report's data, and the `table1`, `table2`, `map` commands.
+
+mod cli;
+mod map;
+mod reference;
+mod tables;

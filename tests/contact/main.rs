@@ -1,0 +1,8 @@
+//! Integration tests of `boltzone::contact`: the LCP solvers, R_o below one element, the
+//! two-plate model, its agreement with the semi-analytic receding contact, and the `two` command.
+
+mod cli;
+mod lcp;
+mod receding_vs_fe;
+mod separation;
+mod two_plate;

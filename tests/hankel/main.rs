@@ -1,0 +1,19 @@
+//! Integration tests of `boltzone::hankel`: the slab (kernels, transform, fields, R_o), the
+//! hole correction (`hole_*`) and the receding contact (`receding_*`), each against closed forms,
+//! independent derivations or a second method; and the `slab` and `single --method hankel`
+//! commands.
+
+mod cli;
+#[path = "../common/mod.rs"]
+mod common;
+mod hole_cli;
+mod hole_corner;
+mod hole_correction;
+mod hole_eigen;
+mod hole_profile;
+mod receding_contact;
+mod receding_kernels;
+mod separation;
+mod shear_kernels;
+mod slab;
+mod transform;
