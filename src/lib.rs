@@ -11,6 +11,7 @@
 //! - [`contact`]: the report's two-plate model, unilateral contact found automatically, R_o
 //!   resolved below one element (`boltzone two`);
 //! - [`material`], [`load`], [`joint`]: the input types, validated with typed errors ([`error`]);
+//! - [`io`]: the 1970 card decks of Appendices B and C, read, run and written.
 //! - [`reference`]: the report's Tables 1 and 2 and the Chapter V table, as data.
 //! - [`compare`]: single- vs two-plate R_o and the rules of thumb: Tables 1 and 2 recomputed,
 //!   the design map; [`plot`]: SVG/PNG figures.
@@ -34,6 +35,7 @@ pub mod contact;
 pub mod error;
 pub mod fem;
 pub mod hankel;
+pub mod io;
 pub mod joint;
 pub mod load;
 pub mod material;
