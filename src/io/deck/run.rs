@@ -89,7 +89,14 @@ pub struct DeckSolution {
 /// Principal stresses of the (r, z) plane and the angle of the larger from r, in degrees.
 /// (The listing's STRESS routine took σ_θ where τ_rz belongs under the root and 57.396 for
 /// 180/π, and printed neither; this is the textbook form.)
+/// A shear below 1e-12 of the normal stresses is taken as zero (the listing zeroed it below
+/// 1e-9 psi), so that rounding does not flip the angle between ±90°.
 pub fn principal(sr: f64, sz: f64, trz: f64) -> ([f64; 2], f64) {
+    let trz = if trz.abs() <= 1e-12 * (sr.abs() + sz.abs()) {
+        0.0
+    } else {
+        trz
+    };
     let (c, b) = (0.5 * (sr + sz), 0.5 * (sr - sz));
     let rad = b.hypot(trz);
     let angle = if b == 0.0 && trz == 0.0 {
