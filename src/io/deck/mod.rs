@@ -95,5 +95,5 @@ pub use error::DeckError;
 pub use model::{Appendix, Code, Deck, DeckElement, DeckMaterial, DeckNode, PressureCard};
 pub use print::{json_deck, report};
 pub use read::{read_decks, read_decks_as};
-pub use run::{run, DeckSolution, ElementResult, NodeResult, RunError};
+pub use run::{run, DeckSolution, ElementResult, NodeResult};
 pub use write::{single_plate_deck, write_deck};

@@ -12,22 +12,6 @@ use serde::Serialize;
 use std::f64::consts::PI;
 use std::time::Instant;
 
-/// Failure of a deck run.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum RunError {
-    /// The deck breaks a rule (names the line and the field).
-    #[error(transparent)]
-    Deck(#[from] DeckError),
-    /// The solver failed (e.g. supports leave a rigid-body motion free).
-    #[error("deck at line {line}: {source}")]
-    Fem {
-        /// Line of the deck's title card.
-        line: usize,
-        /// The solver's error.
-        source: FemError,
-    },
-}
-
 /// A node's displacement as the program printed it: (u_r, u_z), or (u_s, u_n) at a skew node.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct NodeResult {
@@ -157,11 +141,17 @@ pub fn interpolate(table: &[[f64; 4]], t: f64) -> Option<[f64; 4]> {
 
 /// Runs `deck`: assembles the report's element over the deck's mesh, applies its codes, loads,
 /// pressures and temperatures, solves, and recovers the centre stresses.
-pub fn run(deck: &Deck) -> Result<DeckSolution, RunError> {
+///
+/// A solver failure is reported on the deck's title line: a stiffness that is not positive
+/// definite names the nodal codes (the supports leave a rigid-body motion free).
+pub fn run(deck: &Deck) -> Result<DeckSolution, DeckError> {
     let t0 = Instant::now();
-    let fem = |source| RunError::Fem {
-        line: deck.line,
-        source,
+    let fem = |source: FemError| {
+        let field = match source {
+            FemError::NotPositiveDefinite(_) => "nodal point codes (supports)",
+            _ => "deck",
+        };
+        DeckError::new(deck.line, field, &deck.title, &source.to_string())
     };
     let coords: Vec<[f64; 2]> = deck.nodes.iter().map(|n| [n.r, n.z]).collect();
     let conn: Vec<usize> = deck
@@ -182,6 +172,21 @@ pub fn run(deck: &Deck) -> Result<DeckSolution, RunError> {
         (0..materials.len()).collect(),
     )
     .map_err(|e| fem(e.into()))?;
+    // the one rigid-body motion of an axisymmetric body is a translation along z (the hoop
+    // strain holds u_r): some node must hold z, or rounding turns K's zero pivot into a solution
+    let holds_z = deck.nodes.iter().any(|n| match n.code {
+        Code::Z | Code::Both => true,
+        Code::Skew(a) => a.to_radians().cos().abs() > 1e-12,
+        _ => false,
+    });
+    if !holds_z {
+        return Err(DeckError::new(
+            deck.line,
+            "nodal point codes (supports)",
+            &deck.title,
+            "no node holds z (code 2, 3 or a skew roller not at -90): the body is free to move along the axis",
+        ));
+    }
     let mut s = Supports::new(deck.nodes.len());
     let mut forces = vec![[0.0; 2]; deck.nodes.len()];
     for (k, n) in deck.nodes.iter().enumerate() {
@@ -239,9 +244,13 @@ pub fn run(deck: &Deck) -> Result<DeckSolution, RunError> {
     for (a, b) in rhs.iter_mut().zip(&k.prescribed_load) {
         *a += b;
     }
-    let x = Factorization::new(&k.matrix, &SolveParams::default())
-        .map_err(fem)?
-        .solve(&rhs);
+    let x = if rhs.is_empty() {
+        Vec::new() // every component prescribed
+    } else {
+        Factorization::new(&k.matrix, &SolveParams::default())
+            .map_err(fem)?
+            .solve(&rhs)
+    };
     let u = dofs.expand(&x);
     let nodes = deck
         .nodes
