@@ -252,6 +252,14 @@ pub fn run(deck: &Deck) -> Result<DeckSolution, DeckError> {
             .solve(&rhs)
     };
     let u = dofs.expand(&x);
+    if !u.iter().flatten().all(|v| v.is_finite()) {
+        return Err(DeckError::new(
+            deck.line,
+            "deck",
+            &deck.title,
+            "the displacements are not finite: coordinates, loads or moduli out of range",
+        ));
+    }
     let nodes = deck
         .nodes
         .iter()
