@@ -105,7 +105,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 /// Points from `x0` to `x1` at a spacing near `h` (at least one element).
 fn line(x0: f64, x1: f64, h: f64) -> anyhow::Result<Vec<f64>> {
     let n = ((x1 - x0) / h).ceil().max(1.0);
-    if !(n <= 1e5) {
+    if n.is_nan() || n > 1e5 {
         anyhow::bail!("element size h = {h} in gives too many elements for a deck");
     }
     Ok(Spacing::uniform(x0, x1, n as usize)?.points().to_vec())

@@ -2,9 +2,9 @@
 //! ([`deck`]: read, run on boltzone's finite elements, print as the old program did, and write).
 //!
 //! ```
-//! let decks = boltzone::io::deck::read_decks("demo\n    1    1    1    0    0\n")
-//!     .unwrap_err(); // a deck cut short names the line and the card it expected
-//! assert!(decks.to_string().contains("line 3"));
+//! // a deck cut short after its control card names the line and the card it expected
+//! let err = boltzone::io::deck::read_decks("demo\n    3    1    1    0    0\n").unwrap_err();
+//! assert!(err.to_string().starts_with("line 3 (material card"), "{err}");
 //! ```
 
 pub mod deck;

@@ -79,7 +79,9 @@ pub(crate) fn check(deck: &Deck) -> Result<(), DeckError> {
             let c = [0, 1].map(|i| x.iter().map(|p| p[i]).sum::<f64>() / 4.0);
             (0..4).map(|k| [x[k], x[(k + 1) % 4], c]).collect()
         };
-        if tris.iter().any(|t| !(double_area(t[0], t[1], t[2]) > 0.0)) {
+        if tris.iter().any(|t| {
+            double_area(t[0], t[1], t[2]).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater)
+        }) {
             return Err(element_error(
                 e,
                 "element nodes I,J,K,L",

@@ -4,7 +4,7 @@
 //! **What is computed.** A deck describes an axisymmetric elastic solid in (r, z): nodes with
 //! boundary codes, quadrilaterals of the report's element (four constant-strain triangles around
 //! a condensed centre node, Appendix A eq. A.21; triangles as I, J, K, K), materials, nodal loads
-//! and pressures, and (Appendix C) temperatures. [`run`] solves K u = f (eqs. A.12–A.20) and
+//! and pressures, and (Appendix C) temperatures. [`run()`](fn@run) solves K u = f (eqs. A.12–A.20) and
 //! recovers the stresses at each element's centre as the listing's STRESS routine did. Sign
 //! convention: tension positive (compression negative); a pressure card's p > 0 pushes on the
 //! body. Units are the deck's own: lengths L, E and stresses F/L², loads F per radian (the

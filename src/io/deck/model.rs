@@ -129,9 +129,9 @@ pub struct Deck {
     pub norm: i64,
     /// Reference (stress-free) temperature (Appendix C; 0 in Appendix B).
     pub t_ref: f64,
-    /// Materials, in number order (materials[k].id = k + 1).
+    /// Materials, in number order (`materials[k].id == k + 1`).
     pub materials: Vec<DeckMaterial>,
-    /// Nodes, in number order (nodes[k].n = k + 1).
+    /// Nodes, in number order (`nodes[k].n == k + 1`).
     pub nodes: Vec<DeckNode>,
     /// Elements, in number order.
     pub elements: Vec<DeckElement>,
