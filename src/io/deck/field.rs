@@ -43,7 +43,15 @@ impl<'a> Card<'a> {
         Self { line, text }
     }
 
-    fn error(&self, first: usize, last: usize, field: &str, text: &str, reason: &str) -> DeckError {
+    /// An error about the field in columns `first..=last` holding `text`.
+    pub fn error(
+        &self,
+        first: usize,
+        last: usize,
+        field: &str,
+        text: &str,
+        reason: &str,
+    ) -> DeckError {
         DeckError::new(self.line, field, text, reason).at_columns(first, last)
     }
 

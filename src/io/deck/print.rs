@@ -12,6 +12,14 @@ use std::fmt::Write;
 pub fn report(deck: &Deck, sol: &DeckSolution) -> String {
     let mut o = String::new();
     let c = deck.appendix == Appendix::C;
+    // the temperature column of Appendix C decks
+    let t_column = |t: f64| {
+        if c {
+            format!(" {t:>10.3}")
+        } else {
+            String::new()
+        }
+    };
     let _ = writeln!(o, "{}", deck.title);
     let _ = writeln!(o, "Appendix {:?} deck (line {}); units: the deck's own (length L, stress F/L^2, load F per radian{})", deck.appendix, deck.line, if c { ", temperature as its tables" } else { "" });
     let _ = writeln!(
@@ -48,19 +56,16 @@ pub fn report(deck: &Deck, sol: &DeckSolution) -> String {
             Code::Skew(a) => format!("{a}"),
             k => format!("{}", k.value()),
         };
-        let _ = write!(
-            o,
-            "{:>12} {:>8} {:>16.6} {:>16.6} {:>13.5e} {:>13.5e}",
-            n.n, code, n.r, n.z, n.xr, n.xz
-        );
         let _ = writeln!(
             o,
-            "{}",
-            if c {
-                format!(" {:>10.3}", n.t)
-            } else {
-                String::new()
-            }
+            "{:>12} {:>8} {:>16.6} {:>16.6} {:>13.5e} {:>13.5e}{}",
+            n.n,
+            code,
+            n.r,
+            n.z,
+            n.xr,
+            n.xz,
+            t_column(n.t)
         );
     }
     let _ = writeln!(o, "\n ELEMENT NO.      I      J      K      L   MATERIAL");
@@ -90,15 +95,20 @@ pub fn report(deck: &Deck, sol: &DeckSolution) -> String {
     }
     let _ = writeln!(o, "\n ELEMENT  R [L]  Z [L]   SIG(R)  SIG(Z)  SIG(T)  TAU(RZ)  SIG(1)  SIG(2) [F/L^2]  ANGLE [deg]{}", if c { "  T" } else { "" });
     for e in &sol.elements {
-        let _ = write!(o, "{:>8} {:>9.4} {:>9.4} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>9.2}", e.n, e.r, e.z, e.sigma_r, e.sigma_z, e.sigma_t, e.tau_rz, e.principal[0], e.principal[1], e.angle_deg);
         let _ = writeln!(
             o,
-            "{}",
-            if c {
-                format!(" {:>9.3}", e.temperature)
-            } else {
-                String::new()
-            }
+            "{:>8} {:>9.4} {:>9.4} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>9.2}{}",
+            e.n,
+            e.r,
+            e.z,
+            e.sigma_r,
+            e.sigma_z,
+            e.sigma_t,
+            e.tau_rz,
+            e.principal[0],
+            e.principal[1],
+            e.angle_deg,
+            t_column(e.temperature)
         );
     }
     let _ = writeln!(

@@ -112,13 +112,11 @@ fn read_deck(mut cards: Cards, appendix: Appendix) -> Result<Deck, DeckError> {
         (n_materials, "number of materials", 11, 1),
     ] {
         if v < min {
-            let e = DeckError::new(control.line, f, &v.to_string(), "too few for a mesh");
-            return Err(e.at_columns(a, a + 4));
+            return Err(control.error(a, a + 4, f, &v.to_string(), "too few for a mesh"));
         }
     }
     if norm != 0 {
-        let e = DeckError::new(control.line, "NORM", &norm.to_string(), "only NORM = 0 (E in psi, no normalisation) is supported: the report says to use NORM = 0");
-        return Err(e.at_columns(16, 20));
+        return Err(control.error(16, 20, "NORM", &norm.to_string(), "only NORM = 0 (E in psi, no normalisation) is supported: the report says to use NORM = 0"));
     }
     let t_ref = match appendix {
         Appendix::B => 0.0,
@@ -182,31 +180,31 @@ fn read_materials(
             ),
         };
         if id == 0 || id > n {
-            let e = DeckError::new(
-                card.line,
+            return Err(card.error(
+                1,
+                5,
                 "material number",
                 &id.to_string(),
                 "must lie between 1 and the number of materials",
-            );
-            return Err(e.at_columns(1, 5));
+            ));
         }
         if out[id - 1].is_some() {
-            let e = DeckError::new(
-                card.line,
+            return Err(card.error(
+                1,
+                5,
                 "material number",
                 &id.to_string(),
                 "material given twice",
-            );
-            return Err(e.at_columns(1, 5));
+            ));
         }
         if rows == 0 {
-            let e = DeckError::new(
-                card.line,
+            return Err(card.error(
+                6,
+                10,
                 "number of temperatures",
                 "0",
                 "a material needs at least one temperature card",
-            );
-            return Err(e.at_columns(6, 10));
+            ));
         }
         let mut table: Vec<[f64; 4]> = Vec::new();
         for _ in 0..rows {
@@ -229,17 +227,16 @@ fn read_materials(
                     crate::InputError::PoissonRatio { .. } => ("nu", row[2], cn),
                     _ => ("E", row[1], ce),
                 };
-                let err = DeckError::new(p.line, f, &v.to_string(), &e.to_string());
-                return Err(err.at_columns(cols.0, cols.1));
+                return Err(p.error(cols.0, cols.1, f, &v.to_string(), &e.to_string()));
             }
             if table.last().is_some_and(|last| row[0] <= last[0]) {
-                let e = DeckError::new(
-                    p.line,
+                return Err(p.error(
+                    1,
+                    10,
                     "temperature",
                     &row[0].to_string(),
                     "the temperatures of a material must increase card by card",
-                );
-                return Err(e.at_columns(1, 10));
+                ));
             }
             table.push(row);
         }
@@ -263,15 +260,36 @@ fn read_code(card: &Card) -> Result<Code, DeckError> {
         3.0 => Code::Both,
         a if (-180.0..=-0.001).contains(&a) => Code::Skew(a),
         _ => {
-            let e = DeckError::new(
-                card.line,
+            return Err(card.error(
+                6,
+                10,
                 "CODE",
                 &v.to_string(),
                 "must be 0, 1, 2, 3 or a skew angle in degrees between -180 and -0.001",
-            );
-            return Err(e.at_columns(6, 10));
+            ));
         }
     })
+}
+
+/// The listing's sequence rules for nodal and element cards: numbers increase, the first card
+/// is number 1 (generation needs a card before the gap), none exceeds the control card's count.
+fn in_sequence(
+    card: &Card,
+    field: &str,
+    number: usize,
+    last: usize,
+    count: usize,
+) -> Result<(), DeckError> {
+    let reason = if number <= last {
+        "cards must be in numerical sequence"
+    } else if number > count {
+        "exceeds the count on the control card"
+    } else if last == 0 && number != 1 {
+        "the first card must be number 1 (omitted cards are generated from the one before)"
+    } else {
+        return Ok(());
+    };
+    Err(DeckError::new(card.line, field, &number.to_string(), reason).at_columns(1, 5))
 }
 
 fn read_nodes(cards: &mut Cards, n: usize, appendix: Appendix) -> Result<Vec<DeckNode>, DeckError> {
@@ -294,31 +312,15 @@ fn read_nodes(cards: &mut Cards, n: usize, appendix: Appendix) -> Result<Vec<Dec
             generated: false,
         };
         let last = nodes.len();
-        let fail = |reason: &str| {
-            Err(
-                DeckError::new(card.line, "node number", &number.to_string(), reason)
-                    .at_columns(1, 5),
-            )
-        };
-        if number <= last {
-            return fail("nodal point cards must be in numerical sequence");
-        }
-        if number > n {
-            return fail("exceeds the number of nodal points on the control card");
-        }
-        if last == 0 && number != 1 {
-            return fail(
-                "the first nodal point card must be node 1 (nodes are generated between two cards)",
-            );
-        }
+        in_sequence(&card, "node number", number, last, n)?;
         if node.r < 0.0 {
-            let e = DeckError::new(
-                card.line,
+            return Err(card.error(
+                11,
+                20,
                 "r",
                 &node.r.to_string(),
                 "a radius must not be negative",
-            );
-            return Err(e.at_columns(11, 20));
+            ));
         }
         if let Some(prev) = nodes.last().cloned() {
             let gap = (number - prev.n) as f64;
@@ -354,21 +356,7 @@ fn read_elements(cards: &mut Cards, n: usize) -> Result<Vec<DeckElement>, DeckEr
         }
         let material = card.count(26, 30, "material number")?;
         let last = out.len();
-        let fail = |reason: &str| {
-            Err(
-                DeckError::new(card.line, "element number", &number.to_string(), reason)
-                    .at_columns(1, 5),
-            )
-        };
-        if number <= last {
-            return fail("element cards must be in element number sequence");
-        }
-        if number > n {
-            return fail("exceeds the number of elements on the control card");
-        }
-        if last == 0 && number != 1 {
-            return fail("the first element card must be element 1 (elements are generated from the previous card)");
-        }
+        in_sequence(&card, "element number", number, last, n)?;
         if let Some(prev) = out.last().cloned() {
             for k in 1..number - prev.n {
                 out.push(DeckElement {
