@@ -400,3 +400,45 @@ fn free_body_under_linear_temperature_converges_to_zero_stress() {
     assert!(rs > 0.9 && rs < 1.2, "stress order {rs}");
     assert!(rd > 1.6, "displacement order {rd}");
 }
+
+/// The Table 1 plate as `boltzone deck --emit` writes it with its defaults (h = D/4): the file
+/// in `tests/data/decks/` is what the writer produces today, and it runs.
+#[test]
+fn emitted_table1_deck_is_stable() {
+    let load = FaceLoad::uniform(0.1, 0.31, 1000.0).unwrap();
+    let m = Material::new(28.0e6, 0.3).unwrap();
+    let plate = SinglePlate::new(0.1, OuterRadius::Finite(1.54), 0.1, m, load).unwrap();
+    let line = |a: f64, b: f64, n| Spacing::uniform(a, b, n).unwrap().points().to_vec();
+    let mut r = line(0.1, 0.31, 9); // ceil(0.21 / 0.025)
+    r.extend_from_slice(&line(0.31, 1.54, 50)[1..]); // ceil(1.23 / 0.025)
+    let radial = Spacing::from_points(r).unwrap();
+    let axial = Spacing::uniform(0.0, 0.1, 4).unwrap();
+    let title = "SINGLE PLATE A=0.1 B=0.31 C=1.54 D=0.1 IN, P=1000 PSI (BOLTZONE)";
+    let text = write_deck(&single_plate_deck(&plate, &radial, &axial, title).unwrap()).unwrap();
+    let stored = std::fs::read_to_string("tests/data/decks/table1_single.deck").unwrap();
+    assert_eq!(text, stored);
+    let sol = run(&read_decks(&stored).unwrap()[0]).unwrap();
+    println!(
+        "Table 1 deck: {} equations solved in {:.1} ms",
+        sol.equations,
+        1e3 * sol.seconds
+    );
+    assert_eq!((sol.nodes.len(), sol.elements.len()), (300, 236));
+}
+
+#[test]
+fn temperature_outside_the_table_is_refused_naming_the_element() {
+    let codes = ["2", "0", "0", "2", "0", "0", "2", "0", "0"];
+    let mut temps = [150.0; 9];
+    temps[8] = 1000.0; // element 4 (nodes 5, 8, 9, 9) averages (150·2 + 2000)/4 = 575
+    let e = run(&read_decks(&patch_c_deck(50.0, &TABLE, codes, temps)).unwrap()[0]).unwrap_err();
+    assert_eq!(
+        (e.field.as_str(), e.value.as_str()),
+        ("element temperature", "575"),
+        "{e}"
+    );
+    assert!(
+        e.reason.contains("element 4") && e.reason.contains("[100, 200]"),
+        "{e}"
+    );
+}

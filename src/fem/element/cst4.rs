@@ -12,6 +12,11 @@
 //! Condensation: with b the eight corner dofs and c the two centre dofs,
 //! k* = k_bb − k_bc k_cc⁻¹ k_cb and, after the solve, u_c = −k_cc⁻¹ k_cb u_b.
 //!
+//! The listing's triangle I, J, K, K (last two corners equal) is one constant-strain triangle,
+//! no centre. A uniform thermal strain ε_th = α ΔT (Appendix C) enters as the condensed forces
+//! [`thermal_load`] and leaves the stresses as σ = D (ε − ε_th); [`listing_centre`] is the centre
+//! stress as the listing's STRESS routine forms it (tested through decks in `tests/deck_exact.rs`).
+//!
 //! ```
 //! use boltzone::fem::element::ElementKind;
 //! let x = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
