@@ -55,8 +55,10 @@
 //! `tests/deck_read.rs` and `tests/deck_mutants.rs` check the reader and that ≥ 10⁴ mutated decks
 //! never panic and always name line and field.
 //!
-//! **Cost**: one sparse factorization; the Table 1 deck (`boltzone deck --emit`) runs in
-//! milliseconds.
+//! **Cost**: one sparse factorization per deck. The Table 1 plate as `boltzone deck --emit`
+//! writes it (300 nodes, 540 equations; `tests/deck_exact.rs`, `emitted_table1_deck_is_stable`,
+//! prints the time) solves in about 6 ms; reading is linear in the cards (100 000 mutated decks
+//! read and, where valid, run in 4.3 s, `tests/deck_mutants.rs`).
 //!
 //! ```
 //! use boltzone::io::deck::{read_decks, run};
