@@ -6,7 +6,7 @@
 use anyhow::Context;
 use boltzone::fem::Spacing;
 use boltzone::io::deck::{
-    json_deck, read_decks_as, report, run as run_deck, single_plate_deck, write_deck, Appendix,
+    json_deck, plate_on_plane_deck, read_decks_as, report, run as run_deck, write_deck, Appendix,
 };
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 use std::path::PathBuf;
@@ -59,7 +59,13 @@ pub struct Args {
     /// Face pressure P (psi), with --emit.
     #[arg(long, default_value_t = 1000.0, allow_negative_numbers = true)]
     p: f64,
-    /// Element size (in), with --emit; default D/4. Nodes fall on A, B, C.
+    /// Contact radius (in), with --emit: the bottom is held (code 2) only for r ≤ this — one
+    /// plate of an equal pair on its frictionless interface, in contact out to it (as the 1970
+    /// program ran the two-plate model: one trial contact zone per deck). Default: everywhere
+    /// (the single-plate substitute's midplane).
+    #[arg(long, allow_negative_numbers = true)]
+    contact: Option<f64>,
+    /// Element size (in), with --emit; default D/4. Nodes fall on A, B, C (and the contact radius).
     #[arg(long, allow_negative_numbers = true)]
     h: Option<f64>,
 }
@@ -137,14 +143,33 @@ fn emit(args: &Args, out: &std::path::Path) -> anyhow::Result<()> {
         anyhow::bail!("element size --h = {h} in must be positive");
     }
     let mut r = line(args.a, args.b, h)?;
-    r.extend_from_slice(&line(args.b, args.c, h)?[1..]);
+    let mut knots = vec![args.b, args.c];
+    if let Some(rc) = args.contact {
+        if !(rc > args.b && rc < args.c) {
+            anyhow::bail!(
+                "--contact {rc} in must lie between B = {} and C = {} in",
+                args.b,
+                args.c
+            );
+        }
+        knots.insert(1, rc);
+    }
+    for w in knots.windows(2) {
+        r.extend_from_slice(&line(w[0], w[1], h)?[1..]);
+    }
     let radial = Spacing::from_points(r)?;
     let axial = Spacing::from_points(line(0.0, args.d, h)?)?;
-    let title = format!(
-        "SINGLE PLATE A={} B={} C={} D={} IN, P={} PSI (BOLTZONE)",
-        args.a, args.b, args.c, args.d, args.p
-    );
-    let deck = single_plate_deck(&plate, &radial, &axial, &title)?;
+    let title = match args.contact {
+        None => format!(
+            "SINGLE PLATE A={} B={} C={} D={} IN, P={} PSI (BOLTZONE)",
+            args.a, args.b, args.c, args.d, args.p
+        ),
+        Some(rc) => format!(
+            "PAIR PLATE A={} B={} C={} D={} P={} CONTACT R={} (IN, PSI)",
+            args.a, args.b, args.c, args.d, args.p, rc
+        ),
+    };
+    let deck = plate_on_plane_deck(&plate, &radial, &axial, &title, args.contact)?;
     let text = write_deck(&deck)?;
     boltzone::plot::write_atomic(out, text.as_bytes())?;
     eprintln!(

@@ -98,4 +98,4 @@ pub use model::{Appendix, Code, Deck, DeckElement, DeckMaterial, DeckNode, Press
 pub use print::{json_deck, report};
 pub use read::{read_decks, read_decks_as};
 pub use run::{run, DeckSolution, ElementResult, NodeResult};
-pub use write::{single_plate_deck, write_deck};
+pub use write::{plate_on_plane_deck, single_plate_deck, write_deck};

@@ -134,6 +134,19 @@ pub fn single_plate_deck(
     axial: &Spacing,
     title: &str,
 ) -> Result<Deck, InputError> {
+    plate_on_plane_deck(plate, radial, axial, title, None)
+}
+
+/// As [`single_plate_deck`], with the bottom held (code 2) only where r ≤ `contact` (None:
+/// everywhere): one plate of an equal pair on its frictionless interface, in contact out to a
+/// given radius — how the 1970 program ran the two-plate model, one trial contact zone per deck.
+pub fn plate_on_plane_deck(
+    plate: &SinglePlate,
+    radial: &Spacing,
+    axial: &Spacing,
+    title: &str,
+    contact: Option<f64>,
+) -> Result<Deck, InputError> {
     let load = plate.load();
     if load.profile() != Profile::Uniform {
         return Err(InputError::Parameter {
@@ -158,8 +171,9 @@ pub fn single_plate_deck(
         .iter()
         .enumerate()
         .map(|(k, x)| {
+            let held = contact.is_none_or(|c| x[0] <= c * (1.0 + 1e-12));
             let (on_mid, on_axis) = (
-                bottom.contains(&k),
+                held && bottom.contains(&k),
                 plate.hole_radius() == 0.0 && inner.contains(&k),
             );
             let code = match (on_mid, on_axis) {
