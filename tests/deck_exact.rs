@@ -104,7 +104,14 @@ fn patch_test_uniform_stress_is_exact() {
             (el.principal[0] - s).abs() < 1e-12 * t.abs()
                 && (el.principal[1] - t).abs() < 1e-12 * t.abs()
         );
+        // σ_r > σ_z and no shear: the larger principal stress lies along r
+        assert_eq!(el.angle_deg, 0.0, "element {}", el.n);
     }
+    // Mohr's circle of pure shear τ: principal ±τ at 45° (and −45° for −τ)
+    let (p, a) = boltzone::io::deck::run::principal(0.0, 0.0, 2.0);
+    assert!((p[0] - 2.0).abs() < 1e-15 && (p[1] + 2.0).abs() < 1e-15 && (a - 45.0).abs() < 1e-13);
+    let (_, a) = boltzone::io::deck::run::principal(1.0, 1.0, -2.0);
+    assert!((a + 45.0).abs() < 1e-13);
 }
 
 /// Lamé, open ends (σ_z = 0): σ_r = A − B/r², σ_θ = A + B/r², A = p a²/(b² − a²),
