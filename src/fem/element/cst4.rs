@@ -47,7 +47,7 @@ fn with_centre(x: &[[f64; 2]]) -> [[f64; 2]; 5] {
 }
 
 /// True when the quadrilateral is the listing's triangle I, J, K, K (last two corners equal).
-pub(crate) fn is_triangle(x: &[[f64; 2]]) -> bool {
+fn is_triangle(x: &[[f64; 2]]) -> bool {
     x[2] == x[3]
 }
 
@@ -187,12 +187,12 @@ fn triangle_stress(t: &Tri, d: &[[f64; 4]; 4], all: &[f64; 10], eth: f64) -> ([f
     (apply_d(d, &e), ue)
 }
 
-fn points_thermal(x: &[[f64; 2]], d: &[[f64; 4]; 4], u: &[f64], eth: f64) -> Vec<ElementPoint> {
+pub(crate) fn points(x: &[[f64; 2]], d: &[[f64; 4]; 4], u: &[f64]) -> Vec<ElementPoint> {
     let tris = triangles(x);
-    let all = expand(&tris, d, u, eth);
+    let all = expand(&tris, d, u, 0.0);
     tris.iter()
         .map(|t| {
-            let (s, ue) = triangle_stress(t, d, &all, eth);
+            let (s, ue) = triangle_stress(t, d, &all, 0.0);
             ElementPoint {
                 r: t.r,
                 z: t.z,
@@ -202,10 +202,6 @@ fn points_thermal(x: &[[f64; 2]], d: &[[f64; 4]; 4], u: &[f64], eth: f64) -> Vec
             }
         })
         .collect()
-}
-
-pub(crate) fn points(x: &[[f64; 2]], d: &[[f64; 4]; 4], u: &[f64]) -> Vec<ElementPoint> {
-    points_thermal(x, d, u, 0.0)
 }
 
 /// Volume-weighted mean of the four triangles' stresses at the centre node.
