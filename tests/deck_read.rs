@@ -272,3 +272,26 @@ fn bad_decks_name_line_columns_and_field() {
         "{e}"
     );
 }
+
+#[test]
+fn appendix_c_generated_nodes_interpolate_temperature() {
+    let text = std::fs::read_to_string("tests/data/decks/ring.deck").unwrap();
+    let c = &text[text.find("HELD RING").unwrap()..];
+    // drop the cards of nodes 2 and 5 and give nodes 1 and 3 different temperatures
+    let c: String = c
+        .lines()
+        .filter(|l| {
+            !l.starts_with("    2    2       1.5") && !l.starts_with("    5    0       1.5")
+        })
+        .map(|l| match &l[..5] {
+            "    3" if l.len() > 50 => format!("{}     190.0", &l[..50]),
+            _ => l.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let d = &read_decks(&c).unwrap()[0];
+    let n2 = &d.nodes[1];
+    assert!(n2.generated && n2.code == Code::Free);
+    assert_eq!((n2.r, n2.t), (1.5, 170.0)); // halfway between 150 and 190
+    assert_eq!(d.nodes[4].t, 150.0);
+}
