@@ -91,6 +91,7 @@ pub fn code_of(e: &anyhow::Error) -> u8 {
                 .is_some_and(RecedingError::is_input)
             || c.downcast_ref::<CompareError>()
                 .is_some_and(CompareError::is_input)
+            || c.is::<boltzone::io::deck::DeckError>()
     });
     if input {
         2

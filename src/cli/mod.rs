@@ -2,6 +2,7 @@
 
 mod args;
 mod check;
+mod deck;
 pub mod exit;
 mod map;
 mod single;
@@ -41,6 +42,8 @@ enum Command {
     Table2(table2::Args),
     /// Design map over A/D x B/A: both models and the rules' errors, as CSV and heat maps.
     Map(map::Args),
+    /// Run 1970 card decks (Appendices B, C) on the report's element; --emit writes one.
+    Deck(deck::Args),
     /// Print the report's tables as stored in reference/ (data, not results).
     Reference,
 }
@@ -56,6 +59,7 @@ pub fn run(cli: Cli) -> anyhow::Result<Status> {
         Some(Command::Table1(a)) => table1::run(a),
         Some(Command::Table2(a)) => table2::run(a),
         Some(Command::Map(a)) => map::run(a),
+        Some(Command::Deck(a)) => deck::run(a),
         Some(Command::Reference) => reference().map(|()| Status::Converged),
     }
 }

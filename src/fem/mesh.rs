@@ -141,6 +141,41 @@ impl Mesh {
         Ok(mesh)
     }
 
+    /// A mesh of any topology: node coordinates, `connectivity` ([`ElementKind::nodes`] node
+    /// indices per element, in the element's order) and one material index per element (e.g. a
+    /// 1970 card deck). It has no plate layout: the plate, row and face queries
+    /// ([`Mesh::top`], [`Mesh::node_at`], …) belong to structured meshes and must not be used on it.
+    pub fn from_elements(
+        kind: ElementKind,
+        nodes: Vec<[f64; 2]>,
+        connectivity: Vec<usize>,
+        material: Vec<usize>,
+    ) -> Result<Self, InputError> {
+        if connectivity.len() != kind.nodes() * material.len() {
+            return Err(InputError::Parameter {
+                field: "connectivity length",
+                value: connectivity.len() as f64,
+                reason: "must be the nodes per element times the number of element materials",
+            });
+        }
+        if let Some(&bad) = connectivity.iter().find(|&&n| n >= nodes.len()) {
+            return Err(InputError::Parameter {
+                field: "element node index",
+                value: bad as f64,
+                reason: "must be less than the number of nodes",
+            });
+        }
+        Ok(Self {
+            kind,
+            nodes,
+            connectivity,
+            material,
+            r: Vec::new(),
+            plates: Vec::new(),
+            rows: 0,
+        })
+    }
+
     /// Moves every node to `f(r, z)` (e.g. to distort a patch-test mesh). The plate/row layout is
     /// kept, so the face and row queries still name the same nodes.
     pub fn transform_nodes(&mut self, f: impl Fn([f64; 2]) -> [f64; 2]) {

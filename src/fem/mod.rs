@@ -7,7 +7,8 @@
 //! gives σ_z = −p); units are the caller's.
 //!
 //! The pipeline, one module per verb:
-//! - [`spacing`], [`mesh`]: graded structured meshes of one plate or a stack of plates;
+//! - [`spacing`], [`mesh`]: graded structured meshes of one plate or a stack of plates, and
+//!   meshes of any topology ([`Mesh::from_elements`], e.g. a 1970 card deck, [`crate::io::deck`]);
 //! - [`element`]: the report's 4-CST quadrilateral, Q4 (and B-bar), Q9;
 //! - [`dofs`]: supports (rollers, fixed, prescribed, the report's skew rollers) and the
 //!   (node, component) → equation map;
