@@ -34,6 +34,7 @@ pub mod contact;
 pub mod error;
 pub mod fem;
 pub mod hankel;
+pub mod heat;
 pub mod joint;
 pub mod load;
 pub mod material;
