@@ -26,5 +26,6 @@ pub mod correlation;
 pub mod deck;
 pub mod fortran;
 pub mod joint;
+pub mod lap;
 pub mod network;
 pub mod units;
