@@ -21,7 +21,7 @@ use boltzone::contact::two_plate::{solve, TwoPlateParams, TwoPlateSolution};
 use boltzone::heat::correlation::{ContactConductance, Correlation, Surfaces};
 use boltzone::heat::joint::{joint_conductance, rings, JointParams};
 use boltzone::heat::lap::{LapJoint, LapSolution};
-use boltzone::heat::units::{Conductivity, Length, Pressure};
+use boltzone::heat::units::{Coefficient, Conductivity, Length, Pressure};
 use boltzone::reference::chapter5_interface;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius};
 use std::f64::consts::PI;
@@ -215,91 +215,102 @@ pub fn main() {
 
     // (5) Sensitivity of Q (2B = 0.26 in) to each assumption, one at a time.
     println!("\nsensitivity of Q (2B = 0.26 in), one assumption changed at a time:");
-    let base = q[0];
-    let mut report_line = |what: &str, q: f64| {
-        println!(
-            "  {what:<52} Q = {q:.3} Btu/hr ({:+.2} %)",
-            100.0 * (q / base - 1.0)
-        )
-    };
-    let cells: &[usize] = if quick { &[30] } else { &[30, 60, 240] };
-    for &n in cells {
+    let with = |f: &dyn Fn(&mut LapJoint)| {
         let mut l = lap;
-        l.cells = n;
-        report_line(
-            &format!(
+        f(&mut l);
+        l
+    };
+    let w = lap.width.si();
+    let cells: &[usize] = if quick { &[30] } else { &[30, 60, 240] };
+    let mut variants: Vec<(String, LapJoint, Option<TwoPlateSolution>, JointParams)> = cells
+        .iter()
+        .map(|&n| {
+            let name = format!(
                 "{n} cells across (cell {:.4} in)",
-                l.width.to_inches() / n as f64
-            ),
-            network(&l, &narrow, &cmy).heat_flow.to_btu_per_hr(),
-        );
-    }
+                lap.width.to_inches() / n as f64
+            );
+            (name, with(&|l| l.cells = n), None, cmy)
+        })
+        .collect();
     if !quick {
         for f in [0.5, 2.0] {
-            let mut l = lap;
-            l.overlap = Length::from_si(lap.width.si() * f);
-            report_line(
-                &format!("overlap {f} W"),
-                network(&l, &narrow, &cmy).heat_flow.to_btu_per_hr(),
-            );
+            let l = with(&|l| l.overlap = Length::from_si(w * f));
+            variants.push((format!("overlap {f} W"), l, None, cmy));
         }
         for f in [0.5, 1.5] {
-            let mut l = lap;
-            l.margin = Length::from_si(lap.width.si() * f);
-            report_line(
-                &format!("2-D margin {f} W"),
-                network(&l, &narrow, &cmy).heat_flow.to_btu_per_hr(),
-            );
+            let l = with(&|l| l.margin = Length::from_si(w * f));
+            variants.push((format!("2-D margin {f} W"), l, None, cmy));
         }
-        let mut l = lap;
-        l.through_thickness = false;
-        report_line(
-            "no conduction through the thickness at the contact",
-            network(&l, &narrow, &cmy).heat_flow.to_btu_per_hr(),
-        );
-        let mut l = lap;
-        l.samples = 8;
-        report_line(
-            "8 x 8 samples per cell",
-            network(&l, &narrow, &cmy).heat_flow.to_btu_per_hr(),
-        );
-        let mut l = lap;
-        l.width = Length::inches(1.5);
-        l.overlap = l.width;
-        l.margin = l.width;
-        report_line(
-            "W = 1.5 in exactly (solid strip 3.571 Btu/hr)",
-            network(&l, &narrow, &cmy).heat_flow.to_btu_per_hr(),
-        );
+        let mut perfect = cmy;
+        perfect.fluid = Some(Coefficient::from_si(1e12));
         let table_law = law(Correlation::PowerLaw {
             coefficient: coef,
             exponent: slope,
         });
-        report_line(
-            "h_c as the report's table (fitted power law)",
-            network(&lap, &narrow, &table_law).heat_flow.to_btu_per_hr(),
-        );
-        report_line(
-            "Yovanovich 1982 instead of eq. (1.1)",
-            network(&lap, &narrow, &law(Correlation::Yovanovich1982))
-                .heat_flow
-                .to_btu_per_hr(),
-        );
-        let s = contact(0.13, OuterRadius::Finite(1.54), 0.3);
-        report_line(
-            "nu = 0.3 instead of 0.33",
-            network(&lap, &s, &cmy).heat_flow.to_btu_per_hr(),
-        );
-        let s = contact(0.13, OuterRadius::Infinite, 0.33);
-        report_line(
-            "plates of infinite radius instead of C = 1.54 in",
-            network(&lap, &s, &cmy).heat_flow.to_btu_per_hr(),
-        );
-        let mut perfect = cmy;
-        perfect.fluid = Some(boltzone::heat::units::Coefficient::from_si(1e12));
-        report_line(
-            "a perfect contact over A..R_o (h_c -> infinity)",
-            network(&lap, &narrow, &perfect).heat_flow.to_btu_per_hr(),
+        let exact_w = |l: &mut LapJoint| {
+            l.width = Length::inches(1.5);
+            l.overlap = l.width;
+            l.margin = l.width;
+        };
+        variants.extend([
+            (
+                "no conduction through the thickness at the contact".to_string(),
+                with(&|l| l.through_thickness = false),
+                None,
+                cmy,
+            ),
+            (
+                "8 x 8 samples per cell".to_string(),
+                with(&|l| l.samples = 8),
+                None,
+                cmy,
+            ),
+            (
+                "W = 1.5 in exactly (solid strip 3.571 Btu/hr)".to_string(),
+                with(&exact_w),
+                None,
+                cmy,
+            ),
+            (
+                "h_c as the report's table (fitted power law)".to_string(),
+                lap,
+                None,
+                table_law,
+            ),
+            (
+                "Yovanovich 1982 instead of eq. (1.1)".to_string(),
+                lap,
+                None,
+                law(Correlation::Yovanovich1982),
+            ),
+            (
+                "nu = 0.3 instead of 0.33".to_string(),
+                lap,
+                Some(contact(0.13, OuterRadius::Finite(1.54), 0.3)),
+                cmy,
+            ),
+            (
+                "plates of infinite radius instead of C = 1.54 in".to_string(),
+                lap,
+                Some(contact(0.13, OuterRadius::Infinite, 0.33)),
+                cmy,
+            ),
+            (
+                "a perfect contact over A..R_o (h_c -> infinity)".to_string(),
+                lap,
+                None,
+                perfect,
+            ),
+        ]);
+    }
+    let base = q[0];
+    for (what, l, s, p) in &variants {
+        let q = network(l, s.as_ref().unwrap_or(&narrow), p)
+            .heat_flow
+            .to_btu_per_hr();
+        println!(
+            "  {what:<52} Q = {q:.3} Btu/hr ({:+.2} %)",
+            100.0 * (q / base - 1.0)
         );
     }
     println!("total {:.2} s", t0.elapsed().as_secs_f64());

@@ -165,20 +165,8 @@ fn errors_name_line_columns_and_field() {
     ));
 }
 
-/// splitmix64 (Steele, Lea & Flood 2014).
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
-    }
-}
+mod heat_common;
+use heat_common::Rng;
 
 /// A mutation of the hand deck: characters replaced, inserted or deleted, lines dropped or
 /// duplicated, from an alphabet of what cards hold.

@@ -27,6 +27,13 @@ fn aluminium() -> Material {
     Material::new(1.0e7, 0.33).unwrap()
 }
 
+/// Chapter V's pair: A = D = 0.1 in, 2B = 0.26 in, 46,500 psi, C = 1.54 in.
+fn chapter5_joint() -> Joint {
+    let plate = Plate::new(0.1, aluminium()).unwrap();
+    let load = FaceLoad::uniform(0.1, 0.13, 46_500.0).unwrap();
+    Joint::new(0.1, OuterRadius::Finite(1.54), plate, plate, load).unwrap()
+}
+
 fn solved(joint: &Joint, tolerance: f64) -> TwoPlateSolution {
     solve(
         joint,
@@ -108,14 +115,7 @@ fn exponent_one_integrates_to_the_bolt_force() {
 
 #[test]
 fn conductance_converges_with_the_contact_mesh() {
-    let joint = Joint::new(
-        0.1,
-        OuterRadius::Finite(1.54),
-        Plate::new(0.1, aluminium()).unwrap(),
-        Plate::new(0.1, aluminium()).unwrap(),
-        FaceLoad::uniform(0.1, 0.13, 46_500.0).unwrap(),
-    )
-    .unwrap();
+    let joint = chapter5_joint();
     // Level L of the contact solver halves the element size L - 1 times at A, B and R_o.
     let sols: Vec<TwoPlateSolution> = (2..=8)
         .map(|levels| {
@@ -185,14 +185,7 @@ fn gap_integral_against_closed_forms() {
 
 #[test]
 fn rings_average_the_pressure_and_gas_adds_beyond_r_o() {
-    let joint = Joint::new(
-        0.1,
-        OuterRadius::Finite(1.54),
-        Plate::new(0.1, aluminium()).unwrap(),
-        Plate::new(0.1, aluminium()).unwrap(),
-        FaceLoad::uniform(0.1, 0.13, 46_500.0).unwrap(),
-    )
-    .unwrap();
+    let joint = chapter5_joint();
     let sol = solved(&joint, 5e-3);
     let mut params =
         JointParams::new(ContactConductance::new(Correlation::Cmy1969, surfaces()).unwrap());

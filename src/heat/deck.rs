@@ -213,6 +213,20 @@ impl Card<'_> {
         Ok(v as usize)
     }
 
+    /// A group whose node numbers (columns c..c+5) are blank must have no value either.
+    fn blank_group(&self, c: usize, v: f64, field: &dyn Fn() -> String) -> Result<(), DeckError> {
+        if v == 0.0 {
+            Ok(())
+        } else {
+            Err(self.error(
+                c,
+                c + 5,
+                field(),
+                "is blank but the group has a value".into(),
+            ))
+        }
+    }
+
     fn last(&self, what: &str) -> Result<bool, DeckError> {
         Ok(self.int(1, 1, &|| format!("{what}, column 1 (I1): 1 ends the group"))? == 1)
     }
@@ -272,14 +286,7 @@ fn read_deck(cards: &mut Cards, deck: usize) -> Result<Option<NetworkDeck>, Deck
             let j = card.node(c + 3, 3, n, &|| name("node j (I3)"))?;
             let v = card.real(c + 6, &|| name("conductance (E15.8)"))?;
             if i == 0 && j == 0 {
-                if v != 0.0 {
-                    return Err(card.error(
-                        c,
-                        c + 5,
-                        name("nodes i, j (2I3)"),
-                        "are blank but the group has a conductance".into(),
-                    ));
-                }
+                card.blank_group(c, v, &|| name("nodes i, j (2I3)"))?;
                 continue;
             }
             let fail =
@@ -318,14 +325,7 @@ fn read_deck(cards: &mut Cards, deck: usize) -> Result<Option<NetworkDeck>, Deck
                 let i = card.node(c, 6, n, &|| name("node (I6)"))?;
                 let v = card.real(c + 6, &|| name("value (E15.8)"))?;
                 if i == 0 {
-                    if v != 0.0 {
-                        return Err(card.error(
-                            c,
-                            c + 5,
-                            name("node (I6)"),
-                            "is blank but the group has a value".into(),
-                        ));
-                    }
+                    card.blank_group(c, v, &|| name("node (I6)"))?;
                     continue;
                 }
                 if values[k][i - 1].replace((v, card.line, c)).is_some() {

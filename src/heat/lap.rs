@@ -28,7 +28,6 @@
 //!
 //! ```
 //! use boltzone::heat::lap::LapJoint;
-//! use boltzone::heat::units::{Conductivity, Length, TemperatureDifference};
 //! let lap = LapJoint::chapter5();
 //! let q = lap.solid_heat_flow();
 //! assert!((q.to_btu_per_hr() - 3.58).abs() < 1e-9);
@@ -182,7 +181,7 @@ impl LapJoint {
         let nm = (self.margin.si().max(0.0) / h).round() as usize;
         let (e, m) = (0.5 * no as f64 * h, nm as f64 * h);
         let rest = 0.5 * self.length.si() - e - m;
-        if !(rest > 0.0) {
+        if rest.is_nan() || rest <= 0.0 {
             return Err(InputError::Parameter {
                 field: "overlap/2 + margin (m)",
                 value: e + m,

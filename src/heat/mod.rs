@@ -10,7 +10,8 @@
 //! - [`joint`]: ∫ h_c(p(r)) 2πr dr over the contact zone of a two-plate solution, ring by ring as
 //!   the Chapter V table, plus gas and radiation across the open gap;
 //! - [`network`]: the steady conductance-network solver of Appendix D; [`deck`]: its card decks
-//!   (fields per [`fortran`]).
+//!   (fields per [`fortran`]);
+//! - [`lap`]: Chapter V's lap joint as such a network, with the geometry it assumes.
 //!
 //! Sign convention: interface pressure p > 0 in compression (σ_z = −p); heat flows toward a node
 //! are positive.
