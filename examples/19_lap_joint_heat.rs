@@ -11,16 +11,21 @@
 //! C = 1.54 in as the report's Fig. 15 plates); (2) the ring table, and the report's h_c checked
 //! against eq. (1.1); (3) G_c = ∫ h_c dA; (4) the lap joint as a network (`heat::lap`, the
 //! geometry it assumes in its docs: W from the 3.58 Btu/hr, square overlap); (5) the sensitivity
-//! of the heat flow to every assumption. Self-checks (panics): energy balance of the networks,
+//! of the heat flow to every assumption; (6) the contact zone alone, axisymmetric, by the (r, z)
+//! conduction FE (`heat::conduction`) against plane ring networks with and without the lap
+//! network's through-thickness term, which brackets it. Self-checks (panics): energy balance of the networks,
 //! G_c of the network's cells against the nodal integral, the order 2.88 < 3.15 < 3.58 kept,
 //! our ring pressures within the reading accuracy of the report's figure.
 //! `BOLTZONE_QUICK=1` runs coarse networks and skips most of the sensitivity study (the test
 //! suite does).
 
 use boltzone::contact::two_plate::{solve, TwoPlateParams, TwoPlateSolution};
+use boltzone::fem::{ElementKind, Mesh, PlateSpec, Spacing};
+use boltzone::heat::conduction::solve_conduction;
 use boltzone::heat::correlation::{ContactConductance, Correlation, Surfaces};
 use boltzone::heat::joint::{joint_conductance, rings, JointParams};
 use boltzone::heat::lap::{LapJoint, LapSolution};
+use boltzone::heat::network::Network;
 use boltzone::heat::units::{Coefficient, Conductivity, Length, Pressure};
 use boltzone::reference::chapter5_interface;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius};
@@ -66,6 +71,75 @@ fn network(lap: &LapJoint, s: &TwoPlateSolution, p: &JointParams) -> LapSolution
         "energy balance: {q} in, {out} out"
     );
     r
+}
+
+/// (6) The contact zone alone, axisymmetric: two plates 0.1 in thick from the hole to R_e, the
+/// upper rim at 1 K, the lower at 0, joined by h_c(p(r)); the heat flow by the (r, z) conduction
+/// FE and by a plane ring network (no z variation) with and without the thickness term of the
+/// lap network. Returns the resistances (K/W): FE, network without and with the term.
+fn axisymmetric_check(s: &TwoPlateSolution, params: &JointParams, n: usize) -> [f64; 3] {
+    let inch = 0.0254;
+    let (a, re, t) = (A * inch, 0.75 * inch, D * inch);
+    let k = Conductivity::btu_per_hr_ft_f(100.0).si();
+    let h = |r_m: f64| {
+        let p = Pressure::psi(s.pressure_at(r_m / inch).max(0.0));
+        if r_m / inch <= s.r_o {
+            params.contact.coefficient(p).unwrap().si()
+        } else {
+            0.0
+        }
+    };
+    // FE: Q9, n radial elements, 4 per plate in z.
+    let r = Spacing::uniform(a, re, n).unwrap();
+    let plates = [
+        PlateSpec {
+            z: Spacing::uniform(0.0, t, 4).unwrap(),
+            material: 0,
+        },
+        PlateSpec {
+            z: Spacing::uniform(t, 2.0 * t, 4).unwrap(),
+            material: 0,
+        },
+    ];
+    let mesh = Mesh::structured(ElementKind::Q9, &r, &plates).unwrap();
+    let mut fixed: Vec<(usize, f64)> = mesh.outer(1).into_iter().map(|i| (i, 1.0)).collect();
+    fixed.extend(mesh.outer(0).into_iter().map(|i| (i, 0.0)));
+    let fe = solve_conduction(&mesh, &[k], &h, &fixed).unwrap();
+    let q_fe: f64 = mesh.outer(1).iter().map(|&i| fe.flow[i]).sum();
+    // Plane ring networks on the same radii: nodes 1..n at r_0..r_{n-1} per plate, the rim as
+    // ground through the last radial link.
+    let radii = r.points();
+    let q_net = |thickness_term: bool| {
+        let mut net = Network::new(2 * n).unwrap();
+        for p in 0..2 {
+            for i in 0..n - 1 {
+                let g = 2.0 * PI * k * t / (radii[i + 1] / radii[i]).ln();
+                net.connect(p * n + i + 1, p * n + i + 2, g).unwrap();
+            }
+            let g = 2.0 * PI * k * t / (radii[n] / radii[n - 1]).ln();
+            net.ground(p * n + n, g, if p == 1 { 1.0 } else { 0.0 })
+                .unwrap();
+        }
+        for i in 0..n {
+            let lo = if i == 0 {
+                radii[0]
+            } else {
+                0.5 * (radii[i - 1] + radii[i])
+            };
+            let hi = 0.5 * (radii[i] + radii[i + 1]);
+            let area = PI * (hi * hi - lo * lo);
+            let mut g = h(radii[i]) * area;
+            if g > 0.0 && thickness_term {
+                g = 1.0 / (1.0 / g + t / (k * area));
+            }
+            if g > 0.0 {
+                net.connect(i + 1, n + i + 1, g).unwrap();
+            }
+        }
+        let sol = net.solve().unwrap();
+        sol.nodes[2 * n - 1].ground_flow
+    };
+    [1.0 / q_fe, 1.0 / q_net(false), 1.0 / q_net(true)]
 }
 
 pub fn main() {
@@ -134,12 +208,16 @@ pub fn main() {
 
     // (3) The integrated contact conductance.
     for (name, s) in [("0.26", &narrow), ("0.44", &wide)] {
+        let t = Instant::now();
         let g = joint_conductance(s, &cmy).unwrap();
+        let us = 1e6 * t.elapsed().as_secs_f64();
         println!(
-            "G_c = integral of h_c dA, 2B = {name} in: {:.2} Btu/hr-F over {} contact nodes, area {:.4} in2",
+            "G_c = integral of h_c dA, 2B = {name} in: {:.2} Btu/hr-F over {} contact nodes, area {:.4} in2 \
+             ({us:.1} us after the contact solve of {:.0} ms)",
             g.contact.to_btu_per_hr_f(),
             g.contact_nodes,
-            g.contact_area / 0.0254f64.powi(2)
+            g.contact_area / 0.0254f64.powi(2),
+            1e3 * s.info.time
         );
     }
 
@@ -164,6 +242,7 @@ pub fn main() {
     );
     let mut q = Vec::new();
     let mut contact_ratio = Vec::new();
+    let mut q_bare = Vec::new();
     for (name, s, rq, rr) in [
         ("2B = 0.26 in", &narrow, 2.88, 1.52),
         ("2B = 0.44 in", &wide, 3.15, 0.92),
@@ -172,7 +251,9 @@ pub fn main() {
         let mut bare = lap;
         bare.through_thickness = false;
         let g = joint_conductance(s, &cmy).unwrap().contact.si();
-        let sampled = network(&bare, s, &cmy).contact_conductance.si();
+        let bare_run = network(&bare, s, &cmy);
+        let sampled = bare_run.contact_conductance.si();
+        q_bare.push(bare_run.heat_flow.to_btu_per_hr());
         // Point samples of the interpolated pressure in the cells against the nodal rule: the
         // cells whose centre falls in the hole are removed with their share of the contact zone
         // (an O(cell) loss: 6.4 % at 60 cells, 3.9 % at 120, 2.2 % at 90 measured).
@@ -311,6 +392,48 @@ pub fn main() {
         println!(
             "  {what:<52} Q = {q:.3} Btu/hr ({:+.2} %)",
             100.0 * (q / base - 1.0)
+        );
+    }
+    // (6) How good is the plane model's thickness term? The contact zone alone, axisymmetric.
+    let to_f = |r: f64| boltzone::heat::units::Resistance::from_si(r).to_f_hr_per_btu();
+    let sizes: &[usize] = if quick { &[65] } else { &[65, 130, 260] };
+    println!("\ncontact zone alone (2B = 0.26 in), axisymmetric to R_e = 0.75 in, resistance rim to rim, F-hr/Btu:");
+    println!(
+        "{:>9} {:>14} {:>20} {:>20}",
+        "elements", "(r, z) FE", "plane, no z term", "plane, z term"
+    );
+    let mut fe = Vec::new();
+    let mut position = 0.0;
+    for &n in sizes {
+        let [r_fe, r_plane, r_z] = axisymmetric_check(&narrow, &cmy, n);
+        println!(
+            "{n:>9} {:>14.4} {:>20.4} {:>20.4}",
+            to_f(r_fe),
+            to_f(r_plane),
+            to_f(r_z)
+        );
+        // The FE sees the same joint with the z direction resolved: it lies between the plane
+        // model without the term (conduction through the thickness free) and with it (confined
+        // to the contact footprint).
+        assert!(r_plane < r_fe && r_fe < r_z, "{r_plane} < {r_fe} < {r_z}");
+        fe.push(r_fe);
+        position = (r_fe - r_plane) / (r_z - r_plane);
+    }
+    let q_estimate = q_bare[0] + position * (q[0] - q_bare[0]);
+    println!(
+        "  the FE sits {:.2} of the way from the plane model without the z term to the one with it: \
+         the lap joint's Q is about {q_estimate:.2} Btu/hr (between {:.3} and {:.3}), joint R about {:.2} F-hr/Btu; \
+         the report: 2.88 Btu/hr, 1.36 F-hr/Btu by its own flows",
+        position,
+        q[0],
+        q_bare[0],
+        20.0 / q_estimate - r_solid
+    );
+    if fe.len() == 3 {
+        println!(
+            "  FE changes {:.1e} and {:.1e} (relative) per halving",
+            (fe[1] / fe[0] - 1.0).abs(),
+            (fe[2] / fe[1] - 1.0).abs()
         );
     }
     println!("total {:.2} s", t0.elapsed().as_secs_f64());

@@ -11,7 +11,9 @@
 //!   the Chapter V table, plus gas and radiation across the open gap;
 //! - [`network`]: the steady conductance-network solver of Appendix D; [`deck`]: its card decks
 //!   (fields per [`fortran`]);
-//! - [`lap`]: Chapter V's lap joint as such a network, with the geometry it assumes.
+//! - [`lap`]: Chapter V's lap joint as such a network, with the geometry it assumes;
+//! - [`conduction`]: steady axisymmetric conduction on the [`crate::fem`] meshes, plates joined
+//!   by an interface conductance h(r).
 //!
 //! Sign convention: interface pressure p > 0 in compression (σ_z = −p); heat flows toward a node
 //! are positive.
@@ -23,6 +25,7 @@
 //! assert!((r.to_f_hr_per_btu() - 1.0).abs() < 1e-12);
 //! ```
 
+pub mod conduction;
 pub mod correlation;
 pub mod deck;
 pub mod fortran;
