@@ -24,6 +24,9 @@
 //! Chapter V example (`examples/19_lap_joint_heat.rs`) shows the cell size, overlap, margin,
 //! sampling, width, correlation, ν and plate radius each moving its heat flow by < 0.4 %; the
 //! through-thickness term by 4 %: the modelling of the constriction, not the numerics, decides.
+//! The example's step 6 brackets it with the (r, z) conduction FE of [`super::conduction`] on
+//! the contact zone alone: the term overestimates that zone's resistance about as much as
+//! leaving it out underestimates it (0.844 and 0.627 against the FE's 0.737 °F·hr/Btu).
 //! Cost: one sparse Cholesky of 4 n² nodes (n = 150: 90,000 nodes, printed by the example).
 //!
 //! ```
