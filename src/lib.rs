@@ -14,8 +14,9 @@
 //!
 //! 1. the `boltzone` command (`src/cli/`, `src/main.rs`): one module per subcommand, no
 //!    numerics;
-//! 2. [`compare`] | [`io`]: single- vs two-plate R_o and the rules of thumb: Tables 1 and 2
-//!    recomputed, the design map | the 1970 card decks of Appendices B and C, read, run and
+//! 2. [`compare`] | [`heat`] | [`io`]: single- vs two-plate R_o and the rules of thumb: Tables 1
+//!    and 2 recomputed, the design map | heat through the joint: contact conductance, the
+//!    Appendix D network, conduction | the 1970 card decks of Appendices B and C, read, run and
 //!    written;
 //! 3. [`contact`]: the report's two-plate model on the finite elements, unilateral contact
 //!    found automatically, R_o resolved below one element (`boltzone two`);
@@ -49,6 +50,7 @@ pub mod error;
 pub mod fem;
 pub mod fsutil;
 pub mod hankel;
+pub mod heat;
 pub mod io;
 pub mod joint;
 pub mod load;

@@ -5,6 +5,7 @@
 
 use anyhow::Context;
 use boltzone::fem::Spacing;
+use boltzone::heat::deck::parse_network_decks;
 use boltzone::io::deck::{
     json_deck, plate_on_plane_deck, read_decks_as, report, run as run_deck, write_deck, Appendix,
 };
@@ -20,7 +21,7 @@ pub enum Format {
     B,
     /// Appendix C: elastic with thermal strains.
     C,
-    /// Appendix D: the conductance network (not yet available here).
+    /// Appendix D: the conductance network.
     D,
 }
 
@@ -30,7 +31,8 @@ pub struct Args {
     /// The deck file (one or more decks separated by a card starting `*****`).
     #[arg(required_unless_present = "emit")]
     file: Option<PathBuf>,
-    /// The format; when not given each deck is read as the appendix its cards fit (B or C).
+    /// The format; when not given each deck is read as the appendix its cards fit (B or C, else
+    /// D).
     #[arg(long, value_enum)]
     appendix: Option<Format>,
     /// Print {"decks": [...]} as JSON instead of the 1970 printout.
@@ -78,9 +80,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         return emit(&args, out).map(|()| Status::Converged);
     }
     let appendix = match args.appendix {
-        Some(Format::D) => anyhow::bail!(
-            "--appendix d: Appendix D (conductance network) decks are not yet available"
-        ),
+        Some(Format::D) => None,
         Some(Format::B) => Some(Appendix::B),
         Some(Format::C) => Some(Appendix::C),
         None => None,
@@ -90,7 +90,18 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     };
     let text =
         std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
-    let decks = read_decks_as(&text, appendix).with_context(|| format!("{}", path.display()))?;
+    if args.appendix == Some(Format::D) {
+        return network_decks(&text, path, args.json);
+    }
+    let decks = match read_decks_as(&text, appendix) {
+        Ok(decks) => decks,
+        // not B or C: a conductance network (Appendix D) when it reads as one
+        Err(e) if args.appendix.is_none() && parse_network_decks(&text).is_ok() => {
+            let _ = e;
+            return network_decks(&text, path, args.json);
+        }
+        Err(e) => return Err(e).with_context(|| format!("{}", path.display())),
+    };
     let mut out = Vec::with_capacity(decks.len());
     for deck in &decks {
         let sol = run_deck(deck).with_context(|| format!("{}", path.display()))?;
@@ -108,6 +119,31 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             out.len(),
             if out.len() == 1 { "" } else { "s" }
         );
+    }
+    Ok(Status::Converged)
+}
+
+/// Solves Appendix D conductance-network decks ([`boltzone::heat::deck`]) and prints the
+/// program's output or `{"decks": [{"title", "nodes": [{"n", "t", …}], "residual"}]}`.
+fn network_decks(text: &str, path: &std::path::Path, json: bool) -> anyhow::Result<Status> {
+    let decks = parse_network_decks(text).with_context(|| format!("{}", path.display()))?;
+    let mut solved = Vec::with_capacity(decks.len());
+    for deck in &decks {
+        let s = deck.solve().with_context(|| {
+            format!(
+                "{}: the deck starting on line {}",
+                path.display(),
+                deck.line
+            )
+        })?;
+        solved.push(s);
+    }
+    if json {
+        super::print_json(&serde_json::json!({ "decks": solved }))?;
+    } else {
+        for s in &solved {
+            print!("{s}");
+        }
     }
     Ok(Status::Converged)
 }

@@ -92,6 +92,8 @@ pub fn code_of(e: &anyhow::Error) -> u8 {
             || c.downcast_ref::<CompareError>()
                 .is_some_and(CompareError::is_input)
             || c.is::<boltzone::io::deck::DeckError>()
+            || c.is::<boltzone::heat::deck::NetworkDeckError>()
+            || c.is::<boltzone::heat::network::NetworkError>()
     });
     if input {
         2

@@ -54,6 +54,9 @@ mod ex13;
 #[allow(dead_code)]
 #[path = "../../examples/14_hole_speed.rs"]
 mod ex14;
+#[allow(dead_code)]
+#[path = "../../examples/15_lap_joint_heat.rs"]
+mod ex15;
 
 #[test]
 fn ex01_slab_work_precision() {
@@ -160,4 +163,10 @@ fn ex14_hole_speed() {
     // quick: Table 1's first two rows, reference N = 32 (from 16), one timing each
     quick();
     ex14::main().unwrap();
+}
+
+#[test]
+fn ex15_lap_joint_heat() {
+    quick();
+    ex15::main();
 }

@@ -1,0 +1,11 @@
+//! Integration tests of `boltzone::io`: the 1970 card decks of Appendices B and C read as the
+//! listing reads them, run on the report's element against exact solutions, written back, bad
+//! decks named by line and field, and the `deck` command.
+
+mod cli;
+#[path = "../common/mod.rs"]
+mod common;
+mod exact;
+mod mutants;
+mod read;
+mod report_cases;
