@@ -90,9 +90,17 @@ fn appendix_d_decks_run_through_the_deck_command() {
     let path = "tests/data/decks/chain_d.deck";
     let text = std::fs::read_to_string(path).unwrap();
     let library = boltzone::heat::deck::parse_network_decks(&text).unwrap();
-    for args in [vec!["deck", path, "--json"], vec!["deck", path, "--appendix", "d", "--json"]] {
+    for args in [
+        vec!["deck", path, "--json"],
+        vec!["deck", path, "--appendix", "d", "--json"],
+    ] {
         let out = boltzone(&args);
-        assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
         let decks = v["decks"].as_array().unwrap();
         assert_eq!(decks.len(), library.len());

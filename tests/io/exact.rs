@@ -396,10 +396,7 @@ fn free_body_under_linear_temperature_converges_to_zero_stress() {
             .fold(0.0, f64::max);
         disp.push(derr / (alpha * (t0 + g) * 2.0));
     }
-    let (rs, rd) = (
-        order(&ns, &stress),
-        order(&ns, &disp),
-    );
+    let (rs, rd) = (order(&ns, &stress), order(&ns, &disp));
     println!("free ring, T linear in z: max |σ|/(E α g) = {stress:?}, order {rs:.2}; max |Δu|/u = {disp:?}, order {rd:.2}");
     // the element's thermal strain is constant (mean of its nodes), the exact one linear: the
     // stress error is O(h) (measured 1.03: pairwise 1.06, 1.01); the nodal displacement error
