@@ -156,12 +156,17 @@ fn argument_set(rng: &mut Rng) -> Vec<String> {
 }
 
 /// What one run did.
-struct Run {
-    code: Option<i32>,
-    seconds: f64,
-    peak_kib: u64,
-    stdout: String,
-    stderr: String,
+pub struct Run {
+    /// Exit code (None: killed at the time limit).
+    pub code: Option<i32>,
+    /// Wall seconds.
+    pub seconds: f64,
+    /// Peak resident memory, KiB.
+    pub peak_kib: u64,
+    /// What it printed.
+    pub stdout: String,
+    /// Its messages.
+    pub stderr: String,
 }
 
 /// Resident-set high-water mark of a live process, KiB (0 once it has gone).
@@ -177,7 +182,7 @@ fn peak_kib(pid: u32) -> u64 {
 }
 
 /// Runs the binary on `args` in a scratch directory, killing it after `limit`.
-fn run(args: &[String], limit: Duration) -> Run {
+pub fn run(args: &[String], limit: Duration) -> Run {
     let dir = std::env::temp_dir().join(format!("boltzone-fuzz-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let start = Instant::now();
