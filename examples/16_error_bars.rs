@@ -28,23 +28,8 @@ use boltzone::contact::two_plate::{solve as solve_two, InterfaceModel, TwoPlateP
 use boltzone::fem::single::{solve as solve_single, SingleParams};
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
 use boltzone::hankel::{SeparationParams, Slab};
+use boltzone::numerics::random::SplitMix64 as Rng;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate, SinglePlate};
-
-/// splitmix64 (a fixed generator, so the cases never change).
-struct Rng(u64);
-
-impl Rng {
-    fn unit(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        (lo.ln() + self.unit() * (hi.ln() - lo.ln())).exp()
-    }
-}
 
 /// One random geometry (D = 1).
 #[derive(Debug, Clone, Copy)]
@@ -181,7 +166,7 @@ pub fn run(n: usize) -> anyhow::Result<usize> {
         "route", "cases", "conv.", "skip", "median", "p90", "max", "> 1"
     );
     for (name, route) in routes {
-        let mut rng = Rng(0xE44_0B42);
+        let mut rng = Rng::new(0xE44_0B42);
         let (mut ratios, mut skipped, mut total) = (Vec::new(), 0, 0);
         for _ in 0..n {
             let k = draw(&mut rng);
