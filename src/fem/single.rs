@@ -69,7 +69,7 @@ use super::ordering::nested_dissection;
 use super::recover::{line_traction, reactions};
 use super::solve::{Factorization, SolveParams};
 use super::spacing::Spacing;
-use super::FemError;
+use super::error::FemError;
 use crate::error::InputError;
 use crate::joint::{OuterRadius, SinglePlate};
 pub use crate::numerics::convergence::level_estimate;
