@@ -178,7 +178,15 @@ fn sweep_csv(
     for (p, r) in pts.iter().zip(results) {
         let vals: Vec<String> = p.values.iter().map(|(_, v)| v.to_string()).collect();
         match r {
-            Ok(s) => out += &format!("{},{},{},{}\n", vals.join(","), s.r_o, s.r_o_error, s.converged),
+            Ok(s) => {
+                out += &format!(
+                    "{},{},{},{}\n",
+                    vals.join(","),
+                    s.r_o,
+                    s.r_o_error,
+                    s.converged
+                )
+            }
             Err(_) => out += &format!("{},,,false\n", vals.join(",")),
         }
     }

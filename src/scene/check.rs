@@ -1,8 +1,16 @@
 //! Checks of every value of a scene before any work starts; each error names the key, the
-//! value and the line.
+//! value and the line. Output paths are checked here too, so that nothing is computed for a
+//! file that cannot be written. Tests: `tests/scene/errors.rs`.
+//!
+//! ```
+//! let text = "[hole]\nradius = 0.1\n[load]\nouter_radius = 0.05\npressure = 1.0\n\
+//!             [[plates]]\nthickness = 0.1\n";
+//! let e = boltzone::scene::Scene::parse(text).unwrap_err();
+//! assert!(e.to_string().contains("line 4, key `load.outer_radius`: 0.05"), "{e}");
+//! ```
 
 use super::error::SceneError;
-use super::file::{line_of, path_name, MaterialSpec, Method, Model, Scene, Seg};
+use super::file::{line_of, path_name, MaterialSpec, Method, Model, ProfileKind, Scene, Seg};
 use super::materials;
 use std::path::Path;
 
@@ -61,11 +69,19 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
     let c = Checker { text };
     let t = scene.tolerance;
     if !(t.is_finite() && t > 0.0 && t < 1.0) {
-        return Err(c.fail(&[k("tolerance")], t, "the relative tolerance must lie in (0, 1)"));
+        return Err(c.fail(
+            &[k("tolerance")],
+            t,
+            "the relative tolerance must lie in (0, 1)",
+        ));
     }
     let a = scene.hole.radius;
     if !(a.is_finite() && a >= 0.0) {
-        return Err(c.fail(&[k("hole"), k("radius")], a, "the hole radius A must be 0 or positive"));
+        return Err(c.fail(
+            &[k("hole"), k("radius")],
+            a,
+            "the hole radius A must be 0 or positive",
+        ));
     }
     let b = scene.load.outer_radius;
     c.positive(&[k("load"), k("outer_radius")], b, "the bearing radius B")?;
@@ -102,6 +118,13 @@ fn check_load(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
     .into_iter()
     .filter_map(|(n, v)| v.map(|v| (n, v)))
     .collect();
+    if let (Some(v), true) = (l.nut_displacement, l.profile != ProfileKind::Uniform) {
+        return Err(c.fail(
+            &[k("load"), k("nut_displacement")],
+            v,
+            "a prescribed nut displacement has no pressure profile: omit load.profile",
+        ));
+    }
     match given.as_slice() {
         [] => Err(c.fail(
             &[k("load")],
@@ -109,11 +132,20 @@ fn check_load(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
             "give one of force, pressure or nut_displacement",
         )),
         [(n, v)] => c.positive(&[k("load"), k(n)], *v, n),
-        [_, (n, v), ..] => Err(c.fail(
-            &[k("load"), k(n)],
-            v,
-            "give only one of force, pressure or nut_displacement",
-        )),
+        _ => {
+            // name the one written last: the one to delete
+            let line = |n: &str| line_of(c.text, &[k("load"), k(n)]).unwrap_or(0);
+            let (n, v) = given
+                .iter()
+                .copied()
+                .max_by_key(|(n, _)| line(n))
+                .unwrap_or(("force", 0.0));
+            Err(c.fail(
+                &[k("load"), k(n)],
+                v,
+                "give only one of force, pressure or nut_displacement",
+            ))
+        }
     }
 }
 
@@ -139,23 +171,25 @@ fn check_plates(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
             return Err(c.fail(
                 &at("thickness"),
                 d,
-                &format!("B/D = {:e} exceeds this model's reach {:e}", b / d, b_over_d_max(scene.model)),
+                &format!(
+                    "B/D = {:e} exceeds this model's reach {:e}",
+                    b / d,
+                    b_over_d_max(scene.model)
+                ),
             ));
         }
         if a > 0.0 && !(1e-3..=1e3).contains(&(a / d)) {
             return Err(c.fail(&at("thickness"), d, "A/D must lie within 1e-3..1e3"));
         }
         match &p.material {
-            None => {}
-            Some(MaterialSpec::Name(n)) => {
-                if materials::lookup(n).is_none() {
-                    return Err(c.fail(
-                        &at("material"),
-                        format!("\"{n}\""),
-                        &format!("not in the library ({})", materials::names()),
-                    ));
-                }
+            Some(MaterialSpec::Name(n)) if materials::lookup(n).is_none() => {
+                return Err(c.fail(
+                    &at("material"),
+                    format!("\"{n}\""),
+                    &format!("not in the library ({})", materials::names()),
+                ));
             }
+            None | Some(MaterialSpec::Name(_)) => {}
             Some(MaterialSpec::Constants(m)) => {
                 let mut p = at("material");
                 p.push(k("E"));
@@ -188,9 +222,7 @@ fn check_plates(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
 fn check_model(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
     let symmetric = match scene.plates.as_slice() {
         [_] => true,
-        [up, lo] => {
-            up.thickness == lo.thickness && scene.material_of(0) == scene.material_of(1)
-        }
+        [up, lo] => up.thickness == lo.thickness && scene.material_of(0) == scene.material_of(1),
         _ => false,
     };
     let method = [k("method")];
@@ -246,7 +278,11 @@ fn check_outputs(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
         c.output(&[k("outputs"), k("results")], p)?;
     }
     if !o.r_o && o.interface_pressure.is_none() {
-        return Err(c.fail(&[k("outputs"), k("r_o")], false, "nothing asked: no output wanted"));
+        return Err(c.fail(
+            &[k("outputs"), k("r_o")],
+            false,
+            "nothing asked: no output wanted",
+        ));
     }
     Ok(())
 }

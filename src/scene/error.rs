@@ -1,4 +1,9 @@
 //! Errors of scenes: bad input located by key and line, and the solvers' own errors.
+//!
+//! ```
+//! let e = boltzone::scene::Scene::parse("units = \"furlongs\"\n").unwrap_err();
+//! assert!(e.is_input() && e.line() == Some(1), "{e}");
+//! ```
 
 use crate::contact::ContactError;
 use crate::fem::FemError;

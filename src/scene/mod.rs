@@ -13,7 +13,7 @@
 //! scene is converted to SI (m, Pa, N) on the way in and every result back to its own units.
 //! Materials by name from [`materials`] or as `{ E, nu }` (E in the scene's stress unit).
 //!
-//! **Method.** [`file`] parses the TOML (unknown keys are errors; each error names the key,
+//! **Method.** [`mod@file`] parses the TOML (unknown keys are errors; each error names the key,
 //! the value and the line), [`check`] checks every value before any work, [`run`] plans and
 //! runs one route: `method = "auto"` picks the Hankel root search for R_o alone of a single
 //! plate (milliseconds, no FE solve), the FE levels for the two-plate model (its interface

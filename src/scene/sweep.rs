@@ -1,6 +1,19 @@
 //! Sweeps: `[sweep]` maps dotted keys (`"load.outer_radius"`, `"plates[1].thickness"`) to
 //! lists; every combination of the lists (their product, the first key varying slowest) is a
-//! scene of its own, checked like the file and solved in parallel.
+//! scene of its own, checked like the file and solved in parallel (rayon). Tests:
+//! `tests/scene/errors.rs` (`sweep_prints_results_and_csv`), `tests/scene/examples.rs`
+//! (the M8 sweep, point by point against the Hankel route). Cost: the points' divided by the
+//! cores.
+//!
+//! ```
+//! let text = "model = \"slab\"\n[hole]\nradius = 0.1\n[load]\nouter_radius = 0.31\n\
+//!             pressure = 1.0\n[[plates]]\nthickness = 0.1\n\
+//!             [sweep]\n\"plates[0].thickness\" = [0.1, 0.2, 0.3]\n";
+//! let pts = boltzone::scene::sweep::points(text)?;
+//! assert_eq!(pts.len(), 3);
+//! assert_eq!(pts[2].scene.plates[0].thickness, 0.3);
+//! # Ok::<(), boltzone::scene::SceneError>(())
+//! ```
 
 use super::error::SceneError;
 use super::file::{line_of, path_name, Scene, Seg};
@@ -78,9 +91,8 @@ pub fn points(text: &str) -> Result<Vec<Point>, SceneError> {
             scene: base,
         }]);
     }
-    let locate = |key: &str| {
-        line_of(text, &[Seg::Key("sweep".into()), Seg::Key(key.into())]).unwrap_or(1)
-    };
+    let locate =
+        |key: &str| line_of(text, &[Seg::Key("sweep".into()), Seg::Key(key.into())]).unwrap_or(1);
     let bad = |key: &str, reason: String| SceneError::Invalid {
         key: path_name(&[Seg::Key("sweep".into()), Seg::Key(key.into())]),
         line: locate(key),
@@ -153,10 +165,7 @@ pub fn points(text: &str) -> Result<Vec<Point>, SceneError> {
 }
 
 /// Solves every point in parallel; `tick` is called once per point finished (a progress bar).
-pub fn solve_all(
-    points: &[Point],
-    tick: &(dyn Fn() + Sync),
-) -> Vec<Result<Solution, SceneError>> {
+pub fn solve_all(points: &[Point], tick: &(dyn Fn() + Sync)) -> Vec<Result<Solution, SceneError>> {
     points
         .par_iter()
         .map(|p| {
