@@ -145,3 +145,23 @@ fn bad_sweep_value_is_located_at_the_sweep_key() {
         "{msg}"
     );
 }
+
+#[test]
+fn explain_prints_the_plan_with_the_skipped_route() {
+    let dir = scratch("explain");
+    let text = GOOD.replace("model = \"slab\"", "model = \"single-plate\"");
+    std::fs::write(dir.join("s.toml"), text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_boltzone"))
+        .args(["solve", "s.toml", "--explain"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("(single-plate, hankel)"), "{text}");
+    assert!(
+        text.contains("ran     hankel route") && text.contains("skipped finite elements"),
+        "{text}"
+    );
+    assert!(text.contains(" in "), "R_o says its unit: {text}");
+}

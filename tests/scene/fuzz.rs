@@ -149,3 +149,30 @@ fn mutated_scenes_never_panic_and_every_error_is_located() {
 fn ten_thousand_mutated_scenes() {
     run(10_000, 0xB017_2011);
 }
+
+#[test]
+#[ignore = "solves ~500 valid mutants of the M8 sweep (Hankel route), about a minute"]
+fn valid_mutants_solve_without_panic() {
+    let base = crate::example("m8_aluminium_sweep");
+    let mut rng = Rng(0x5015_E000);
+    let (mut solved, mut failed, mut unconverged) = (0, 0, 0);
+    for _ in 0..2_500 {
+        let text = mutate(&mut rng, &base);
+        let Ok(pts) = points(&text) else { continue };
+        let results = std::panic::catch_unwind(|| boltzone::scene::sweep::solve_all(&pts, &|| {}))
+            .unwrap_or_else(|_| panic!("panic solving:\n{text}"));
+        for r in results {
+            match r {
+                Ok(s) => {
+                    assert!(s.r_o.is_finite() && s.r_o_error.is_finite(), "{text}");
+                    solved += 1;
+                    unconverged += usize::from(!s.converged);
+                }
+                Err(_) => failed += 1,
+            }
+        }
+    }
+    eprintln!(
+        "{solved} points solved ({unconverged} not converged), {failed} failed with an error"
+    );
+}
