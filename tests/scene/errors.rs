@@ -165,3 +165,14 @@ fn explain_prints_the_plan_with_the_skipped_route() {
     );
     assert!(text.contains(" in "), "R_o says its unit: {text}");
 }
+
+#[test]
+fn a_sweep_with_one_curve_file_is_rejected() {
+    let text = format!(
+        "{}[outputs]\ninterface_pressure = \"p.csv\"\n[sweep]\n\"load.outer_radius\" = [0.25]\n",
+        GOOD.replace("\"slab\"", "\"two-plate\"")
+    );
+    let e = boltzone::scene::sweep::points(&text).unwrap_err();
+    assert_eq!(e.line(), Some(11), "{e}");
+    assert!(e.to_string().contains("outputs.interface_pressure"), "{e}");
+}
