@@ -4,7 +4,7 @@
 
 use super::exit::{sig, Status, UsageError};
 use boltzone::scene::run::InterfaceCurve;
-use boltzone::scene::sweep::{points, solve_all, Point};
+use boltzone::scene::sweep::{points, rows, solve_all, Point};
 use boltzone::scene::{read, SceneError, Solution};
 use std::path::PathBuf;
 
@@ -19,6 +19,10 @@ pub struct Args {
     /// Print the plan: which routes ran, which were skipped, time per step.
     #[arg(long)]
     explain: bool,
+    /// A CSV of geometries: a header row naming dotted scene keys (`load.outer_radius`,
+    /// `plates[0].thickness`), one point per further row, in the scene's units.
+    #[arg(long)]
+    geometries: Option<PathBuf>,
 }
 
 /// Bad input becomes a [`UsageError`] (exit 2); a solver failure stays as it is (exit 1).
@@ -33,9 +37,12 @@ fn classify(e: SceneError) -> anyhow::Error {
 /// Runs the command.
 pub fn run(args: Args) -> anyhow::Result<Status> {
     let text = read(&args.scene).map_err(classify)?;
-    let pts = points(&text).map_err(classify)?;
+    let pts = match &args.geometries {
+        Some(csv) => rows(&text, &read(csv).map_err(classify)?).map_err(classify)?,
+        None => points(&text).map_err(classify)?,
+    };
     let base = &pts[0].scene;
-    if pts.len() == 1 && base.sweep.is_empty() {
+    if pts.len() == 1 && pts[0].values.is_empty() {
         let s = boltzone::solve(base).map_err(classify)?;
         if let (Some(path), Some(curve)) = (&base.outputs.interface_pressure, &s.interface) {
             super::write_output(path, &curve_csv(&s, curve, &args.scene))?;

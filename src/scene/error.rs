@@ -23,6 +23,16 @@ pub enum SceneError {
         /// What is wrong, with the value.
         reason: String,
     },
+    /// A malformed row of a CSV of geometries: the message says the CSV line and column.
+    #[error("geometries CSV line {line}, column `{key}`: {reason}")]
+    Geometry {
+        /// The column's scene key.
+        key: String,
+        /// 1-based line in the CSV.
+        line: usize,
+        /// What is wrong, with the value.
+        reason: String,
+    },
     /// The scene file could not be read.
     #[error("cannot read scene file {path}: {source}")]
     Read {
@@ -49,7 +59,9 @@ impl SceneError {
     /// Whether the error is bad input (exit 2) rather than a failure of a solver (exit 1).
     pub fn is_input(&self) -> bool {
         match self {
-            Self::Invalid { .. } | Self::Read { .. } | Self::Input(_) => true,
+            Self::Invalid { .. } | Self::Geometry { .. } | Self::Read { .. } | Self::Input(_) => {
+                true
+            }
             Self::Contact(e) => e.is_input(),
             Self::Fem(e) => e.is_input(),
             Self::Separation(e) => e.is_input(),
@@ -59,7 +71,7 @@ impl SceneError {
     /// The line of a located error.
     pub fn line(&self) -> Option<usize> {
         match self {
-            Self::Invalid { line, .. } => Some(*line),
+            Self::Invalid { line, .. } | Self::Geometry { line, .. } => Some(*line),
             _ => None,
         }
     }

@@ -129,51 +129,152 @@ pub fn points(text: &str) -> Result<Vec<Point>, SceneError> {
         let first = &keys[0].0;
         return Err(bad(first, format!("{total} points: at most {MAX_POINTS}")));
     }
-    let mut root: toml::Value = toml::from_str(text).map_err(|e| bad(&keys[0].0, e.to_string()))?;
-    if let toml::Value::Table(t) = &mut root {
-        t.remove("sweep");
-    }
+    let root = without_sweep(text).map_err(|e| bad(&keys[0].0, e))?;
     let mut out = Vec::with_capacity(total);
     for n in 0..total {
         let mut rem = n;
-        let mut values = Vec::new();
-        let mut doc = root.clone();
+        let mut assigned = Vec::new();
         for (key, path, list) in keys.iter().rev() {
-            let v = list[rem % list.len()].clone();
+            assigned.push((key.clone(), path.clone(), list[rem % list.len()].clone()));
             rem /= list.len();
-            if !set(&mut doc, path, v.clone()) {
-                return Err(bad(key, "names no value of the scene".into()));
-            }
-            values.push((key.clone(), v));
         }
-        values.reverse();
-        let shown = |v: &[(String, toml::Value)]| {
-            v.iter()
-                .map(|(k, x)| format!("{k} = {x}"))
-                .collect::<Vec<_>>()
-                .join(", ")
-        };
-        let scene: Scene = serde_path_to_error::deserialize(doc).map_err(|e| {
-            let key = e.path().to_string();
-            bad(
-                &values
-                    .iter()
-                    .find(|(k, _)| key.starts_with(k.split('[').next().unwrap_or(k)))
-                    .map_or(keys[0].0.clone(), |(k, _)| k.clone()),
-                format!("at {}: {key}: {}", shown(&values), e.into_inner()),
-            )
-        })?;
-        scene.check(text).map_err(|e| match e {
-            SceneError::Invalid { key, reason, .. } => {
-                let owner = values
-                    .iter()
-                    .find(|(k, _)| parse_key(k).is_some_and(|p| path_name(&p) == key))
-                    .map_or(keys[0].0.clone(), |(k, _)| k.clone());
-                bad(&owner, format!("at {}: {key} {reason}", shown(&values)))
-            }
-            other => other,
-        })?;
-        out.push(Point { values, scene });
+        assigned.reverse();
+        out.push(point(text, &root, assigned, &bad)?);
+    }
+    Ok(out)
+}
+
+/// The document of `text` without its `[sweep]`.
+fn without_sweep(text: &str) -> Result<toml::Value, String> {
+    let mut root: toml::Value = toml::from_str(text).map_err(|e| e.to_string())?;
+    if let toml::Value::Table(t) = &mut root {
+        t.remove("sweep");
+    }
+    Ok(root)
+}
+
+/// The point of `root` with each (key, path, value) of `assigned` set; errors go through
+/// `bad(key, reason)` (located where the value was given).
+fn point(
+    text: &str,
+    root: &toml::Value,
+    assigned: Vec<(String, Vec<Seg>, toml::Value)>,
+    bad: &dyn Fn(&str, String) -> SceneError,
+) -> Result<Point, SceneError> {
+    let mut doc = root.clone();
+    for (key, path, v) in &assigned {
+        if !set(&mut doc, path, v.clone()) {
+            return Err(bad(key, "names no value of the scene".into()));
+        }
+    }
+    let values: Vec<(String, toml::Value)> = assigned.into_iter().map(|(k, _, v)| (k, v)).collect();
+    let first = values.first().map_or(String::new(), |(k, _)| k.clone());
+    let shown = values
+        .iter()
+        .map(|(k, x)| format!("{k} = {x}"))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let scene: Scene = serde_path_to_error::deserialize(doc).map_err(|e| {
+        let key = e.path().to_string();
+        let owner = values
+            .iter()
+            .find(|(k, _)| key.starts_with(k.split('[').next().unwrap_or(k)))
+            .map_or(first.clone(), |(k, _)| k.clone());
+        bad(&owner, format!("at {shown}: {key}: {}", e.into_inner()))
+    })?;
+    scene.check(text).map_err(|e| match e {
+        SceneError::Invalid { key, reason, .. } => {
+            let owner = values
+                .iter()
+                .find(|(k, _)| parse_key(k).is_some_and(|p| path_name(&p) == key))
+                .map_or(first.clone(), |(k, _)| k.clone());
+            bad(&owner, format!("at {shown}: {key} {reason}"))
+        }
+        other => other,
+    })?;
+    Ok(Point { values, scene })
+}
+
+/// A CSV cell as a TOML value: a number, a boolean, or else a string (quotes stripped).
+fn cell(field: &str) -> toml::Value {
+    let f = field.trim();
+    if let Ok(x) = f.parse::<f64>() {
+        toml::Value::Float(x)
+    } else if let Ok(b) = f.parse::<bool>() {
+        toml::Value::Boolean(b)
+    } else {
+        toml::Value::String(f.trim_matches('"').to_string())
+    }
+}
+
+/// The points of a CSV of geometries applied to the scene in `text`: the header (its first
+/// line that is neither blank nor a `#` comment) names dotted scene keys, each further row is
+/// one point. Errors name the CSV line and column.
+pub fn rows(text: &str, csv: &str) -> Result<Vec<Point>, SceneError> {
+    let base = Scene::parse(text)?;
+    let at = |line: usize, key: &str, reason: String| SceneError::Geometry {
+        key: key.to_string(),
+        line,
+        reason,
+    };
+    if !base.sweep.is_empty() {
+        return Err(at(
+            1,
+            "(file)",
+            "the scene has a [sweep]: give one or the other".into(),
+        ));
+    }
+    if base.outputs.interface_pressure.is_some() {
+        return Err(at(
+            1,
+            "(file)",
+            "the scene writes one interface_pressure file: drop it to run many geometries".into(),
+        ));
+    }
+    let mut lines = csv
+        .lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, l.trim()))
+        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
+    let Some((header_line, header)) = lines.next() else {
+        return Err(at(1, "(header)", "no header row naming scene keys".into()));
+    };
+    let keys: Vec<(String, Vec<Seg>)> = header
+        .split(',')
+        .map(|k| {
+            let k = k.trim().trim_matches('"');
+            parse_key(k)
+                .map(|p| (k.to_string(), p))
+                .ok_or_else(|| at(header_line, k, "not a dotted scene key".into()))
+        })
+        .collect::<Result<_, _>>()?;
+    let root = without_sweep(text).map_err(|e| at(1, "(scene)", e))?;
+    let mut out = Vec::new();
+    for (line, row) in lines {
+        let fields: Vec<&str> = row.split(',').collect();
+        if fields.len() != keys.len() {
+            return Err(at(
+                line,
+                "(row)",
+                format!("{} values for {} columns", fields.len(), keys.len()),
+            ));
+        }
+        if out.len() >= MAX_POINTS {
+            return Err(at(line, "(row)", format!("more than {MAX_POINTS} rows")));
+        }
+        let assigned = keys
+            .iter()
+            .zip(&fields)
+            .map(|((k, p), f)| (k.clone(), p.clone(), cell(f)))
+            .collect();
+        out.push(point(text, &root, assigned, &|k, r| at(line, k, r))?);
+    }
+    if out.is_empty() {
+        return Err(at(
+            header_line,
+            "(rows)",
+            "no geometry row after the header".into(),
+        ));
     }
     Ok(out)
 }

@@ -176,3 +176,40 @@ fn a_sweep_with_one_curve_file_is_rejected() {
     assert_eq!(e.line(), Some(11), "{e}");
     assert!(e.to_string().contains("outputs.interface_pressure"), "{e}");
 }
+
+#[test]
+fn geometries_csv_gives_one_point_per_row_and_locates_bad_cells() {
+    let dir = scratch("geometries");
+    std::fs::write(dir.join("s.toml"), GOOD).unwrap();
+    let csv = "load.outer_radius,plates[0].thickness\n# lengths in inches\n0.25,0.1\n0.31,0.2\n";
+    std::fs::write(dir.join("g.csv"), csv).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_boltzone"))
+        .args(["solve", "s.toml", "--geometries", "g.csv", "--json"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let v = crate::common::json_of(&out);
+    let results = v["results"].as_array().unwrap();
+    assert_eq!(results.len(), 2);
+    assert_eq!(results[1]["inputs"]["plates"][0]["thickness"], 0.2);
+    assert_eq!(results[1]["inputs"]["load"]["outer_radius"], 0.31);
+    // the same point written in the scene itself gives the same R_o, bit for bit
+    let direct = GOOD
+        .replace("outer_radius = 0.31", "outer_radius = 0.31")
+        .replace("thickness = 0.1", "thickness = 0.2");
+    let s = boltzone::solve(&Scene::parse(&direct).unwrap()).unwrap();
+    assert_eq!(
+        results[1]["r_o"].as_f64().unwrap().to_bits(),
+        s.r_o.to_bits()
+    );
+    let e = boltzone::scene::sweep::rows(GOOD, "load.outer_radius\n0.25\nwide\n").unwrap_err();
+    let msg = e.to_string();
+    assert!(
+        msg.starts_with("geometries CSV line 3, column `load.outer_radius`"),
+        "{msg}"
+    );
+    assert!(msg.contains("wide"), "{msg}");
+    let e =
+        boltzone::scene::sweep::rows(GOOD, "load.outer_radius,hole.radius\n0.25\n").unwrap_err();
+    assert_eq!(e.line(), Some(2), "{e}");
+}
