@@ -18,7 +18,7 @@
 //! runs one route: `method = "auto"` picks the Hankel root search for R_o alone of a single
 //! plate (milliseconds, no FE solve), the FE levels for the two-plate model (its interface
 //! curve comes from the same levels, nothing is solved twice); [`sweep`] expands `[sweep]`
-//! and solves the points in parallel.
+//! (or a CSV of geometries, `boltzone solve --geometries`) and solves the points in parallel.
 //!
 //! **Accuracy.** Each route's own (see its module); the wrapper adds only the unit conversion:
 //! `tests/scene/` (`solve_equals_the_library_call`) checks R_o bit for bit against the library
