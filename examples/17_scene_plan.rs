@@ -16,7 +16,7 @@
 //!
 //! Times are wall-clock, the minimum of `reps` runs (the machine is shared: state its load).
 //!
-//! Run: `cargo run --release --example 16_scene_plan [reps] [tolerance]` (default 5, 5e-4).
+//! Run: `cargo run --release --example 17_scene_plan [reps] [tolerance]` (default 5, 5e-4).
 //!
 //! Builds on: example 03 (single plate, Table 1), example 04 (two-plate tables).
 
