@@ -72,7 +72,7 @@ fn mutate(rng: &mut Rng, base: &str) -> String {
                 let at = rng.below(lines[i].len() + 1);
                 let mut l = lines[i].clone();
                 if l.is_char_boundary(at) {
-                    let piece: &str = rng.pick(&SYNTAX);
+                    let piece: &&str = rng.pick(&SYNTAX);
                     l.insert_str(at, piece);
                 }
                 lines[i] = l;
