@@ -3,7 +3,6 @@
 //! `{"results": [...]}`), `--explain` the plan (routes run and skipped, time per step).
 
 use super::exit::{sig, Status, UsageError};
-use boltzone::scene::run::InterfaceCurve;
 use boltzone::scene::sweep::{points, rows, solve_all, Point};
 use boltzone::scene::{read, SceneError, Solution};
 use std::path::PathBuf;
@@ -44,8 +43,8 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let base = &pts[0].scene;
     if pts.len() == 1 && pts[0].values.is_empty() {
         let s = boltzone::solve(base).map_err(classify)?;
-        if let (Some(path), Some(curve)) = (&base.outputs.interface_pressure, &s.interface) {
-            super::write_output(path, &curve_csv(&s, curve, &args.scene))?;
+        if let Some(path) = &base.outputs.interface_pressure {
+            super::write_output(path, &curve_csv(&pts, &[Ok(s.clone())], &args.scene))?;
         }
         if args.json {
             super::print_json(&s)?;
@@ -79,6 +78,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
                 rows.push(serde_json::json!({ "sweep": sweep, "error": e.to_string() }));
             }
         }
+    }
+    if let Some(path) = &base.outputs.interface_pressure {
+        super::write_output(path, &curve_csv(&pts, &results, &args.scene))?;
     }
     if let Some(path) = &base.outputs.results {
         super::write_output(path, &sweep_csv(&pts, &results, &args.scene))?;
@@ -148,20 +150,40 @@ fn explain(s: &Solution) {
     }
 }
 
-/// The interface curve as CSV: header with units first, `#` provenance after it.
-fn curve_csv(s: &Solution, c: &InterfaceCurve, scene: &std::path::Path) -> String {
-    let (l, p, _) = s.units.symbols();
+/// The interface curves as CSV: header with units first (the swept keys first in a sweep),
+/// `#` provenance after it, then r, p, g of each point's finest mesh.
+fn curve_csv(
+    pts: &[Point],
+    results: &[Result<Solution, SceneError>],
+    scene: &std::path::Path,
+) -> String {
+    let (l, p, _) = pts[0].scene.units.symbols();
+    let keys: String = pts[0].values.iter().map(|(k, _)| format!("{k},")).collect();
     let mut out = format!(
-        "r_{l},p_{p},g_{l}\n# boltzone {} solve {}: interface of the finest mesh; p > 0 compression, \
-         g = gap between the plates\n# R_o = {} ± {:e} {l}, converged = {}\n",
-        s.version,
+        "{keys}r_{l},p_{p},g_{l}\n# boltzone {} solve {}: interface of the finest mesh; p > 0 \
+         compression, g = gap between the plates\n",
+        env!("CARGO_PKG_VERSION"),
         scene.display(),
-        s.r_o,
-        s.r_o_error,
-        s.converged
     );
-    for ((r, pr), g) in c.radius.iter().zip(&c.pressure).zip(&c.gap) {
-        out += &format!("{r:.10e},{pr:.10e},{g:.10e}\n");
+    for (pt, r) in pts.iter().zip(results) {
+        let at: String = pt.values.iter().map(|(_, v)| format!("{v},")).collect();
+        let shown: String = pt
+            .values
+            .iter()
+            .map(|(k, v)| format!("{k} = {v}: "))
+            .collect();
+        let Ok(s) = r else {
+            out += &format!("# {shown}failed\n");
+            continue;
+        };
+        out += &format!(
+            "# {shown}R_o = {} ± {:e} {l}, converged = {}\n",
+            s.r_o, s.r_o_error, s.converged
+        );
+        let Some(c) = &s.interface else { continue };
+        for ((r, pr), g) in c.radius.iter().zip(&c.pressure).zip(&c.gap) {
+            out += &format!("{at}{r:.10e},{pr:.10e},{g:.10e}\n");
+        }
     }
     out
 }

@@ -91,20 +91,6 @@ pub fn points(text: &str) -> Result<Vec<Point>, SceneError> {
             scene: base,
         }]);
     }
-    if let Some(p) = &base.outputs.interface_pressure {
-        let path = [
-            Seg::Key("outputs".into()),
-            Seg::Key("interface_pressure".into()),
-        ];
-        return Err(SceneError::Invalid {
-            key: path_name(&path),
-            line: line_of(text, &path).unwrap_or(1),
-            reason: format!(
-                "{}: one file cannot hold every sweep point's curve; drop it or the [sweep]",
-                p.display()
-            ),
-        });
-    }
     let locate =
         |key: &str| line_of(text, &[Seg::Key("sweep".into()), Seg::Key(key.into())]).unwrap_or(1);
     let bad = |key: &str, reason: String| SceneError::Invalid {
@@ -222,13 +208,6 @@ pub fn rows(text: &str, csv: &str) -> Result<Vec<Point>, SceneError> {
             1,
             "(file)",
             "the scene has a [sweep]: give one or the other".into(),
-        ));
-    }
-    if base.outputs.interface_pressure.is_some() {
-        return Err(at(
-            1,
-            "(file)",
-            "the scene writes one interface_pressure file: drop it to run many geometries".into(),
         ));
     }
     let mut lines = csv

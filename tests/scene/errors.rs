@@ -167,14 +167,38 @@ fn explain_prints_the_plan_with_the_skipped_route() {
 }
 
 #[test]
-fn a_sweep_with_one_curve_file_is_rejected() {
-    let text = format!(
-        "{}[outputs]\ninterface_pressure = \"p.csv\"\n[sweep]\n\"load.outer_radius\" = [0.25]\n",
-        GOOD.replace("\"slab\"", "\"two-plate\"")
+fn a_sweep_writes_every_points_curve_to_one_file() {
+    // the issue's contract scene (mm-MPa-N, welded unequal plates) without its VTU field
+    let dir = scratch("contract");
+    let text = "units = \"mm-MPa-N\"\nmodel = \"two-plate\"\nmethod = \"auto\"\ntolerance = 1e-4\n\
+        [hole]\nradius = 3.26\n[load]\nouter_radius = 5.36\nforce = 4893.0\nprofile = \"uniform\"\n\
+        [[plates]]\nthickness = 3.15\nmaterial = { E = 193053, nu = 0.3 }\n[[plates]]\nthickness = 6.53\n\
+        [joint]\nouter_radius = 50.8\ninterface = \"welded\"\n[outputs]\nr_o = true\n\
+        interface_pressure = \"p.csv\"\n[sweep]\n\"load.outer_radius\" = [5.0, 6.0]\n";
+    std::fs::write(dir.join("s.toml"), text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_boltzone"))
+        .args(["solve", "s.toml", "--json"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let v = crate::common::json_of(&out);
+    let results = v["results"].as_array().unwrap();
+    assert_eq!(results.len(), 2);
+    let csv = std::fs::read_to_string(dir.join("p.csv")).unwrap();
+    assert!(
+        csv.starts_with("load.outer_radius,r_mm,p_MPa,g_mm\n#"),
+        "{csv}"
     );
-    let e = boltzone::scene::sweep::points(&text).unwrap_err();
-    assert_eq!(e.line(), Some(11), "{e}");
-    assert!(e.to_string().contains("outputs.interface_pressure"), "{e}");
+    for (b, r) in [5.0, 6.0].iter().zip(results) {
+        // each point's rows start at the hole, A = 3.26 mm, and its R_o is in the file
+        let first = csv
+            .lines()
+            .find(|l| l.starts_with(&format!("{b:?},")))
+            .unwrap();
+        let r0: f64 = first.split(',').nth(1).unwrap().parse().unwrap();
+        assert!((r0 - 3.26).abs() < 1e-9, "{first}");
+        assert!(csv.contains(&format!("R_o = {}", r["r_o"].as_f64().unwrap())));
+    }
 }
 
 #[test]
