@@ -7,6 +7,7 @@ pub mod exit;
 mod map;
 mod single;
 mod slab;
+mod solve;
 mod table1;
 mod table2;
 mod two;
@@ -44,6 +45,8 @@ enum Command {
     Map(map::Args),
     /// Run 1970 card decks (Appendices B, C) on the report's element; --emit writes one.
     Deck(deck::Args),
+    /// Answer a scene file (TOML: joint, load, model, outputs, units, sweep).
+    Solve(solve::Args),
     /// Print the report's tables as stored in reference/ (data, not results).
     Reference,
 }
@@ -60,6 +63,7 @@ pub fn run(cli: Cli) -> anyhow::Result<Status> {
         Some(Command::Table2(a)) => table2::run(a),
         Some(Command::Map(a)) => map::run(a),
         Some(Command::Deck(a)) => deck::run(a),
+        Some(Command::Solve(a)) => solve::run(a),
         Some(Command::Reference) => reference().map(|()| Status::Converged),
     }
 }
