@@ -60,6 +60,9 @@ mod ex15;
 #[allow(dead_code)]
 #[path = "../../examples/16_error_bars.rs"]
 mod ex16;
+#[allow(dead_code)]
+#[path = "../../examples/17_scene_plan.rs"]
+mod ex17;
 
 #[test]
 fn ex01_slab_work_precision() {
@@ -178,4 +181,10 @@ fn ex15_lap_joint_heat() {
 fn ex16_error_bars() {
     quick();
     ex16::main().unwrap();
+}
+
+#[test]
+fn ex17_scene_plan() {
+    quick();
+    ex17::main().unwrap();
 }
