@@ -381,6 +381,12 @@ fn solve_unit(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution
                 last = Some(sol);
                 break;
             }
+            // The report's rule decided the welded zone (welded dissimilar plates: no
+            // sign-consistent edge): finer levels cannot converge, stop refining.
+            if n >= params.min_levels && sol.lcp.prefix {
+                last = Some(sol);
+                break;
+            }
         }
         prev = Some(PreviousLevel {
             solution: sol.clone(),
