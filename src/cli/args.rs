@@ -6,7 +6,7 @@ use boltzone::fem::ElementKind;
 use std::path::PathBuf;
 
 /// Hole radius A, load radius B, plate thickness D and Poisson's ratio ν (lengths in inches).
-#[derive(Debug, Clone, clap::Args)]
+#[derive(Debug, Clone, clap::Args, serde::Serialize)]
 pub struct Geometry {
     /// Hole radius A, the inner radius of the bearing annulus (in).
     #[arg(long, allow_negative_numbers = true)]
@@ -24,7 +24,8 @@ pub struct Geometry {
 }
 
 /// Finite-element family.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Element {
     /// 9-node biquadratic quadrilateral (the default: its error estimates are the reliable ones).
     Q9,

@@ -5,6 +5,7 @@ mod check;
 mod deck;
 pub mod exit;
 mod map;
+mod output;
 mod single;
 mod slab;
 mod table1;

@@ -9,14 +9,18 @@
 use super::args::{Element, Geometry};
 use super::check;
 use super::exit::{num, sig, Status};
-use boltzone::fem::single::{solve, FaceCondition, SingleParams};
+use boltzone::fem::single::{
+    finest_half_plate, midplane_of, solve, FaceCondition, SingleParams, SingleSolution,
+};
 use boltzone::fem::ElementKind;
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
 use boltzone::hankel::SeparationParams;
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+use std::path::PathBuf;
 
 /// Which solver computes R_o.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Method {
     /// Axisymmetric finite elements.
     Fem,
@@ -25,7 +29,8 @@ pub enum Method {
 }
 
 /// How the bolt head loads the faces (fem).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Nut {
     /// Uniform bearing pressure over A..B (Table 1).
     Pressure,
@@ -34,10 +39,11 @@ pub enum Nut {
 }
 
 /// Arguments of `boltzone single`.
-#[derive(Debug, clap::Args)]
+#[derive(Debug, clap::Args, serde::Serialize)]
 #[command(allow_negative_numbers = true)]
 pub struct Args {
     #[command(flatten)]
+    #[serde(flatten)]
     geom: Geometry,
     /// Plate outer radius C (default: infinite, truncated at B + 30 D).
     #[arg(long)]
@@ -66,6 +72,14 @@ pub struct Args {
     /// Print JSON instead of text.
     #[arg(long)]
     json: bool,
+    /// Write the midplane σ_z (P = 1 psi) of the finest FE level to this CSV file (fem; header
+    /// `r [in],sigma_z [psi]`, then `#` provenance lines, then data).
+    #[arg(long)]
+    curve: Option<PathBuf>,
+    /// Write the finest FE level's field (mesh, displacements, stresses; the plate 2D thick,
+    /// its upper half mirrored below the midplane) to this VTU file for ParaView (fem).
+    #[arg(long)]
+    field: Option<PathBuf>,
 }
 
 /// --tol, or the method's default.
@@ -105,11 +119,20 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
             "needs --method fem (the Hankel route loads the faces by a pressure)",
         );
     }
+    for (flag, path) in [("--curve", &args.curve), ("--field", &args.field)] {
+        if let Some(path) = path {
+            if args.method == Method::Hankel {
+                return super::exit::usage(flag, path.display(), "needs --method fem");
+            }
+            check::output_path(flag, path)?;
+        }
+    }
     Ok(())
 }
 
 /// Runs the command.
 pub fn run(args: Args) -> anyhow::Result<Status> {
+    let start = std::time::Instant::now();
     check_args(&args)?;
     let outer = args.c.map_or(OuterRadius::Infinite, OuterRadius::Finite);
     let load = FaceLoad::uniform(args.geom.a, args.geom.b, 1.0)?;
@@ -121,7 +144,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         load,
     )?;
     if args.method == Method::Hankel {
-        return run_hankel(&args, &plate);
+        return run_hankel(&args, &plate, start);
     }
     let kind = ElementKind::from(args.element);
     let loading = match args.nut {
@@ -136,6 +159,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         ..SingleParams::default()
     };
     let s = solve(&plate, &params)?;
+    if args.curve.is_some() || args.field.is_some() {
+        write_finest(&args, &plate, &params, &s)?;
+    }
     let info = &s.info;
     let r_o_over_a = (args.geom.a > 0.0).then(|| s.r_o / args.geom.a);
     if args.json {
@@ -156,6 +182,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         if let Some(q) = r_o_over_a {
             v["r_o_over_a"] = q.into();
         }
+        super::output::stamp(&mut v, &args, start)?;
         super::print_json(&v)?;
     } else {
         println!(
@@ -198,7 +225,11 @@ fn not_converged(converged: bool) -> &'static str {
 }
 
 /// `--method hankel`: R_o of the plate with its hole made traction-free (Hankel route).
-fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<Status> {
+fn run_hankel(
+    args: &Args,
+    plate: &SinglePlate,
+    start: std::time::Instant,
+) -> anyhow::Result<Status> {
     let params = HoleParams {
         corner_terms: args.corner_terms,
         r_o_tolerance: tolerance(args),
@@ -237,6 +268,7 @@ fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<Status> {
         if let Some(q) = r_o_over_a {
             v["r_o_over_a"] = q.into();
         }
+        super::output::stamp(&mut v, args, start)?;
         super::print_json(&v)?;
     } else {
         println!(
@@ -269,4 +301,54 @@ fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<Status> {
         println!("time     = {:.2} ms", 1e3 * sep.seconds);
     }
     Ok(Status::from_converged(sep.converged))
+}
+
+/// `--curve` and `--field`: the finest level solved again ([`finest_half_plate`]), its midplane
+/// σ_z as CSV and its field as VTU (upper half and its mirror image: the whole plate 2D thick).
+fn write_finest(
+    args: &Args,
+    plate: &SinglePlate,
+    params: &SingleParams,
+    s: &SingleSolution,
+) -> anyhow::Result<()> {
+    let h = finest_half_plate(plate, params, s)?;
+    let method = format!(
+        "method: single plate 2D thick (Fernlund's substitution), axisymmetric FE {:?}, finest of \
+         {} levels ({} nodes in the upper half); E = 1 psi, P = 1 psi: stresses scale with P, \
+         displacements with P/E",
+        params.kind,
+        s.info.levels.len(),
+        h.mesh.n_nodes()
+    );
+    if let Some(path) = &args.curve {
+        let m = midplane_of(plate, &h)?;
+        let notes = [
+            method.clone(),
+            "sigma_z = midplane normal stress from the roller reactions, compression negative"
+                .to_string(),
+            super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
+        ];
+        let rows: Vec<Vec<f64>> =
+            m.r.iter()
+                .zip(&m.sigma_z)
+                .map(|(r, z)| vec![*r, *z])
+                .collect();
+        super::write_output(
+            path,
+            &super::output::curve_csv(&["r [in]", "sigma_z [psi]"], &notes, &rows),
+        )?;
+    }
+    if let Some(path) = &args.field {
+        let mut grid = boltzone::io::vtu::Grid::plate(&h.mesh, &[plate.material()], &h.u, 0)?;
+        let lower = grid.mirrored(1);
+        grid.append(&lower);
+        let note = format!(
+            "{method}; plate 0 = upper half z >= 0 (computed), plate 1 = its mirror image; {}; \
+             command: {}",
+            super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
+            super::output::command_line()
+        );
+        super::write_output(path, &grid.to_vtu(&note))?;
+    }
+    Ok(())
 }
