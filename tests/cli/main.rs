@@ -3,3 +3,4 @@
 //! tested in each area's `cli` module).
 
 mod fuzz;
+mod readme;
