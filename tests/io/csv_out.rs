@@ -5,8 +5,7 @@
 //! exported interface pressure integrates to the bolt force within the quadrature error of the
 //! exported resolution.
 
-use super::py::{csv_columns, every_other, run, temp_dir, trapezoid};
-use crate::common::boltzone;
+use super::py::{boltzone_ok, csv_columns, every_other, run, temp_dir, trapezoid};
 use std::f64::consts::PI;
 use std::path::Path;
 
@@ -27,15 +26,6 @@ for f in sys.argv[1:]:
     out.append(rec)
 print(json.dumps(out))
 "##;
-
-fn run_ok(args: &[&str]) {
-    let out = boltzone(args);
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-}
 
 /// Checks the layout of `path` in Rust; returns its header and rows.
 fn layout(path: &Path, header: &str, method: &str) -> (Vec<String>, Vec<Vec<f64>>) {
@@ -78,43 +68,24 @@ fn every_curve_has_one_header_then_provenance_and_numpy_reads_it() {
         dir.join("single.csv"),
         dir.join("two.csv"),
     );
-    let g = ["--a", "0.1", "--b", "0.31", "--d", "0.1"];
-    let with =
-        |extra: &[&str]| -> Vec<String> { g.iter().chain(extra).map(|s| s.to_string()).collect() };
+    let g = "--a 0.1 --b 0.31 --d 0.1";
     let cases = [
         (
-            with(&["--curve", slab.to_str().unwrap()]),
-            "slab",
+            format!("slab {g} --curve"),
             &slab,
             "r [in],sigma_z [psi],sigma_z_error [psi]",
             "# method: infinite slab",
             vec!["r_in", "sigma_z_psi", "sigma_z_error_psi"],
         ),
         (
-            with(&[
-                "--c",
-                "1.54",
-                "--tol",
-                "1e-2",
-                "--curve",
-                single.to_str().unwrap(),
-            ]),
-            "single",
+            format!("single {g} --c 1.54 --tol 1e-2 --curve"),
             &single,
             "r [in],sigma_z [psi]",
             "# method: single plate 2D thick",
             vec!["r_in", "sigma_z_psi"],
         ),
         (
-            with(&[
-                "--c",
-                "1.54",
-                "--tol",
-                "1e-2",
-                "--curve",
-                two.to_str().unwrap(),
-            ]),
-            "two",
+            format!("two {g} --c 1.54 --tol 1e-2 --curve"),
             &two,
             "r [in],p [psi],g [in],tau [psi]",
             "# method: two-plate FE contact",
@@ -122,13 +93,11 @@ fn every_curve_has_one_header_then_provenance_and_numpy_reads_it() {
         ),
     ];
     let mut parsed = Vec::new();
-    for (args, cmd, path, header, method, _) in &cases {
-        let mut a = vec![*cmd];
-        a.extend(args.iter().map(String::as_str));
-        run_ok(&a);
+    for (line, path, header, method, _) in &cases {
+        boltzone_ok(line, &[path.as_path()]);
         parsed.push(layout(path, header, method));
     }
-    let files: Vec<&Path> = cases.iter().map(|c| c.2.as_path()).collect();
+    let files: Vec<&Path> = cases.iter().map(|c| c.1.as_path()).collect();
     let Some(py) = run(READ, &files) else {
         return;
     };
@@ -140,9 +109,9 @@ fn every_curve_has_one_header_then_provenance_and_numpy_reads_it() {
             .iter()
             .map(|v| v.as_str().unwrap())
             .collect();
-        assert_eq!(np_names, case.5, "numpy's names of {}", case.1);
+        assert_eq!(np_names, case.4, "numpy's names of {}", case.0);
         let data = rec["data"].as_array().unwrap();
-        assert_eq!(data.len(), rows.len(), "numpy's rows of {}", case.1);
+        assert_eq!(data.len(), rows.len(), "numpy's rows of {}", case.0);
         for (row, np_row) in rows.iter().zip(data) {
             let np_row: Vec<f64> = np_row
                 .as_array()
@@ -151,7 +120,7 @@ fn every_curve_has_one_header_then_provenance_and_numpy_reads_it() {
                 .map(|v| v.as_f64().unwrap())
                 .collect();
             // shortest round-trip digits: both readers get the same f64
-            assert_eq!(row, &np_row, "{}", case.1);
+            assert_eq!(row, &np_row, "{}", case.0);
         }
         if let Some(cols) = rec.get("pandas_columns") {
             let cols: Vec<&str> = cols
@@ -186,15 +155,14 @@ fn force_from_curve(path: &Path) -> (f64, f64) {
 fn exported_pressure_integrates_to_the_bolt_force() {
     let dir = temp_dir("csv-force");
     let f = 1000.0;
-    for (name, extra) in [("symmetric", vec![]), ("unequal", vec!["--d2", "0.15"])] {
+    for (name, extra) in [("symmetric", ""), ("unequal", "--d2 0.15")] {
         let path = dir.join(format!("{name}.csv"));
-        let mut args = vec![
-            "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--c", "1.54", "--tol", "1e-3",
-            "--force", "1000", "--curve",
-        ];
-        args.push(path.to_str().unwrap());
-        args.extend(extra);
-        run_ok(&args);
+        boltzone_ok(
+            &format!(
+                "two --a 0.1 --b 0.31 --d 0.1 --c 1.54 --tol 1e-3 --force 1000 {extra} --curve"
+            ),
+            &[&path],
+        );
         let (force, bound) = force_from_curve(&path);
         eprintln!(
             "{name}: 2π∫p r dr = {force:.4} lbf (F = {f} lbf), error {:.2e}, bound |Δ| {bound:.2e}",

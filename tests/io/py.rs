@@ -66,3 +66,15 @@ pub fn every_other(n: usize) -> Vec<usize> {
     }
     idx
 }
+
+/// Runs `boltzone` with the words of `line` followed by the paths `files`, asserting exit 0.
+pub fn boltzone_ok(line: &str, files: &[&Path]) {
+    let mut args: Vec<&str> = line.split_whitespace().collect();
+    args.extend(files.iter().map(|f| f.to_str().unwrap()));
+    let out = crate::common::boltzone(&args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

@@ -5,8 +5,7 @@
 //! within the quadrature error of the exported resolution. Without `BOLTZONE_PYTHON` only the
 //! Rust-side checks run.
 
-use super::py::{every_other, run, temp_dir, trapezoid};
-use crate::common::boltzone;
+use super::py::{boltzone_ok, every_other, run, temp_dir, trapezoid};
 use boltzone::contact::two_plate::{solve_field, TwoPlateParams};
 use boltzone::fem::nodal_stresses;
 use boltzone::fem::single::{finest_half_plate, solve, SingleParams};
@@ -50,7 +49,7 @@ fn same(name: &str, got: &[f64], want: &[f64]) {
 }
 
 /// Compares the file's first `n` nodes (the computed plate or plates) with the library's
-/// nodes, displacements and nodal stresses; returns meshio's record.
+/// nodes, displacements and nodal stresses.
 fn compare_nodes(m: &Value, nodes: &[[f64; 2]], u: &[[f64; 2]], s: &[Stress]) {
     let n = nodes.len();
     let pts = m["points"].as_array().unwrap();
@@ -81,12 +80,12 @@ fn compare_nodes(m: &Value, nodes: &[[f64; 2]], u: &[[f64; 2]], s: &[Stress]) {
         .iter()
         .map(|k| floats(&m["point_data"][*k]))
         .collect();
-    for k in 0..n {
+    for (k, vm_file) in c[4].iter().enumerate().take(n) {
         let (r, z, t, rz) = (c[0][k], c[1][k], c[2][k], c[3][k]);
         let j2 = ((r - z).powi(2) + (z - t).powi(2) + (t - r).powi(2)) / 6.0 + rz * rz;
         let vm = (3.0 * j2).sqrt();
         assert!(
-            (c[4][k] - vm).abs() <= 1e-12 * vm.max(1e-300),
+            (vm_file - vm).abs() <= 1e-12 * vm.max(1e-300),
             "von Mises at {k}"
         );
     }
@@ -104,15 +103,6 @@ fn span(m: &Value) -> ([f64; 2], [f64; 2]) {
     (lo, hi)
 }
 
-fn run_ok(args: &[&str]) {
-    let out = boltzone(args);
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-}
-
 /// The file's text: the Rust-side checks (cell count, axisymmetry note, cell type).
 fn text_checks(path: &Path, cells: usize) {
     let text = std::fs::read_to_string(path).unwrap();
@@ -121,26 +111,35 @@ fn text_checks(path: &Path, cells: usize) {
     assert!(!text.contains("NaN") && !text.contains("inf"));
 }
 
+/// The Rust-side checks, then meshio's reading: `cells` quad9 cells, points spanning
+/// x ∈ [A, C] and y ∈ [−D, D], and the first nodes equal to the library's `(nodes, u, stresses)`.
+/// None when BOLTZONE_PYTHON is unset.
+fn read_and_compare(
+    path: &Path,
+    cells: usize,
+    x_span: [f64; 2],
+    d: f64,
+    (nodes, u, s): (&[[f64; 2]], &[[f64; 2]], &[Stress]),
+) -> Option<Value> {
+    text_checks(path, cells);
+    let m = run(READ, &[path])?;
+    assert_eq!(m["cells"], serde_json::json!([["quad9", cells]]));
+    let (lo, hi) = span(&m);
+    assert_eq!([lo[0], hi[0]], x_span, "points span A..C");
+    assert_eq!((lo[1], hi[1]), (-d, d), "the plates' thickness");
+    compare_nodes(&m, nodes, u, s);
+    Some(m)
+}
+
 #[test]
 fn single_plate_field_reads_back_with_meshio() {
     let dir = temp_dir("vtu-single");
     let path = dir.join("single.vtu");
     let (a, b, d, c) = (0.1, 0.31, 0.1, 1.54);
-    run_ok(&[
-        "single",
-        "--a",
-        "0.1",
-        "--b",
-        "0.31",
-        "--d",
-        "0.1",
-        "--c",
-        "1.54",
-        "--tol",
-        "1e-2",
-        "--field",
-        path.to_str().unwrap(),
-    ]);
+    boltzone_ok(
+        "single --a 0.1 --b 0.31 --d 0.1 --c 1.54 --tol 1e-2 --field",
+        &[&path],
+    );
     // the library, as the command calls it
     let plate = SinglePlate::new(
         a,
@@ -160,15 +159,9 @@ fn single_plate_field_reads_back_with_meshio() {
     let h = finest_half_plate(&plate, &params, &sol).unwrap();
     let s = nodal_stresses(&h.mesh, &[plate.material()], &h.u).unwrap();
     let cells = 2 * h.mesh.n_elements();
-    text_checks(&path, cells);
-    let Some(m) = run(READ, &[&path]) else {
+    let Some(m) = read_and_compare(&path, cells, [a, c], d, (h.mesh.nodes(), &h.u, &s)) else {
         return;
     };
-    assert_eq!(m["cells"], serde_json::json!([["quad9", cells]]));
-    let (lo, hi) = span(&m);
-    assert_eq!((lo[0], hi[0]), (a, c), "points span A..C");
-    assert_eq!((lo[1], hi[1]), (-d, d), "the plate 2D thick");
-    compare_nodes(&m, h.mesh.nodes(), &h.u, &s);
     // the mirror half: w and τ_rz change sign
     let n = h.mesh.n_nodes();
     let disp = m["point_data"]["displacement"].as_array().unwrap();
@@ -188,23 +181,10 @@ fn two_plate_field_reads_back_and_its_pressure_carries_the_bolt_force() {
     let dir = temp_dir("vtu-two");
     let path = dir.join("two.vtu");
     let (a, b, d, c, f) = (0.1, 0.31, 0.1, 1.54, 1000.0);
-    run_ok(&[
-        "two",
-        "--a",
-        "0.1",
-        "--b",
-        "0.31",
-        "--d",
-        "0.1",
-        "--c",
-        "1.54",
-        "--tol",
-        "1e-3",
-        "--force",
-        "1000",
-        "--field",
-        path.to_str().unwrap(),
-    ]);
+    boltzone_ok(
+        "two --a 0.1 --b 0.31 --d 0.1 --c 1.54 --tol 1e-3 --force 1000 --field",
+        &[&path],
+    );
     let m28 = Material::new(28e6, 0.3).unwrap();
     let joint = Joint::new(
         a,
@@ -222,15 +202,9 @@ fn two_plate_field_reads_back_and_its_pressure_carries_the_bolt_force() {
     let mesh = &field.model.mesh;
     let s = nodal_stresses(mesh, &field.model.materials, &field.u).unwrap();
     let cells = 2 * mesh.n_elements(); // the symmetric joint: one plate and its mirror image
-    text_checks(&path, cells);
-    let Some(m) = run(READ, &[&path]) else {
+    let Some(m) = read_and_compare(&path, cells, [a, c], d, (mesh.nodes(), &field.u, &s)) else {
         return;
     };
-    assert_eq!(m["cells"], serde_json::json!([["quad9", cells]]));
-    let (lo, hi) = span(&m);
-    assert_eq!((lo[0], hi[0]), (a, c), "points span A..C");
-    assert_eq!((lo[1], hi[1]), (-d, d), "both plates");
-    compare_nodes(&m, mesh.nodes(), &field.u, &s);
     // interface: the computed plate's nodes at y = 0, in radial order
     let pts = m["points"].as_array().unwrap();
     let p = floats(&m["point_data"]["contact_pressure"]);
