@@ -13,8 +13,8 @@
 //! Accuracy: the field is the finest level's; `tests/io/vtu.rs` checks the written file against
 //! the interface curves of the same solution (gap from the displacements) and the bolt force.
 //!
-//! Cost: the last level's mesh and displacements are kept (a few hundred kB for the default
-//! tolerance); nothing else is computed.
+//! Cost: the finest level's model (mesh, materials) and displacements are kept instead of
+//! dropped, and rescaled once (linear in the nodes); nothing is solved again.
 //!
 //! ```
 //! use boltzone::contact::two_plate::{solve_field, TwoPlateParams};

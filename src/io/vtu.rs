@@ -22,9 +22,9 @@
 //! Accuracy: `tests/io/vtu.rs` reads the file with meshio (independent reader) and compares
 //! points, cell count, displacements and stresses with the library's nodal values.
 //!
-//! Cost: one pass over the mesh plus the stress recovery (linear in the number of nodes); the
-//! text is about 200 bytes per node. Measured by `tests/io/vtu.rs` (a few ms for a
-//! few thousand nodes).
+//! Cost: one pass over the mesh plus the stress recovery, linear in the number of nodes; the
+//! text is about 200 bytes per node (measured: `single --a 0.1 --b 0.31 --d 0.1 --c 1.54 --tol
+//! 1e-2 --field`, 1254 nodes, 258 kB). Exercised by `tests/io/vtu.rs`.
 //!
 //! ```
 //! use boltzone::fem::{ElementKind, Mesh, PlateSpec, Spacing};

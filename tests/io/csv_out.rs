@@ -5,8 +5,7 @@
 //! exported interface pressure integrates to the bolt force within the quadrature error of the
 //! exported resolution.
 
-use super::py::{boltzone_ok, csv_columns, every_other, run, temp_dir, trapezoid};
-use std::f64::consts::PI;
+use super::py::{boltzone_ok, csv_columns, force_and_bound, run, temp_dir};
 use std::path::Path;
 
 /// numpy's and pandas' view of each file: names, data, (pandas) columns and shape.
@@ -136,19 +135,12 @@ fn every_curve_has_one_header_then_provenance_and_numpy_reads_it() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
-/// 2π∫p r dr of a `two --curve` file by the trapezoidal rule on its nodes, and the same on
-/// every other node: the difference bounds the quadrature error of the finer sum whenever the
-/// rule converges at least linearly (it is second order: the error measured is ≈ |Δ|/3).
+/// 2π∫p r dr of a `two --curve` file and its quadrature error bound ([`force_and_bound`]).
 fn force_from_curve(path: &Path) -> (f64, f64) {
     let (_, rows) = csv_columns(&std::fs::read_to_string(path).unwrap());
     let r: Vec<f64> = rows.iter().map(|x| x[0]).collect();
     let pr: Vec<f64> = rows.iter().map(|x| x[1] * x[0]).collect();
-    let fine = 2.0 * PI * trapezoid(&r, &pr);
-    let idx = every_other(r.len());
-    let rc: Vec<f64> = idx.iter().map(|&i| r[i]).collect();
-    let prc: Vec<f64> = idx.iter().map(|&i| pr[i]).collect();
-    let coarse = 2.0 * PI * trapezoid(&rc, &prc);
-    (fine, (fine - coarse).abs())
+    force_and_bound(&r, &pr)
 }
 
 #[test]

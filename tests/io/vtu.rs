@@ -5,7 +5,7 @@
 //! within the quadrature error of the exported resolution. Without `BOLTZONE_PYTHON` only the
 //! Rust-side checks run.
 
-use super::py::{boltzone_ok, every_other, run, temp_dir, trapezoid};
+use super::py::{boltzone_ok, force_and_bound, run, temp_dir};
 use boltzone::contact::two_plate::{solve_field, TwoPlateParams};
 use boltzone::fem::nodal_stresses;
 use boltzone::fem::single::{finest_half_plate, solve, SingleParams};
@@ -112,21 +112,29 @@ fn text_checks(path: &Path, cells: usize) {
 }
 
 /// The Rust-side checks, then meshio's reading: `cells` quad9 cells, points spanning
-/// x ∈ [A, C] and y ∈ [−D, D], and the first nodes equal to the library's `(nodes, u, stresses)`.
+/// `x_span` and `y_span`, and the first nodes equal to the library's `(nodes, u, stresses)`.
 /// None when BOLTZONE_PYTHON is unset.
 fn read_and_compare(
     path: &Path,
     cells: usize,
     x_span: [f64; 2],
-    d: f64,
+    y_span: [f64; 2],
     (nodes, u, s): (&[[f64; 2]], &[[f64; 2]], &[Stress]),
 ) -> Option<Value> {
     text_checks(path, cells);
     let m = run(READ, &[path])?;
     assert_eq!(m["cells"], serde_json::json!([["quad9", cells]]));
     let (lo, hi) = span(&m);
-    assert_eq!([lo[0], hi[0]], x_span, "points span A..C");
-    assert_eq!((lo[1], hi[1]), (-d, d), "the plates' thickness");
+    // equal up to the round-off of the solver's unit scaling (× 1/L in, × L out: a few ulps)
+    let near = |x: f64, want: f64| (x - want).abs() <= 4.0 * f64::EPSILON * want.abs();
+    assert!(
+        near(lo[0], x_span[0]) && near(hi[0], x_span[1]),
+        "points span A..C: {lo:?} {hi:?}"
+    );
+    assert!(
+        near(lo[1], y_span[0]) && near(hi[1], y_span[1]),
+        "the plates' thickness: {lo:?} {hi:?}"
+    );
     compare_nodes(&m, nodes, u, s);
     Some(m)
 }
@@ -159,7 +167,8 @@ fn single_plate_field_reads_back_with_meshio() {
     let h = finest_half_plate(&plate, &params, &sol).unwrap();
     let s = nodal_stresses(&h.mesh, &[plate.material()], &h.u).unwrap();
     let cells = 2 * h.mesh.n_elements();
-    let Some(m) = read_and_compare(&path, cells, [a, c], d, (h.mesh.nodes(), &h.u, &s)) else {
+    let Some(m) = read_and_compare(&path, cells, [a, c], [-d, d], (h.mesh.nodes(), &h.u, &s))
+    else {
         return;
     };
     // the mirror half: w and τ_rz change sign
@@ -179,56 +188,60 @@ fn single_plate_field_reads_back_with_meshio() {
 #[test]
 fn two_plate_field_reads_back_and_its_pressure_carries_the_bolt_force() {
     let dir = temp_dir("vtu-two");
-    let path = dir.join("two.vtu");
     let (a, b, d, c, f) = (0.1, 0.31, 0.1, 1.54, 1000.0);
-    boltzone_ok(
-        "two --a 0.1 --b 0.31 --d 0.1 --c 1.54 --tol 1e-3 --force 1000 --field",
-        &[&path],
-    );
-    let m28 = Material::new(28e6, 0.3).unwrap();
-    let joint = Joint::new(
-        a,
-        OuterRadius::Finite(c),
-        Plate::new(d, m28).unwrap(),
-        Plate::new(d, m28).unwrap(),
-        FaceLoad::uniform(a, b, f / (PI * (b * b - a * a))).unwrap(),
-    )
-    .unwrap();
-    let params = TwoPlateParams {
-        tolerance: 1e-3,
-        ..TwoPlateParams::default()
-    };
-    let (sol, field) = solve_field(&joint, &params).unwrap();
-    let mesh = &field.model.mesh;
-    let s = nodal_stresses(mesh, &field.model.materials, &field.u).unwrap();
-    let cells = 2 * mesh.n_elements(); // the symmetric joint: one plate and its mirror image
-    let Some(m) = read_and_compare(&path, cells, [a, c], d, (mesh.nodes(), &field.u, &s)) else {
-        return;
-    };
-    // interface: the computed plate's nodes at y = 0, in radial order
-    let pts = m["points"].as_array().unwrap();
-    let p = floats(&m["point_data"]["contact_pressure"]);
-    let (r, pr): (Vec<f64>, Vec<f64>) = (0..mesh.n_nodes())
-        .filter(|&k| pts[k][1].as_f64().unwrap() == 0.0)
-        .map(|k| {
-            let r = pts[k][0].as_f64().unwrap();
-            (r, p[k] * r)
-        })
-        .unzip();
-    assert_eq!(r.len(), sol.radius.len());
-    let force = 2.0 * PI * trapezoid(&r, &pr);
-    let idx = every_other(r.len());
-    let rc: Vec<f64> = idx.iter().map(|&i| r[i]).collect();
-    let prc: Vec<f64> = idx.iter().map(|&i| pr[i]).collect();
-    let bound = (force - 2.0 * PI * trapezoid(&rc, &prc)).abs();
-    eprintln!("VTU: 2π∫p r dr = {force:.4} lbf, F = {f} lbf, bound {bound:.2e}");
-    assert!((force - f).abs() <= bound && bound < 1e-2 * f);
-    // status: closed exactly where the pressure is positive, open beyond R_o
-    let st = floats(&m["point_data"]["contact_status"]);
-    for k in 0..mesh.n_nodes() {
-        if pts[k][1].as_f64().unwrap() == 0.0 && pts[k][0].as_f64().unwrap() > sol.r_o * 1.05 {
-            assert_eq!(st[k], 0.0, "open beyond R_o at node {k}");
+    // (name, extra flags, lower plate's thickness): the symmetric joint is computed as one plate
+    // and written with its mirror image, the unequal pair as both plates
+    for (name, extra, d2) in [("symmetric", "", d), ("unequal", "--d2 0.15", 0.15)] {
+        let path = dir.join(format!("{name}.vtu"));
+        boltzone_ok(
+            &format!(
+                "two --a 0.1 --b 0.31 --d 0.1 --c 1.54 --tol 1e-3 --force 1000 {extra} --field"
+            ),
+            &[&path],
+        );
+        let m28 = Material::new(28e6, 0.3).unwrap();
+        let joint = Joint::new(
+            a,
+            OuterRadius::Finite(c),
+            Plate::new(d, m28).unwrap(),
+            Plate::new(d2, m28).unwrap(),
+            FaceLoad::uniform(a, b, f / (PI * (b * b - a * a))).unwrap(),
+        )
+        .unwrap();
+        let params = TwoPlateParams {
+            tolerance: 1e-3,
+            ..TwoPlateParams::default()
+        };
+        let (sol, field) = solve_field(&joint, &params).unwrap();
+        let model = &field.model;
+        let mesh = &model.mesh;
+        let s = nodal_stresses(mesh, &model.materials, &field.u).unwrap();
+        let mirrored = model.lower.is_none();
+        assert_eq!(mirrored, name == "symmetric");
+        let cells = if mirrored { 2 } else { 1 } * mesh.n_elements();
+        let lib = (mesh.nodes(), field.u.as_slice(), s.as_slice());
+        let Some(m) = read_and_compare(&path, cells, [a, c], [-d2, d], lib) else {
+            continue;
+        };
+        // the interface nodes of the upper plate (the file's first nodes are the mesh's)
+        let pts = m["points"].as_array().unwrap();
+        let p = floats(&m["point_data"]["contact_pressure"]);
+        let st = floats(&m["point_data"]["contact_status"]);
+        let face = mesh.bottom(model.upper);
+        let r: Vec<f64> = face.iter().map(|&k| pts[k][0].as_f64().unwrap()).collect();
+        let pr: Vec<f64> = face.iter().zip(&r).map(|(&k, r)| p[k] * r).collect();
+        assert!(face.iter().all(|&k| pts[k][1].as_f64().unwrap() == 0.0));
+        assert_eq!(r, sol.radius);
+        let (force, bound) = force_and_bound(&r, &pr);
+        eprintln!("VTU {name}: 2π∫p r dr = {force:.4} lbf, F = {f} lbf, bound {bound:.2e}");
+        assert!((force - f).abs() <= bound && bound < 1e-2 * f, "{name}");
+        // open beyond R_o (status 0), closed at the hole
+        for (&k, &rk) in face.iter().zip(&r) {
+            if rk > 1.05 * sol.r_o {
+                assert_eq!(st[k], 0.0, "{name}: open beyond R_o at r = {rk}");
+            }
         }
+        assert_eq!(st[face[0]], 1.0, "{name}: closed at A");
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
