@@ -4,6 +4,7 @@ mod args;
 mod check;
 mod deck;
 pub mod exit;
+mod figure;
 mod map;
 mod output;
 mod single;

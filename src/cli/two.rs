@@ -95,6 +95,10 @@ pub struct Args {
     /// its mirror image) with the interface pressure, gap and status to this VTU file.
     #[arg(long)]
     field: Option<PathBuf>,
+    /// Draw the interface pressure against r, with B, R_o and the rules' radii marked, to this
+    /// SVG or PNG file.
+    #[arg(long)]
+    plot: Option<PathBuf>,
     /// Print the result as JSON.
     #[arg(long)]
     json: bool,
@@ -143,6 +147,9 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
         if let Some(path) = path {
             check::output_path(flag, path)?;
         }
+    }
+    if let Some(path) = &args.plot {
+        super::figure::check_plot_path("--plot", path)?;
     }
     Ok(())
 }
@@ -196,6 +203,11 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     };
     if let Some(path) = &args.curve {
         super::write_output(path, &curve_csv(&s, p))?;
+    }
+    if let Some(path) = &args.plot {
+        let g = &args.geom;
+        let d2 = args.d2.unwrap_or(g.d);
+        super::figure::interface_plot(path, &s, (g.b, g.d, d2, args.c))?;
     }
     let Some(last) = s.info.levels.last() else {
         anyhow::bail!("the two-plate solver returned no mesh level");

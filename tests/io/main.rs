@@ -9,6 +9,7 @@ mod common;
 mod csv_out;
 mod exact;
 mod mutants;
+mod plot_out;
 mod py;
 mod read;
 mod report_cases;

@@ -1,0 +1,94 @@
+//! `two --plot FILE` (SVG or PNG by the extension): the interface pressure p(r) of the user's
+//! joint against r, with the bearing face's edge B, the computed separation radius R_o and the
+//! rules of thumb's contact radii (45° cone R = B + D, VDI 2230 for a finite plate, 30° cone R =
+//! B + D tan 30°, [`boltzone::rules`]) marked, in the style of the report's Figs. 15–27. Drawn
+//! by [`boltzone::plot::CurveFigure`]; checked by `tests/io/plot_out.rs` (the markers against the
+//! rules' closed forms, the PNG size).
+
+use super::exit::usage;
+use boltzone::contact::two_plate::TwoPlateSolution;
+use boltzone::plot::{write_figure, Curve, CurveFigure, Marker};
+use boltzone::rules;
+use std::path::Path;
+
+/// Pixel size of the figure.
+const SIZE: (u32, u32) = (900, 600);
+
+/// Rejects a `--plot` path whose extension is neither svg nor png (exit 2).
+pub fn check_plot_path(flag: &str, path: &Path) -> anyhow::Result<()> {
+    match path.extension().and_then(|e| e.to_str()) {
+        Some("svg" | "png") => super::check::output_path(flag, path),
+        _ => usage(flag, path.display(), "must end in .svg or .png"),
+    }
+}
+
+/// Draws the interface pressure of `s` with its markers to `path`. `b`, `d` and `d2` are the
+/// bearing radius and the plates' thicknesses, `c` the plate radius (None: infinite).
+pub fn interface_plot(
+    path: &Path,
+    s: &TwoPlateSolution,
+    (b, d, d2, c): (f64, f64, f64, Option<f64>),
+) -> anyhow::Result<()> {
+    let c_rule = c.unwrap_or(f64::INFINITY);
+    let mut markers = vec![
+        Marker {
+            label: format!("B = {b:.4} in"),
+            x: b,
+            color: (90, 90, 90),
+        },
+        Marker {
+            label: format!("Rₒ = {:.4} ± {:.1e} in (computed)", s.r_o, s.r_o_error),
+            x: s.r_o,
+            color: (200, 30, 30),
+        },
+    ];
+    let vdi = c.map(|c| rules::vdi2230(b, d, d2, c));
+    for (name, rule, color) in [
+        (
+            "45° cone",
+            Some(rules::roetscher(b, d, c_rule)),
+            (30, 90, 200),
+        ),
+        ("VDI 2230", vdi, (20, 150, 60)),
+        (
+            "30° cone",
+            Some(rules::cone_radius(b, d, 30f64.to_radians(), c_rule)),
+            (150, 60, 170),
+        ),
+    ] {
+        if let Some(Ok(r)) = rule {
+            markers.push(Marker {
+                label: format!("{name}: R = {:.4} in", r.radius),
+                x: r.radius,
+                color,
+            });
+        }
+    }
+    // room right of the markers for the legend (upper right), within the plate
+    let x_end = markers.iter().map(|m| m.x).fold(s.r_o, f64::max) * 1.6;
+    let x_end = x_end.min(s.radius.last().copied().unwrap_or(s.r_o));
+    let points: Vec<(f64, f64)> = s
+        .radius
+        .iter()
+        .zip(&s.pressure)
+        .filter(|(r, _)| **r <= x_end)
+        .map(|(r, p)| (*r, *p))
+        .collect();
+    let p_max = points.iter().map(|p| p.1).fold(0.0, f64::max);
+    let fig = CurveFigure {
+        title: format!("Interface pressure; model: {}", s.info.model),
+        x_label: "r [in]".into(),
+        y_label: "p [psi]".into(),
+        curves: vec![Curve {
+            label: "p(r), finest mesh".into(),
+            points,
+            color: (0, 0, 0),
+        }],
+        markers,
+        x_range: (s.radius.first().copied().unwrap_or(0.0), x_end),
+        y_range: (0.0, 1.1 * p_max.max(f64::MIN_POSITIVE)),
+    };
+    write_figure(&fig, path, SIZE)?;
+    eprintln!("wrote {}", path.display());
+    Ok(())
+}
