@@ -19,7 +19,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::Value;
+use crate::value::Value;
 use crate::fem::single::{solve, SingleParams};
 use crate::fem::FemError;
 use crate::hankel::hole::{single_plate_separation, HoleParams};

@@ -22,7 +22,8 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::{show, CompareError, Value};
+use super::{show, CompareError};
+use crate::value::Value;
 use crate::contact::two_plate::{solve, InterfaceModel, TwoPlateParams};
 use crate::error::positive;
 use crate::joint::{Joint, OuterRadius, Plate};

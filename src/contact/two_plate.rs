@@ -441,7 +441,12 @@ fn solve_unit(
     let gap_factor = if g.two { 1.0 } else { 2.0 };
     // A welded zone chosen by the report's rule, or plates that overlap beyond round-off, are
     // no solution of the contact problem: never reported as converged.
-    let gap_scale = sol.gap.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    // (the scale of the displacements: the largest gap, or the deflection under the nut when
+    // the plates touch everywhere)
+    let gap_scale = sol
+        .gap
+        .iter()
+        .fold(sol.nut_deflection.abs(), |m, x| m.max(x.abs()));
     let overlap = gap_factor * sol.gap.iter().fold(0.0f64, |m, x| m.max(-x));
     let unilateral = !sol.lcp.prefix && overlap <= 1e-6 * gap_factor * gap_scale;
     let converged = converged && unilateral;

@@ -25,7 +25,7 @@
 
 use super::dofs::{Component, DofMap};
 use super::mesh::Mesh;
-use super::FemError;
+use super::error::FemError;
 use crate::material::Material;
 use faer::sparse::{SparseColMat, SymbolicSparseColMat};
 

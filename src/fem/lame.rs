@@ -30,7 +30,7 @@ use super::mesh::{Mesh, PlateSpec};
 use super::recover::gauss_stresses;
 use super::solve::{Factorization, SolveParams};
 use super::spacing::Spacing;
-use super::FemError;
+use super::error::FemError;
 use crate::material::Material;
 
 /// A Lamé cylinder: radii a < b, Poisson's ratio ν (E = 1, p = 1).

@@ -19,7 +19,8 @@
 //! - [`recover`]: stresses at Gauss points, element centres and nodes; reactions; the traction
 //!   along a supported line;
 //! - [`single`]: the single-plate model (Fernlund's substitution) and its separation radius R_o;
-//! - [`lame`]: the Lamé cylinder, the closed-form check of the elements.
+//! - [`lame`]: the Lamé cylinder, the closed-form check of the elements;
+//! - [`error`]: [`FemError`], the failures of all of the above.
 //!
 //! For a contact model: build a stack with [`Mesh::structured`] (each plate has its own
 //! interface nodes, [`Mesh::top`]/[`Mesh::bottom`] sorted by r), constrain with [`Supports`],
@@ -51,6 +52,7 @@
 pub mod assemble;
 pub mod dofs;
 pub mod element;
+pub mod error;
 pub mod lame;
 pub mod loads;
 pub mod mesh;
@@ -66,62 +68,11 @@ pub use element::{ElementKind, ElementPoint, Stress};
 pub use loads::Loads;
 pub use mesh::{Mesh, PlateSpec};
 pub use ordering::nested_dissection;
+pub use error::FemError;
 pub use recover::{
     centre_stresses, gauss_stresses, internal_forces, line_traction, nodal_stresses, reactions,
 };
 pub use solve::{Factorization, SolveParams};
 pub use spacing::Spacing;
 
-use crate::error::InputError;
 
-/// Failures of the finite-element solver.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum FemError {
-    /// Bad input (names the field and value).
-    #[error(transparent)]
-    Input(#[from] InputError),
-    /// An element refers to a material that was not supplied.
-    #[error(
-        "element {element} uses material {material} but only {available} materials were given"
-    )]
-    MissingMaterial {
-        /// Element index.
-        element: usize,
-        /// Material index it refers to.
-        material: usize,
-        /// Number of materials given.
-        available: usize,
-    },
-    /// An element couples two equations the pattern does not hold (a pattern built for another
-    /// mesh or dof map).
-    #[error(
-        "entry ({row}, {col}) is not in the sparsity pattern (pattern of another mesh or dof map?)"
-    )]
-    PatternMismatch {
-        /// Row equation.
-        row: usize,
-        /// Column equation.
-        col: usize,
-    },
-    /// The pattern was built for a different number of equations.
-    #[error("the sparsity pattern has {pattern} equations but the dof map {equations}")]
-    PatternSize {
-        /// Equations of the pattern.
-        pattern: usize,
-        /// Equations of the dof map.
-        equations: usize,
-    },
-    /// K is not positive definite: usually a rigid-body motion left free by the supports.
-    #[error("stiffness matrix not positive definite (missing supports?): {0}")]
-    NotPositiveDefinite(String),
-    /// Any other failure of the sparse solver.
-    #[error("sparse solver: {0}")]
-    Solver(String),
-}
-
-impl FemError {
-    /// Whether the failure is bad input (the caller's to fix) rather than a solver failure.
-    pub fn is_input(&self) -> bool {
-        matches!(self, Self::Input(_))
-    }
-}

@@ -39,7 +39,7 @@ use super::element::{ElementPoint, Stress};
 use super::loads::{edge_integrals, edges, Loads};
 use super::mesh::Mesh;
 use super::solve::{Factorization, SolveParams};
-use super::FemError;
+use super::error::FemError;
 use crate::material::Material;
 use faer::sparse::{SparseColMat, Triplet};
 

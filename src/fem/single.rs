@@ -69,10 +69,11 @@ use super::ordering::nested_dissection;
 use super::recover::{line_traction, reactions};
 use super::solve::{Factorization, SolveParams};
 use super::spacing::Spacing;
-use super::FemError;
+use super::error::FemError;
 use crate::error::InputError;
 use crate::joint::{OuterRadius, SinglePlate};
 pub use crate::numerics::convergence::level_estimate;
+use crate::value::meets;
 use std::time::Instant;
 
 /// How the bolt head (and nut) load the faces.
@@ -493,7 +494,6 @@ pub struct SingleSolution {
 /// [`level_estimate`] meets `params.tolerance` relative to R_o, on at least three and at most
 /// `params.levels` levels (3..=12); when the last level misses it, `converged` is false.
 pub fn solve(plate: &SinglePlate, params: &SingleParams) -> Result<SingleSolution, FemError> {
-    check_levels(params.levels)?;
     if !(params.tolerance > 0.0 && params.tolerance < 1.0) {
         return Err(InputError::Parameter {
             field: "single-plate tolerance",
@@ -502,6 +502,16 @@ pub fn solve(plate: &SinglePlate, params: &SingleParams) -> Result<SingleSolutio
         }
         .into());
     }
+    study(plate, params, Some(params.tolerance))
+}
+
+/// The levels of `params` (all of them, or until the estimate meets `tolerance`).
+fn study(
+    plate: &SinglePlate,
+    params: &SingleParams,
+    tolerance: Option<f64>,
+) -> Result<SingleSolution, FemError> {
+    check_levels(params.levels)?;
     let t0 = Instant::now();
     let mut values = Vec::new();
     let (mut nodes, mut dofs) = (0, 0);
@@ -509,10 +519,9 @@ pub fn solve(plate: &SinglePlate, params: &SingleParams) -> Result<SingleSolutio
         let level = level?;
         values.push(level.r_o);
         (nodes, dofs) = (level.nodes, level.dofs);
-        if let Some((_, e)) = level_estimate(&values) {
-            if crate::value::meets(level.r_o, e, params.tolerance) {
-                break;
-            }
+        let met = |(_, e): (f64, f64)| tolerance.is_some_and(|t| meets(level.r_o, e, t));
+        if level_estimate(&values).is_some_and(met) {
+            break;
         }
     }
     let (r_o, r_o_error) = level_estimate(&values).ok_or(FemError::Solver(
@@ -521,7 +530,7 @@ pub fn solve(plate: &SinglePlate, params: &SingleParams) -> Result<SingleSolutio
     Ok(SingleSolution {
         r_o,
         r_o_error,
-        converged: crate::value::meets(r_o, r_o_error, params.tolerance),
+        converged: meets(r_o, r_o_error, tolerance.unwrap_or(params.tolerance)),
         info: SingleInfo {
             observed_order: observed_order(&values),
             levels: values,
@@ -583,29 +592,8 @@ pub fn single_plate_r_o(
     plate: &SinglePlate,
     params: &SingleParams,
 ) -> Result<(f64, SingleInfo), FemError> {
-    check_levels(params.levels)?;
-    let t0 = Instant::now();
-    let mut values = Vec::new();
-    let (mut nodes, mut dofs) = (0, 0);
-    for level in crossing_levels(plate, params)?.take(params.levels) {
-        let level = level?;
-        values.push(level.r_o);
-        (nodes, dofs) = (level.nodes, level.dofs);
-    }
-    let (r_o, err) = level_estimate(&values).ok_or(FemError::Solver(
-        "fewer than three refinement levels were solved".into(),
-    ))?;
-    Ok((
-        r_o,
-        SingleInfo {
-            observed_order: observed_order(&values),
-            levels: values,
-            error_estimate: err,
-            nodes,
-            dofs,
-            seconds: t0.elapsed().as_secs_f64(),
-        },
-    ))
+    let s = study(plate, params, None)?;
+    Ok((s.r_o, s.info))
 }
 
 #[cfg(test)]

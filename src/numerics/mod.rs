@@ -8,7 +8,8 @@
 //! - [`integral_j0`]: Ji₀(x) = ∫₀^x J₀; [`bessel_i`], [`bessel_k`]: I₀, I₁, K₀, K₁ of complex
 //!   argument; [`bessel_nu`]: J_ν of complex order and Γ;
 //! - [`chebyshev`]: interpolation on the Chebyshev–Lobatto grid;
-//! - [`convergence`]: level estimates, fitted rates and observed orders of refinement sequences.
+//! - [`convergence`]: level estimates, fitted rates and observed orders of refinement sequences;
+//! - [`random`]: a seeded generator (splitmix64) for reproducible studies.
 //!
 //! ```
 //! use boltzone::numerics::root::brent;
@@ -25,5 +26,6 @@ pub mod chebyshev;
 pub mod convergence;
 pub mod integral_j0;
 pub mod quadrature;
+pub mod random;
 pub mod root;
 pub mod tanh_sinh;

@@ -12,31 +12,7 @@ use std::io::Read;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-/// splitmix64: a small, fixed, seedable generator (the sets must not change between versions
-/// of a crate).
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        (lo.ln() + self.unit() * (hi.ln() - lo.ln())).exp()
-    }
-    fn pick<'a, T>(&mut self, v: &'a [T]) -> &'a T {
-        &v[(self.next() % v.len() as u64) as usize]
-    }
-    fn chance(&mut self, p: f64) -> bool {
-        self.unit() < p
-    }
-}
+use boltzone::numerics::random::SplitMix64 as Rng;
 
 /// A bad value for any numeric flag.
 fn bad_value(rng: &mut Rng) -> String {
@@ -156,12 +132,17 @@ fn argument_set(rng: &mut Rng) -> Vec<String> {
 }
 
 /// What one run did.
-struct Run {
-    code: Option<i32>,
-    seconds: f64,
-    peak_kib: u64,
-    stdout: String,
-    stderr: String,
+pub struct Run {
+    /// Exit code (None: killed at the time limit).
+    pub code: Option<i32>,
+    /// Wall seconds.
+    pub seconds: f64,
+    /// Peak resident memory, KiB.
+    pub peak_kib: u64,
+    /// What it printed.
+    pub stdout: String,
+    /// Its messages.
+    pub stderr: String,
 }
 
 /// Resident-set high-water mark of a live process, KiB (0 once it has gone).
@@ -177,7 +158,7 @@ fn peak_kib(pid: u32) -> u64 {
 }
 
 /// Runs the binary on `args` in a scratch directory, killing it after `limit`.
-fn run(args: &[String], limit: Duration) -> Run {
+pub fn run(args: &[String], limit: Duration) -> Run {
     let dir = std::env::temp_dir().join(format!("boltzone-fuzz-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let start = Instant::now();
@@ -255,7 +236,7 @@ fn verdict(args: &[String], r: &Run) -> Option<String> {
 /// Runs `n` sets from `seed` on two threads; returns the failures and the slowest run.
 fn campaign(seed: u64, n: usize) -> (Vec<String>, f64, [usize; 4]) {
     let sets: Vec<Vec<String>> = {
-        let mut rng = Rng(seed);
+        let mut rng = Rng::new(seed);
         (0..n).map(|_| argument_set(&mut rng)).collect()
     };
     let results = std::sync::Mutex::new((Vec::new(), 0.0f64, [0usize; 4]));

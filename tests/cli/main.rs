@@ -4,3 +4,4 @@
 
 mod fuzz;
 mod readme;
+mod regressions;

@@ -57,6 +57,9 @@ mod ex14;
 #[allow(dead_code)]
 #[path = "../../examples/15_lap_joint_heat.rs"]
 mod ex15;
+#[allow(dead_code)]
+#[path = "../../examples/16_error_bars.rs"]
+mod ex16;
 
 #[test]
 fn ex01_slab_work_precision() {
@@ -169,4 +172,10 @@ fn ex14_hole_speed() {
 fn ex15_lap_joint_heat() {
     quick();
     ex15::main();
+}
+
+#[test]
+fn ex16_error_bars() {
+    quick();
+    ex16::main().unwrap();
 }

@@ -209,7 +209,7 @@ fn mutate(rng: &mut Rng) -> String {
 }
 
 fn fuzz(cases: usize, seed: u64) -> (usize, usize) {
-    let mut rng = Rng(seed);
+    let mut rng = Rng::new(seed);
     let (mut ok, mut errors) = (0, 0);
     for case in 0..cases {
         let deck = mutate(&mut rng);

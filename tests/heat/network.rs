@@ -7,7 +7,7 @@ use crate::network_fixtures::Rng;
 
 #[test]
 fn energy_balance_on_random_networks() {
-    let mut rng = Rng(7);
+    let mut rng = Rng::new(7);
     for case in 0..50 {
         let n = 2 + rng.below(60);
         let mut net = Network::new(n).unwrap();
@@ -81,7 +81,7 @@ fn energy_balance_on_random_networks() {
 fn series_chain_against_its_closed_form() {
     // Grounds at 100 and -20 through g_0 and g_N, links g_1..g_{N-1}: one flow
     // q = (T_L - T_R) / sum(1/g), and T_i = T_L - q * (resistances up to node i).
-    let mut rng = Rng(42);
+    let mut rng = Rng::new(42);
     for &n in &[1usize, 2, 10, 200] {
         let g: Vec<f64> = (0..=n).map(|_| 0.1 + 10.0 * rng.unit()).collect();
         let mut net = Network::new(n).unwrap();

@@ -8,21 +8,7 @@ use boltzone::fem::Spacing;
 use boltzone::io::deck::{read_decks, run, single_plate_deck, write_deck, DeckError};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
-/// splitmix64 (Steele, Lea, Flood 2014).
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n.max(1) as u64) as usize
-    }
-}
+use boltzone::numerics::random::SplitMix64 as Rng;
 
 fn seeds() -> Vec<String> {
     let ring = std::fs::read_to_string("tests/data/decks/ring.deck").unwrap();
@@ -116,7 +102,7 @@ fn check(e: &DeckError, text: &str) {
 /// Runs `count` mutants; returns (accepted and solved, rejected).
 fn mutants(count: usize, seed: u64) -> (usize, usize) {
     let seeds = seeds();
-    let mut rng = Rng(seed);
+    let mut rng = Rng::new(seed);
     let (mut ok, mut bad) = (0, 0);
     for i in 0..count {
         let text = mutate(&seeds[i % seeds.len()], &mut rng);

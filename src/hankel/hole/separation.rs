@@ -147,7 +147,8 @@ pub fn single_plate_separation(
         let Ok(Root { x: r_o, half_width }) = brent(&mut g, a, fa, c, fc, tol, sep.max_iterations);
         let dr = (1e-4 * d).max(1e-6 * r_o);
         let slope = (f(r_o + dr) - f(r_o - dr)) / (2.0 * dr);
-        let residual_max = holed.info().residual_max;
+        // The rim's residual counts as the hole's: a rim near R_o converges by its own modes.
+        let residual_max = holed.info().residual_max.max(holed.info().rim_residual_max);
         let residual_met = residual_max <= hole.residual_target;
         if let Some(p) = previous {
             changes.push((r_o - p).abs());
@@ -170,7 +171,8 @@ pub fn single_plate_separation(
                 let contracting = match before {
                     Some(c) => last <= 0.5 * c,
                     None => {
-                        let r_prev = history[history.len() - 2].residual_max;
+                        let h = &history[history.len() - 2];
+                        let r_prev = h.residual_max.max(h.rim_residual_max);
                         residual_met || residual_max <= 0.5 * r_prev
                     }
                 };

@@ -1,0 +1,247 @@
+//! The inputs of the "Every result honest" issue, each a named regression test: what crashed,
+//! hung, ran out of memory, missed its error bar, or answered with the wrong exit code.
+
+use crate::fuzz::{run, Run};
+use std::time::Duration;
+
+fn go(args: &[&str]) -> Run {
+    let args: Vec<String> = args.iter().map(|s| s.to_string()).collect();
+    run(&args, Duration::from_secs(60))
+}
+
+fn json(r: &Run) -> serde_json::Value {
+    serde_json::from_str(&r.stdout).unwrap_or_else(|e| panic!("{e}: {}{}", r.stdout, r.stderr))
+}
+
+/// A finished run's exit code, with its output on failure.
+fn code(r: &Run) -> i32 {
+    r.code
+        .unwrap_or_else(|| panic!("over the time limit: {}", r.stderr))
+}
+
+#[test]
+fn huge_outer_radii_answer_as_infinite_plates() {
+    // was: index out of bounds in fem/spacing.rs (two), and a hang (two --c 1e8, map)
+    let inf = json(&go(&[
+        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--json",
+    ]));
+    for c in ["1e8", "1e300", "1e308"] {
+        let r = go(&[
+            "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--c", c, "--json",
+        ]);
+        assert_eq!(code(&r), 0, "{}", r.stderr);
+        let v = json(&r);
+        // the same plate to far below the error bar: (R_o/C)² ≤ 1e-15
+        assert!((v["r_o"].as_f64().unwrap() - inf["r_o"].as_f64().unwrap()).abs() < 1e-12);
+    }
+    let r = go(&["map", "--n", "2", "--c-over-a", "1e308", "--tol", "0.01"]);
+    assert_eq!(code(&r), 0, "{}", r.stderr);
+    // a lower plate 1e309 times thicker is outside the stated domain: exit 2 naming --d2
+    let r = go(&[
+        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--d2", "1e308",
+    ]);
+    assert_eq!(code(&r), 2);
+    assert!(r.stderr.contains("--d2"), "{}", r.stderr);
+}
+
+#[test]
+fn memory_and_time_stay_bounded_for_wide_and_thin_plates() {
+    // was: 5.7 GB (single, C/D = 3e5), 8.8 GB and hangs (hankel, D = 1e-308 or A = 1e-308)
+    let r = go(&[
+        "single", "--a", "1", "--b", "1.5", "--d", "0.01", "--c", "3000",
+    ]);
+    assert_eq!(code(&r), 0, "{}", r.stderr);
+    assert!(r.peak_kib < 512 * 1024, "{} KiB", r.peak_kib);
+    for (flag, args) in [
+        (
+            "--a",
+            [
+                "single", "--method", "hankel", "--a", "0.1", "--b", "0.31", "--d", "1e-308",
+            ],
+        ),
+        (
+            "--a",
+            [
+                "single", "--method", "hankel", "--a", "1e-308", "--b", "0.31", "--d", "0.1",
+            ],
+        ),
+    ] {
+        let r = go(&args);
+        assert_eq!(code(&r), 2, "{}", r.stderr);
+        assert!(
+            r.stderr.contains(flag) && r.stderr.contains("A/D"),
+            "{}",
+            r.stderr
+        );
+    }
+}
+
+#[test]
+fn thin_plates_converge_whatever_the_absolute_scale() {
+    // was: "stiffness matrix not positive definite" at C/D ≳ 3,300, depending on the scale
+    let base = json(&go(&[
+        "two", "--a", "1", "--b", "1.5", "--d", "0.01", "--c", "32", "--json",
+    ]));
+    assert_eq!(base["converged"], true);
+    let scaled = json(&go(&[
+        "two", "--a", "1e-6", "--b", "1.5e-6", "--d", "1e-8", "--c", "3.2e-5", "--e", "1e-300",
+        "--json",
+    ]));
+    let (r, s) = (
+        base["r_o"].as_f64().unwrap(),
+        scaled["r_o"].as_f64().unwrap(),
+    );
+    // the same problem in other units: the same R_o to rounding
+    assert!((s * 1e6 - r).abs() < 1e-12 * r, "{r} vs {}", s * 1e6);
+}
+
+#[test]
+fn contact_out_to_the_rim_is_an_answer() {
+    // was: exit 2 "contact zone reaches … candidate window"
+    let r = go(&[
+        "two", "--a", "0.1", "--b", "0.31", "--d", "0.5", "--c", "0.35", "--json",
+    ]);
+    assert_eq!(code(&r), 0, "{}", r.stderr);
+    let v = json(&r);
+    assert_eq!(v["r_o"].as_f64(), Some(0.35));
+    assert_eq!(v["full_contact"], true);
+}
+
+#[test]
+fn an_infinite_plate_holds_its_error_bar_against_the_receding_contact_solution() {
+    // was: 1.6e-4 relative below the semi-analytic value, 27–107× its own estimate, "converged"
+    use boltzone::hankel::receding::{Layer, RecedingParams};
+    let load = boltzone::FaceLoad::uniform(0.0, 0.1, 1.0).unwrap();
+    let exact = Layer::new(0.1, boltzone::Material::unit(0.3).unwrap(), load)
+        .unwrap()
+        .receding_contact(&RecedingParams::default())
+        .unwrap();
+    for tol in ["1e-3", "1e-4"] {
+        let v = json(&go(&[
+            "two", "--a", "0", "--b", "0.1", "--d", "0.1", "--tol", tol, "--json",
+        ]));
+        assert_eq!(v["converged"], true);
+        let actual = (v["r_o"].as_f64().unwrap() - exact.r_o).abs();
+        let bar = v["r_o_error"].as_f64().unwrap() + exact.info.error;
+        assert!(
+            actual <= bar,
+            "tol {tol}: actual {actual:.2e} > estimate {bar:.2e}"
+        );
+        // no R_o/A without a hole (it would be infinite)
+        assert!(v.get("r_o_over_a").is_none());
+    }
+}
+
+#[test]
+fn the_hole_route_flags_what_it_did_not_reach() {
+    // was: R_o = 7.25 ± 4.3e5, exit 0
+    let r = go(&[
+        "single", "--method", "hankel", "--a", "1", "--b", "1.0014", "--d", "534", "--json",
+    ]);
+    assert_eq!(code(&r), 3, "{}", r.stderr);
+    assert_eq!(json(&r)["converged"], false);
+}
+
+#[test]
+fn every_bad_value_is_named_by_its_flag() {
+    let g = ["two", "--a", "0.1", "--b", "0.31", "--d", "0.1"];
+    for (extra, flag) in [
+        (vec!["--c", "-1"], "--c"),
+        (vec!["--d2", "-1"], "--d2"),
+        (vec!["--e2", "0"], "--e2"),
+        (vec!["--nu2", "0.7"], "--nu2"),
+        (vec!["--p", "0"], "--p"),
+        (vec!["--nu", "0.4999999999"], "--nu"),
+        (vec!["--tol", "2"], "--tol"),
+        (vec!["--tol", "0"], "--tol"),
+    ] {
+        let args: Vec<&str> = g.iter().copied().chain(extra.iter().copied()).collect();
+        let r = go(&args);
+        assert_eq!(code(&r), 2, "{args:?}: {}", r.stderr);
+        assert!(r.stderr.contains(flag), "{args:?}: {}", r.stderr);
+        assert!(!r.stderr.contains("TwoPlateParams"), "{}", r.stderr);
+    }
+    // a modulus of 1e-308 is valid: the problem is scaled, not refused
+    let args: Vec<&str> = g.iter().copied().chain(["--e", "1e-308"]).collect();
+    assert_eq!(code(&go(&args)), 0);
+    let r = go(&[
+        "slab", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--tol", "1e308", "--json",
+    ]);
+    assert_eq!(code(&r), 2);
+    assert!(r.stderr.contains("--tol"));
+}
+
+#[test]
+fn output_paths_are_checked_before_any_work_and_nothing_is_left_behind() {
+    let dir = std::env::temp_dir().join(format!("boltzone-files-{}", std::process::id()));
+    std::fs::create_dir_all(dir.join("somedir")).unwrap();
+    let d = dir.to_str().unwrap();
+    let somedir = format!("{d}/somedir");
+    let r = go(&[
+        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--curve", &somedir,
+    ]);
+    assert_eq!(code(&r), 2);
+    assert!(r.stderr.contains("--curve"), "{}", r.stderr);
+    let r = go(&["table2", "--csv", "/"]);
+    assert_eq!(code(&r), 2);
+    let csv = format!("{d}/m.csv");
+    let r = go(&[
+        "map",
+        "--n",
+        "2",
+        "--csv",
+        &csv,
+        "--svg",
+        "/proc/boltzone-x.svg",
+    ]);
+    assert_eq!(code(&r), 2);
+    assert!(r.stderr.contains("--svg"), "{}", r.stderr);
+    assert!(
+        !std::path::Path::new(&csv).exists(),
+        "the CSV was written before the check"
+    );
+    // nothing but the directory we made
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(left, vec![std::ffi::OsString::from("somedir")]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn welded_dissimilar_plates_are_never_a_converged_answer() {
+    // steel on aluminium, welded: no sign-consistent edge; the plates overlap
+    let r = go(&[
+        "two",
+        "--a",
+        "0.1285",
+        "--b",
+        "0.211",
+        "--d",
+        "0.124",
+        "--d2",
+        "0.257",
+        "--c",
+        "2",
+        "--e",
+        "29e6",
+        "--e2",
+        "1e7",
+        "--nu2",
+        "0.33",
+        "--interface",
+        "welded",
+    ]);
+    assert_eq!(code(&r), 3, "{}{}", r.stdout, r.stderr);
+    assert!(r.stdout.contains("WARNING") && r.stdout.contains("frictionless"));
+    // the same pair frictionless is clean
+    let r = go(&[
+        "two", "--a", "0.1285", "--b", "0.211", "--d", "0.124", "--d2", "0.257", "--c", "2", "--e",
+        "29e6", "--e2", "1e7", "--nu2", "0.33", "--json",
+    ]);
+    assert_eq!(code(&r), 0, "{}", r.stderr);
+    let v = json(&r);
+    assert_eq!(v["converged"], true);
+    assert!(v["overlap"].as_f64().unwrap() < 1e-12, "{v}"); // round-off only
+}
