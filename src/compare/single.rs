@@ -19,12 +19,12 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use crate::value::Value;
 use crate::fem::single::{solve, SingleParams};
 use crate::fem::FemError;
 use crate::hankel::hole::{single_plate_separation, HoleParams};
 use crate::hankel::separation::{SeparationError, SeparationParams};
 use crate::joint::SinglePlate;
+use crate::value::Value;
 
 /// Most FE levels [`single_fem`] tries (the finest has 2⁻⁷ of the first's element size at the
 /// foci).

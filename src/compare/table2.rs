@@ -23,13 +23,13 @@
 //! ```
 
 use super::{show, CompareError};
-use crate::value::Value;
 use crate::contact::two_plate::{solve, InterfaceModel, TwoPlateParams};
 use crate::error::positive;
 use crate::joint::{Joint, OuterRadius, Plate};
 use crate::load::FaceLoad;
 use crate::material::Material;
 use crate::reference::{self, Table2Row, TABLE2_HOLE_RADIUS, TABLE2_OUTER_RADIUS};
+use crate::value::Value;
 use rayon::prelude::*;
 use serde::Serialize;
 

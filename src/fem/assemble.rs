@@ -24,8 +24,8 @@
 //! ```
 
 use super::dofs::{Component, DofMap};
-use super::mesh::Mesh;
 use super::error::FemError;
+use super::mesh::Mesh;
 use crate::material::Material;
 use faer::sparse::{SparseColMat, SymbolicSparseColMat};
 

@@ -25,12 +25,12 @@
 use super::assemble::{assemble, Pattern};
 use super::dofs::{DofMap, Supports};
 use super::element::ElementKind;
+use super::error::FemError;
 use super::loads::Loads;
 use super::mesh::{Mesh, PlateSpec};
 use super::recover::gauss_stresses;
 use super::solve::{Factorization, SolveParams};
 use super::spacing::Spacing;
-use super::error::FemError;
 use crate::material::Material;
 
 /// A Lamé cylinder: radii a < b, Poisson's ratio ν (E = 1, p = 1).

@@ -65,14 +65,12 @@ pub mod spacing;
 pub use assemble::{assemble, Pattern, Stiffness};
 pub use dofs::{Component, DofMap, NodeSupport, Supports};
 pub use element::{ElementKind, ElementPoint, Stress};
+pub use error::FemError;
 pub use loads::Loads;
 pub use mesh::{Mesh, PlateSpec};
 pub use ordering::nested_dissection;
-pub use error::FemError;
 pub use recover::{
     centre_stresses, gauss_stresses, internal_forces, line_traction, nodal_stresses, reactions,
 };
 pub use solve::{Factorization, SolveParams};
 pub use spacing::Spacing;
-
-

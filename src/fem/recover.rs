@@ -36,10 +36,10 @@
 //! ```
 
 use super::element::{ElementPoint, Stress};
+use super::error::FemError;
 use super::loads::{edge_integrals, edges, Loads};
 use super::mesh::Mesh;
 use super::solve::{Factorization, SolveParams};
-use super::error::FemError;
 use crate::material::Material;
 use faer::sparse::{SparseColMat, Triplet};
 

@@ -63,13 +63,13 @@
 use super::assemble::{assemble, Pattern};
 use super::dofs::{Component, DofMap, Supports};
 use super::element::ElementKind;
+use super::error::FemError;
 use super::loads::Loads;
 use super::mesh::{Mesh, PlateSpec};
 use super::ordering::nested_dissection;
 use super::recover::{line_traction, reactions};
 use super::solve::{Factorization, SolveParams};
 use super::spacing::Spacing;
-use super::error::FemError;
 use crate::error::InputError;
 use crate::joint::{OuterRadius, SinglePlate};
 pub use crate::numerics::convergence::level_estimate;

@@ -6,6 +6,7 @@
 //! Rust-side checks run.
 
 use super::py::{boltzone_ok, force_and_bound, run, temp_dir};
+use crate::common::boltzone;
 use boltzone::contact::two_plate::{solve_field, TwoPlateParams};
 use boltzone::fem::nodal_stresses;
 use boltzone::fem::single::{finest_half_plate, solve, SingleParams};
@@ -242,6 +243,52 @@ fn two_plate_field_reads_back_and_its_pressure_carries_the_bolt_force() {
             }
         }
         assert_eq!(st[face[0]], 1.0, "{name}: closed at A");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn field_paths_are_checked_before_any_work() {
+    let dir = temp_dir("vtu-paths");
+    let path = dir.join("f.vtu");
+    let p = path.to_str().unwrap();
+    let missing = dir.join("no-such-dir").join("f.vtu");
+    let m = missing.to_str().unwrap();
+    for (args, flag) in [
+        (
+            vec![
+                "single", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--method", "hankel",
+                "--field", p,
+            ],
+            "--field",
+        ),
+        (
+            vec![
+                "single", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--method", "hankel",
+                "--curve", p,
+            ],
+            "--curve",
+        ),
+        (
+            vec![
+                "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--field", m,
+            ],
+            "--field",
+        ),
+        (
+            vec![
+                "single", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--field", m,
+            ],
+            "--field",
+        ),
+    ] {
+        let out = boltzone(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(
+            String::from_utf8_lossy(&out.stderr).contains(flag),
+            "{args:?}"
+        );
+        assert!(!path.exists() && !missing.exists());
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
