@@ -29,7 +29,6 @@ pub fn interface_plot(
     s: &TwoPlateSolution,
     (b, d, d2, c): (f64, f64, f64, Option<f64>),
 ) -> anyhow::Result<()> {
-    let c_rule = c.unwrap_or(f64::INFINITY);
     let mut markers = vec![
         Marker {
             label: format!("B = {b:.4} in"),
@@ -42,27 +41,13 @@ pub fn interface_plot(
             color: (200, 30, 30),
         },
     ];
-    let vdi = c.map(|c| rules::vdi2230(b, d, d2, c));
-    for (name, rule, color) in [
-        (
-            "45° cone",
-            Some(rules::roetscher(b, d, c_rule)),
-            (30, 90, 200),
-        ),
-        ("VDI 2230", vdi, (20, 150, 60)),
-        (
-            "30° cone",
-            Some(rules::cone_radius(b, d, 30f64.to_radians(), c_rule)),
-            (150, 60, 170),
-        ),
-    ] {
-        if let Some(Ok(r)) = rule {
-            markers.push(Marker {
-                label: format!("{name}: R = {:.4} in", r.radius),
-                x: r.radius,
-                color,
-            });
-        }
+    let colors = [(30, 90, 200), (20, 150, 60), (150, 60, 170)];
+    for ((name, radius), color) in rule_radii((b, d, d2, c)).into_iter().zip(colors) {
+        markers.push(Marker {
+            label: format!("{name}: R = {radius:.4} in"),
+            x: radius,
+            color,
+        });
     }
     // room right of the markers for the legend (upper right), within the plate
     let x_end = markers.iter().map(|m| m.x).fold(s.r_o, f64::max) * 1.6;
@@ -91,4 +76,22 @@ pub fn interface_plot(
     write_figure(&fig, path, SIZE)?;
     eprintln!("wrote {}", path.display());
     Ok(())
+}
+
+/// The rules of thumb's contact radii for bearing radius `b`, plates `d` (under the head) and
+/// `d2` thick and plate radius `c` (None: infinite): the 45° cone, VDI 2230 (finite plates
+/// only: it needs the plate's diameter) and the 30° cone, each with its name.
+pub fn rule_radii((b, d, d2, c): (f64, f64, f64, Option<f64>)) -> Vec<(&'static str, f64)> {
+    let c_rule = c.unwrap_or(f64::INFINITY);
+    [
+        ("45° cone", Some(rules::roetscher(b, d, c_rule))),
+        ("VDI 2230", c.map(|c| rules::vdi2230(b, d, d2, c))),
+        (
+            "30° cone",
+            Some(rules::cone_radius(b, d, 30f64.to_radians(), c_rule)),
+        ),
+    ]
+    .into_iter()
+    .filter_map(|(name, r)| Some((name, r?.ok()?.radius)))
+    .collect()
 }

@@ -7,6 +7,7 @@ pub mod exit;
 mod figure;
 mod map;
 mod output;
+mod report;
 mod single;
 mod slab;
 mod table1;

@@ -99,6 +99,10 @@ pub struct Args {
     /// SVG or PNG file.
     #[arg(long)]
     plot: Option<PathBuf>,
+    /// Write a calculation report (Markdown: inputs, units, version, method, results, rules of
+    /// thumb, the --plot figure) to this file.
+    #[arg(long)]
+    report: Option<PathBuf>,
     /// Print the result as JSON.
     #[arg(long)]
     json: bool,
@@ -143,7 +147,11 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     if let Some(e2) = args.e2 {
         check::ratio("--e2", e2, args.e, 1e6, "Young's modulus")?;
     }
-    for (flag, path) in [("--curve", &args.curve), ("--field", &args.field)] {
+    for (flag, path) in [
+        ("--curve", &args.curve),
+        ("--field", &args.field),
+        ("--report", &args.report),
+    ] {
         if let Some(path) = path {
             check::output_path(flag, path)?;
         }
@@ -208,6 +216,17 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         let g = &args.geom;
         let d2 = args.d2.unwrap_or(g.d);
         super::figure::interface_plot(path, &s, (g.b, g.d, d2, args.c))?;
+    }
+    if let Some(path) = &args.report {
+        let g = &args.geom;
+        let inputs = super::report::ReportInputs {
+            inputs: serde_json::to_value(&args)?,
+            geometry: (g.a, g.b, g.d, args.d2.unwrap_or(g.d), args.c),
+            pressure: p,
+            tolerance: args.tol,
+            plot: args.plot.as_deref(),
+        };
+        super::write_output(path, &super::report::two_report(&s, &inputs))?;
     }
     let Some(last) = s.info.levels.last() else {
         anyhow::bail!("the two-plate solver returned no mesh level");
