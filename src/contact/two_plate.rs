@@ -48,8 +48,8 @@
 //! ```
 
 use super::error::ContactError;
-pub use super::field::TwoPlateField;
 use super::field::UnitField;
+pub use super::field::{solve_field, TwoPlateField};
 use super::level::{LevelSolution, Model};
 pub use super::params::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use super::refine::{mesh, solve_adaptive, MeshLayout, PreviousLevel};
@@ -155,18 +155,8 @@ pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution,
     solve_keeping(joint, params).map(|(s, _)| s)
 }
 
-/// As [`solve`], and the finest level's field (mesh, materials, displacements, which interface
-/// nodes are closed) in the joint's own units, for output ([`crate::io::vtu`]).
-pub fn solve_field(
-    joint: &Joint,
-    params: &TwoPlateParams,
-) -> Result<(TwoPlateSolution, TwoPlateField), ContactError> {
-    let (s, field) = solve_keeping(joint, params)?;
-    Ok((s, field.rescaled()?))
-}
-
 /// [`solve`], keeping the finest level's model and solution in the solver's units.
-fn solve_keeping(
+pub(crate) fn solve_keeping(
     joint: &Joint,
     params: &TwoPlateParams,
 ) -> Result<(TwoPlateSolution, UnitField), ContactError> {
