@@ -80,6 +80,10 @@ pub struct Args {
     /// its upper half mirrored below the midplane) to this VTU file for ParaView (fem).
     #[arg(long)]
     field: Option<PathBuf>,
+    /// Draw the finest FE level's midplane σ_z (P = 1 psi) against r, with B, R_o and the
+    /// rules' radii marked, to this SVG or PNG file (fem).
+    #[arg(long)]
+    plot: Option<PathBuf>,
 }
 
 /// --tol, or the method's default.
@@ -119,13 +123,20 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
             "needs --method fem (the Hankel route loads the faces by a pressure)",
         );
     }
-    for (flag, path) in [("--curve", &args.curve), ("--field", &args.field)] {
+    for (flag, path) in [
+        ("--curve", &args.curve),
+        ("--field", &args.field),
+        ("--plot", &args.plot),
+    ] {
         if let Some(path) = path {
             if args.method == Method::Hankel {
                 return super::exit::usage(flag, path.display(), "needs --method fem");
             }
             check::output_path(flag, path)?;
         }
+    }
+    if let Some(path) = &args.plot {
+        super::figure::check_plot_path("--plot", path)?;
     }
     Ok(())
 }
@@ -159,7 +170,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         ..SingleParams::default()
     };
     let s = solve(&plate, &params)?;
-    if args.curve.is_some() || args.field.is_some() {
+    if args.curve.is_some() || args.field.is_some() || args.plot.is_some() {
         write_finest(&args, &plate, &params, &s)?;
     }
     let info = &s.info;
@@ -320,8 +331,20 @@ fn write_finest(
         s.info.levels.len(),
         h.mesh.n_nodes()
     );
+    let m = midplane_of(plate, &h)?;
+    if let Some(path) = &args.plot {
+        let g = &args.geom;
+        let curve = super::figure::RadiusCurve {
+            title: "Single plate 2D thick: midplane normal stress (FE, finest level)".into(),
+            y_label: "σ_z [psi] (P = 1 psi)",
+            label: "σ_z(r), finest mesh",
+            r: &m.r,
+            y: &m.sigma_z,
+            r_o: (s.r_o, s.r_o_error),
+        };
+        super::figure::radius_plot(path, &curve, (g.b, g.d, g.d, args.c))?;
+    }
     if let Some(path) = &args.curve {
-        let m = midplane_of(plate, &h)?;
         let notes = [
             method.clone(),
             "sigma_z = midplane normal stress from the roller reactions, compression negative"

@@ -215,7 +215,15 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     if let Some(path) = &args.plot {
         let g = &args.geom;
         let d2 = args.d2.unwrap_or(g.d);
-        super::figure::interface_plot(path, &s, (g.b, g.d, d2, args.c))?;
+        let curve = super::figure::RadiusCurve {
+            title: format!("Interface pressure; model: {}", s.info.model),
+            y_label: "p [psi]",
+            label: "p(r), finest mesh",
+            r: &s.radius,
+            y: &s.pressure,
+            r_o: (s.r_o, s.r_o_error),
+        };
+        super::figure::radius_plot(path, &curve, (g.b, g.d, d2, args.c))?;
     }
     if let Some(path) = &args.report {
         let g = &args.geom;

@@ -1,52 +1,58 @@
-//! `two --plot FILE` and `two --report FILE.md`: the interface pressure figure of the user's
-//! joint (SVG and PNG) and its calculation report. The markers' radii and the report's rules
+//! `two --plot FILE`, `single --plot FILE` and `two --report FILE.md`: the interface pressure
+//! and midplane σ_z figures of the user's joint (SVG and PNG) and its calculation report. The markers' radii and the report's rules
 //! are checked against the rules' closed forms (45° cone R = B + D, 30° cone R = B + D tan 30°,
 //! computed here), the R_o marker and the report's results against the JSON of the same run,
 //! the PNG against the size asked (its IHDR header); a bad extension exits 2 and writes
-//! nothing. (The PNG of this case and of Table 2's unequal pair were looked at: the curve falls
-//! to zero at the R_o marker, the rule markers lie right of it, the legend leaves the curve
+//! nothing. (The PNGs of this case and of Table 2's unequal pair were looked at: the pressure
+//! falls to zero and σ_z crosses zero at the R_o marker, the legend leaves the curves
 //! uncovered.)
 
 use super::py::temp_dir;
 use crate::common::{boltzone, json_of};
 
 #[test]
-fn interface_plot_marks_r_o_and_the_rules() {
+fn plots_mark_r_o_and_the_rules() {
     let dir = temp_dir("plot");
-    let (svg, png) = (dir.join("p.svg"), dir.join("p.png"));
-    let base = [
-        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--c", "1.54",
-    ];
-    let mut args = base.to_vec();
-    args.extend(["--tol", "1e-3", "--json", "--plot", svg.to_str().unwrap()]);
-    let v = json_of(&boltzone(&args));
-    let text = std::fs::read_to_string(&svg).unwrap();
     let (b, d) = (0.31f64, 0.1f64);
-    for want in [
-        format!("45° cone: R = {:.4} in", b + d),
-        format!("30° cone: R = {:.4} in", b + d * 30f64.to_radians().tan()),
-        format!("B = {b:.4} in"),
-        format!("Rₒ = {:.4} ±", v["r_o"].as_f64().unwrap()),
-        "r [in]".to_string(),
-        "p [psi]".to_string(),
-    ] {
-        assert!(text.contains(&want), "no '{want}' in the SVG");
+    // the two-plate interface pressure and the single plate's midplane σ_z
+    for (cmd, y_label) in [("two", "p [psi]"), ("single", "σ_z [psi]")] {
+        let (svg, png) = (
+            dir.join(format!("{cmd}.svg")),
+            dir.join(format!("{cmd}.png")),
+        );
+        let line = format!("{cmd} --a 0.1 --b 0.31 --d 0.1 --c 1.54 --tol 1e-3");
+        let base: Vec<&str> = line.split_whitespace().collect();
+        let mut args = base.clone();
+        args.extend(["--json", "--plot", svg.to_str().unwrap()]);
+        let v = json_of(&boltzone(&args));
+        let text = std::fs::read_to_string(&svg).unwrap();
+        for want in [
+            format!("45° cone: R = {:.4} in", b + d),
+            format!("30° cone: R = {:.4} in", b + d * 30f64.to_radians().tan()),
+            format!("B = {b:.4} in"),
+            format!("Rₒ = {:.4} ±", v["r_o"].as_f64().unwrap()),
+            "r [in]".to_string(),
+            y_label.to_string(),
+        ] {
+            assert!(text.contains(&want), "{cmd}: no '{want}' in the SVG");
+        }
+        let mut args = base.clone();
+        args.extend(["--plot", png.to_str().unwrap()]);
+        assert!(boltzone(&args).status.success());
+        let bytes = std::fs::read(&png).unwrap();
+        assert_eq!(&bytes[1..4], b"PNG");
+        let be =
+            |k: usize| u32::from_be_bytes([bytes[k], bytes[k + 1], bytes[k + 2], bytes[k + 3]]);
+        assert_eq!((be(16), be(20)), (900, 600));
+        // a bad extension: exit 2 naming the flag, before any work, nothing written
+        let bad = dir.join("p.txt");
+        let mut args = base.clone();
+        args.extend(["--plot", bad.to_str().unwrap()]);
+        let out = boltzone(&args);
+        assert_eq!(out.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&out.stderr).contains("--plot"));
+        assert!(!bad.exists());
     }
-    let mut args = base.to_vec();
-    args.extend(["--tol", "1e-3", "--plot", png.to_str().unwrap()]);
-    assert!(boltzone(&args).status.success());
-    let bytes = std::fs::read(&png).unwrap();
-    assert_eq!(&bytes[1..4], b"PNG");
-    let be = |k: usize| u32::from_be_bytes([bytes[k], bytes[k + 1], bytes[k + 2], bytes[k + 3]]);
-    assert_eq!((be(16), be(20)), (900, 600));
-    // a bad extension: exit 2 naming the flag, before any work, nothing written
-    let bad = dir.join("p.txt");
-    let mut args = base.to_vec();
-    args.extend(["--plot", bad.to_str().unwrap()]);
-    let out = boltzone(&args);
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("--plot"));
-    assert!(!bad.exists());
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
