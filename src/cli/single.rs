@@ -6,7 +6,7 @@
 //! [`boltzone::hankel::hole::single_plate_separation`] (infinite slab + hole correction, and a
 //! rim correction when `--c` is given).
 
-use super::args::{Element, Geometry};
+use super::args::{Element, Geometry, OutputFiles};
 use super::check;
 use super::exit::{num, sig, Status};
 use boltzone::fem::single::{
@@ -16,7 +16,6 @@ use boltzone::fem::ElementKind;
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
 use boltzone::hankel::SeparationParams;
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
-use std::path::PathBuf;
 
 /// Which solver computes R_o.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
@@ -72,18 +71,10 @@ pub struct Args {
     /// Print JSON instead of text.
     #[arg(long)]
     json: bool,
-    /// Write the midplane σ_z (P = 1 psi) of the finest FE level to this CSV file (fem; header
-    /// `r [in],sigma_z [psi]`, then `#` provenance lines, then data).
-    #[arg(long)]
-    curve: Option<PathBuf>,
-    /// Write the finest FE level's field (mesh, displacements, stresses; the plate 2D thick,
-    /// its upper half mirrored below the midplane) to this VTU file for ParaView (fem).
-    #[arg(long)]
-    field: Option<PathBuf>,
-    /// Draw the finest FE level's midplane σ_z (P = 1 psi) against r, with B, R_o and the
-    /// rules' radii marked, to this SVG or PNG file (fem).
-    #[arg(long)]
-    plot: Option<PathBuf>,
+    /// Curve, field and figure files (fem).
+    #[command(flatten)]
+    #[serde(flatten)]
+    out: OutputFiles,
 }
 
 /// --tol, or the method's default.
@@ -123,21 +114,14 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
             "needs --method fem (the Hankel route loads the faces by a pressure)",
         );
     }
-    for (flag, path) in [
-        ("--curve", &args.curve),
-        ("--field", &args.field),
-        ("--plot", &args.plot),
-    ] {
-        if let Some(path) = path {
-            if args.method == Method::Hankel {
-                return super::exit::usage(flag, path.display(), "needs --method fem");
-            }
-            check::output_path(flag, path)?;
-        }
+    if args.out.any() && args.method == Method::Hankel {
+        return super::exit::usage(
+            "--curve/--field/--plot",
+            "given",
+            "need --method fem (the finest FE level is what they show)",
+        );
     }
-    if let Some(path) = &args.plot {
-        super::figure::check_plot_path("--plot", path)?;
-    }
+    args.out.check()?;
     Ok(())
 }
 
@@ -170,7 +154,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         ..SingleParams::default()
     };
     let s = solve(&plate, &params)?;
-    if args.curve.is_some() || args.field.is_some() || args.plot.is_some() {
+    if args.out.any() {
         write_finest(&args, &plate, &params, &s)?;
     }
     let info = &s.info;
@@ -332,7 +316,7 @@ fn write_finest(
         h.mesh.n_nodes()
     );
     let m = midplane_of(plate, &h)?;
-    if let Some(path) = &args.plot {
+    if let Some(path) = &args.out.plot {
         let g = &args.geom;
         let curve = super::figure::RadiusCurve {
             title: "Single plate 2D thick: midplane normal stress (FE, finest level)".into(),
@@ -344,7 +328,7 @@ fn write_finest(
         };
         super::figure::radius_plot(path, &curve, (g.b, g.d, g.d, args.c))?;
     }
-    if let Some(path) = &args.curve {
+    if let Some(path) = &args.out.curve {
         let notes = [
             method.clone(),
             "sigma_z = midplane normal stress from the roller reactions, compression negative"
@@ -361,7 +345,7 @@ fn write_finest(
             &super::output::curve_csv(&["r [in]", "sigma_z [psi]"], &notes, &rows),
         )?;
     }
-    if let Some(path) = &args.field {
+    if let Some(path) = &args.out.field {
         let mut grid = boltzone::io::vtu::Grid::plate(&h.mesh, &[plate.material()], &h.u, 0)?;
         let lower = grid.mirrored(1);
         grid.append(&lower);

@@ -2,7 +2,7 @@
 //! [`boltzone::contact::two_plate`]: separation radius R_o with its error, and on request the
 //! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV.
 
-use super::args::{Element, Geometry};
+use super::args::{Element, Geometry, OutputFiles};
 use super::check;
 use super::exit::{sig, Status};
 use boltzone::contact::two_plate::{
@@ -87,18 +87,10 @@ pub struct Args {
     /// Wanted relative error of R_o.
     #[arg(long, default_value_t = 5e-4)]
     tol: f64,
-    /// Write r, p(r), g(r), τ(r) of the finest mesh to this CSV file (header `r [in],p [psi],
-    /// g [in],tau [psi]`, then `#` provenance lines, then data).
-    #[arg(long)]
-    curve: Option<PathBuf>,
-    /// Write the finest mesh's field (both plates; a symmetric joint's computed upper plate and
-    /// its mirror image) with the interface pressure, gap and status to this VTU file.
-    #[arg(long)]
-    field: Option<PathBuf>,
-    /// Draw the interface pressure against r, with B, R_o and the rules' radii marked, to this
-    /// SVG or PNG file.
-    #[arg(long)]
-    plot: Option<PathBuf>,
+    /// Curve, field and figure files.
+    #[command(flatten)]
+    #[serde(flatten)]
+    out: OutputFiles,
     /// Write a calculation report (Markdown: inputs, units, version, method, results, rules of
     /// thumb, the --plot figure) to this file.
     #[arg(long)]
@@ -147,17 +139,9 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     if let Some(e2) = args.e2 {
         check::ratio("--e2", e2, args.e, 1e6, "Young's modulus")?;
     }
-    for (flag, path) in [
-        ("--curve", &args.curve),
-        ("--field", &args.field),
-        ("--report", &args.report),
-    ] {
-        if let Some(path) = path {
-            check::output_path(flag, path)?;
-        }
-    }
-    if let Some(path) = &args.plot {
-        super::figure::check_plot_path("--plot", path)?;
+    args.out.check()?;
+    if let Some(path) = &args.report {
+        check::output_path("--report", path)?;
     }
     Ok(())
 }
@@ -201,7 +185,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         tolerance: args.tol,
         ..Default::default()
     };
-    let s = match &args.field {
+    let s = match &args.out.field {
         None => solve(&joint, &params)?,
         Some(path) => {
             let (s, field) = solve_field(&joint, &params)?;
@@ -209,10 +193,10 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             s
         }
     };
-    if let Some(path) = &args.curve {
+    if let Some(path) = &args.out.curve {
         super::write_output(path, &curve_csv(&s, p))?;
     }
-    if let Some(path) = &args.plot {
+    if let Some(path) = &args.out.plot {
         let g = &args.geom;
         let d2 = args.d2.unwrap_or(g.d);
         let curve = super::figure::RadiusCurve {
@@ -232,7 +216,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             geometry: (g.a, g.b, g.d, args.d2.unwrap_or(g.d), args.c),
             pressure: p,
             tolerance: args.tol,
-            plot: args.plot.as_deref(),
+            plot: args.out.plot.as_deref(),
         };
         super::write_output(path, &super::report::two_report(&s, &inputs))?;
     }
