@@ -7,7 +7,8 @@
 //! line is a comment; `numpy.genfromtxt(FILE, comments="#", names=True, delimiter=",")` and
 //! `pandas.read_csv(FILE, comment="#")` both skip the comment lines that follow. Numbers are
 //! printed in Rust's shortest round-trip exponent form (`1.25e-1`): every reader gets the f64
-//! back exactly. Checked by `tests/io/csv_out.rs` (numpy reads each command's curve).
+//! back exactly. Checked by `tests/io/csv_out.rs` (numpy reads each command's curve) and
+//! `tests/io/json_out.rs` (every JSON object's provenance).
 
 use serde::Serialize;
 use serde_json::Value;
