@@ -178,6 +178,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             v["r_o_over_a"] = q.into();
         }
         super::output::stamp(&mut v, &args, start)?;
+        v["inputs"]["tol"] = tolerance(&args).into(); // the method's default filled in
         super::print_json(&v)?;
     } else {
         println!(
@@ -264,6 +265,7 @@ fn run_hankel(
             v["r_o_over_a"] = q.into();
         }
         super::output::stamp(&mut v, args, start)?;
+        v["inputs"]["tol"] = tolerance(args).into(); // the method's default filled in
         super::print_json(&v)?;
     } else {
         println!(
