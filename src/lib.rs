@@ -14,7 +14,8 @@
 //!
 //! 1. the `boltzone` command (`src/cli/`, `src/main.rs`): one module per subcommand, no
 //!    numerics;
-//! 2. [`compare`] | [`heat`] | [`io`]: single- vs two-plate R_o and the rules of thumb: Tables 1
+//! 2. [`compare`] | [`heat`] | [`io`] | [`scene`] (scene files: a joint and the question in the
+//!    user's units, `boltzone solve`): single- vs two-plate R_o and the rules of thumb: Tables 1
 //!    and 2 recomputed, the design map | heat through the joint: contact conductance, the
 //!    Appendix D network, conduction | the 1970 card decks of Appendices B and C, read, run and
 //!    written;
@@ -59,10 +60,12 @@ pub mod numerics;
 pub mod plot;
 pub mod reference;
 pub mod rules;
+pub mod scene;
 pub mod value;
 
 pub use error::InputError;
 pub use joint::{Joint, OuterRadius, Plate, SinglePlate};
 pub use load::{FaceLoad, Peak, Profile, Segment};
 pub use material::Material;
+pub use scene::solve;
 pub use value::Value;

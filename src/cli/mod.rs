@@ -10,6 +10,7 @@ mod output;
 mod report;
 mod single;
 mod slab;
+mod solve;
 mod table1;
 mod table2;
 mod two;
@@ -47,6 +48,8 @@ enum Command {
     Map(map::Args),
     /// Run 1970 card decks (Appendices B, C) on the report's element; --emit writes one.
     Deck(deck::Args),
+    /// Answer a scene file (TOML: joint, load, model, outputs, units, sweep).
+    Solve(solve::Args),
     /// Print the report's tables as stored in reference/ (data, not results).
     Reference,
 }
@@ -63,6 +66,7 @@ pub fn run(cli: Cli) -> anyhow::Result<Status> {
         Some(Command::Table2(a)) => table2::run(a),
         Some(Command::Map(a)) => map::run(a),
         Some(Command::Deck(a)) => deck::run(a),
+        Some(Command::Solve(a)) => solve::run(a),
         Some(Command::Reference) => reference().map(|()| Status::Converged),
     }
 }

@@ -1,0 +1,223 @@
+//! `boltzone solve SCENE.toml`: answers a scene file ([`boltzone::scene`]): one joint, or every
+//! point of its `[sweep]` in parallel; `--json` prints the result object (a sweep:
+//! `{"results": [...]}`), `--explain` the plan (routes run and skipped, time per step).
+
+use super::exit::{sig, Status, UsageError};
+use boltzone::scene::sweep::{points, rows, solve_all, Point};
+use boltzone::scene::{read, SceneError, Solution};
+use std::path::PathBuf;
+
+/// Arguments of `boltzone solve`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The scene file (TOML; see `examples/scenes/`).
+    scene: PathBuf,
+    /// Print the result as JSON (a sweep: {"results": [...]}).
+    #[arg(long)]
+    json: bool,
+    /// Print the plan: which routes ran, which were skipped, time per step.
+    #[arg(long)]
+    explain: bool,
+    /// A CSV of geometries: a header row naming dotted scene keys (`load.outer_radius`,
+    /// `plates[0].thickness`), one point per further row, in the scene's units.
+    #[arg(long)]
+    geometries: Option<PathBuf>,
+}
+
+/// Bad input becomes a [`UsageError`] (exit 2); a solver failure stays as it is (exit 1).
+fn classify(e: SceneError) -> anyhow::Error {
+    if e.is_input() {
+        UsageError(e.to_string()).into()
+    } else {
+        e.into()
+    }
+}
+
+/// Runs the command.
+pub fn run(args: Args) -> anyhow::Result<Status> {
+    let text = read(&args.scene).map_err(classify)?;
+    let pts = match &args.geometries {
+        Some(csv) => rows(&text, &read(csv).map_err(classify)?).map_err(classify)?,
+        None => points(&text).map_err(classify)?,
+    };
+    let base = &pts[0].scene;
+    if pts.len() == 1 && pts[0].values.is_empty() {
+        let s = boltzone::solve(base).map_err(classify)?;
+        if let Some(path) = &base.outputs.interface_pressure {
+            super::write_output(path, &curve_csv(&pts, &[Ok(s.clone())], &args.scene))?;
+        }
+        if args.json {
+            super::print_json(&s)?;
+        } else {
+            print_text(&s);
+        }
+        if args.explain {
+            explain(&s);
+        }
+        return Ok(Status::from_converged(s.converged));
+    }
+    let bar = super::progress(pts.len() as u64, "sweep");
+    let results = solve_all(&pts, &|| bar.inc(1));
+    bar.finish_and_clear();
+    let mut failed = None;
+    let mut rows = Vec::new();
+    for (p, r) in pts.iter().zip(&results) {
+        let sweep: serde_json::Map<String, serde_json::Value> = p
+            .values
+            .iter()
+            .map(|(k, v)| (k.clone(), serde_json::to_value(v).unwrap_or_default()))
+            .collect();
+        match r {
+            Ok(s) => {
+                let mut v = serde_json::to_value(s)?;
+                v["sweep"] = sweep.into();
+                rows.push(v);
+            }
+            Err(e) => {
+                failed.get_or_insert_with(|| e.to_string());
+                rows.push(serde_json::json!({ "sweep": sweep, "error": e.to_string() }));
+            }
+        }
+    }
+    if let Some(path) = &base.outputs.interface_pressure {
+        super::write_output(path, &curve_csv(&pts, &results, &args.scene))?;
+    }
+    if let Some(path) = &base.outputs.results {
+        super::write_output(path, &sweep_csv(&pts, &results, &args.scene))?;
+    }
+    if args.json {
+        super::print_json(&serde_json::json!({ "results": rows }))?;
+    } else {
+        for (p, r) in pts.iter().zip(&results) {
+            let at: Vec<String> = p.values.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+            match r {
+                Ok(s) => println!("{}:  {}", at.join(", "), r_o_line(s)),
+                Err(e) => println!("{}:  FAILED: {e}", at.join(", ")),
+            }
+        }
+    }
+    if args.explain {
+        for s in results.iter().flatten().take(1) {
+            explain(s);
+        }
+    }
+    if let Some(e) = failed {
+        anyhow::bail!("a sweep point failed: {e}");
+    }
+    Ok(Status::from_converged(
+        results.iter().flatten().all(|s| s.converged),
+    ))
+}
+
+/// "R_o = … ± … mm  (model, method)".
+fn r_o_line(s: &Solution) -> String {
+    let u = s.length_unit;
+    format!(
+        "R_o = {} ± {:.1e} {u}  ({}, {}){}",
+        sig(s.r_o, 7),
+        s.r_o_error,
+        serde_json::to_value(s.model).map_or(String::new(), |v| v.as_str().unwrap_or("").into()),
+        serde_json::to_value(s.method).map_or(String::new(), |v| v.as_str().unwrap_or("").into()),
+        if s.converged {
+            ""
+        } else {
+            "  NOT converged to the tolerance (exit 3)"
+        }
+    )
+}
+
+fn print_text(s: &Solution) {
+    println!("{}", r_o_line(s));
+    if s.full_contact == Some(true) {
+        println!("full contact: the plates touch out to the rim, R_o = C");
+    }
+    if let Some(d) = s.nut_deflection {
+        println!("deflection under the nut: {d:.4e} {}", s.length_unit);
+    }
+}
+
+/// The plan, on stderr-free stdout after the result.
+fn explain(s: &Solution) {
+    println!("plan ({}):", s.units.name());
+    for st in &s.plan {
+        println!(
+            "  {} {:<45} {:>10.3} ms  {}",
+            if st.ran { "ran    " } else { "skipped" },
+            st.name,
+            1e3 * st.seconds,
+            st.note
+        );
+    }
+}
+
+/// The interface curves as CSV: header with units first (the swept keys first in a sweep),
+/// `#` provenance after it, then r, p, g of each point's finest mesh.
+fn curve_csv(
+    pts: &[Point],
+    results: &[Result<Solution, SceneError>],
+    scene: &std::path::Path,
+) -> String {
+    let (l, p, _) = pts[0].scene.units.symbols();
+    let keys: String = pts[0].values.iter().map(|(k, _)| format!("{k},")).collect();
+    let mut out = format!(
+        "{keys}r_{l},p_{p},g_{l}\n# boltzone {} solve {}: interface of the finest mesh; p > 0 \
+         compression, g = gap between the plates\n",
+        env!("CARGO_PKG_VERSION"),
+        scene.display(),
+    );
+    for (pt, r) in pts.iter().zip(results) {
+        let at: String = pt.values.iter().map(|(_, v)| format!("{v},")).collect();
+        let shown: String = pt
+            .values
+            .iter()
+            .map(|(k, v)| format!("{k} = {v}: "))
+            .collect();
+        let Ok(s) = r else {
+            out += &format!("# {shown}failed\n");
+            continue;
+        };
+        out += &format!(
+            "# {shown}R_o = {} ± {:e} {l}, converged = {}\n",
+            s.r_o, s.r_o_error, s.converged
+        );
+        let Some(c) = &s.interface else { continue };
+        for ((r, pr), g) in c.radius.iter().zip(&c.pressure).zip(&c.gap) {
+            out += &format!("{at}{r:.10e},{pr:.10e},{g:.10e}\n");
+        }
+    }
+    out
+}
+
+/// One row per sweep point: the swept keys, R_o, its error, converged.
+fn sweep_csv(
+    pts: &[Point],
+    results: &[Result<Solution, SceneError>],
+    scene: &std::path::Path,
+) -> String {
+    let l = pts[0].scene.units.symbols().0;
+    let keys: Vec<String> = pts[0].values.iter().map(|(k, _)| k.clone()).collect();
+    let mut out = format!(
+        "{},r_o_{l},r_o_error_{l},converged\n# boltzone solve {}: one row per sweep point; \
+         swept lengths in {l}, stresses in {}, forces in {}\n",
+        keys.join(","),
+        scene.display(),
+        pts[0].scene.units.symbols().1,
+        pts[0].scene.units.symbols().2,
+    );
+    for (p, r) in pts.iter().zip(results) {
+        let vals: Vec<String> = p.values.iter().map(|(_, v)| v.to_string()).collect();
+        match r {
+            Ok(s) => {
+                out += &format!(
+                    "{},{},{},{}\n",
+                    vals.join(","),
+                    s.r_o,
+                    s.r_o_error,
+                    s.converged
+                )
+            }
+            Err(_) => out += &format!("{},,,false\n", vals.join(",")),
+        }
+    }
+    out
+}

@@ -1,0 +1,288 @@
+//! Checks of every value of a scene before any work starts; each error names the key, the
+//! value and the line. Output paths are checked here too, so that nothing is computed for a
+//! file that cannot be written. Tests: `tests/scene/errors.rs`.
+//!
+//! ```
+//! let text = "[hole]\nradius = 0.1\n[load]\nouter_radius = 0.05\npressure = 1.0\n\
+//!             [[plates]]\nthickness = 0.1\n";
+//! let e = boltzone::scene::Scene::parse(text).unwrap_err();
+//! assert!(e.to_string().contains("line 4, key `load.outer_radius`: 0.05"), "{e}");
+//! ```
+
+use super::error::SceneError;
+use super::file::{line_of, path_name, MaterialSpec, Method, Model, ProfileKind, Scene, Seg};
+use super::materials;
+use std::path::Path;
+
+/// Largest B/D each model reaches (as the commands' own checks).
+fn b_over_d_max(model: Model) -> f64 {
+    match model {
+        Model::TwoPlate => 1e3,
+        Model::SinglePlate => 1e4,
+        Model::Slab => 1e6,
+    }
+}
+
+struct Checker<'a> {
+    text: &'a str,
+}
+
+impl Checker<'_> {
+    fn fail(&self, path: &[Seg], value: impl std::fmt::Display, reason: &str) -> SceneError {
+        SceneError::Invalid {
+            key: path_name(path),
+            line: line_of(self.text, path).unwrap_or(1),
+            reason: format!("{value}: {reason}"),
+        }
+    }
+
+    fn positive(&self, path: &[Seg], v: f64, what: &str) -> Result<(), SceneError> {
+        if v.is_finite() && v > 0.0 {
+            Ok(())
+        } else {
+            Err(self.fail(path, v, &format!("{what} must be a positive finite number")))
+        }
+    }
+
+    fn output(&self, path: &[Seg], p: &Path) -> Result<(), SceneError> {
+        let shown = p.display();
+        if p.as_os_str().is_empty() || p.is_dir() || p.file_name().is_none() {
+            return Err(self.fail(path, shown, "is not a file name"));
+        }
+        let dir = match p.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        if !dir.is_dir() {
+            return Err(self.fail(path, shown, "its directory does not exist"));
+        }
+        Ok(())
+    }
+}
+
+fn k(s: &str) -> Seg {
+    Seg::Key(s.into())
+}
+
+/// Checks `scene`, looking lines up in `text`.
+pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
+    let c = Checker { text };
+    let t = scene.tolerance;
+    if !(t.is_finite() && t > 0.0 && t < 1.0) {
+        return Err(c.fail(
+            &[k("tolerance")],
+            t,
+            "the relative tolerance must lie in (0, 1)",
+        ));
+    }
+    let a = scene.hole.radius;
+    if !(a.is_finite() && a >= 0.0) {
+        return Err(c.fail(
+            &[k("hole"), k("radius")],
+            a,
+            "the hole radius A must be 0 or positive",
+        ));
+    }
+    let b = scene.load.outer_radius;
+    c.positive(&[k("load"), k("outer_radius")], b, "the bearing radius B")?;
+    if b <= a {
+        return Err(c.fail(
+            &[k("load"), k("outer_radius")],
+            b,
+            &format!("the bearing radius B must exceed the hole radius A = {a}"),
+        ));
+    }
+    check_load(scene, &c)?;
+    check_plates(scene, &c)?;
+    if let Some(cr) = scene.joint.outer_radius {
+        let p = [k("joint"), k("outer_radius")];
+        c.positive(&p, cr, "the outer radius C")?;
+        if cr <= b {
+            return Err(c.fail(&p, cr, &format!("C must exceed the bearing radius B = {b}")));
+        }
+        if scene.model == Model::Slab {
+            return Err(c.fail(&p, cr, "the slab is infinite: omit joint.outer_radius"));
+        }
+    }
+    check_model(scene, &c)?;
+    check_outputs(scene, &c)
+}
+
+fn check_load(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
+    let l = &scene.load;
+    let given: Vec<(&str, f64)> = [
+        ("force", l.force),
+        ("pressure", l.pressure),
+        ("nut_displacement", l.nut_displacement),
+    ]
+    .into_iter()
+    .filter_map(|(n, v)| v.map(|v| (n, v)))
+    .collect();
+    if let (Some(v), true) = (l.nut_displacement, l.profile != ProfileKind::Uniform) {
+        return Err(c.fail(
+            &[k("load"), k("nut_displacement")],
+            v,
+            "a prescribed nut displacement has no pressure profile: omit load.profile",
+        ));
+    }
+    match given.as_slice() {
+        [] => Err(c.fail(
+            &[k("load")],
+            "(none)",
+            "give one of force, pressure or nut_displacement",
+        )),
+        [(n, v)] => c.positive(&[k("load"), k(n)], *v, n),
+        _ => {
+            // name the one written last: the one to delete
+            let line = |n: &str| line_of(c.text, &[k("load"), k(n)]).unwrap_or(0);
+            let (n, v) = given
+                .iter()
+                .copied()
+                .max_by_key(|(n, _)| line(n))
+                .unwrap_or(("force", 0.0));
+            Err(c.fail(
+                &[k("load"), k(n)],
+                v,
+                "give only one of force, pressure or nut_displacement",
+            ))
+        }
+    }
+}
+
+fn check_plates(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
+    if !(1..=2).contains(&scene.plates.len()) {
+        return Err(c.fail(
+            &[k("plates")],
+            format!("{} entries", scene.plates.len()),
+            "give one [[plates]] entry (two equal plates) or two (top, bottom)",
+        ));
+    }
+    let nu_max = match (scene.model, scene.method) {
+        (Model::Slab, _) | (Model::SinglePlate, Method::Hankel) => 0.5,
+        _ => 0.499,
+    };
+    for (i, p) in scene.plates.iter().enumerate() {
+        let at = |key: &str| vec![k("plates"), Seg::Index(i), k(key)];
+        c.positive(&at("thickness"), p.thickness, "the plate thickness D")?;
+        let d = p.thickness;
+        let b = scene.load.outer_radius;
+        let a = scene.hole.radius;
+        if b / d > b_over_d_max(scene.model) {
+            return Err(c.fail(
+                &at("thickness"),
+                d,
+                &format!(
+                    "B/D = {:e} exceeds this model's reach {:e}",
+                    b / d,
+                    b_over_d_max(scene.model)
+                ),
+            ));
+        }
+        if a > 0.0 && !(1e-3..=1e3).contains(&(a / d)) {
+            return Err(c.fail(&at("thickness"), d, "A/D must lie within 1e-3..1e3"));
+        }
+        match &p.material {
+            Some(MaterialSpec::Name(n)) if materials::lookup(n).is_none() => {
+                return Err(c.fail(
+                    &at("material"),
+                    format!("\"{n}\""),
+                    &format!("not in the library ({})", materials::names()),
+                ));
+            }
+            None | Some(MaterialSpec::Name(_)) => {}
+            Some(MaterialSpec::Constants(m)) => {
+                let mut p = at("material");
+                p.push(k("E"));
+                c.positive(&p, m.e, "Young's modulus E")?;
+                if !(m.nu > -1.0 && m.nu <= nu_max && m.nu < 0.5) {
+                    p.pop();
+                    p.push(k("nu"));
+                    return Err(c.fail(
+                        &p,
+                        m.nu,
+                        &format!("Poisson's ratio must lie in (-1, {nu_max}] for this route"),
+                    ));
+                }
+            }
+        }
+    }
+    if let [up, lo] = scene.plates.as_slice() {
+        let r = lo.thickness / up.thickness;
+        if !(1e-3..=1e3).contains(&r) {
+            return Err(c.fail(
+                &[k("plates"), Seg::Index(1), k("thickness")],
+                lo.thickness,
+                "the two thicknesses may differ by at most 1e3 times",
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn check_model(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
+    let symmetric = match scene.plates.as_slice() {
+        [_] => true,
+        [up, lo] => up.thickness == lo.thickness && scene.material_of(0) == scene.material_of(1),
+        _ => false,
+    };
+    let method = [k("method")];
+    match scene.model {
+        Model::TwoPlate if scene.method == Method::Hankel => Err(c.fail(
+            &method,
+            "\"hankel\"",
+            "the two-plate model has no Hankel route here: use \"fem\" or \"auto\"",
+        )),
+        Model::Slab if scene.method == Method::Fem => Err(c.fail(
+            &method,
+            "\"fem\"",
+            "the slab is solved by Hankel transforms: use \"hankel\" or \"auto\"",
+        )),
+        Model::SinglePlate | Model::Slab if !symmetric => Err(c.fail(
+            &[k("plates")],
+            "two unequal plates",
+            "the single-plate and slab models need two equal plates (one [[plates]] entry)",
+        )),
+        Model::SinglePlate | Model::Slab
+            if scene.model == Model::Slab || scene.method == Method::Hankel =>
+        {
+            if let Some(v) = scene.load.nut_displacement {
+                return Err(c.fail(
+                    &[k("load"), k("nut_displacement")],
+                    v,
+                    "the Hankel routes load the faces by a pressure (use model single-plate, method fem)",
+                ));
+            }
+            Ok(())
+        }
+        _ => Ok(()),
+    }
+}
+
+fn check_outputs(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
+    let o = &scene.outputs;
+    if let Some(f) = &o.field {
+        return Err(c.fail(
+            &[k("outputs"), k("field")],
+            f.display(),
+            "the full field (VTU) is not yet available from scenes",
+        ));
+    }
+    if let Some(p) = &o.interface_pressure {
+        let path = [k("outputs"), k("interface_pressure")];
+        if scene.model != Model::TwoPlate {
+            return Err(c.fail(&path, p.display(), "needs model = \"two-plate\""));
+        }
+        c.output(&path, p)?;
+    }
+    if let Some(p) = &o.results {
+        c.output(&[k("outputs"), k("results")], p)?;
+    }
+    if !o.r_o && o.interface_pressure.is_none() {
+        return Err(c.fail(
+            &[k("outputs"), k("r_o")],
+            false,
+            "nothing asked: no output wanted",
+        ));
+    }
+    Ok(())
+}

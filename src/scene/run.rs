@@ -1,0 +1,306 @@
+//! Answers one scene: builds the library objects in SI units, runs the one route that serves
+//! the outputs asked, and converts the results back to the scene's units. Accuracy: the
+//! route's own; `tests/scene/examples.rs` finds R_o bit for bit equal to the library call on
+//! every example scene. Cost: the route's (`boltzone solve --explain` prints it per step).
+//!
+//! ```
+//! let text = "model = \"single-plate\"\n[hole]\nradius = 0.1\n[load]\nouter_radius = 0.31\n\
+//!             force = 100.0\n[[plates]]\nthickness = 0.1\n";
+//! let s = boltzone::solve(&boltzone::scene::Scene::parse(text)?)?;
+//! assert_eq!(s.method, boltzone::scene::Method::Hankel); // auto: R_o alone needs no FE
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use super::error::SceneError;
+use super::file::{InterfaceKind, MaterialSpec, Method, Model, ProfileKind, Scene};
+use super::materials;
+use super::units::UnitSystem;
+use crate::contact::two_plate::{self, EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
+use crate::fem::single::{self as fem_single, FaceCondition, SingleParams};
+use crate::hankel::hole::{single_plate_separation, HoleParams};
+use crate::hankel::{SeparationParams, Slab};
+use crate::{FaceLoad, Joint, Material, OuterRadius, Peak, Plate};
+use serde::Serialize;
+use std::f64::consts::PI;
+use std::time::Instant;
+
+/// One step of the plan: a route that ran or was skipped, and why.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Step {
+    /// What the step computes.
+    pub name: String,
+    /// Whether it ran.
+    pub ran: bool,
+    /// Why it ran or was skipped.
+    pub note: String,
+    /// Wall time, seconds (0 when skipped).
+    pub seconds: f64,
+}
+
+/// The interface curve of the two-plate model (scene units).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct InterfaceCurve {
+    /// Radii of the interface nodes.
+    pub radius: Vec<f64>,
+    /// Interface pressure (stress unit, compression > 0).
+    pub pressure: Vec<f64>,
+    /// Gap between the plates (length unit).
+    pub gap: Vec<f64>,
+}
+
+/// The answer to a scene, in the scene's units (the JSON of `boltzone solve --json`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Solution {
+    /// Separation radius R_o (length unit).
+    pub r_o: f64,
+    /// Its estimated absolute error (length unit).
+    pub r_o_error: f64,
+    /// Whether `r_o_error` met the tolerance relative to R_o.
+    pub converged: bool,
+    /// The scene's unit system.
+    pub units: UnitSystem,
+    /// The length unit of `r_o`, `r_o_error` (and of every length in `inputs`).
+    pub length_unit: &'static str,
+    /// The model.
+    pub model: Model,
+    /// The method that ran (`fem` or `hankel`; what `auto` picked).
+    pub method: Method,
+    /// boltzone's version.
+    pub version: &'static str,
+    /// The scene as understood, defaults filled in.
+    pub inputs: Scene,
+    /// Whether the plates touch out to the rim (two-plate; R_o = C).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub full_contact: Option<bool>,
+    /// Mean axial displacement under the nut (two-plate; length unit, negative toward the
+    /// interface).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nut_deflection: Option<f64>,
+    /// The plan: routes that ran and were skipped, time per step.
+    pub plan: Vec<Step>,
+    /// Interface curve (two-plate; written as CSV, not printed).
+    #[serde(skip)]
+    pub interface: Option<InterfaceCurve>,
+}
+
+/// The material of plate `i` in SI units.
+fn material(scene: &Scene, i: usize) -> Result<Material, SceneError> {
+    match scene.material_of(i) {
+        MaterialSpec::Name(n) => {
+            let m = materials::lookup(&n).ok_or_else(|| SceneError::Invalid {
+                key: format!("plates[{i}].material"),
+                line: 1,
+                reason: format!("\"{n}\": not in the library ({})", materials::names()),
+            })?;
+            Ok(Material::new(m.youngs_modulus, m.poisson_ratio)?)
+        }
+        MaterialSpec::Constants(c) => Ok(Material::new(c.e * scene.units.stress(), c.nu)?),
+    }
+}
+
+/// The joint of `scene` in SI units (m, Pa), and the nut displacement (m) if one is given.
+/// Plates top to bottom; one `[[plates]]` entry stands for two equal plates.
+pub fn joint_si(scene: &Scene) -> Result<(Joint, Option<f64>), SceneError> {
+    let u = scene.units;
+    let (l, s) = (u.length(), u.stress());
+    let a = scene.hole.radius * l;
+    let b = scene.load.outer_radius * l;
+    let p = match (scene.load.force, scene.load.pressure) {
+        (Some(f), _) => f * u.force() / (PI * (b * b - a * a)),
+        (None, Some(p)) => p * s,
+        // a prescribed displacement: the pressure only marks A..B
+        (None, None) => s,
+    };
+    let load = match scene.load.profile {
+        ProfileKind::Uniform => FaceLoad::uniform(a, b, p)?,
+        ProfileKind::PeakA => FaceLoad::triangular(a, b, p, Peak::AtA)?,
+        ProfileKind::PeakB => FaceLoad::triangular(a, b, p, Peak::AtB)?,
+    };
+    let last = scene.plates.len().saturating_sub(1);
+    let (Some(top), Some(bottom)) = (scene.plates.first(), scene.plates.get(last)) else {
+        return Err(SceneError::Invalid {
+            key: "plates".into(),
+            line: 1,
+            reason: "no [[plates]] entry".into(),
+        });
+    };
+    let joint = Joint::new(
+        a,
+        scene
+            .joint
+            .outer_radius
+            .map_or(OuterRadius::Infinite, |c| OuterRadius::Finite(c * l)),
+        Plate::new(top.thickness * l, material(scene, 0)?)?,
+        Plate::new(bottom.thickness * l, material(scene, last)?)?,
+        load,
+    )?;
+    Ok((joint, scene.load.nut_displacement.map(|d| d * l)))
+}
+
+/// The two-plate parameters of `scene` (SI nut displacement `nut`).
+pub fn two_plate_params(scene: &Scene, nut: Option<f64>) -> TwoPlateParams {
+    TwoPlateParams {
+        interface: match scene.joint.interface {
+            InterfaceKind::Welded => InterfaceModel::Welded,
+            InterfaceKind::Frictionless => InterfaceModel::Frictionless,
+        },
+        loading: nut.map_or(Loading::Pressure, Loading::NutDisplacement),
+        edge: if scene.joint.fixed_edge {
+            EdgeSupport::Fixed
+        } else {
+            EdgeSupport::Free
+        },
+        tolerance: scene.tolerance,
+        ..TwoPlateParams::default()
+    }
+}
+
+/// The Hankel search and hole parameters the single-plate route uses at `tolerance` (as
+/// `boltzone single --method hankel`).
+pub fn hankel_params(tolerance: f64) -> (SeparationParams, HoleParams) {
+    let search = SeparationParams {
+        rel_tol: SeparationParams::default().rel_tol.max(1e-3 * tolerance),
+        ..SeparationParams::default()
+    };
+    let hole = HoleParams {
+        r_o_tolerance: tolerance,
+        ..HoleParams::default()
+    };
+    (search, hole)
+}
+
+/// What `method` resolves to for `scene`, and why.
+pub fn pick(scene: &Scene) -> (Method, &'static str) {
+    match (scene.model, scene.method) {
+        (Model::TwoPlate, _) => (
+            Method::Fem,
+            "finite elements: the two-plate model's route; the interface curve comes from the same levels",
+        ),
+        (Model::Slab, _) => (Method::Hankel, "Hankel transforms: the slab's exact route"),
+        (Model::SinglePlate, Method::Fem) => (Method::Fem, "finite elements (asked)"),
+        (Model::SinglePlate, Method::Hankel) => (Method::Hankel, "Hankel + hole correction (asked)"),
+        (Model::SinglePlate, Method::Auto) if scene.load.nut_displacement.is_some() => (
+            Method::Fem,
+            "finite elements: the Hankel route loads the faces by a pressure only",
+        ),
+        (Model::SinglePlate, Method::Auto) => (
+            Method::Hankel,
+            "Hankel + hole correction: R_o alone is a root search of milliseconds, no FE solve",
+        ),
+    }
+}
+
+/// Answers `scene`. A scene built in code is checked here as [`Scene::parse`] checks a file
+/// (its errors then say line 1: there is no file).
+pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
+    let t0 = Instant::now();
+    scene.check("")?;
+    let (joint, nut) = joint_si(scene)?;
+    let mut plan = vec![Step {
+        name: "joint in SI units".into(),
+        ran: true,
+        note: format!("from {}", scene.units.name()),
+        seconds: t0.elapsed().as_secs_f64(),
+    }];
+    let (method, why) = pick(scene);
+    let l = scene.units.length();
+    let mut out = Solution {
+        r_o: 0.0,
+        r_o_error: 0.0,
+        converged: false,
+        units: scene.units,
+        length_unit: scene.units.symbols().0,
+        model: scene.model,
+        method,
+        version: env!("CARGO_PKG_VERSION"),
+        inputs: scene.understood(),
+        full_contact: None,
+        nut_deflection: None,
+        plan: Vec::new(),
+        interface: None,
+    };
+    let t1 = Instant::now();
+    let other = match (scene.model, method) {
+        (Model::TwoPlate, _) => {
+            let s = two_plate::solve(&joint, &two_plate_params(scene, nut))?;
+            (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
+            out.full_contact = Some(s.full_contact);
+            out.nut_deflection = Some(s.nut_deflection / l);
+            if scene.outputs.interface_pressure.is_some() {
+                let st = scene.units.stress();
+                out.interface = Some(InterfaceCurve {
+                    radius: s.radius.iter().map(|r| r / l).collect(),
+                    pressure: s.pressure.iter().map(|p| p / st).collect(),
+                    gap: s.gap.iter().map(|g| g / l).collect(),
+                });
+            }
+            None
+        }
+        (Model::Slab, _) => {
+            let plate = substitute(&joint)?;
+            let slab = Slab::new(
+                plate.half_thickness(),
+                plate.material(),
+                plate.load().clone(),
+            )?;
+            let params = SeparationParams {
+                rel_tol: scene.tolerance,
+                ..SeparationParams::default()
+            };
+            let s = slab.separation_radius(&params)?;
+            (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.error / l, s.converged);
+            None
+        }
+        (Model::SinglePlate, Method::Fem) => {
+            let params = SingleParams {
+                loading: nut.map_or(FaceCondition::Pressure, |_| {
+                    FaceCondition::UniformDisplacement
+                }),
+                tolerance: scene.tolerance,
+                ..SingleParams::default()
+            };
+            let s = fem_single::solve(&substitute(&joint)?, &params)?;
+            (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
+            Some("Hankel + hole correction")
+        }
+        (Model::SinglePlate, _) => {
+            let (search, hole) = hankel_params(scene.tolerance);
+            let (s, _) = single_plate_separation(&substitute(&joint)?, &search, &hole)?;
+            (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.error / l, s.converged);
+            Some("finite elements (not needed for R_o alone)")
+        }
+    };
+    plan.push(Step {
+        name: format!("{:?} route", method).to_lowercase(),
+        ran: true,
+        note: why.into(),
+        seconds: t1.elapsed().as_secs_f64(),
+    });
+    if let Some(skipped) = other {
+        plan.push(Step {
+            name: skipped.into(),
+            ran: false,
+            note: "skipped: one route answers the outputs asked".into(),
+            seconds: 0.0,
+        });
+    }
+    if scene.model == Model::TwoPlate && scene.outputs.interface_pressure.is_none() {
+        plan.push(Step {
+            name: "interface curve".into(),
+            ran: false,
+            note: "skipped: not asked".into(),
+            seconds: 0.0,
+        });
+    }
+    out.plan = plan;
+    Ok(out)
+}
+
+/// The single-plate substitute of a symmetric joint.
+fn substitute(joint: &Joint) -> Result<crate::SinglePlate, SceneError> {
+    joint.single_plate_substitute().ok_or(SceneError::Invalid {
+        key: "plates".into(),
+        line: 1,
+        reason: "two unequal plates: the single-plate and slab models need two equal plates".into(),
+    })
+}

@@ -1,0 +1,83 @@
+//! Unit systems of a scene: `in-psi-lbf` (the report's, the default), `mm-MPa-N`, `m-Pa-N`.
+//! Each is consistent (stress = force / length²). A scene is converted to SI (m, Pa, N) on the
+//! way in and every result back to the scene's own system on the way out.
+//!
+//! The factors are the exact definitions: 1 in = 0.0254 m, 1 lbf = 4.4482216152605 N (the
+//! international avoirdupois pound times standard gravity 9.80665 m/s²), 1 psi = 1 lbf/in².
+//! Accuracy: exact factors; `tests/scene/units.rs` solves one joint in all three systems and
+//! finds the same R_o to 1e-12 relative. Cost: a multiplication per number.
+//!
+//! ```
+//! use boltzone::scene::UnitSystem;
+//! let psi = UnitSystem::InPsiLbf.stress();
+//! assert!((psi - 6894.757293168361).abs() < 1e-9);
+//! assert_eq!(UnitSystem::MmMpaN.symbols(), ("mm", "MPa", "N"));
+//! ```
+
+use serde::{Deserialize, Serialize};
+
+/// One inch in metres (exact by definition).
+pub const INCH: f64 = 0.0254;
+/// One pound-force in newtons (exact by definition: 0.45359237 kg × 9.80665 m/s²).
+pub const POUND_FORCE: f64 = 4.4482216152605;
+
+/// A consistent system of length, stress and force units.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub enum UnitSystem {
+    /// Inches, psi, pounds-force (the report's units; the default).
+    #[default]
+    #[serde(rename = "in-psi-lbf")]
+    InPsiLbf,
+    /// Millimetres, megapascals, newtons.
+    #[serde(rename = "mm-MPa-N")]
+    MmMpaN,
+    /// Metres, pascals, newtons (SI).
+    #[serde(rename = "m-Pa-N")]
+    MPaN,
+}
+
+impl UnitSystem {
+    /// Metres per length unit.
+    pub fn length(self) -> f64 {
+        match self {
+            Self::InPsiLbf => INCH,
+            Self::MmMpaN => 1e-3,
+            Self::MPaN => 1.0,
+        }
+    }
+
+    /// Newtons per force unit.
+    pub fn force(self) -> f64 {
+        match self {
+            Self::InPsiLbf => POUND_FORCE,
+            Self::MmMpaN | Self::MPaN => 1.0,
+        }
+    }
+
+    /// Pascals per stress unit (force unit / length unit²).
+    pub fn stress(self) -> f64 {
+        match self {
+            Self::InPsiLbf => POUND_FORCE / (INCH * INCH),
+            Self::MmMpaN => 1e6,
+            Self::MPaN => 1.0,
+        }
+    }
+
+    /// The system's name as written in a scene.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::InPsiLbf => "in-psi-lbf",
+            Self::MmMpaN => "mm-MPa-N",
+            Self::MPaN => "m-Pa-N",
+        }
+    }
+
+    /// Symbols of (length, stress, force).
+    pub fn symbols(self) -> (&'static str, &'static str, &'static str) {
+        match self {
+            Self::InPsiLbf => ("in", "psi", "lbf"),
+            Self::MmMpaN => ("mm", "MPa", "N"),
+            Self::MPaN => ("m", "Pa", "N"),
+        }
+    }
+}
