@@ -42,10 +42,20 @@ pub fn stamp<T: Serialize>(v: &mut Value, inputs: &T, start: Instant) -> anyhow:
     let Value::Object(m) = v else {
         anyhow::bail!("internal: only a JSON object carries provenance");
     };
-    m.insert("version".into(), env!("CARGO_PKG_VERSION").into());
     m.insert("units".into(), UNITS.into());
-    m.insert("command".into(), command_line().into());
     m.insert("inputs".into(), inputs);
+    stamp_run(v, start)
+}
+
+/// Adds `version`, `command` and `seconds` since `start` to the JSON object `v` where it has
+/// none (a scene's result carries its own `units` and `inputs`, in the scene's units).
+pub fn stamp_run(v: &mut Value, start: Instant) -> anyhow::Result<()> {
+    let Value::Object(m) = v else {
+        anyhow::bail!("internal: only a JSON object carries provenance");
+    };
+    m.entry("version")
+        .or_insert_with(|| env!("CARGO_PKG_VERSION").into());
+    m.entry("command").or_insert_with(|| command_line().into());
     m.entry("seconds")
         .or_insert_with(|| start.elapsed().as_secs_f64().into());
     Ok(())

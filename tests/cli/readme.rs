@@ -1,10 +1,11 @@
 //! Every `boltzone …` and `cargo run --release -- …` command in README's ```sh blocks runs and
-//! exits 0, in a temporary directory (so the files it writes land there). Skipped with a note:
-//! `cargo test`, `cargo install`, `cargo bench`, `bash .ci/run` and the examples (each example
-//! runs at its quick size in `tests/examples/`). Only `map`'s grid is made smaller (`--n 4`):
-//! its 16 points took 1.0 s here, so the README's 1600 would take about 100 s, and they are the
-//! same solver as `two`.
-//! A README line that is none of these fails the test, so that new commands are run too.
+//! exits 0, in a temporary directory (so the files it writes land there); the README's
+//! placeholder inputs (`scene.toml`, `rows.csv`) are made from Table 1's first row. Skipped with
+//! a note: `cargo test`, `cargo install`, `cargo bench`, `bash .ci/run` and the examples (each
+//! example runs at its quick size in `tests/examples/`). Only `map`'s grid is made smaller
+//! (`--n 4`): its 16 points took 1.0 s here, so the README's 1600 would take about 100 s, and
+//! they are the same solver as `two`. A README line that is none of these fails the test, so
+//! that new commands are run too.
 
 use std::path::Path;
 use std::process::Command;
@@ -77,6 +78,15 @@ fn every_readme_command_runs() {
     let dir = std::env::temp_dir().join(format!("boltzone-readme-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
+    // the README's placeholders for the user's own files: Table 1's first row as `scene.toml`
+    // and two bearing radii as `rows.csv`
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    std::fs::copy(
+        root.join("examples/scenes/table1_row1.toml"),
+        dir.join("scene.toml"),
+    )
+    .unwrap();
+    std::fs::write(dir.join("rows.csv"), "load.outer_radius\n0.31\n0.35\n").unwrap();
     let commands = readme_commands();
     assert!(commands.len() > 20, "README's sh blocks: {commands:?}");
     let mut ran = 0;

@@ -1,6 +1,7 @@
 //! The provenance every `--json` object carries: `version` (the crate's), `units`
 //! (`in-psi-lbf`), `command`, `inputs` (the arguments as understood, defaults filled in) and
-//! `seconds`; the R_o commands keep `r_o`, `r_o_error` and `converged`. Defaults are checked
+//! `seconds` (a scene's result: its own units and inputs; a sweep's wrapper: version, command,
+//! seconds); the R_o commands keep `r_o`, `r_o_error` and `converged`. Defaults are checked
 //! against the values `--help` documents (E = 28e6 psi, ν = 0.3, --tol 5e-4 for `two`, 1e-10 for
 //! `slab`, 1e-6 for `single --method hankel`).
 
@@ -44,6 +45,22 @@ fn every_json_object_carries_version_units_inputs_and_timing() {
             assert_eq!(inputs["element"], "q9");
         }
     }
+    // a scene carries its own units and inputs; a sweep's wrapping object the version
+    let scenes = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/scenes");
+    let v = stamped(&format!("solve {scenes}/table1_row1.toml --json"));
+    assert!(v["r_o"].as_f64().unwrap() > 0.0 && v["converged"].is_boolean());
+    let args = [
+        "solve",
+        &format!("{scenes}/m8_aluminium_sweep.toml"),
+        "--json",
+    ]
+    .map(String::from);
+    let v = json_of(&boltzone(
+        &args.iter().map(String::as_str).collect::<Vec<_>>(),
+    ));
+    assert_eq!(v["version"], env!("CARGO_PKG_VERSION"));
+    assert!(v["command"].as_str().unwrap().contains("solve"));
+    assert!(v["seconds"].as_f64().unwrap() >= 0.0 && v["results"].is_array());
     // an Appendix B/C deck and an Appendix D (conductance network) deck
     for name in ["ring.deck", "chain_d.deck"] {
         let deck = format!("{}/tests/data/decks/{name}", env!("CARGO_MANIFEST_DIR"));
