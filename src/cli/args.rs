@@ -6,7 +6,7 @@ use boltzone::fem::ElementKind;
 use std::path::PathBuf;
 
 /// Hole radius A, load radius B, plate thickness D and Poisson's ratio ν (lengths in inches).
-#[derive(Debug, Clone, clap::Args)]
+#[derive(Debug, Clone, clap::Args, serde::Serialize)]
 pub struct Geometry {
     /// Hole radius A, the inner radius of the bearing annulus (in).
     #[arg(long, allow_negative_numbers = true)]
@@ -24,7 +24,8 @@ pub struct Geometry {
 }
 
 /// Finite-element family.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Element {
     /// 9-node biquadratic quadrilateral (the default: its error estimates are the reliable ones).
     Q9,
@@ -68,6 +69,46 @@ impl TableOutput {
         super::check::tolerance("--tol", self.tol)?;
         if let Some(p) = &self.csv {
             super::check::output_path("--csv", p)?;
+        }
+        Ok(())
+    }
+}
+
+/// The files `single` and `two` write besides their printout (each path checked before any
+/// work; exit 2 naming the flag).
+#[derive(Debug, Clone, clap::Args, serde::Serialize)]
+pub struct OutputFiles {
+    /// Write the finest mesh's curve to this CSV file (`two`: r, p, g, τ at the interface;
+    /// `single`: the midplane σ_z at P = 1 psi): one header row with units, then `#` provenance
+    /// lines, then data.
+    #[arg(long)]
+    pub curve: Option<PathBuf>,
+    /// Write the finest mesh's field (mesh, displacements, stresses; a symmetric joint or the
+    /// single plate with its mirror image; `two`: the interface pressure, gap and status) to
+    /// this VTU file for ParaView.
+    #[arg(long)]
+    pub field: Option<PathBuf>,
+    /// Draw the interface pressure (`two`) or the midplane σ_z (`single`) against r, with B,
+    /// R_o and the rules' radii marked, to this SVG or PNG file.
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+}
+
+impl OutputFiles {
+    /// Whether any file is asked.
+    pub fn any(&self) -> bool {
+        self.curve.is_some() || self.field.is_some() || self.plot.is_some()
+    }
+
+    /// Checks every path before any work starts.
+    pub fn check(&self) -> anyhow::Result<()> {
+        for (flag, path) in [("--curve", &self.curve), ("--field", &self.field)] {
+            if let Some(path) = path {
+                super::check::output_path(flag, path)?;
+            }
+        }
+        if let Some(path) = &self.plot {
+            super::figure::check_plot_path("--plot", path)?;
         }
         Ok(())
     }

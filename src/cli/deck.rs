@@ -15,7 +15,7 @@ use std::path::PathBuf;
 use super::exit::Status;
 
 /// Which appendix's format the file is in.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
 pub enum Format {
     /// Appendix B: elastic.
     B,
@@ -26,7 +26,7 @@ pub enum Format {
 }
 
 /// Arguments of `boltzone deck`.
-#[derive(Debug, clap::Args)]
+#[derive(Debug, clap::Args, serde::Serialize)]
 pub struct Args {
     /// The deck file (one or more decks separated by a card starting `*****`).
     #[arg(required_unless_present = "emit")]
@@ -76,6 +76,7 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> anyhow::Result<Status> {
+    let start = std::time::Instant::now();
     if let Some(out) = &args.emit {
         return emit(&args, out).map(|()| Status::Converged);
     }
@@ -91,14 +92,14 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let text =
         std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
     if args.appendix == Some(Format::D) {
-        return network_decks(&text, path, args.json);
+        return network_decks(&text, path, &args, start);
     }
     let decks = match read_decks_as(&text, appendix) {
         Ok(decks) => decks,
         // not B or C: a conductance network (Appendix D) when it reads as one
         Err(e) if args.appendix.is_none() && parse_network_decks(&text).is_ok() => {
             let _ = e;
-            return network_decks(&text, path, args.json);
+            return network_decks(&text, path, &args, start);
         }
         Err(e) => return Err(e).with_context(|| format!("{}", path.display())),
     };
@@ -109,7 +110,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     }
     if args.json {
         let list: Vec<_> = out.iter().map(|(d, s)| json_deck(d, s)).collect();
-        println!("{}", serde_json::json!({ "decks": list }));
+        let mut v = serde_json::json!({ "decks": list });
+        super::output::stamp(&mut v, &args, start)?;
+        println!("{v}");
     } else {
         for (d, s) in &out {
             print!("{}", report(d, s));
@@ -125,7 +128,12 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
 
 /// Solves Appendix D conductance-network decks ([`boltzone::heat::deck`]) and prints the
 /// program's output or `{"decks": [{"title", "nodes": [{"n", "t", …}], "residual"}]}`.
-fn network_decks(text: &str, path: &std::path::Path, json: bool) -> anyhow::Result<Status> {
+fn network_decks(
+    text: &str,
+    path: &std::path::Path,
+    args: &Args,
+    start: std::time::Instant,
+) -> anyhow::Result<Status> {
     let decks = parse_network_decks(text).with_context(|| format!("{}", path.display()))?;
     let mut solved = Vec::with_capacity(decks.len());
     for deck in &decks {
@@ -138,8 +146,10 @@ fn network_decks(text: &str, path: &std::path::Path, json: bool) -> anyhow::Resu
         })?;
         solved.push(s);
     }
-    if json {
-        super::print_json(&serde_json::json!({ "decks": solved }))?;
+    if args.json {
+        let mut v = serde_json::json!({ "decks": solved });
+        super::output::stamp(&mut v, args, start)?;
+        super::print_json(&v)?;
     } else {
         for s in &solved {
             print!("{s}");

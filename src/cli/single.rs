@@ -6,17 +6,20 @@
 //! [`boltzone::hankel::hole::single_plate_separation`] (infinite slab + hole correction, and a
 //! rim correction when `--c` is given).
 
-use super::args::{Element, Geometry};
+use super::args::{Element, Geometry, OutputFiles};
 use super::check;
 use super::exit::{num, sig, Status};
-use boltzone::fem::single::{solve, FaceCondition, SingleParams};
+use boltzone::fem::single::{
+    finest_half_plate, midplane_of, solve, FaceCondition, SingleParams, SingleSolution,
+};
 use boltzone::fem::ElementKind;
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
 use boltzone::hankel::SeparationParams;
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
 /// Which solver computes R_o.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Method {
     /// Axisymmetric finite elements.
     Fem,
@@ -25,7 +28,8 @@ pub enum Method {
 }
 
 /// How the bolt head loads the faces (fem).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Nut {
     /// Uniform bearing pressure over A..B (Table 1).
     Pressure,
@@ -34,10 +38,11 @@ pub enum Nut {
 }
 
 /// Arguments of `boltzone single`.
-#[derive(Debug, clap::Args)]
+#[derive(Debug, clap::Args, serde::Serialize)]
 #[command(allow_negative_numbers = true)]
 pub struct Args {
     #[command(flatten)]
+    #[serde(flatten)]
     geom: Geometry,
     /// Plate outer radius C (default: infinite, truncated at B + 30 D).
     #[arg(long)]
@@ -66,6 +71,10 @@ pub struct Args {
     /// Print JSON instead of text.
     #[arg(long)]
     json: bool,
+    /// Curve, field and figure files (fem).
+    #[command(flatten)]
+    #[serde(flatten)]
+    out: OutputFiles,
 }
 
 /// --tol, or the method's default.
@@ -105,11 +114,20 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
             "needs --method fem (the Hankel route loads the faces by a pressure)",
         );
     }
+    if args.out.any() && args.method == Method::Hankel {
+        return super::exit::usage(
+            "--curve/--field/--plot",
+            "given",
+            "need --method fem (the finest FE level is what they show)",
+        );
+    }
+    args.out.check()?;
     Ok(())
 }
 
 /// Runs the command.
 pub fn run(args: Args) -> anyhow::Result<Status> {
+    let start = std::time::Instant::now();
     check_args(&args)?;
     let outer = args.c.map_or(OuterRadius::Infinite, OuterRadius::Finite);
     let load = FaceLoad::uniform(args.geom.a, args.geom.b, 1.0)?;
@@ -121,7 +139,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         load,
     )?;
     if args.method == Method::Hankel {
-        return run_hankel(&args, &plate);
+        return run_hankel(&args, &plate, start);
     }
     let kind = ElementKind::from(args.element);
     let loading = match args.nut {
@@ -136,6 +154,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         ..SingleParams::default()
     };
     let s = solve(&plate, &params)?;
+    if args.out.any() {
+        write_finest(&args, &plate, &params, &s)?;
+    }
     let info = &s.info;
     let r_o_over_a = (args.geom.a > 0.0).then(|| s.r_o / args.geom.a);
     if args.json {
@@ -156,6 +177,8 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         if let Some(q) = r_o_over_a {
             v["r_o_over_a"] = q.into();
         }
+        super::output::stamp(&mut v, &args, start)?;
+        v["inputs"]["tol"] = tolerance(&args).into(); // the method's default filled in
         super::print_json(&v)?;
     } else {
         println!(
@@ -198,7 +221,11 @@ fn not_converged(converged: bool) -> &'static str {
 }
 
 /// `--method hankel`: R_o of the plate with its hole made traction-free (Hankel route).
-fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<Status> {
+fn run_hankel(
+    args: &Args,
+    plate: &SinglePlate,
+    start: std::time::Instant,
+) -> anyhow::Result<Status> {
     let params = HoleParams {
         corner_terms: args.corner_terms,
         r_o_tolerance: tolerance(args),
@@ -237,6 +264,8 @@ fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<Status> {
         if let Some(q) = r_o_over_a {
             v["r_o_over_a"] = q.into();
         }
+        super::output::stamp(&mut v, args, start)?;
+        v["inputs"]["tol"] = tolerance(args).into(); // the method's default filled in
         super::print_json(&v)?;
     } else {
         println!(
@@ -269,4 +298,66 @@ fn run_hankel(args: &Args, plate: &SinglePlate) -> anyhow::Result<Status> {
         println!("time     = {:.2} ms", 1e3 * sep.seconds);
     }
     Ok(Status::from_converged(sep.converged))
+}
+
+/// `--curve` and `--field`: the finest level solved again ([`finest_half_plate`]), its midplane
+/// σ_z as CSV and its field as VTU (upper half and its mirror image: the whole plate 2D thick).
+fn write_finest(
+    args: &Args,
+    plate: &SinglePlate,
+    params: &SingleParams,
+    s: &SingleSolution,
+) -> anyhow::Result<()> {
+    let h = finest_half_plate(plate, params, s)?;
+    let method = format!(
+        "method: single plate 2D thick (Fernlund's substitution), axisymmetric FE {:?}, finest of \
+         {} levels ({} nodes in the upper half); E = 1 psi, P = 1 psi: stresses scale with P, \
+         displacements with P/E",
+        params.kind,
+        s.info.levels.len(),
+        h.mesh.n_nodes()
+    );
+    let m = midplane_of(plate, &h)?;
+    if let Some(path) = &args.out.plot {
+        let g = &args.geom;
+        let curve = super::figure::RadiusCurve {
+            title: "Single plate 2D thick: midplane normal stress (FE, finest level)".into(),
+            y_label: "σ_z [psi] (P = 1 psi)",
+            label: "σ_z(r), finest mesh",
+            r: &m.r,
+            y: &m.sigma_z,
+            r_o: (s.r_o, s.r_o_error),
+        };
+        super::figure::radius_plot(path, &curve, (g.b, g.d, g.d, args.c))?;
+    }
+    if let Some(path) = &args.out.curve {
+        let notes = [
+            method.clone(),
+            "sigma_z = midplane normal stress from the roller reactions, compression negative"
+                .to_string(),
+            super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
+        ];
+        let rows: Vec<Vec<f64>> =
+            m.r.iter()
+                .zip(&m.sigma_z)
+                .map(|(r, z)| vec![*r, *z])
+                .collect();
+        super::write_output(
+            path,
+            &super::output::curve_csv(&["r [in]", "sigma_z [psi]"], &notes, &rows),
+        )?;
+    }
+    if let Some(path) = &args.out.field {
+        let mut grid = boltzone::io::vtu::Grid::plate(&h.mesh, &[plate.material()], &h.u, 0)?;
+        let lower = grid.mirrored(1);
+        grid.append(&lower);
+        let note = format!(
+            "{method}; plate 0 = upper half z >= 0 (computed), plate 1 = its mirror image; {}; \
+             command: {}",
+            super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
+            super::output::command_line()
+        );
+        super::write_output(path, &grid.to_vtu(&note))?;
+    }
+    Ok(())
 }

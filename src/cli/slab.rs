@@ -10,10 +10,11 @@ use boltzone::{FaceLoad, Material};
 use std::path::PathBuf;
 
 /// Arguments of `boltzone slab`.
-#[derive(Debug, clap::Args)]
+#[derive(Debug, clap::Args, serde::Serialize)]
 #[command(allow_negative_numbers = true)]
 pub struct Args {
     #[command(flatten)]
+    #[serde(flatten)]
     geom: Geometry,
     /// Relative tolerance on R_o.
     #[arg(long, default_value_t = 1e-10, allow_negative_numbers = true)]
@@ -21,13 +22,15 @@ pub struct Args {
     /// Print one JSON object instead of text.
     #[arg(long)]
     json: bool,
-    /// Write the midplane σ_z/P against r/A (0 ≤ r ≤ max(3B, B + 6D)) to this CSV file.
+    /// Write the midplane σ_z at P = 1 psi against r (0 ≤ r ≤ max(3B, B + 6D)) to this CSV file
+    /// (header `r [in],sigma_z [psi],sigma_z_error [psi]`, then `#` provenance lines, then data).
     #[arg(long)]
     curve: Option<PathBuf>,
 }
 
 /// Runs the command.
 pub fn run(args: Args) -> anyhow::Result<Status> {
+    let start = std::time::Instant::now();
     let g = &args.geom;
     if g.a.is_nan() || g.a <= 0.0 {
         return super::exit::usage(
@@ -54,10 +57,10 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let sep = slab.separation_radius(&params)?;
     super::exit::finite("R_o error estimate", sep.error)?;
     if let Some(path) = &args.curve {
-        super::write_output(path, &curve_csv(&slab, args.geom.a)?)?;
+        super::write_output(path, &curve_csv(&slab, &sep)?)?;
     }
     if args.json {
-        let v = serde_json::json!({
+        let mut v = serde_json::json!({
             "a": args.geom.a, "b": args.geom.b, "d": args.geom.d, "nu": args.geom.nu,
             "r_o": sep.r_o,
             "r_o_over_a": sep.r_o / args.geom.a,
@@ -68,6 +71,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             "seconds": sep.seconds,
             "model": "infinite slab 2D thick, no hole, uniform load on both faces (Hankel transforms)",
         });
+        super::output::stamp(&mut v, &args, start)?;
         super::print_json(&v)?;
     } else {
         println!(
@@ -100,8 +104,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     Ok(Status::from_converged(sep.converged))
 }
 
-/// The midplane σ_z/P against r/A on 0 ≤ r ≤ max(3B, B + 6D) as CSV.
-fn curve_csv(slab: &Slab, a: f64) -> anyhow::Result<String> {
+/// The midplane σ_z (P = 1 psi) against r on 0 ≤ r ≤ max(3B, B + 6D), 1001 points, in the one
+/// curve layout ([`super::output`]).
+fn curve_csv(slab: &Slab, sep: &boltzone::hankel::SeparationInfo) -> anyhow::Result<String> {
     let (b, d) = (slab.load().outer(), slab.half_thickness());
     let r_end = (3.0 * b).max(b + 6.0 * d);
     // interpolated curve, or for very thin slabs (more than MAX_CURVE_PANELS panels of width D)
@@ -114,15 +119,26 @@ fn curve_csv(slab: &Slab, a: f64) -> anyhow::Result<String> {
                 Box::new(move |r| m.eval(r))
             }
         };
-    let mut out = format!(
-        "# midplane sigma_z/P of the infinite slab (no hole), D = {d} in, A = {a} in, B = {b} in; \
-         compression negative\nr_over_a,sigma_z_over_p,error_over_p\n"
-    );
+    let notes = [
+        format!(
+            "method: infinite slab 2D thick without hole (Hankel transforms), D = {d:e} in, \
+             load on {a:e} <= r <= {b:e} in at P = 1 psi (sigma_z scales with P; compression \
+             negative); sigma_z_error = quadrature error estimate",
+            a = slab.load().inner()
+        ),
+        super::output::r_o_note(sep.r_o, sep.error, sep.converged),
+    ];
     let n = 1000;
-    for k in 0..=n {
-        let r = r_end * k as f64 / n as f64;
-        let e = eval(r);
-        out += &format!("{},{},{:.1e}\n", r / a, e.value, e.error);
-    }
-    Ok(out)
+    let rows: Vec<Vec<f64>> = (0..=n)
+        .map(|k| {
+            let r = r_end * k as f64 / n as f64;
+            let e = eval(r);
+            vec![r, e.value, e.error]
+        })
+        .collect();
+    Ok(super::output::curve_csv(
+        &["r [in]", "sigma_z [psi]", "sigma_z_error [psi]"],
+        &notes,
+        &rows,
+    ))
 }

@@ -35,6 +35,7 @@ fn classify(e: SceneError) -> anyhow::Error {
 
 /// Runs the command.
 pub fn run(args: Args) -> anyhow::Result<Status> {
+    let start = std::time::Instant::now();
     let text = read(&args.scene).map_err(classify)?;
     let pts = match &args.geometries {
         Some(csv) => rows(&text, &read(csv).map_err(classify)?).map_err(classify)?,
@@ -47,7 +48,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             super::write_output(path, &curve_csv(&pts, &[Ok(s.clone())], &args.scene))?;
         }
         if args.json {
-            super::print_json(&s)?;
+            let mut v = serde_json::to_value(&s)?;
+            super::output::stamp_run(&mut v, start)?;
+            super::print_json(&v)?;
         } else {
             print_text(&s);
         }
@@ -86,7 +89,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         super::write_output(path, &sweep_csv(&pts, &results, &args.scene))?;
     }
     if args.json {
-        super::print_json(&serde_json::json!({ "results": rows }))?;
+        let mut v = serde_json::json!({ "results": rows });
+        super::output::stamp_run(&mut v, start)?;
+        super::print_json(&v)?;
     } else {
         for (p, r) in pts.iter().zip(&results) {
             let at: Vec<String> = p.values.iter().map(|(k, v)| format!("{k} = {v}")).collect();
@@ -160,7 +165,7 @@ fn curve_csv(
     let (l, p, _) = pts[0].scene.units.symbols();
     let keys: String = pts[0].values.iter().map(|(k, _)| format!("{k},")).collect();
     let mut out = format!(
-        "{keys}r_{l},p_{p},g_{l}\n# boltzone {} solve {}: interface of the finest mesh; p > 0 \
+        "{keys}r [{l}],p [{p}],g [{l}]\n# boltzone {} solve {}: interface of the finest mesh; p > 0 \
          compression, g = gap between the plates\n",
         env!("CARGO_PKG_VERSION"),
         scene.display(),

@@ -2,11 +2,12 @@
 //! [`boltzone::contact::two_plate`]: separation radius R_o with its error, and on request the
 //! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV.
 
-use super::args::{Element, Geometry};
+use super::args::{Element, Geometry, OutputFiles};
 use super::check;
 use super::exit::{sig, Status};
 use boltzone::contact::two_plate::{
-    solve, EdgeSupport, InterfaceModel, Loading, TwoPlateParams, TwoPlateSolution,
+    solve, solve_field, EdgeSupport, InterfaceModel, Loading, TwoPlateField, TwoPlateParams,
+    TwoPlateSolution,
 };
 use boltzone::fem::ElementKind;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Peak, Plate};
@@ -15,7 +16,8 @@ use std::f64::consts::PI;
 use std::path::PathBuf;
 
 /// Interface model between unequal or dissimilar plates.
-#[derive(Debug, Clone, Copy, ValueEnum)]
+#[derive(Debug, Clone, Copy, ValueEnum, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Interface {
     /// u and w tied inside the contact zone (the report's model).
     Welded,
@@ -24,7 +26,8 @@ pub enum Interface {
 }
 
 /// Shape of the bearing pressure under head and nut.
-#[derive(Debug, Clone, Copy, ValueEnum)]
+#[derive(Debug, Clone, Copy, ValueEnum, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Shape {
     /// Uniform pressure on A..B.
     Uniform,
@@ -35,11 +38,12 @@ pub enum Shape {
 }
 
 /// Arguments of `boltzone two`.
-#[derive(Debug, clap::Args)]
+#[derive(Debug, clap::Args, serde::Serialize)]
 #[command(allow_negative_numbers = true)]
 pub struct Args {
     /// A, B, D (the upper plate's thickness; the lower plate's too unless --d2 is given), ν.
     #[command(flatten)]
+    #[serde(flatten)]
     geom: Geometry,
     /// Thickness of the lower plate (in).
     #[arg(long)]
@@ -83,9 +87,14 @@ pub struct Args {
     /// Wanted relative error of R_o.
     #[arg(long, default_value_t = 5e-4)]
     tol: f64,
-    /// Write r, p(r), g(r), τ(r) of the finest mesh to this CSV file.
+    /// Curve, field and figure files.
+    #[command(flatten)]
+    #[serde(flatten)]
+    out: OutputFiles,
+    /// Write a calculation report (Markdown: inputs, units, version, method, results, rules of
+    /// thumb, the --plot figure) to this file.
     #[arg(long)]
-    curve: Option<PathBuf>,
+    report: Option<PathBuf>,
     /// Print the result as JSON.
     #[arg(long)]
     json: bool,
@@ -130,14 +139,16 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     if let Some(e2) = args.e2 {
         check::ratio("--e2", e2, args.e, 1e6, "Young's modulus")?;
     }
-    if let Some(path) = &args.curve {
-        check::output_path("--curve", path)?;
+    args.out.check()?;
+    if let Some(path) = &args.report {
+        check::output_path("--report", path)?;
     }
     Ok(())
 }
 
 /// Runs the command.
 pub fn run(args: Args) -> anyhow::Result<Status> {
+    let start = std::time::Instant::now();
     check_args(&args)?;
     let upper_mat = Material::new(args.e, args.geom.nu)?;
     let lower_mat = Material::new(args.e2.unwrap_or(args.e), args.nu2.unwrap_or(args.geom.nu))?;
@@ -174,9 +185,40 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         tolerance: args.tol,
         ..Default::default()
     };
-    let s = solve(&joint, &params)?;
-    if let Some(path) = &args.curve {
-        super::write_output(path, &curve_csv(&s))?;
+    let s = match &args.out.field {
+        None => solve(&joint, &params)?,
+        Some(path) => {
+            let (s, field) = solve_field(&joint, &params)?;
+            super::write_output(path, &field_vtu(&s, &field)?)?;
+            s
+        }
+    };
+    if let Some(path) = &args.out.curve {
+        super::write_output(path, &curve_csv(&s, p))?;
+    }
+    if let Some(path) = &args.out.plot {
+        let g = &args.geom;
+        let d2 = args.d2.unwrap_or(g.d);
+        let curve = super::figure::RadiusCurve {
+            title: format!("Interface pressure; model: {}", s.info.model),
+            y_label: "p [psi]",
+            label: "p(r), finest mesh",
+            r: &s.radius,
+            y: &s.pressure,
+            r_o: (s.r_o, s.r_o_error),
+        };
+        super::figure::radius_plot(path, &curve, (g.b, g.d, d2, args.c))?;
+    }
+    if let Some(path) = &args.report {
+        let g = &args.geom;
+        let inputs = super::report::ReportInputs {
+            inputs: serde_json::to_value(&args)?,
+            geometry: (g.a, g.b, g.d, args.d2.unwrap_or(g.d), args.c),
+            pressure: p,
+            tolerance: args.tol,
+            plot: args.out.plot.as_deref(),
+        };
+        super::write_output(path, &super::report::two_report(&s, &inputs))?;
     }
     let Some(last) = s.info.levels.last() else {
         anyhow::bail!("the two-plate solver returned no mesh level");
@@ -202,6 +244,8 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         if let Some(q) = r_o_over_a {
             out["r_o_over_a"] = q.into();
         }
+        out["bearing_pressure"] = p.into();
+        super::output::stamp(&mut out, &args, start)?;
         super::print_json(&out)?;
     } else {
         let over_a = r_o_over_a.map_or(String::new(), |q| format!("R_o/A = {}, ", sig(q, 6)));
@@ -245,17 +289,64 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     Ok(Status::from_converged(s.converged))
 }
 
-/// r, p, g, τ of the finest mesh as CSV.
-fn curve_csv(s: &TwoPlateSolution) -> String {
-    let mut out = format!(
-        "# boltzone two: interface of the finest mesh; model: {}\n\
-         # r = radius (in), p = interface pressure (psi, compression > 0), g = gap between the \
-         plates (in), tau = interface shear stress on the upper plate (psi; welded model, 0 otherwise)\n\
-         r,p,g,tau\n",
-        s.info.model
-    );
-    for (((r, p), g), t) in s.radius.iter().zip(&s.pressure).zip(&s.gap).zip(&s.shear) {
-        out += &format!("{r:.10e},{p:.10e},{g:.10e},{t:.10e}\n");
+/// r, p, g, τ of the finest mesh in the one curve layout ([`super::output`]).
+fn curve_csv(s: &TwoPlateSolution, p: f64) -> String {
+    let notes = [
+        format!(
+            "method: two-plate FE contact (boltzone::contact::two_plate), interface of the finest \
+             mesh; model: {}",
+            s.info.model
+        ),
+        format!(
+            "p = interface pressure (compression > 0), g = gap between the plates, tau = \
+             interface shear on the upper plate (welded model, 0 otherwise); bearing pressure P = \
+             {p:e} psi"
+        ),
+        super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
+    ];
+    let rows: Vec<Vec<f64>> = (0..s.radius.len())
+        .map(|i| vec![s.radius[i], s.pressure[i], s.gap[i], s.shear[i]])
+        .collect();
+    super::output::curve_csv(&["r [in]", "p [psi]", "g [in]", "tau [psi]"], &notes, &rows)
+}
+
+/// The finest mesh's field as VTU ([`boltzone::io::vtu`]): plate 0 the lower plate, plate 1
+/// the upper one; interface nodes of both carry the contact pressure, the gap and the status
+/// (1 closed, 0 open), every other node 0.
+fn field_vtu(s: &TwoPlateSolution, field: &TwoPlateField) -> anyhow::Result<String> {
+    let model = &field.model;
+    let mesh = &model.mesh;
+    let mut grid = boltzone::io::vtu::Grid::plate(mesh, &model.materials, &field.u, 0)?;
+    let n = mesh.n_nodes();
+    let (mut p, mut g, mut st) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    let mut faces = vec![mesh.bottom(model.upper)];
+    faces.extend(model.lower.map(|l| mesh.top(l)));
+    for face in &faces {
+        for (i, &node) in face.iter().enumerate() {
+            p[node] = s.pressure[i];
+            g[node] = s.gap[i];
+            st[node] = if field.closed[i] { 1.0 } else { 0.0 };
+        }
     }
-    out
+    grid.add_scalar("contact_pressure", p);
+    grid.add_scalar("gap", g);
+    grid.add_scalar("contact_status", st);
+    let layout = if model.lower.is_none() {
+        // the symmetric joint: the computed upper plate (id 1) and its mirror image (id 0)
+        grid.plate.iter_mut().for_each(|id| *id = 1);
+        let lower = grid.mirrored(-1);
+        grid.append(&lower);
+        "plate 1 = upper plate (computed on a rigid frictionless plane), plate 0 = its mirror image"
+    } else {
+        "plate 1 = upper plate, plate 0 = lower plate"
+    };
+    let note = format!(
+        "method: two-plate FE contact, finest mesh, {} model; {layout}; interface nodes carry \
+         contact_pressure [psi] (compression > 0), gap [in] (between the plates) and \
+         contact_status (1 closed, 0 open); {}; command: {}",
+        s.info.model,
+        super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
+        super::output::command_line()
+    );
+    Ok(grid.to_vtu(&note))
 }

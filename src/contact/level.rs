@@ -121,6 +121,8 @@ pub struct LevelSolution {
     pub time_linear: Duration,
     /// Flexibility solves + LCP + recovery.
     pub time_contact: Duration,
+    /// Nodal displacements (u, w) of the whole mesh.
+    pub u: Vec<[f64; 2]>,
 }
 
 /// Ties, numbers, assembles, factors and solves the level (module docs). `supports` adds the
@@ -268,6 +270,7 @@ pub fn solve_level(
         dofs: ties.n(),
         time_linear,
         time_contact: t1.elapsed(),
+        u,
     })
 }
 

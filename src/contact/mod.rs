@@ -32,6 +32,7 @@
 //! ```
 
 mod error;
+pub mod field;
 pub mod lcp;
 pub mod level;
 pub mod params;

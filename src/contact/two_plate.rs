@@ -48,7 +48,9 @@
 //! ```
 
 use super::error::ContactError;
-use super::level::LevelSolution;
+use super::field::UnitField;
+pub use super::field::{solve_field, TwoPlateField};
+use super::level::{LevelSolution, Model};
 pub use super::params::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use super::refine::{mesh, solve_adaptive, MeshLayout, PreviousLevel};
 use super::separation::{estimate, NodalInterface, SeparationEstimate};
@@ -150,6 +152,14 @@ pub struct TwoPlateSolution {
 /// finite input — a modulus of 1e-300 or 1e300, plates a nanometre or a kilometre thick —
 /// meets the same well-scaled matrices; the results are scaled back.
 pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution, ContactError> {
+    solve_keeping(joint, params).map(|(s, _)| s)
+}
+
+/// [`solve`], keeping the finest level's model and solution in the solver's units.
+pub(crate) fn solve_keeping(
+    joint: &Joint,
+    params: &TwoPlateParams,
+) -> Result<(TwoPlateSolution, UnitField), ContactError> {
     check(params)?;
     let (up, lo) = (joint.upper(), joint.lower());
     let length = up.thickness().min(lo.thickness());
@@ -200,7 +210,7 @@ pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution,
         },
         ..*params
     };
-    let mut s = solve_unit(&scaled, &scaled_params).map_err(|e| match e {
+    let (mut s, (model, last)) = solve_unit(&scaled, &scaled_params).map_err(|e| match e {
         ContactError::WindowExhausted { radius } => ContactError::WindowExhausted {
             radius: radius * length,
         },
@@ -228,7 +238,15 @@ pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution,
         l.r_o *= length;
         l.spread *= length;
     }
-    Ok(s)
+    let field = UnitField {
+        model,
+        u: last.u,
+        closed: last.closed,
+        length,
+        displacement,
+        modulus,
+    };
+    Ok((s, field))
 }
 
 /// Widest free annulus C − B meshed, in thicknesses of the thinner plate. The bending stiffness
@@ -240,6 +258,7 @@ const C_MAX_OVER_D: f64 = 500.0;
 
 /// One solved mesh level and its R_o.
 struct Level {
+    model: Model,
     sol: LevelSolution,
     est: SeparationEstimate,
     record: TwoPlateLevel,
@@ -284,7 +303,12 @@ fn solve_level_at(
         time_linear: sol.time_linear.as_secs_f64(),
         time_contact: sol.time_contact.as_secs_f64(),
     };
-    Ok(Level { sol, est, record })
+    Ok(Level {
+        model,
+        sol,
+        est,
+        record,
+    })
 }
 
 /// Where to cut plates wider than the mesh can hold, and the error the cut makes in R_o.
@@ -334,7 +358,10 @@ fn truncation(
 
 /// [`solve`] on a joint in the units of [`solve`] (thinner plate 1 thick, stiffer modulus 1,
 /// largest bearing pressure 1).
-fn solve_unit(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution, ContactError> {
+fn solve_unit(
+    joint: &Joint,
+    params: &TwoPlateParams,
+) -> Result<(TwoPlateSolution, (Model, LevelSolution)), ContactError> {
     let start = Instant::now();
     let load = joint.load();
     let (a, b) = (joint.hole_radius(), load.outer());
@@ -362,10 +389,15 @@ fn solve_unit(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution
     let mut r_o_error = f64::INFINITY;
     let mut converged = false;
     let mut rate = None;
-    let mut last: Option<LevelSolution> = None;
+    let mut last: Option<(Model, LevelSolution)> = None;
     for k in 0..params.max_levels {
         let h = h0 / 2f64.powi(k as i32);
-        let Level { sol, est, record } = solve_level_at(joint, &g, params, h, prev.as_ref())?;
+        let Level {
+            model,
+            sol,
+            est,
+            record,
+        } = solve_level_at(joint, &g, params, h, prev.as_ref())?;
         values.push(est.r_o);
         levels.push(record);
         if values.len() >= 2 {
@@ -378,7 +410,7 @@ fn solve_unit(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution
             rate = fitted_rate(&values, 2.0);
             if n >= params.min_levels && r_o_error <= params.tolerance * est.r_o {
                 converged = true;
-                last = Some(sol);
+                last = Some((model, sol));
                 break;
             }
             // The report's rule decided the welded zone (welded dissimilar plates: no
@@ -393,9 +425,9 @@ fn solve_unit(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution
             r_o: est.r_o,
             h,
         });
-        last = Some(sol);
+        last = Some((model, sol));
     }
-    let (Some(sol), Some(&r_o)) = (last, values.last()) else {
+    let (Some((model, sol)), Some(&r_o)) = (last, values.last()) else {
         return Err(InputError::Parameter {
             field: "TwoPlateParams::max_levels",
             value: params.max_levels as f64,
@@ -416,7 +448,7 @@ fn solve_unit(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution
     let overlap = gap_factor * sol.gap.iter().fold(0.0f64, |m, x| m.max(-x));
     let unilateral = !sol.lcp.prefix && overlap <= 1e-6 * gap_factor * gap_scale;
     let converged = converged && unilateral;
-    Ok(TwoPlateSolution {
+    let solution = TwoPlateSolution {
         r_o,
         r_o_error,
         converged,
@@ -443,7 +475,8 @@ fn solve_unit(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution
             truncation_error,
             seconds: start.elapsed().as_secs_f64(),
         },
-    })
+    };
+    Ok((solution, (model, sol)))
 }
 
 impl TwoPlateSolution {

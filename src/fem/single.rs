@@ -345,6 +345,12 @@ pub fn solve_midplane_on(
     solve: &SolveParams,
 ) -> Result<MidplaneNodes, FemError> {
     let h = solve_half_plate(plate, loading, kind, radial, axial, solve)?;
+    midplane_of(plate, &h)
+}
+
+/// The midplane σ_z of a solved half plate, recovered from the roller reactions.
+pub fn midplane_of(plate: &SinglePlate, h: &HalfPlate) -> Result<MidplaneNodes, FemError> {
+    let kind = h.mesh.kind();
     let mid = h.mesh.bottom(0);
     let reac = reactions(&h.mesh, &[plate.material()], &h.u, &h.loads)?;
     let rz: Vec<f64> = mid.iter().map(|&n| reac[n][1]).collect();
@@ -556,6 +562,28 @@ fn observed_order(values: &[f64]) -> Option<f64> {
     }
     let ratio = ((values[n - 2] - values[n - 3]) / (values[n - 1] - values[n - 2])).abs();
     (ratio.is_finite() && ratio > 0.0).then(|| ratio.log2())
+}
+
+/// The finest mesh level of a [`solve`] result, solved again (nothing is kept during the
+/// study, so a caller who wants the field pays one more solve): the level's spacings come
+/// from [`level_spacings`] with the previous level's R_o as focus, as in [`CrossingLevels`].
+pub fn finest_half_plate(
+    plate: &SinglePlate,
+    params: &SingleParams,
+    solution: &SingleSolution,
+) -> Result<HalfPlate, FemError> {
+    let levels = &solution.info.levels;
+    let n = levels.len();
+    let previous = n.checked_sub(2).map(|k| levels[k]);
+    let (radial, axial) = level_spacings(plate, params, n.saturating_sub(1) as u32, previous)?;
+    solve_half_plate(
+        plate,
+        params.loading,
+        params.kind,
+        &radial,
+        &axial,
+        &params.solve,
+    )
 }
 
 /// R_o of `plate` on `params.levels` refinement levels, with the error estimate of

@@ -3,4 +3,5 @@
 //! tested in each area's `cli` module).
 
 mod fuzz;
+mod readme;
 mod regressions;

@@ -1,0 +1,121 @@
+//! `two --plot FILE` and `single --plot FILE` (SVG or PNG by the extension): the interface
+//! pressure p(r) of the user's joint, or the single plate's midplane σ_z, against r, with the bearing face's edge B, the computed separation radius R_o and the
+//! rules of thumb's contact radii (45° cone R = B + D, VDI 2230 for a finite plate, 30° cone R =
+//! B + D tan 30°, [`boltzone::rules`]) marked, in the style of the report's Figs. 15–27. Drawn
+//! by [`boltzone::plot::CurveFigure`]; checked by `tests/io/plot_out.rs` (the markers against the
+//! rules' closed forms, the PNG size).
+
+use super::exit::usage;
+use boltzone::plot::{write_figure, Curve, CurveFigure, Marker};
+use boltzone::rules;
+use std::path::Path;
+
+/// Pixel size of the figure.
+const SIZE: (u32, u32) = (900, 600);
+
+/// Rejects a `--plot` path whose extension is neither svg nor png (exit 2).
+pub fn check_plot_path(flag: &str, path: &Path) -> anyhow::Result<()> {
+    match path.extension().and_then(|e| e.to_str()) {
+        Some("svg" | "png") => super::check::output_path(flag, path),
+        _ => usage(flag, path.display(), "must end in .svg or .png"),
+    }
+}
+
+/// A curve against r for [`radius_plot`]: caption, y axis label, legend text, the points and
+/// the computed R_o with its error.
+pub struct RadiusCurve<'a> {
+    /// Caption.
+    pub title: String,
+    /// y axis label (with unit).
+    pub y_label: &'a str,
+    /// Legend text of the curve.
+    pub label: &'a str,
+    /// Radii (increasing).
+    pub r: &'a [f64],
+    /// Values at the radii.
+    pub y: &'a [f64],
+    /// Computed separation radius and its error estimate (in).
+    pub r_o: (f64, f64),
+}
+
+/// Draws `curve` against r with B, R_o and the rules' radii marked to `path`. `b`, `d` and
+/// `d2` are the bearing radius and the plates' thicknesses, `c` the plate radius (None:
+/// infinite).
+pub fn radius_plot(
+    path: &Path,
+    curve: &RadiusCurve<'_>,
+    (b, d, d2, c): (f64, f64, f64, Option<f64>),
+) -> anyhow::Result<()> {
+    let (r_o, r_o_error) = curve.r_o;
+    let mut markers = vec![
+        Marker {
+            label: format!("B = {b:.4} in"),
+            x: b,
+            color: (90, 90, 90),
+        },
+        Marker {
+            label: format!("Rₒ = {r_o:.4} ± {r_o_error:.1e} in (computed)"),
+            x: r_o,
+            color: (200, 30, 30),
+        },
+    ];
+    let colors = [(30, 90, 200), (20, 150, 60), (150, 60, 170)];
+    for ((name, radius), color) in rule_radii((b, d, d2, c)).into_iter().zip(colors) {
+        markers.push(Marker {
+            label: format!("{name}: R = {radius:.4} in"),
+            x: radius,
+            color,
+        });
+    }
+    // room right of the markers for the legend (upper right), within the plate
+    let x_end = markers.iter().map(|m| m.x).fold(r_o, f64::max) * 1.6;
+    let x_end = x_end.min(curve.r.last().copied().unwrap_or(r_o));
+    let points: Vec<(f64, f64)> = curve
+        .r
+        .iter()
+        .zip(curve.y)
+        .filter(|(r, _)| **r <= x_end)
+        .map(|(r, y)| (*r, *y))
+        .collect();
+    let y_min = points.iter().map(|p| p.1).fold(0.0, f64::min);
+    let y_max = points.iter().map(|p| p.1).fold(0.0, f64::max);
+    let pad = 0.1 * (y_max - y_min).max(f64::MIN_POSITIVE);
+    let fig = CurveFigure {
+        title: curve.title.clone(),
+        x_label: "r [in]".into(),
+        y_label: curve.y_label.into(),
+        curves: vec![Curve {
+            label: curve.label.into(),
+            points,
+            color: (0, 0, 0),
+        }],
+        markers,
+        x_range: (curve.r.first().copied().unwrap_or(0.0), x_end),
+        // room above the curve for the legend (a quarter of the plot's height and a margin)
+        y_range: (
+            y_min - if y_min < 0.0 { pad } else { 0.0 },
+            y_max + 5.0 * pad,
+        ),
+    };
+    write_figure(&fig, path, SIZE)?;
+    eprintln!("wrote {}", path.display());
+    Ok(())
+}
+
+/// The rules of thumb's contact radii for bearing radius `b`, plates `d` (under the head) and
+/// `d2` thick and plate radius `c` (None: infinite): the 45° cone, VDI 2230 (finite plates
+/// only: it needs the plate's diameter) and the 30° cone, each with its name.
+pub fn rule_radii((b, d, d2, c): (f64, f64, f64, Option<f64>)) -> Vec<(&'static str, f64)> {
+    let c_rule = c.unwrap_or(f64::INFINITY);
+    [
+        ("45° cone", Some(rules::roetscher(b, d, c_rule))),
+        ("VDI 2230", c.map(|c| rules::vdi2230(b, d, d2, c))),
+        (
+            "30° cone",
+            Some(rules::cone_radius(b, d, 30f64.to_radians(), c_rule)),
+        ),
+    ]
+    .into_iter()
+    .filter_map(|(name, r)| Some((name, r?.ok()?.radius)))
+    .collect()
+}
