@@ -416,7 +416,7 @@ fn solve_unit(
             // The report's rule decided the welded zone (welded dissimilar plates: no
             // sign-consistent edge): finer levels cannot converge, stop refining.
             if n >= params.min_levels && sol.lcp.prefix {
-                last = Some(sol);
+                last = Some((model, sol));
                 break;
             }
         }
