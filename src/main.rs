@@ -6,6 +6,13 @@ mod cli;
 use clap::Parser;
 
 fn main() -> std::process::ExitCode {
+    // A closed pipe (`boltzone table1 | head`) ends the program quietly, as it ends any Unix
+    // filter, instead of a panic in println!.
+    #[cfg(unix)]
+    // SAFETY: restores the default disposition of one signal before any thread starts.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     let args = cli::Cli::parse();
     match cli::run(args) {
         Ok(status) => std::process::ExitCode::from(status.code()),

@@ -245,3 +245,23 @@ fn welded_dissimilar_plates_are_never_a_converged_answer() {
     assert_eq!(v["converged"], true);
     assert!(v["overlap"].as_f64().unwrap() < 1e-12, "{v}"); // round-off only
 }
+
+#[test]
+fn a_closed_pipe_ends_the_program_quietly() {
+    // was: a panic ("failed printing to stdout: Broken pipe"), exit 101, from `… | head`
+    use std::process::{Command, Stdio};
+    let mut child = Command::new(env!("CARGO_BIN_EXE_boltzone"))
+        .arg("reference")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take()); // the reader goes away before the first line
+    let out = child.wait_with_output().unwrap();
+    assert_ne!(out.status.code(), Some(101));
+    assert!(
+        !String::from_utf8_lossy(&out.stderr).contains("panicked"),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
