@@ -142,6 +142,11 @@ pub struct CurveFigure {
     pub y_range: (f64, f64),
 }
 
+/// Text as a figure shows it: the report's R_o with a subscript o (Rₒ), not an underscore.
+pub fn typeset(text: &str) -> String {
+    text.replace("R_o", "R\u{2092}")
+}
+
 fn rgb(c: (u8, u8, u8)) -> RGBColor {
     RGBColor(c.0, c.1, c.2)
 }
@@ -152,7 +157,7 @@ impl Figure for CurveFigure {
         let (x0, x1) = self.x_range;
         let (y0, y1) = self.y_range;
         let mut chart = ChartBuilder::on(root)
-            .caption(&self.title, ("sans-serif", 20))
+            .caption(typeset(&self.title), ("sans-serif", 20))
             .margin(15)
             .x_label_area_size(45)
             .y_label_area_size(60)
@@ -160,8 +165,8 @@ impl Figure for CurveFigure {
             .map_err(pe)?;
         chart
             .configure_mesh()
-            .x_desc(&self.x_label)
-            .y_desc(&self.y_label)
+            .x_desc(typeset(&self.x_label))
+            .y_desc(typeset(&self.y_label))
             .label_style(("sans-serif", 15))
             .draw()
             .map_err(pe)?;
@@ -179,7 +184,7 @@ impl Figure for CurveFigure {
                     col.stroke_width(2),
                 ))
                 .map_err(pe)?
-                .label(&c.label)
+                .label(typeset(&c.label))
                 .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], col.stroke_width(2)));
         }
         for m in &self.markers {
@@ -192,8 +197,12 @@ impl Figure for CurveFigure {
                     col.stroke_width(2),
                 ))
                 .map_err(pe)?
-                .label(&m.label)
-                .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], col.stroke_width(2)));
+                .label(typeset(&m.label))
+                .legend(move |(x, y)| {
+                    // dashed in the legend as on the plot: three dashes of 4 px
+                    let dash = |a: i32| PathElement::new([(a, 0), (a + 4, 0)], col.stroke_width(2));
+                    EmptyElement::at((x, y)) + dash(0) + dash(8) + dash(16)
+                });
         }
         chart
             .configure_series_labels()
@@ -279,7 +288,7 @@ impl Figure for HeatMapFigure {
             let w = area.dim_in_pixel().0;
             let (main, bar) = area.split_horizontally(w.saturating_sub(90));
             let mut chart = ChartBuilder::on(&main)
-                .caption(&panel.title, ("sans-serif", 16))
+                .caption(typeset(&panel.title), ("sans-serif", 16))
                 .margin(8)
                 .x_label_area_size(40)
                 .y_label_area_size(50)
@@ -288,8 +297,8 @@ impl Figure for HeatMapFigure {
             chart
                 .configure_mesh()
                 .disable_mesh()
-                .x_desc(&self.x_label)
-                .y_desc(&self.y_label)
+                .x_desc(typeset(&self.x_label))
+                .y_desc(typeset(&self.y_label))
                 .x_label_formatter(&fmt)
                 .y_label_formatter(&fmt)
                 .label_style(("sans-serif", 13))
