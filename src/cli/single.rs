@@ -10,7 +10,7 @@ use super::args::{Element, Geometry, OutputFiles};
 use super::check;
 use super::exit::{num, sig, Status};
 use boltzone::fem::single::{
-    finest_half_plate, midplane_of, solve, FaceCondition, SingleParams, SingleSolution,
+    midplane_of, solve, solve_with_field, FaceCondition, HalfPlate, SingleParams, SingleSolution,
 };
 use boltzone::fem::ElementKind;
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
@@ -153,10 +153,13 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         tolerance: tolerance(&args),
         ..SingleParams::default()
     };
-    let s = solve(&plate, &params)?;
-    if args.out.any() {
-        write_finest(&args, &plate, &params, &s)?;
-    }
+    let s = if args.out.any() {
+        let (s, finest) = solve_with_field(&plate, &params)?;
+        write_finest(&args, &plate, &params, &s, &finest)?;
+        s
+    } else {
+        solve(&plate, &params)?
+    };
     let info = &s.info;
     let r_o_over_a = (args.geom.a > 0.0).then(|| s.r_o / args.geom.a);
     if args.json {
@@ -300,15 +303,15 @@ fn run_hankel(
     Ok(Status::from_converged(sep.converged))
 }
 
-/// `--curve` and `--field`: the finest level solved again ([`finest_half_plate`]), its midplane
+/// `--curve` and `--field`: the finest level kept by [`solve_with_field`], its midplane
 /// σ_z as CSV and its field as VTU (upper half and its mirror image: the whole plate 2D thick).
 fn write_finest(
     args: &Args,
     plate: &SinglePlate,
     params: &SingleParams,
     s: &SingleSolution,
+    h: &HalfPlate,
 ) -> anyhow::Result<()> {
-    let h = finest_half_plate(plate, params, s)?;
     let method = format!(
         "method: single plate 2D thick (Fernlund's substitution), axisymmetric FE {:?}, finest of \
          {} levels ({} nodes in the upper half); E = 1 psi, P = 1 psi: stresses scale with P, \
@@ -317,7 +320,7 @@ fn write_finest(
         s.info.levels.len(),
         h.mesh.n_nodes()
     );
-    let m = midplane_of(plate, &h)?;
+    let m = midplane_of(plate, h)?;
     if let Some(path) = &args.out.plot {
         let g = &args.geom;
         let curve = super::figure::RadiusCurve {

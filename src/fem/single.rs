@@ -433,6 +433,9 @@ pub struct CrossingLevels<'a> {
     params: &'a SingleParams,
     previous: Option<f64>,
     level: u32,
+    /// Keep each level's solved half plate (for a field or curve output).
+    keep: bool,
+    last: Option<HalfPlate>,
 }
 
 /// Refinement levels of the single-plate model (see [`CrossingLevels`]).
@@ -446,6 +449,8 @@ pub fn crossing_levels<'a>(
         params,
         previous: None,
         level: 0,
+        keep: false,
+        last: None,
     })
 }
 
@@ -457,7 +462,14 @@ impl Iterator for CrossingLevels<'_> {
         let solved = level_spacings(self.plate, p, self.level, self.previous)
             .map_err(FemError::from)
             .and_then(|(radial, axial)| {
-                solve_midplane_on(self.plate, p.loading, p.kind, &radial, &axial, &p.solve)
+                solve_half_plate(self.plate, p.loading, p.kind, &radial, &axial, &p.solve)
+            })
+            .and_then(|h| {
+                let m = midplane_of(self.plate, &h);
+                if self.keep {
+                    self.last = Some(h);
+                }
+                m
             });
         self.level += 1;
         let level = solved.and_then(|m| {
@@ -494,15 +506,20 @@ pub struct SingleSolution {
 /// [`level_estimate`] meets `params.tolerance` relative to R_o, on at least three and at most
 /// `params.levels` levels (3..=12); when the last level misses it, `converged` is false.
 pub fn solve(plate: &SinglePlate, params: &SingleParams) -> Result<SingleSolution, FemError> {
-    if !(params.tolerance > 0.0 && params.tolerance < 1.0) {
+    check_tolerance(params.tolerance)?;
+    Ok(study(plate, params, Some(params.tolerance), false)?.0)
+}
+
+fn check_tolerance(tolerance: f64) -> Result<(), FemError> {
+    if !(tolerance > 0.0 && tolerance < 1.0) {
         return Err(InputError::Parameter {
             field: "single-plate tolerance",
-            value: params.tolerance,
+            value: tolerance,
             reason: "must lie in (0, 1)",
         }
         .into());
     }
-    study(plate, params, Some(params.tolerance))
+    Ok(())
 }
 
 /// The levels of `params` (all of them, or until the estimate meets `tolerance`).
@@ -510,12 +527,15 @@ fn study(
     plate: &SinglePlate,
     params: &SingleParams,
     tolerance: Option<f64>,
-) -> Result<SingleSolution, FemError> {
+    keep: bool,
+) -> Result<(SingleSolution, Option<HalfPlate>), FemError> {
     check_levels(params.levels)?;
     let t0 = Instant::now();
     let mut values = Vec::new();
     let (mut nodes, mut dofs) = (0, 0);
-    for level in crossing_levels(plate, params)?.take(params.levels) {
+    let mut levels = crossing_levels(plate, params)?;
+    levels.keep = keep;
+    for level in levels.by_ref().take(params.levels) {
         let level = level?;
         values.push(level.r_o);
         (nodes, dofs) = (level.nodes, level.dofs);
@@ -527,7 +547,7 @@ fn study(
     let (r_o, r_o_error) = level_estimate(&values).ok_or(FemError::Solver(
         "fewer than three refinement levels were solved".into(),
     ))?;
-    Ok(SingleSolution {
+    let solution = SingleSolution {
         r_o,
         r_o_error,
         converged: meets(r_o, r_o_error, tolerance.unwrap_or(params.tolerance)),
@@ -539,7 +559,8 @@ fn study(
             dofs,
             seconds: t0.elapsed().as_secs_f64(),
         },
-    })
+    };
+    Ok((solution, levels.last.take()))
 }
 
 fn check_levels(levels: usize) -> Result<(), FemError> {
@@ -564,26 +585,17 @@ fn observed_order(values: &[f64]) -> Option<f64> {
     (ratio.is_finite() && ratio > 0.0).then(|| ratio.log2())
 }
 
-/// The finest mesh level of a [`solve`] result, solved again (nothing is kept during the
-/// study, so a caller who wants the field pays one more solve): the level's spacings come
-/// from [`level_spacings`] with the previous level's R_o as focus, as in [`CrossingLevels`].
-pub fn finest_half_plate(
+/// As [`solve`], keeping the finest level's solved half plate (mesh, supports, loads and
+/// displacements) for a field or curve output: nothing is solved twice, and nothing is kept
+/// when [`solve`] is called instead.
+pub fn solve_with_field(
     plate: &SinglePlate,
     params: &SingleParams,
-    solution: &SingleSolution,
-) -> Result<HalfPlate, FemError> {
-    let levels = &solution.info.levels;
-    let n = levels.len();
-    let previous = n.checked_sub(2).map(|k| levels[k]);
-    let (radial, axial) = level_spacings(plate, params, n.saturating_sub(1) as u32, previous)?;
-    solve_half_plate(
-        plate,
-        params.loading,
-        params.kind,
-        &radial,
-        &axial,
-        &params.solve,
-    )
+) -> Result<(SingleSolution, HalfPlate), FemError> {
+    check_tolerance(params.tolerance)?;
+    let (s, h) = study(plate, params, Some(params.tolerance), true)?;
+    let h = h.ok_or(FemError::Solver("no refinement level was solved".into()))?;
+    Ok((s, h))
 }
 
 /// R_o of `plate` on `params.levels` refinement levels, with the error estimate of
@@ -592,7 +604,7 @@ pub fn single_plate_r_o(
     plate: &SinglePlate,
     params: &SingleParams,
 ) -> Result<(f64, SingleInfo), FemError> {
-    let s = study(plate, params, None)?;
+    let (s, _) = study(plate, params, None, false)?;
     Ok((s.r_o, s.info))
 }
 
