@@ -4,6 +4,17 @@
 //! measurements as open circles, computed points as dots) with their bars, all in one legend.
 //! Axes are padded around the data, with room above for the legend; [`FigureData`]s whose
 //! curves are outlines in inches (Fig. 29) are drawn with equal scales on both axes.
+//!
+//! ```
+//! use boltzone::figures::{compute, draw::SIZE, FiguresParams};
+//! use boltzone::plot::write_figure;
+//! let fig = compute("20", &FiguresParams::default())?; // the load profiles: no solve
+//! let path = std::env::temp_dir().join(format!("boltzone_fig20_{}.svg", std::process::id()));
+//! write_figure(&fig, &path, SIZE)?;
+//! assert!(std::fs::read_to_string(&path)?.contains("Fig. 20"));
+//! std::fs::remove_file(&path)?;
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 use super::{FigureData, Source, PALETTE};
 use crate::plot::{typeset, Figure, PlotError};
@@ -68,7 +79,7 @@ impl Figure for FigureData {
             let legend = 24.0 * entries as f64 * per_px;
             let tall = (h as f64 - 120.0) * per_px;
             let cx = 0.5 * (x0 + x1);
-            let bottom = y0 - 0.5 * (tall - (y1 - y0) - legend).max(0.0);
+            let bottom = y0 - 0.5 * (tall - (y1 - y0) - legend).max(0.04 * tall);
             ((cx - span / 2.0, cx + span / 2.0), (bottom, bottom + tall))
         } else {
             let dy = (y1 - y0).max(f64::MIN_POSITIVE);

@@ -1,5 +1,5 @@
 //! Fig. 29: the aluminium lap joint of Chapter V as [`crate::heat::lap::LapJoint::chapter5`]
-//! assumes it (the report's node layout is lost with its figures), in plan view: the two strips
+//! assumes it (the report's node layout is lost with its figures), in plan view (and a side view below it, thickness exaggerated): the two strips
 //! W wide, hot edge at x = −L/2 and cold edge at x = +L/2, overlapping over l_o around the bolt;
 //! the two-dimensional cell grids (overlap and a margin on each side), the hole A, the bearing
 //! face B (2B = 0.26 in) and the contact zone A ≤ r ≤ R_o through which the heat crosses, R_o
@@ -7,12 +7,22 @@
 //!
 //! Drawn as outlines (curves of kind [`CurveKind::Other`]) in inches; the contact zone's
 //! radius is the figure's one computed value, with its error bar.
+//!
+//! ```no_run
+//! use boltzone::figures::{lap::fig29, FiguresParams};
+//! let fig = fig29(&FiguresParams::default())?; // one two-plate solve (about a second)
+//! assert!(fig.curves.iter().any(|c| c.r_o.is_some()));
+//! # Ok::<(), boltzone::figures::FigureError>(())
+//! ```
 
 use super::{value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams};
 use crate::contact::two_plate::{solve, TwoPlateParams};
 use crate::heat::lap::LapJoint;
 use crate::{Joint, Material, OuterRadius};
 use std::f64::consts::PI;
+
+/// How much the side view exaggerates the thickness.
+const EXAGGERATION: f64 = 3.0;
 
 /// 2B of Chapter V's joint (in).
 const TWO_B: f64 = 0.26;
@@ -63,6 +73,8 @@ pub fn fig29(params: &FiguresParams) -> Result<FigureData, FigureError> {
         source,
     })?;
     let half = w / 2.0;
+    // the side view's interface, below the plan view
+    let side = -half - 2.5 * EXAGGERATION * d;
     let grid = lo / 2.0 + margin;
     let mut zone = circle(
         format!("contact zone R_o = {:.4} ± {:.1e} in", s.r_o, s.r_o_error),
@@ -87,6 +99,9 @@ pub fn fig29(params: &FiguresParams) -> Result<FigureData, FigureError> {
         x_label: "x [in] (along the strips)".into(),
         y_label: "y [in]".into(),
         curves: vec![
+            circle(format!("hole A = {a} in"), a),
+            zone,
+            circle(format!("bearing face B = {b} in"), b),
             rectangle(
                 "upper strip (hot edge at left)".into(),
                 (-l / 2.0, lo / 2.0),
@@ -107,11 +122,24 @@ pub fn fig29(params: &FiguresParams) -> Result<FigureData, FigureError> {
                 (-lo / 2.0, grid),
                 (-half, half),
             ),
-            circle(format!("hole A = {a} in"), a),
-            circle(format!("bearing face B = {b} in"), b),
-            zone,
+            rectangle(
+                format!("side view below (thickness × {EXAGGERATION}): upper strip"),
+                (-l / 2.0, lo / 2.0),
+                (side, side + EXAGGERATION * d),
+            ),
+            rectangle(
+                "side view: lower strip".into(),
+                (-lo / 2.0, l / 2.0),
+                (side - EXAGGERATION * d, side),
+            ),
+            rectangle(
+                "side view: bolt and hole".into(),
+                (-a, a),
+                (side - 1.5 * EXAGGERATION * d, side + 1.5 * EXAGGERATION * d),
+            ),
         ],
         points: vec![],
+        values: vec![],
         seconds: 0.0,
     })
 }

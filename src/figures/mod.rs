@@ -13,7 +13,7 @@
 //! | 12–14 | single plate 2D thick: midplane σ_z for D = 0.1, 0.1333, 0.2 in, four B each | [`single`] |
 //! | 15–17 | two-plate interface pressure, the same twelve joints | [`single`] |
 //! | 18–27 | Table 2's steel pairs: loads, nut displacement, deflection, edges, gap | [`pairs`] |
-//! | 28 | computed against measured separation radii (Table 2) | [`pairs`] |
+//! | 28 | computed against measured separation radii (Table 2) | [`experiments`] |
 //! | 29 | the lap joint of Chapter V as assumed by [`crate::heat::lap`] | [`lap`] |
 //! | slab | the no-hole slab's midplane σ_z for several B/D (Sneddon 1946) | [`slab`] |
 //!
@@ -37,6 +37,7 @@
 //! ```
 
 pub mod draw;
+pub mod experiments;
 pub mod lap;
 pub mod pairs;
 pub mod single;
@@ -200,6 +201,8 @@ pub struct FigureData {
     pub curves: Vec<FigCurve>,
     /// The report's values and measurements (and computed points, e.g. Fig. 28).
     pub points: Vec<PointSeries>,
+    /// Computed values shown as points rather than curves (Fig. 28's 2R_o), with their errors.
+    pub values: Vec<Value>,
     /// Seconds spent computing.
     pub seconds: f64,
 }
@@ -210,11 +213,7 @@ impl FigureData {
         self.curves
             .iter()
             .all(|c| c.r_o.is_none_or(|v| v.converged))
-            && self
-                .points
-                .iter()
-                .filter(|s| s.source == Source::Computed)
-                .all(|s| s.points.iter().all(|p| p.x.is_finite()))
+            && self.values.iter().all(|v| v.converged)
     }
 }
 
@@ -243,7 +242,7 @@ pub fn compute(id: &str, params: &FiguresParams) -> Result<FigureData, FigureErr
         "fig12" | "fig13" | "fig14" | "fig15" | "fig16" | "fig17" => {
             single::table1_figure(id, params)
         }
-        "fig28" => pairs::fig28(params),
+        "fig28" => experiments::fig28(params),
         "fig29" => lap::fig29(params),
         "slab" => slab::slab_figure(params),
         _ => pairs::pair_figure(id, params),
@@ -253,13 +252,15 @@ pub fn compute(id: &str, params: &FiguresParams) -> Result<FigureData, FigureErr
 }
 
 /// Colours of successive curves (dark, distinguishable, print-safe).
-pub const PALETTE: [(u8, u8, u8); 6] = [
+pub const PALETTE: [(u8, u8, u8); 8] = [
     (0, 0, 0),
     (200, 30, 30),
     (30, 90, 200),
     (20, 150, 60),
     (150, 60, 170),
     (230, 130, 0),
+    (0, 150, 170),
+    (120, 120, 120),
 ];
 
 /// `r_o ± error` as a [`Value`] against `tolerance`.

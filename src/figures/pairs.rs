@@ -1,4 +1,4 @@
-//! Figs. 18–28: Table 2's steel pairs (304 steel, A = 0.1285 in, C = 2.0 in, B = 0.211 in
+//! Figs. 18–27: Table 2's steel pairs (304 steel, A = 0.1285 in, C = 2.0 in, B = 0.211 in
 //! under the nuts, the specimens' thicknesses of Chapter III, the report's welded interface as
 //! `boltzone table2`), under a bolt force of 1100 lb (Table 2's provenance; R_o does not depend
 //! on it).
@@ -13,11 +13,18 @@
 //! | 23, 24, 26 | 3, 2, 1 | p(r); Fig. 24 with the outer edge free and fixed (Fig. 20(c)) |
 //! | 25 | 2 | the gap g(r) between the plates, outer edge free and fixed |
 //! | 27 | 5 (1/8 on 1/4 in) | p(r) |
-//! | 28 | all seven | computed 2R_o against Table 2's measured ranges |
 //!
 //! Points: the report's computed R_o (Table 2's 2R_o / 2), the rubbing and autoradiographic
 //! ranges (2R_o / 2, min…max around the average), the Chapter IV text's r/A = 2.73–2.93 for the
 //! load variants and 3.5 for the single plate. Accuracy and cost: the module docs of [`super`].
+//!
+//! ```
+//! use boltzone::figures::pairs::{bearing_pressure, FORCE};
+//! // the 1100 lb bolt force spread over the nut's annulus A = 0.1285 in ≤ r ≤ B = 0.211 in
+//! let p = bearing_pressure(0.211);
+//! let area = std::f64::consts::PI * (0.211f64.powi(2) - 0.1285f64.powi(2));
+//! assert!((p * area - FORCE).abs() < 1e-9 * FORCE);
+//! ```
 
 use super::{
     clip, stagger, value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point,
@@ -40,7 +47,7 @@ pub const NUT_DISPLACEMENT: f64 = 50e-6;
 
 /// One computed case of a figure.
 #[derive(Clone, Copy)]
-struct Case {
+pub(super) struct Case {
     /// Table 2 case number.
     case: u32,
     /// Bearing-pressure profile: None uniform, Some(peak) triangular.
@@ -51,7 +58,7 @@ struct Case {
     fixed: bool,
 }
 
-const fn case(case: u32) -> Case {
+pub(super) const fn case(case: u32) -> Case {
     Case {
         case,
         peak: None,
@@ -128,7 +135,11 @@ fn contact_error(figure: &str) -> impl Fn(crate::contact::ContactError) -> Figur
 }
 
 /// Solves case `c`: the solution and the bearing radius B.
-fn run(figure: &str, c: &Case, tolerance: f64) -> Result<(TwoPlateSolution, f64), FigureError> {
+pub(super) fn run(
+    figure: &str,
+    c: &Case,
+    tolerance: f64,
+) -> Result<(TwoPlateSolution, f64), FigureError> {
     let (joint, params, b) = setup(c, tolerance)?;
     Ok((solve(&joint, &params).map_err(contact_error(figure))?, b))
 }
@@ -391,6 +402,7 @@ pub fn pair_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Figur
         y_label: p_label.into(),
         curves,
         points,
+        values: vec![],
         seconds: 0.0,
     })
 }
@@ -436,87 +448,7 @@ fn fig20() -> FigureData {
         y_label: "bearing pressure [psi]".into(),
         curves,
         points: vec![],
+        values: vec![],
         seconds: 0.0,
     }
-}
-
-/// Fig. 28: our two-plate 2R_o of Table 2's seven cases against the measured ranges.
-pub fn fig28(params: &FiguresParams) -> Result<FigureData, FigureError> {
-    let rows = reference::table2();
-    let ours = rows
-        .par_iter()
-        .map(|r| run("fig28", &case(r.case), params.tolerance).map(|(s, _)| s))
-        .collect::<Result<Vec<_>, _>>()?;
-    let two: Vec<f64> = ours.iter().map(|s| 2.0 * s.r_o).collect();
-    let bar = |x: f64, m: &reference::Measurement| Point {
-        x,
-        y: m.average,
-        x_bar: (x, x),
-        y_bar: (m.min, m.max),
-    };
-    let lo = 0.3;
-    let hi = 1.3;
-    let computed = ours
-        .iter()
-        .map(|s| Point {
-            x: 2.0 * s.r_o,
-            y: 2.0 * s.r_o,
-            x_bar: (2.0 * (s.r_o - s.r_o_error), 2.0 * (s.r_o + s.r_o_error)),
-            y_bar: (2.0 * s.r_o, 2.0 * s.r_o),
-        })
-        .collect();
-    let line = FigCurve {
-        label: "measured = computed".into(),
-        kind: CurveKind::Other,
-        x: vec![lo, hi],
-        y: vec![lo, hi],
-        b: 0.0,
-        r_o: None,
-    };
-    Ok(FigureData {
-        id: "fig28".into(),
-        title: "Fig. 28: comparison between tested and computed separation radii".into(),
-        note: "Table 2's seven joints: x = our two-plate 2R_o (welded interface, as `boltzone \
-               table2`); the rubbing and autoradiographic tests' 2R_o (average, bars min–max) and \
-               the report's computed 2R_o against it."
-            .into(),
-        x_label: "computed 2R_o (this program) [in]".into(),
-        y_label: "2R_o [in]".into(),
-        curves: vec![line],
-        points: vec![
-            PointSeries {
-                label: "this program (bars: error estimate)".into(),
-                source: Source::Computed,
-                points: computed,
-            },
-            PointSeries {
-                label: "report: computed 2R_o (Table 2)".into(),
-                source: Source::Report,
-                points: rows
-                    .iter()
-                    .zip(&two)
-                    .map(|(r, x)| Point::at(*x, r.computed))
-                    .collect(),
-            },
-            PointSeries {
-                label: "Table 2: rubbing tests".into(),
-                source: Source::Measured,
-                points: rows
-                    .iter()
-                    .zip(&two)
-                    .map(|(r, x)| bar(*x, &r.rubbing))
-                    .collect(),
-            },
-            PointSeries {
-                label: "Table 2: autoradiographic tests".into(),
-                source: Source::Measured,
-                points: rows
-                    .iter()
-                    .zip(&two)
-                    .filter_map(|(r, x)| Some(bar(*x, r.autoradiographic.as_ref()?)))
-                    .collect(),
-            },
-        ],
-        seconds: 0.0,
-    })
 }

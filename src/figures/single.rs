@@ -6,6 +6,13 @@
 //! its R_o; the report's single-plate R_o of Table 1 as points. Figs. 15–17: the two-plate
 //! interface pressure p(r) of [`crate::contact::two_plate`] for the same joints, with the
 //! report's two-plate R_o of Table 1. Accuracy and cost: the module docs of [`super`].
+//!
+//! ```
+//! use boltzone::figures::{single::table1_figure, FigureError, FiguresParams};
+//! // Figs. 12–17 only: any other id is refused without computing
+//! let e = table1_figure("fig18", &FiguresParams::default());
+//! assert!(matches!(e, Err(FigureError::Unknown(_))));
+//! ```
 
 use super::{
     clip, short, value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point,
@@ -85,7 +92,7 @@ pub fn table1_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Fig
         title,
         note: format!(
             "Table 1's joints with D = {d:.4} in (A = 0.1 in, C = 1.54 in, ν = 0.3), uniform \
-             bearing pressure P = 1 psi on A ≤ r ≤ B; {}; diamonds: the report's {which} R_o \
+             bearing pressure P = 1 psi on A ≤ r ≤ B; {}; triangles: the report's {which} R_o \
              (Table 1, R_o/A × A, printed to 0.1 A).",
             if two {
                 "two plates D thick in frictionless contact, finite elements (boltzone::contact)"
@@ -101,6 +108,7 @@ pub fn table1_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Fig
             source: Source::Report,
             points: rows.iter().map(|(_, r)| report(r)).collect(),
         }],
+        values: vec![],
         seconds: 0.0,
     })
 }

@@ -6,6 +6,15 @@
 //! Method: [`crate::hankel::Slab`] (Hankel transforms), the curve by its Chebyshev interpolant
 //! [`crate::hankel::MidplaneCurve`] to 1e-9 P, R_o by [`crate::hankel::Slab::separation_radius`]
 //! at the figures' tolerance. Accuracy and cost: the module docs of [`super`].
+//!
+//! ```
+//! use boltzone::figures::{slab::slab_figure, FiguresParams};
+//! let fig = slab_figure(&FiguresParams::default())?;
+//! // the wider the load, the farther out the midplane turns tensile
+//! let r_o: Vec<f64> = fig.curves.iter().filter_map(|c| c.r_o.map(|v| v.value)).collect();
+//! assert!(r_o.windows(2).all(|w| w[0] < w[1]));
+//! # Ok::<(), boltzone::figures::FigureError>(())
+//! ```
 
 use super::{
     value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point, PointSeries, Source,
@@ -75,6 +84,7 @@ pub fn slab_figure(params: &FiguresParams) -> Result<FigureData, FigureError> {
             source: Source::Computed,
             points: zeros,
         }],
+        values: vec![],
         seconds: 0.0,
     })
 }
