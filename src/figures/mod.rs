@@ -128,6 +128,28 @@ pub struct FigCurve {
     pub r_o: Option<Value>,
 }
 
+impl FigCurve {
+    /// A curve of `kind` through `points` = (x, y) with its separation radius `r_o` = (value,
+    /// error) against `tolerance`, labelled "`what`: R_o = … ± … in"; `b` the bearing radius.
+    pub fn with_r_o(
+        what: &str,
+        kind: CurveKind,
+        (x, y): (Vec<f64>, Vec<f64>),
+        b: f64,
+        (r_o, error): (f64, f64),
+        tolerance: f64,
+    ) -> Self {
+        Self {
+            label: format!("{what}: R_o = {r_o:.4} ± {error:.1e} in"),
+            kind,
+            x,
+            y,
+            b,
+            r_o: Some(value(r_o, error, tolerance)),
+        }
+    }
+}
+
 /// Where a point comes from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]

@@ -27,8 +27,8 @@
 //! ```
 
 use super::{
-    clip, stagger, value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point,
-    PointSeries, Source,
+    clip, stagger, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point, PointSeries,
+    Source,
 };
 use crate::compare::table2::joint as table2_joint;
 use crate::contact::two_plate::{
@@ -144,34 +144,34 @@ pub(super) fn run(
     Ok((solve(&joint, &params).map_err(contact_error(figure))?, b))
 }
 
-fn r_o_label(what: &str, s: &TwoPlateSolution) -> String {
-    format!("{what}: R_o = {:.4} ± {:.1e} in", s.r_o, s.r_o_error)
-}
-
 /// The pressure curve of case `c`.
 fn pressure(figure: &str, c: &Case, tolerance: f64) -> Result<FigCurve, FigureError> {
     let (s, b) = run(figure, c, tolerance)?;
-    Ok(FigCurve {
-        label: r_o_label(&c.label(), &s),
-        kind: CurveKind::Pressure,
+    let kind = CurveKind::Pressure;
+    let r_o = (s.r_o, s.r_o_error);
+    Ok(FigCurve::with_r_o(
+        &c.label(),
+        kind,
+        (s.radius, s.pressure),
         b,
-        r_o: Some(value(s.r_o, s.r_o_error, tolerance)),
-        x: s.radius,
-        y: s.pressure,
-    })
+        r_o,
+        tolerance,
+    ))
 }
 
 /// The gap curve of case `c` (µin).
 fn gap(figure: &str, c: &Case, tolerance: f64) -> Result<FigCurve, FigureError> {
     let (s, b) = run(figure, c, tolerance)?;
-    Ok(FigCurve {
-        label: r_o_label(&c.label(), &s),
-        kind: CurveKind::Gap,
+    let g = s.gap.iter().map(|g| 1e6 * g).collect();
+    let r_o = (s.r_o, s.r_o_error);
+    Ok(FigCurve::with_r_o(
+        &c.label(),
+        CurveKind::Gap,
+        (s.radius, g),
         b,
-        r_o: Some(value(s.r_o, s.r_o_error, tolerance)),
-        y: s.gap.iter().map(|g| 1e6 * g).collect(),
-        x: s.radius,
-    })
+        r_o,
+        tolerance,
+    ))
 }
 
 /// The loaded face's w(r) (µin) of case `c` out to 2B.
@@ -222,17 +222,15 @@ fn single_compression(figure: &str, c: &Case, tolerance: f64) -> Result<FigCurve
     };
     let (s, h) = solve_with_field(&plate, &sp).map_err(fem)?;
     let m = midplane_of(&plate, &h).map_err(fem)?;
-    Ok(FigCurve {
-        label: format!(
-            "single plate 2D thick, −σ_z: R_o = {:.4} ± {:.1e} in",
-            s.r_o, s.r_o_error
-        ),
-        kind: CurveKind::Pressure,
+    let compression = m.sigma_z.iter().map(|s| -s).collect();
+    Ok(FigCurve::with_r_o(
+        "single plate 2D thick, −σ_z",
+        CurveKind::Pressure,
+        (m.r, compression),
         b,
-        r_o: Some(value(s.r_o, s.r_o_error, tolerance)),
-        x: m.r,
-        y: m.sigma_z.iter().map(|s| -s).collect(),
-    })
+        (s.r_o, s.r_o_error),
+        tolerance,
+    ))
 }
 
 /// Table 2's values for case `r` as R_o (half of the printed diameters) on the axis.

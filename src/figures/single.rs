@@ -15,8 +15,8 @@
 //! ```
 
 use super::{
-    clip, short, value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point,
-    PointSeries, Source,
+    clip, short, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point, PointSeries,
+    Source,
 };
 use crate::compare::Geometry;
 use crate::contact::two_plate::{solve, TwoPlateParams};
@@ -130,19 +130,14 @@ pub fn sigma_z_curve(
     };
     let (s, h) = solve_with_field(&plate, &sp).map_err(fem)?;
     let m = midplane_of(&plate, &h).map_err(fem)?;
-    Ok(FigCurve {
-        label: format!(
-            "B = {} in: R_o = {:.4} ± {:.1e} in",
-            short(g.b),
-            s.r_o,
-            s.r_o_error
-        ),
-        kind: CurveKind::SigmaZ,
-        x: m.r,
-        y: m.sigma_z,
-        b: g.b,
-        r_o: Some(value(s.r_o, s.r_o_error, params.tolerance)),
-    })
+    Ok(FigCurve::with_r_o(
+        &format!("B = {} in", short(g.b)),
+        CurveKind::SigmaZ,
+        (m.r, m.sigma_z),
+        g.b,
+        (s.r_o, s.r_o_error),
+        params.tolerance,
+    ))
 }
 
 /// The two-plate interface pressure of joint `g` (P = 1 psi) with its R_o.
@@ -159,17 +154,12 @@ fn pressure_curve(
         figure: figure.to_string(),
         source,
     })?;
-    Ok(FigCurve {
-        label: format!(
-            "B = {} in: R_o = {:.4} ± {:.1e} in",
-            short(g.b),
-            s.r_o,
-            s.r_o_error
-        ),
-        kind: CurveKind::Pressure,
-        x: s.radius,
-        y: s.pressure,
-        b: g.b,
-        r_o: Some(value(s.r_o, s.r_o_error, params.tolerance)),
-    })
+    Ok(FigCurve::with_r_o(
+        &format!("B = {} in", short(g.b)),
+        CurveKind::Pressure,
+        (s.radius, s.pressure),
+        g.b,
+        (s.r_o, s.r_o_error),
+        params.tolerance,
+    ))
 }

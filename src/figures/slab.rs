@@ -17,7 +17,7 @@
 //! ```
 
 use super::{
-    value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point, PointSeries, Source,
+    CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point, PointSeries, Source,
 };
 use crate::hankel::{MidplaneCurve, SeparationParams, Slab};
 use crate::{FaceLoad, Material};
@@ -56,21 +56,21 @@ pub fn slab_figure(params: &FiguresParams) -> Result<FigureData, FigureError> {
             x_bar: (sep.r_o - sep.error, sep.r_o + sep.error),
             y_bar: (0.0, 0.0),
         });
-        curves.push(FigCurve {
-            label: format!("B/D = {b}: R_o/D = {:.4} ± {:.1e}", sep.r_o, sep.error),
-            kind: CurveKind::SigmaZ,
-            x,
-            y,
+        curves.push(FigCurve::with_r_o(
+            &format!("B/D = {b}"),
+            CurveKind::SigmaZ,
+            (x, y),
             b,
-            r_o: Some(value(sep.r_o, sep.error, params.tolerance)),
-        });
+            (sep.r_o, sep.error),
+            params.tolerance,
+        ));
     }
     Ok(FigureData {
         id: "slab".into(),
         title:
             "The no-hole slab 2D thick: midplane σ_z (Sneddon 1946, Greenwood 1964, Lardner 1965)"
                 .into(),
-        note: "An infinite slab 2D thick, both faces pressed by P over r ≤ B, no hole; midplane \
+        note: "An infinite slab 2D thick (D = 1 in: radii in inches are r/D), both faces pressed by P over r ≤ B, no hole; midplane \
                σ_z/P against r/D by Hankel transforms (boltzone::hankel); points: the first \
                upward zero R_o (the single-plate separation radius), with its error bar. Beyond \
                R_o the stress oscillates with amplitude falling ≈ e⁻⁶ per half-wave: those later \

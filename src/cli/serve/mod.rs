@@ -6,9 +6,12 @@
 //! One thread per connection, at most [`MAX_CONNECTIONS`] at once (beyond: 503), requests read
 //! with a timeout and a size limit, every answer `Connection: close`. A bad query is answered
 //! 400 naming the field; a solver failure 500; a panic inside a request is caught and answered
-//! 500: the server survives every request. Measured by `tests/figures/serve.rs` (the contract,
-//! bad fields, survival) and `examples/18_serve_load.rs` (2,000 requests, 8 concurrent: latency
-//! percentiles and memory before and after).
+//! 500: the server survives every request. Successful answers are kept by joint
+//! ([`CACHE_ENTRIES`], first in first out): a slider moved back and forth asks again.
+//!
+//! Checked by `tests/figures/server.rs` (the contract, bad fields, survival) and
+//! `tests/figures/browser.rs` (the page in chromium). Cost: `tests/figures/load.rs` (ignored;
+//! 2,000 requests over 20 s from 8 clients: latency percentiles, memory before and after).
 
 pub mod api;
 
@@ -116,10 +119,15 @@ fn handle(stream: &mut TcpStream, cache: &Cache) -> std::io::Result<()> {
 
 /// Successful answers by joint (the bits of a, b, d, c, ν, d2), oldest first out.
 #[derive(Default)]
-struct Cache(Mutex<(HashMap<[u64; 6], Arc<Vec<u8>>>, VecDeque<[u64; 6]>)>);
+struct Cache(Mutex<Store>);
+
+/// A joint's key: the bits of a, b, d, ν, c and d2 (absent: all ones).
+type Key = [u64; 6];
+/// The answers by key and the keys in the order they came.
+type Store = (HashMap<Key, Arc<Vec<u8>>>, VecDeque<Key>);
 
 impl Cache {
-    fn key(q: &api::JointQuery) -> [u64; 6] {
+    fn key(q: &api::JointQuery) -> Key {
         let bits = |x: Option<f64>| x.map_or(u64::MAX, f64::to_bits);
         [
             q.a.to_bits(),
@@ -131,11 +139,11 @@ impl Cache {
         ]
     }
 
-    fn get(&self, key: &[u64; 6]) -> Option<Arc<Vec<u8>>> {
+    fn get(&self, key: &Key) -> Option<Arc<Vec<u8>>> {
         self.0.lock().ok()?.0.get(key).cloned()
     }
 
-    fn put(&self, key: [u64; 6], body: Arc<Vec<u8>>) {
+    fn put(&self, key: Key, body: Arc<Vec<u8>>) {
         if let Ok(mut g) = self.0.lock() {
             let (map, order) = &mut *g;
             if map.insert(key, body).is_none() {
