@@ -304,11 +304,13 @@ fn short(x: f64) -> f64 {
     (x * 1e6).round() / 1e6
 }
 
-/// Moves the measured series of `points` off the axis, one level each below it (−6 %, −12 %,
-/// … of `scale`), so that their ranges do not hide each other or the report's points.
+/// Moves the series of `points` that are ranges (measured, or the report's r/A ranges) off the
+/// axis, one level each below it (−6 %, −12 %, … of `scale`), so that their bars hide neither
+/// each other nor the curves' zeros and the report's points.
 fn stagger(points: &mut [PointSeries], scale: f64) {
     let mut level = 0.0;
-    for s in points.iter_mut().filter(|s| s.source == Source::Measured) {
+    let is_range = |s: &PointSeries| s.points.iter().any(|p| p.x_bar.0 < p.x_bar.1);
+    for s in points.iter_mut().filter(|s| is_range(s)) {
         level += 0.06 * scale;
         for p in &mut s.points {
             p.y -= level;

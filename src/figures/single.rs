@@ -46,11 +46,20 @@ pub fn table1_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Fig
     let curves = rows
         .par_iter()
         .map(|(g, _)| {
-            if two {
-                pressure_curve(id, g, params)
+            let (kind, xy, r_o) = if two {
+                pressure_curve(id, g, params)?
             } else {
-                sigma_z_curve(id, g, params)
-            }
+                sigma_z_curve(id, g, params)?
+            };
+            let what = format!("B = {} in", short(g.b));
+            Ok::<_, FigureError>(FigCurve::with_r_o(
+                &what,
+                kind,
+                xy,
+                g.b,
+                r_o,
+                params.tolerance,
+            ))
         })
         .collect::<Result<Vec<_>, _>>()?;
     let x_max = 1.3
@@ -113,12 +122,15 @@ pub fn table1_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Fig
     })
 }
 
+/// A curve's kind, points and (R_o, error).
+type Computed = (CurveKind, (Vec<f64>, Vec<f64>), (f64, f64));
+
 /// The single plate's midplane σ_z of joint `g` (P = 1 psi) with its R_o.
-pub fn sigma_z_curve(
+fn sigma_z_curve(
     figure: &str,
     g: &Geometry,
     params: &FiguresParams,
-) -> Result<FigCurve, FigureError> {
+) -> Result<Computed, FigureError> {
     let plate = g.single_plate(OuterRadius::Finite(g.c))?;
     let sp = SingleParams {
         tolerance: params.tolerance,
@@ -130,14 +142,7 @@ pub fn sigma_z_curve(
     };
     let (s, h) = solve_with_field(&plate, &sp).map_err(fem)?;
     let m = midplane_of(&plate, &h).map_err(fem)?;
-    Ok(FigCurve::with_r_o(
-        &format!("B = {} in", short(g.b)),
-        CurveKind::SigmaZ,
-        (m.r, m.sigma_z),
-        g.b,
-        (s.r_o, s.r_o_error),
-        params.tolerance,
-    ))
+    Ok((CurveKind::SigmaZ, (m.r, m.sigma_z), (s.r_o, s.r_o_error)))
 }
 
 /// The two-plate interface pressure of joint `g` (P = 1 psi) with its R_o.
@@ -145,7 +150,7 @@ fn pressure_curve(
     figure: &str,
     g: &Geometry,
     params: &FiguresParams,
-) -> Result<FigCurve, FigureError> {
+) -> Result<Computed, FigureError> {
     let tp = TwoPlateParams {
         tolerance: params.tolerance,
         ..Default::default()
@@ -154,12 +159,9 @@ fn pressure_curve(
         figure: figure.to_string(),
         source,
     })?;
-    Ok(FigCurve::with_r_o(
-        &format!("B = {} in", short(g.b)),
+    Ok((
         CurveKind::Pressure,
         (s.radius, s.pressure),
-        g.b,
         (s.r_o, s.r_o_error),
-        params.tolerance,
     ))
 }

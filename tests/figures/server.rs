@@ -66,6 +66,10 @@ fn api_gives_the_cli_numbers() {
     let server = Server::start();
     let (status, body) = server.get("/api/joint?a=0.1&b=0.22&d=0.1&c=1.54");
     assert_eq!(status, 200, "{body}");
+    assert!(
+        !body.contains("null"),
+        "an absent quantity is left out, never null"
+    );
     let api: Value = serde_json::from_str(&body).unwrap();
     let args = [
         "--a", "0.1", "--b", "0.22", "--d", "0.1", "--c", "1.54", "--json",

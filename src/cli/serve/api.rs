@@ -185,8 +185,8 @@ pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
     let (pr, pp) = clip(&two.radius, &two.pressure);
     let (sr, ss) = clip(&mid.r, &mid.sigma_z);
     let levels = two.info.levels.last();
-    Ok(json!({
-        "inputs": {"a": q.a, "b": q.b, "d": q.d, "c": q.c, "nu": q.nu, "d2": d2},
+    let mut out = json!({
+        "inputs": {"a": q.a, "b": q.b, "d": q.d, "nu": q.nu, "d2": d2},
         "units": crate::cli::output::UNITS,
         "two": {
             "r_o": two.r_o, "r_o_error": two.r_o_error, "converged": two.converged,
@@ -194,18 +194,34 @@ pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
             "tolerance": TOLERANCE, "interface": two.info.model,
             "nodes": levels.map(|l| l.nodes), "dofs": levels.map(|l| l.dofs),
             "rate": two.info.rate, "nut_deflection": two.nut_deflection,
-            "r_o_over_a": two.r_o / q.a, "seconds": two.info.seconds,
+            "seconds": two.info.seconds,
         },
         "single": {
             "r_o": single.r_o, "r_o_error": single.r_o_error, "converged": single.converged,
             "tolerance": TOLERANCE, "method": "fem", "thickness": 2.0 * q.d,
-            "r_o_over_a": single.r_o / q.a, "seconds": single.info.seconds,
+            "seconds": single.info.seconds,
         },
         "rules": rules,
         "curves": {
             "pressure": {"r": pr, "p": pp},
             "sigma_z": {"r": sr, "sigma_z": ss},
         },
-        "seconds": start.elapsed().as_secs_f64(),
-    }))
+    });
+    // no null in the answer: optional quantities are left out
+    if let Some(c) = q.c {
+        out["inputs"]["c"] = c.into();
+    }
+    if q.a > 0.0 {
+        out["two"]["r_o_over_a"] = (two.r_o / q.a).into();
+        out["single"]["r_o_over_a"] = (single.r_o / q.a).into();
+    }
+    for key in ["nodes", "dofs", "rate"] {
+        if out["two"][key].is_null() {
+            if let Some(m) = out["two"].as_object_mut() {
+                m.remove(key);
+            }
+        }
+    }
+    out["seconds"] = start.elapsed().as_secs_f64().into();
+    Ok(out)
 }
