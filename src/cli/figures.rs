@@ -9,7 +9,7 @@
 
 use super::exit::{usage, Status};
 use boltzone::figures::{self, draw, FigureData, FiguresParams};
-use boltzone::plot::write_figure;
+use boltzone::plot::{typeset, write_figure};
 use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -202,11 +202,11 @@ fn gallery(figs: &[FigureData]) -> String {
             h,
             "<figure id=\"{id}\"><img src=\"{id}.svg\" alt=\"{t}\"><figcaption><b>{t}</b><br>{n}<ul>",
             id = f.id,
-            t = esc(&f.title),
-            n = esc(&f.note)
+            t = esc(&typeset(&f.title)),
+            n = esc(&typeset(&f.note))
         );
         for c in &f.curves {
-            let _ = write!(h, "<li>{}</li>", esc(&c.label.replace("R_o", "Rₒ")));
+            let _ = write!(h, "<li>{}</li>", esc(&typeset(&c.label)));
         }
         let _ = writeln!(
             h,
