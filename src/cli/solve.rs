@@ -139,6 +139,12 @@ fn print_text(s: &Solution) {
     if let Some(d) = s.nut_deflection {
         println!("deflection under the nut: {d:.4e} {}", s.length_unit);
     }
+    if let (Some(g), Some(u)) = (s.joint_conductance, s.conductance_unit) {
+        println!(
+            "joint conductance (integral of h_c dA over the contact zone): {} {u}",
+            sig(g, 6)
+        );
+    }
 }
 
 /// The plan, on stderr-free stdout after the result.

@@ -156,6 +156,9 @@ pub struct OutputSpec {
     /// VTU of the full field (not yet available).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub field: Option<PathBuf>,
+    /// The joint's interface conductance from `[heat]` (two-plate; default false).
+    #[serde(default)]
+    pub conductance: bool,
     /// CSV of a sweep's results, one row per point.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub results: Option<PathBuf>,
@@ -171,6 +174,7 @@ impl Default for OutputSpec {
             r_o: true,
             interface_pressure: None,
             field: None,
+            conductance: false,
             results: None,
         }
     }
@@ -212,6 +216,9 @@ pub struct Scene {
     /// Outputs wanted.
     #[serde(default)]
     pub outputs: OutputSpec,
+    /// The surfaces and contact conductance law ([`super::heat`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub heat: Option<super::heat::HeatSpec>,
     /// Dotted keys mapped to lists of values; the product of the lists is solved.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub sweep: BTreeMap<String, Vec<toml::Value>>,

@@ -40,6 +40,7 @@
 pub mod check;
 pub mod error;
 pub mod file;
+pub mod heat;
 pub mod materials;
 pub mod run;
 pub mod sweep;

@@ -76,6 +76,13 @@ pub struct Solution {
     /// interface).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub nut_deflection: Option<f64>,
+    /// The joint's interface conductance ∫ h_c dA (two-plate, `[outputs] conductance = true`;
+    /// W/K, Btu/(hr·°F) in in-psi-lbf).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub joint_conductance: Option<f64>,
+    /// The unit of `joint_conductance`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub conductance_unit: Option<&'static str>,
     /// The plan: routes that ran and were skipped, time per step.
     pub plan: Vec<Step>,
     /// Interface curve (two-plate; written as CSV, not printed).
@@ -216,10 +223,13 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         inputs: scene.understood(),
         full_contact: None,
         nut_deflection: None,
+        joint_conductance: None,
+        conductance_unit: None,
         plan: Vec::new(),
         interface: None,
     };
     let t1 = Instant::now();
+    let mut heat_step = None;
     let other = match (scene.model, method) {
         (Model::TwoPlate, _) => {
             let s = two_plate::solve(&joint, &two_plate_params(scene, nut))?;
@@ -233,6 +243,14 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                     pressure: s.pressure.iter().map(|p| p / st).collect(),
                     gap: s.gap.iter().map(|g| g / l).collect(),
                 });
+            }
+            if scene.outputs.conductance {
+                let t = Instant::now();
+                let last = scene.plates.len().saturating_sub(1);
+                let m = [material(scene, 0)?, material(scene, last)?];
+                out.joint_conductance = Some(super::heat::conductance(scene, &s, m)?);
+                out.conductance_unit = Some(scene.units.heat_symbols().1);
+                heat_step = Some(t.elapsed().as_secs_f64());
             }
             None
         }
@@ -274,7 +292,21 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         name: format!("{:?} route", method).to_lowercase(),
         ran: true,
         note: why.into(),
-        seconds: t1.elapsed().as_secs_f64(),
+        seconds: t1.elapsed().as_secs_f64() - heat_step.unwrap_or(0.0),
+    });
+    plan.push(match heat_step {
+        Some(seconds) => Step {
+            name: "joint conductance".into(),
+            ran: true,
+            note: "integral of h_c(p) dA over the contact zone of the same solution".into(),
+            seconds,
+        },
+        None => Step {
+            name: "joint conductance".into(),
+            ran: false,
+            note: "skipped: not asked".into(),
+            seconds: 0.0,
+        },
     });
     if let Some(skipped) = other {
         plan.push(Step {

@@ -7,6 +7,7 @@ mod common;
 mod errors;
 mod examples;
 mod fuzz;
+mod heat;
 mod units;
 
 use std::path::PathBuf;
