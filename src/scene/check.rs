@@ -332,11 +332,33 @@ fn check_model(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
 fn check_outputs(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
     let o = &scene.outputs;
     if let Some(f) = &o.field {
-        return Err(c.fail(
-            &[k("outputs"), k("field")],
-            f.display(),
-            "the full field (VTU) is not yet available from scenes",
-        ));
+        let path = [k("outputs"), k("field")];
+        if scene.model == Model::Slab || scene.method == Method::Hankel {
+            return Err(c.fail(
+                &path,
+                f.display(),
+                "the field comes from finite elements: use model two-plate, or single-plate with method fem or auto",
+            ));
+        }
+        c.output(&path, f)?;
+    }
+    if let Some(f) = &o.midplane {
+        let path = [k("outputs"), k("midplane")];
+        match scene.model {
+            Model::TwoPlate => return Err(c.fail(
+                &path,
+                f.display(),
+                "needs model single-plate or slab (the two-plate interface is interface_pressure)",
+            )),
+            Model::SinglePlate if scene.method == Method::Hankel => {
+                return Err(c.fail(
+                    &path,
+                    f.display(),
+                    "the single plate's midplane comes from finite elements: method fem or auto",
+                ))
+            }
+            _ => c.output(&path, f)?,
+        }
     }
     if let Some(p) = &o.interface_pressure {
         let path = [k("outputs"), k("interface_pressure")];
@@ -348,7 +370,12 @@ fn check_outputs(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
     if let Some(p) = &o.results {
         c.output(&[k("outputs"), k("results")], p)?;
     }
-    if !o.r_o && o.interface_pressure.is_none() && !o.conductance {
+    if !o.r_o
+        && o.interface_pressure.is_none()
+        && !o.conductance
+        && o.field.is_none()
+        && o.midplane.is_none()
+    {
         return Err(c.fail(
             &[k("outputs"), k("r_o")],
             false,

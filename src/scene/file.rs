@@ -153,9 +153,12 @@ pub struct OutputSpec {
     /// CSV of r, p, g at the interface (two-plate).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub interface_pressure: Option<PathBuf>,
-    /// VTU of the full field (not yet available).
+    /// VTU of the finest mesh's field (two-plate; single-plate by finite elements).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub field: Option<PathBuf>,
+    /// CSV of the midplane normal stress σ_z(r) (single-plate, slab).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub midplane: Option<PathBuf>,
     /// The joint's interface conductance from `[heat]` (two-plate; default false).
     #[serde(default)]
     pub conductance: bool,
@@ -174,6 +177,7 @@ impl Default for OutputSpec {
             r_o: true,
             interface_pressure: None,
             field: None,
+            midplane: None,
             conductance: false,
             results: None,
         }

@@ -120,12 +120,14 @@ impl HeatSpec {
                         materials.map(|m| m.poisson_ratio()),
                     )?,
                 },
-                other => return Err(invalid(
-                    "heat.correlation",
-                    format!(
+                other => {
+                    return Err(invalid(
+                        "heat.correlation",
+                        format!(
                         "\"{other}\": give one of {CORRELATIONS} or {{ coefficient, exponent }}"
                     ),
-                )),
+                    ))
+                }
             },
             CorrelationSpec::Law(l) => Correlation::PowerLaw {
                 coefficient: l.coefficient,

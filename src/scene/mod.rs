@@ -39,6 +39,7 @@
 
 pub mod check;
 pub mod error;
+pub mod field;
 pub mod file;
 pub mod heat;
 pub mod materials;

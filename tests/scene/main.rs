@@ -6,6 +6,7 @@ mod common;
 
 mod errors;
 mod examples;
+mod field;
 mod fuzz;
 mod heat;
 mod units;
