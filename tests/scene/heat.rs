@@ -149,13 +149,7 @@ fn chapter5_scene_equals_the_library_calls_and_the_command() {
         .current_dir(&dir)
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let v = crate::common::json_of(&out);
     assert_eq!(v["joint_conductance"].as_f64(), Some(g));
     assert_eq!(v["conductance_unit"], "Btu/(hr·°F)");
     assert_eq!(v["inputs"]["heat"]["correlation"], "cmy1969");
@@ -171,34 +165,46 @@ fn error_of(text: &str) -> (String, usize) {
 #[test]
 fn heat_errors_name_key_value_and_line() {
     let base = joint_text("uniform", 0.1); // 13 lines
-    let (m, line) = error_of(&format!("{base}[outputs]\nconductance = true\n"));
-    assert!(m.starts_with("outputs.conductance: true"), "{m}");
-    assert_eq!(line, 15);
-    let (m, line) = error_of(&format!("{base}[heat]\ncorrelation = \"cmy1970\"\n{HEAT}"));
-    assert!(m.contains("heat.correlation: \"cmy1970\""), "{m}");
-    assert_eq!(line, 15);
-    let (m, line) = error_of(&format!(
-        "{base}[heat]\nconductivity = [1.0, 1.0]\nroughness = [0.0, 0.0]\nslope = [0.1, 0.1]\nhardness = 1.0\n"
-    ));
-    assert!(m.starts_with("heat.roughness: [0, 0]"), "{m}");
-    assert_eq!(line, 16);
-    let (m, line) = error_of(&format!(
-        "{base}[heat]\nconductivity = [1.0, -2.0]\nroughness = [1e-6, 0.0]\nslope = [0.1, 0.1]\n"
-    ));
-    assert!(m.starts_with("heat.conductivity[1]: -2"), "{m}");
-    assert_eq!(line, 15);
-    let (m, line) = error_of(&format!(
-        "{base}[heat]\nconductivity = [1.0]\nroughness = [1e-6, 0.0]\nslope = [0.1, 0.1]\n"
-    ));
-    assert!(m.starts_with("heat.conductivity"), "{m}");
-    assert_eq!(line, 15);
-    let (m, _) = error_of(&format!(
-        "{base}[heat]\nconductivity = [1.0, 1.0]\nroughness = [1e-6, 0.0]\nslope = [0.1, 0.1]\n"
-    ));
-    assert!(m.starts_with("heat: (no hardness)"), "{m}");
-    let (m, line) = error_of(&format!("{base}[heat]\nconductivity = [1.0, 1.0]\nroughness = [1e-6, 0.0]\nslope = [0.1, 0.1]\nhardnes = 1.0\n"));
-    assert!(m.contains("hardnes"), "{m}");
-    assert_eq!(line, 18);
+                                           // (what follows the joint, the message's start, the line)
+    let heat = |c: &str, r: &str, more: &str| {
+        format!("[heat]\nconductivity = [{c}]\nroughness = [{r}]\nslope = [0.1, 0.1]\n{more}")
+    };
+    let cases = [
+        (
+            "[outputs]\nconductance = true\n".to_string(),
+            "outputs.conductance: true",
+            15,
+        ),
+        (
+            format!("[heat]\ncorrelation = \"cmy1970\"\n{HEAT}"),
+            "heat.correlation: \"cmy1970\"",
+            15,
+        ),
+        (
+            heat("1.0, 1.0", "0.0, 0.0", "hardness = 1.0\n"),
+            "heat.roughness: [0, 0]",
+            16,
+        ),
+        (
+            heat("1.0, -2.0", "1e-6, 0.0", ""),
+            "heat.conductivity[1]: -2",
+            15,
+        ),
+        (heat("1.0", "1e-6, 0.0", ""), "heat.conductivity", 15),
+        (heat("1.0, 1.0", "1e-6, 0.0", ""), "heat: (no hardness)", 14),
+        (
+            heat("1.0, 1.0", "1e-6, 0.0", "hardnes = 1.0\n"),
+            "heat.hardnes",
+            18,
+        ),
+    ];
+    for (tail, start, at) in cases {
+        let (m, line) = error_of(&format!("{base}{tail}"));
+        assert!(
+            m.starts_with(start) && line == at,
+            "{m} (line {line}) for {tail}"
+        );
+    }
     // mikic-elastic takes E′ from the plates and needs no hardness
     let text = format!(
         "{base}[heat]\ncorrelation = \"mikic-elastic\"\nconductivity = [100.0, 100.0]\n\
