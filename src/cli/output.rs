@@ -31,7 +31,7 @@ pub fn command_line() -> String {
         .join(" ")
 }
 
-/// Adds `version`, `units`, `command` and `inputs` (the parsed arguments with defaults filled
+/// Adds `version`, `units` (in-psi-lbf unless `v` names its own), `command` and `inputs` (the parsed arguments with defaults filled
 /// in; flags not given and without a default are left out) to the JSON object `v`, and
 /// `seconds` since `start` when `v` has no timing of its own. Existing keys are kept.
 pub fn stamp<T: Serialize>(v: &mut Value, inputs: &T, start: Instant) -> anyhow::Result<()> {
@@ -42,7 +42,7 @@ pub fn stamp<T: Serialize>(v: &mut Value, inputs: &T, start: Instant) -> anyhow:
     let Value::Object(m) = v else {
         anyhow::bail!("internal: only a JSON object carries provenance");
     };
-    m.insert("units".into(), UNITS.into());
+    m.entry("units").or_insert_with(|| UNITS.into());
     m.insert("inputs".into(), inputs);
     stamp_run(v, start)
 }

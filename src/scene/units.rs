@@ -105,3 +105,15 @@ impl UnitSystem {
         }
     }
 }
+
+impl std::str::FromStr for UnitSystem {
+    type Err = String;
+
+    /// A system by its scene name (`in-psi-lbf`, `mm-MPa-N`, `m-Pa-N`).
+    fn from_str(s: &str) -> Result<Self, String> {
+        [Self::InPsiLbf, Self::MmMpaN, Self::MPaN]
+            .into_iter()
+            .find(|u| u.name() == s)
+            .ok_or_else(|| format!("\"{s}\": give in-psi-lbf, mm-MPa-N or m-Pa-N"))
+    }
+}

@@ -4,6 +4,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod command_units;
 mod errors;
 mod examples;
 mod field;
