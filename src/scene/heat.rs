@@ -18,12 +18,14 @@
 //! [`UnitSystem::conductance`]); lengths and stresses are the scene's own. `"mikic-elastic"`
 //! takes E′ from the plates' materials ([`crate::heat::correlation::effective_modulus`]).
 //!
-//! Accuracy: that of the contact solve and of the nodal rule of
-//! [`crate::heat::joint`]; `tests/scene/heat.rs` checks that a power law of exponent 1 gives
-//! c (m/σ) k F/H (the bolt force F, equilibrium) to 1e-9 in two unit systems, that the same joint
+//! Accuracy: that of the contact solve and of the nodal rule of [`crate::heat::joint`];
+//! `tests/scene/heat.rs` checks that a power law of exponent 1 gives c (m/σ) k F/H (F the bolt
+//! force: equilibrium) to 1e-9 for three load profiles and an unequal pair, that the same joint
 //! in three unit systems gives the same conductance to 1e-12, and that the Chapter V scene
-//! equals the library calls (R_o bit for bit, G to 1e-14: the rounding of the Btu factor). Cost: one pass over the interface nodes after the contact solve
-//! (microseconds; `boltzone solve --explain` prints it); the Chapter V scene is
+//! equals the library calls (R_o bit for bit, G to 1e-14: the rounding of the Btu factor).
+//! Cost: one pass over the interface nodes after the contact solve (microseconds; `boltzone
+//! solve --explain` prints it; `examples/18_heat_speed.rs` times it with the contact solve);
+//! the Chapter V scene is
 //! `examples/scenes/chapter5_lap.toml`.
 //!
 //! ```
