@@ -351,9 +351,7 @@ fn write_finest(
         )?;
     }
     if let Some(path) = &args.out.field {
-        let mut grid = boltzone::io::vtu::Grid::plate(&h.mesh, &[plate.material()], &h.u, 0)?;
-        let lower = grid.mirrored(1);
-        grid.append(&lower);
+        let grid = boltzone::scene::field::single_plate_grid(plate.material(), h)?;
         let note = format!(
             "{method}; plate 0 = upper half z >= 0 (computed), plate 1 = its mirror image; {}; \
              command: {}",

@@ -314,32 +314,7 @@ fn curve_csv(s: &TwoPlateSolution, p: f64) -> String {
 /// the upper one; interface nodes of both carry the contact pressure, the gap and the status
 /// (1 closed, 0 open), every other node 0.
 fn field_vtu(s: &TwoPlateSolution, field: &TwoPlateField) -> anyhow::Result<String> {
-    let model = &field.model;
-    let mesh = &model.mesh;
-    let mut grid = boltzone::io::vtu::Grid::plate(mesh, &model.materials, &field.u, 0)?;
-    let n = mesh.n_nodes();
-    let (mut p, mut g, mut st) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
-    let mut faces = vec![mesh.bottom(model.upper)];
-    faces.extend(model.lower.map(|l| mesh.top(l)));
-    for face in &faces {
-        for (i, &node) in face.iter().enumerate() {
-            p[node] = s.pressure[i];
-            g[node] = s.gap[i];
-            st[node] = if field.closed[i] { 1.0 } else { 0.0 };
-        }
-    }
-    grid.add_scalar("contact_pressure", p);
-    grid.add_scalar("gap", g);
-    grid.add_scalar("contact_status", st);
-    let layout = if model.lower.is_none() {
-        // the symmetric joint: the computed upper plate (id 1) and its mirror image (id 0)
-        grid.plate.iter_mut().for_each(|id| *id = 1);
-        let lower = grid.mirrored(-1);
-        grid.append(&lower);
-        "plate 1 = upper plate (computed on a rigid frictionless plane), plate 0 = its mirror image"
-    } else {
-        "plate 1 = upper plate, plate 0 = lower plate"
-    };
+    let (grid, layout) = boltzone::scene::field::two_plate_grid(s, field)?;
     let note = format!(
         "method: two-plate FE contact, finest mesh, {} model; {layout}; interface nodes carry \
          contact_pressure [psi] (compression > 0), gap [in] (between the plates) and \
