@@ -5,6 +5,7 @@ mod check;
 mod deck;
 pub mod exit;
 mod figure;
+mod joint_figs;
 mod map;
 mod output;
 mod report;

@@ -331,7 +331,22 @@ fn write_finest(
             y: &m.sigma_z,
             r_o: (s.r_o, s.r_o_error),
         };
-        super::figure::radius_plot(path, &curve, (g.b, g.d, g.d, args.c))?;
+        let x_end = super::figure::radius_plot(path, &curve, (g.b, g.d, g.d, args.c))?;
+        let d = super::joint_figs::Deformed {
+            what: "single plate 2D thick (E = P = 1 psi)",
+            mesh: &h.mesh,
+            u: &h.u,
+            mirror: true,
+            names: vec![
+                "upper half (computed)".into(),
+                "lower half (mirror image)".into(),
+            ],
+            b: g.b,
+            r_o: (s.r_o, s.r_o_error),
+            x_end,
+        };
+        let deformed = super::joint_figs::sibling(path, "deformed");
+        super::joint_figs::deformed_plot(&deformed, &d)?;
     }
     if let Some(path) = &args.out.curve {
         let notes = [

@@ -185,29 +185,21 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         tolerance: args.tol,
         ..Default::default()
     };
-    let s = match &args.out.field {
-        None => solve(&joint, &params)?,
-        Some(path) => {
-            let (s, field) = solve_field(&joint, &params)?;
-            super::write_output(path, &field_vtu(&s, &field)?)?;
-            s
-        }
+    let (s, field) = if args.out.field.is_some() || args.out.plot.is_some() {
+        let (s, field) = solve_field(&joint, &params)?;
+        (s, Some(field))
+    } else {
+        (solve(&joint, &params)?, None)
     };
+    if let (Some(path), Some(field)) = (&args.out.field, &field) {
+        super::write_output(path, &field_vtu(&s, field)?)?;
+    }
     if let Some(path) = &args.out.curve {
         super::write_output(path, &curve_csv(&s, p))?;
     }
-    if let Some(path) = &args.out.plot {
+    if let (Some(path), Some(field)) = (&args.out.plot, &field) {
         let g = &args.geom;
-        let d2 = args.d2.unwrap_or(g.d);
-        let curve = super::figure::RadiusCurve {
-            title: format!("Interface pressure; model: {}", s.info.model),
-            y_label: "p [psi]",
-            label: "p(r), finest mesh",
-            r: &s.radius,
-            y: &s.pressure,
-            r_o: (s.r_o, s.r_o_error),
-        };
-        super::figure::radius_plot(path, &curve, (g.b, g.d, d2, args.c))?;
+        plots(path, &s, field, (g.b, g.d, args.d2.unwrap_or(g.d), args.c))?;
     }
     if let Some(path) = &args.report {
         let g = &args.geom;
@@ -287,6 +279,58 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         println!("deflection under the nut: {:.4e} in", s.nut_deflection);
     }
     Ok(Status::from_converged(s.converged))
+}
+
+/// `--plot FILE`: the interface pressure to FILE, the gap to FILE-gap and the deformed joint
+/// to FILE-deformed ([`super::joint_figs`]); `geom` is B, D, D₂, C.
+fn plots(
+    path: &std::path::Path,
+    s: &TwoPlateSolution,
+    field: &TwoPlateField,
+    geom: (f64, f64, f64, Option<f64>),
+) -> anyhow::Result<()> {
+    use super::figure::{radius_plot, RadiusCurve};
+    let model = format!("model: {}", s.info.model);
+    let curve = |title: &str, y_label, label, y| RadiusCurve {
+        title: format!("{title}; {model}"),
+        y_label,
+        label,
+        r: &s.radius,
+        y,
+        r_o: (s.r_o, s.r_o_error),
+    };
+    let p = curve(
+        "Interface pressure",
+        "p [psi]",
+        "p(r), finest mesh",
+        &s.pressure,
+    );
+    let x_end = radius_plot(path, &p, geom)?;
+    let g = curve(
+        "Gap between the plates",
+        "g [in]",
+        "g(r), finest mesh",
+        &s.gap,
+    );
+    radius_plot(&super::joint_figs::sibling(path, "gap"), &g, geom)?;
+    let mirror = field.model.lower.is_none();
+    let names = if mirror {
+        vec!["upper plate".into(), "lower plate (mirror image)".into()]
+    } else {
+        vec!["lower plate".into(), "upper plate".into()]
+    };
+    let d = super::joint_figs::Deformed {
+        what: "joint",
+        mesh: &field.model.mesh,
+        u: &field.u,
+        mirror,
+        names,
+        b: geom.0,
+        r_o: (s.r_o, s.r_o_error),
+        x_end,
+    };
+    super::joint_figs::deformed_plot(&super::joint_figs::sibling(path, "deformed"), &d)?;
+    Ok(())
 }
 
 /// r, p, g, τ of the finest mesh in the one curve layout ([`super::output`]).
