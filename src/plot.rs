@@ -94,20 +94,24 @@ pub trait Figure {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), PlotError>;
 }
 
+/// `fig` as SVG text of `size` pixels (for inlining in HTML).
+pub fn svg_string<F: Figure>(fig: &F, size: (u32, u32)) -> Result<String, PlotError> {
+    register_font();
+    let mut s = String::new();
+    {
+        let root = SVGBackend::with_string(&mut s, size).into_drawing_area();
+        fig.draw(&root)?;
+        root.present().map_err(pe)?;
+    }
+    Ok(s)
+}
+
 /// Writes `fig` as SVG or PNG (by `path`'s extension) of `size` pixels, atomically.
 pub fn write_figure<F: Figure>(fig: &F, path: &Path, size: (u32, u32)) -> Result<(), PlotError> {
     // Both backends measure text with the registered font (SVG for layout, PNG to draw).
     register_font();
     match path.extension().and_then(|e| e.to_str()) {
-        Some("svg") => {
-            let mut s = String::new();
-            {
-                let root = SVGBackend::with_string(&mut s, size).into_drawing_area();
-                fig.draw(&root)?;
-                root.present().map_err(pe)?;
-            }
-            write_atomic(path, s.as_bytes())
-        }
+        Some("svg") => write_atomic(path, svg_string(fig, size)?.as_bytes()),
         Some("png") => {
             // drawn FACTOR times larger and averaged down: anti-aliased ([`raster`])
             let k = raster::FACTOR as usize;

@@ -11,7 +11,7 @@ use boltzone::rules;
 use std::path::Path;
 
 /// Pixel size of the figure.
-const SIZE: (u32, u32) = (900, 600);
+pub const SIZE: (u32, u32) = (900, 600);
 
 /// Rejects a `--plot` path whose extension is neither svg nor png (exit 2).
 pub fn check_plot_path(flag: &str, path: &Path) -> anyhow::Result<()> {
@@ -44,14 +44,26 @@ pub struct RadiusCurve<'a> {
     pub r_o: (f64, f64),
 }
 
-/// Draws `curve` against r with B, R_o and the rules' radii marked to `path`. `b`, `d` and
-/// `d2` are the bearing radius and the plates' thicknesses, `c` the plate radius (None:
-/// infinite). Returns the right end of the r axis.
+/// Draws `curve` against r with B, R_o and the rules' radii marked to `path` ([`radius_figure`]).
+/// Returns the right end of the r axis.
 pub fn radius_plot(
     path: &Path,
     curve: &RadiusCurve<'_>,
-    (b, d, d2, c): (f64, f64, f64, Option<f64>),
+    geom: (f64, f64, f64, Option<f64>),
 ) -> anyhow::Result<f64> {
+    let (fig, x_end) = radius_figure(curve, geom);
+    write_figure(&fig, path, SIZE)?;
+    eprintln!("wrote {}", path.display());
+    Ok(x_end)
+}
+
+/// `curve` against r with B, R_o and the rules' radii marked, and the right end of its r
+/// axis. `b`, `d` and `d2` are the bearing radius and the plates' thicknesses, `c` the plate
+/// radius (None: infinite).
+pub fn radius_figure(
+    curve: &RadiusCurve<'_>,
+    (b, d, d2, c): (f64, f64, f64, Option<f64>),
+) -> (CurveFigure, f64) {
     let (r_o, r_o_error) = curve.r_o;
     let mut markers = vec![
         Marker {
@@ -104,9 +116,7 @@ pub fn radius_plot(
             y_max + 5.0 * pad,
         ),
     };
-    write_figure(&fig, path, SIZE)?;
-    eprintln!("wrote {}", path.display());
-    Ok(x_end)
+    (fig, x_end)
 }
 
 /// The rules of thumb's contact radii for bearing radius `b`, plates `d` (under the head) and

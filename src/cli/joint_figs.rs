@@ -7,7 +7,9 @@
 //! R_o marker and exaggeration against the JSON and the VTU's displacements).
 
 use boltzone::fem::Mesh;
-use boltzone::plot::{write_figure, Marker, Outline, SectionFigure, PALETTE};
+use boltzone::plot::{
+    svg_string, write_figure, CurveFigure, Marker, Outline, SectionFigure, PALETTE,
+};
 use std::path::{Path, PathBuf};
 
 /// FILE with `-{what}` appended to its stem (`p.svg` → `p-gap.svg`).
@@ -78,8 +80,15 @@ pub struct Deformed<'a> {
     pub x_end: f64,
 }
 
-/// Draws `d` to `path`; returns the exaggeration used.
-pub fn deformed_plot(path: &Path, d: &Deformed<'_>) -> anyhow::Result<f64> {
+/// Draws `d` to `path` ([`deformed_figure`]).
+pub fn deformed_plot(path: &Path, d: &Deformed<'_>) -> anyhow::Result<()> {
+    write_figure(&deformed_figure(d), path, super::figure::SIZE)?;
+    eprintln!("wrote {}", path.display());
+    Ok(())
+}
+
+/// The drawing of `d` (module docs).
+pub fn deformed_figure(d: &Deformed<'_>) -> SectionFigure {
     // the radii of the node columns from the nodes (in the joint's units)
     let r: Vec<f64> = (0..d.mesh.radial_nodes().len())
         .map(|i| d.mesh.nodes()[d.mesh.node_at(0, i, 0)][0])
@@ -144,7 +153,7 @@ pub fn deformed_plot(path: &Path, d: &Deformed<'_>) -> anyhow::Result<f64> {
         },
     ];
     let h = z1 - z0;
-    let fig = SectionFigure {
+    SectionFigure {
         title: format!(
             "Deformed {}, displacements × {k}, cut at r = {:.4} in",
             d.what, r[cut]
@@ -156,8 +165,35 @@ pub fn deformed_plot(path: &Path, d: &Deformed<'_>) -> anyhow::Result<f64> {
         x_range: (0.0, r[cut] * 1.02),
         // room above for the legend
         y_range: (z0 - 0.3 * h, z1 + 1.2 * h),
-    };
-    write_figure(&fig, path, (900, 600))?;
-    eprintln!("wrote {}", path.display());
-    Ok(k)
+    }
+}
+
+/// A figure of the user's joint: a curve against r or a cross-section.
+pub enum JointFigure {
+    /// Curve against r ([`super::figure::radius_figure`]).
+    Curve(CurveFigure),
+    /// Cross-section ([`deformed_figure`]).
+    Section(SectionFigure),
+}
+
+impl JointFigure {
+    /// Writes the figure to `path` (SVG or PNG).
+    pub fn write(&self, path: &Path) -> anyhow::Result<()> {
+        let size = super::figure::SIZE;
+        match self {
+            Self::Curve(f) => write_figure(f, path, size)?,
+            Self::Section(f) => write_figure(f, path, size)?,
+        }
+        eprintln!("wrote {}", path.display());
+        Ok(())
+    }
+
+    /// The figure as SVG text.
+    pub fn svg(&self) -> anyhow::Result<String> {
+        let size = super::figure::SIZE;
+        Ok(match self {
+            Self::Curve(f) => svg_string(f, size)?,
+            Self::Section(f) => svg_string(f, size)?,
+        })
+    }
 }

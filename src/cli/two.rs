@@ -5,6 +5,7 @@
 use super::args::{Element, Geometry, OutputFiles};
 use super::check;
 use super::exit::{sig, Status};
+use super::joint_figs::JointFigure;
 use boltzone::contact::two_plate::{
     solve, solve_field, EdgeSupport, InterfaceModel, Loading, TwoPlateField, TwoPlateParams,
     TwoPlateSolution,
@@ -91,13 +92,21 @@ pub struct Args {
     #[command(flatten)]
     #[serde(flatten)]
     out: OutputFiles,
-    /// Write a calculation report (Markdown: inputs, units, version, method, results, rules of
-    /// thumb, the --plot figure) to this file.
+    /// Write a calculation report (inputs, units, version, method, results, rules of thumb,
+    /// figures) to this file: Markdown linking the --plot files, or with the extension .html a
+    /// self-contained page with the figures inlined as SVG.
     #[arg(long)]
     report: Option<PathBuf>,
     /// Print the result as JSON.
     #[arg(long)]
     json: bool,
+}
+
+/// Whether a report file is HTML (by its extension, .html or .htm).
+fn is_html(path: &std::path::Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("html") || e.eq_ignore_ascii_case("htm"))
 }
 
 /// Checks every flag before any work starts (exit 2 naming the flag).
@@ -185,7 +194,8 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         tolerance: args.tol,
         ..Default::default()
     };
-    let (s, field) = if args.out.field.is_some() || args.out.plot.is_some() {
+    let html = args.report.as_ref().is_some_and(|p| is_html(p));
+    let (s, field) = if args.out.field.is_some() || args.out.plot.is_some() || html {
         let (s, field) = solve_field(&joint, &params)?;
         (s, Some(field))
     } else {
@@ -197,9 +207,24 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     if let Some(path) = &args.out.curve {
         super::write_output(path, &curve_csv(&s, p))?;
     }
-    if let (Some(path), Some(field)) = (&args.out.plot, &field) {
-        let g = &args.geom;
-        plots(path, &s, field, (g.b, g.d, args.d2.unwrap_or(g.d), args.c))?;
+    let html = args.report.as_ref().is_some_and(|p| is_html(p));
+    let figs = match &field {
+        Some(field) if args.out.plot.is_some() || html => {
+            let g = &args.geom;
+            figures(&s, field, (g.b, g.d, args.d2.unwrap_or(g.d), args.c))
+        }
+        _ => Vec::new(),
+    };
+    let file_of = |suffix: &str| {
+        args.out.plot.as_ref().map(|p| match suffix {
+            "" => p.clone(),
+            _ => super::joint_figs::sibling(p, suffix),
+        })
+    };
+    for (suffix, _, fig) in &figs {
+        if let Some(path) = file_of(suffix) {
+            fig.write(&path)?;
+        }
     }
     if let Some(path) = &args.report {
         let g = &args.geom;
@@ -208,9 +233,20 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             geometry: (g.a, g.b, g.d, args.d2.unwrap_or(g.d), args.c),
             pressure: p,
             tolerance: args.tol,
-            plot: args.out.plot.as_deref(),
         };
-        super::write_output(path, &super::report::two_report(&s, &inputs))?;
+        let mut shown = Vec::new();
+        for (suffix, caption, fig) in &figs {
+            let file = file_of(suffix).map(|f| f.display().to_string());
+            let svg = if html { fig.svg()? } else { String::new() };
+            shown.push((caption.to_string(), file, svg));
+        }
+        let blocks = super::report::two_report(&s, &inputs, shown);
+        let text = if html {
+            super::report::html(&blocks)
+        } else {
+            super::report::markdown(&blocks)
+        };
+        super::write_output(path, &text)?;
     }
     let Some(last) = s.info.levels.last() else {
         anyhow::bail!("the two-plate solver returned no mesh level");
@@ -281,15 +317,15 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     Ok(Status::from_converged(s.converged))
 }
 
-/// `--plot FILE`: the interface pressure to FILE, the gap to FILE-gap and the deformed joint
-/// to FILE-deformed ([`super::joint_figs`]); `geom` is B, D, D₂, C.
-fn plots(
-    path: &std::path::Path,
+/// The figures of `--plot FILE` and the HTML report: the interface pressure (to FILE), the gap
+/// (FILE-gap) and the deformed joint (FILE-deformed, [`super::joint_figs`]), each with its
+/// caption and file suffix; `geom` is B, D, D₂, C.
+fn figures(
     s: &TwoPlateSolution,
     field: &TwoPlateField,
     geom: (f64, f64, f64, Option<f64>),
-) -> anyhow::Result<()> {
-    use super::figure::{radius_plot, RadiusCurve};
+) -> Vec<(&'static str, &'static str, JointFigure)> {
+    use super::figure::{radius_figure, RadiusCurve};
     let model = format!("model: {}", s.info.model);
     let curve = |title: &str, y_label, label, y| RadiusCurve {
         title: format!("{title}; {model}"),
@@ -305,14 +341,14 @@ fn plots(
         "p(r), finest mesh",
         &s.pressure,
     );
-    let x_end = radius_plot(path, &p, geom)?;
+    let (p, x_end) = radius_figure(&p, geom);
     let g = curve(
         "Gap between the plates",
         "g [in]",
         "g(r), finest mesh",
         &s.gap,
     );
-    radius_plot(&super::joint_figs::sibling(path, "gap"), &g, geom)?;
+    let (g, _) = radius_figure(&g, geom);
     let mirror = field.model.lower.is_none();
     let names = if mirror {
         vec!["upper plate".into(), "lower plate (mirror image)".into()]
@@ -329,8 +365,19 @@ fn plots(
         r_o: (s.r_o, s.r_o_error),
         x_end,
     };
-    super::joint_figs::deformed_plot(&super::joint_figs::sibling(path, "deformed"), &d)?;
-    Ok(())
+    vec![
+        ("", "interface pressure against r", JointFigure::Curve(p)),
+        (
+            "gap",
+            "gap between the plates against r",
+            JointFigure::Curve(g),
+        ),
+        (
+            "deformed",
+            "the deformed joint (displacements exaggerated)",
+            JointFigure::Section(super::joint_figs::deformed_figure(&d)),
+        ),
+    ]
 }
 
 /// r, p, g, τ of the finest mesh in the one curve layout ([`super::output`]).
