@@ -79,7 +79,9 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
     })
 }
 
-fn register_font() {
+/// Registers the shipped DejaVu Sans as "sans-serif" for plotters' text (once per process;
+/// [`write_figure`] and [`svg_string`] call it): needed before drawing on a backend directly.
+pub fn register_font() {
     static ONCE: std::sync::Once = std::sync::Once::new();
     ONCE.call_once(|| {
         let font: &'static [u8] = include_bytes!("../assets/DejaVuSans.ttf");

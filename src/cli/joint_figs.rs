@@ -115,7 +115,7 @@ pub fn deformed_figure(d: &Deformed<'_>) -> SectionFigure {
         .map(|(_, u)| u[0].hypot(u[1]))
         .fold(0.0, f64::max);
     let k = exaggeration(z1 - z0, max_u);
-    let colors = [PALETTE[5], PALETTE[1], PALETTE[3], PALETTE[7]];
+    let colors = [PALETTE[5], PALETTE[3], PALETTE[2], PALETTE[7]];
     let mut outlines = Vec::new();
     let signs: &[f64] = if d.mirror { &[1.0, -1.0] } else { &[1.0] };
     let mut name = d.names.iter();
@@ -144,7 +144,7 @@ pub fn deformed_figure(d: &Deformed<'_>) -> SectionFigure {
         Marker {
             label: format!("B = {:.4} in", d.b),
             x: d.b,
-            color: PALETTE[0],
+            color: PALETTE[1],
         },
         Marker {
             label: format!("Rₒ = {:.4} ± {:.1e} in (computed)", d.r_o.0, d.r_o.1),

@@ -5,6 +5,7 @@ mod check;
 mod deck;
 pub mod exit;
 mod figure;
+mod hankel_curve;
 mod joint_figs;
 mod map;
 mod output;
