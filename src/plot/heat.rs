@@ -7,7 +7,18 @@
 //!
 //! Accuracy: `tests/io/figure_map.rs` parses the SVG of `boltzone map` for the tick labels, the
 //! contour lines and the colour bar's symmetric range. Cost: a 40 × 40 map draws in well under
-//! a second (one rectangle per cell and one pass per contour level).
+//! a second (one rectangle per cell and one pass per contour level; `boltzone map`).
+//!
+//! ```
+//! use boltzone::plot::{svg_string, HeatMapFigure, HeatPanel};
+//! let fig = HeatMapFigure {
+//!     x: vec![1.0, 2.0, 4.0], y: vec![1.0, 3.0], x_label: "x".into(), y_label: "y".into(),
+//!     panels: vec![HeatPanel { title: "signed".into(), z: vec![-3.0, -1.0, 0.5, 1.0, 2.0, 4.0] }],
+//! };
+//! let svg = svg_string(&fig, (600, 400))?;
+//! assert!(svg.contains("signed")); // its caption (the bar spans ±4: tests/io/figure_map.rs)
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 use super::contour::{contour_segments, log_ticks, nice_ticks, tick_label};
 use super::{pe, typeset, Figure, PlotError};
@@ -98,7 +109,7 @@ fn scale(z: &[f64]) -> (f64, f64, fn(f64) -> RGBColor) {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
             (a.min(v), b.max(v))
         });
-    if !(lo <= hi) {
+    if lo > hi {
         return (0.0, 1.0, viridis);
     }
     if lo < 0.0 && hi > 0.0 {
