@@ -43,20 +43,16 @@ pub fn midplane_curve(
 ) -> anyhow::Result<(Vec<[f64; 2]>, f64)> {
     // as the R_o search: a rim beyond B + 30 D is an infinite plate to every digit
     let far = boltzone::fem::single::FAR_RIM * plate.half_thickness() + plate.load().outer();
-    let infinite;
-    let plate = match plate.outer_radius() {
-        OuterRadius::Finite(c) if c > far => {
-            infinite = SinglePlate::new(
-                plate.hole_radius(),
-                OuterRadius::Infinite,
-                plate.half_thickness(),
-                plate.material(),
-                plate.load().clone(),
-            )?;
-            &infinite
-        }
-        _ => plate,
+    let outer = match plate.outer_radius() {
+        OuterRadius::Finite(c) if c > far => OuterRadius::Infinite,
+        o => o,
     };
+    let (a, d, mat) = (
+        plate.hole_radius(),
+        plate.half_thickness(),
+        plate.material(),
+    );
+    let plate = &SinglePlate::new(a, outer, d, mat, plate.load().clone())?;
     let holed = HolePlate::with_terms(plate, params, info.terms)?;
     let p = plate.load().mean_pressure().abs();
     let r_max = r.iter().copied().fold(plate.hole_radius(), f64::max);

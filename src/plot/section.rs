@@ -28,7 +28,7 @@
 //! ```
 
 use super::contour::axis_label;
-use super::{draw_markers, pe, rgb, typeset, Figure, Marker, PlotError};
+use super::{draw_legend, draw_markers, pe, rgb, typeset, Figure, Marker, PlotError};
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -155,13 +155,6 @@ impl Figure for SectionFigure {
             }
         }
         draw_markers(&mut chart, &self.markers, y)?;
-        chart
-            .configure_series_labels()
-            .label_font(("sans-serif", 15))
-            .background_style(WHITE.mix(0.9))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(pe)
+        draw_legend(&mut chart)
     }
 }

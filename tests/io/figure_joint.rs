@@ -138,21 +138,12 @@ fn gap_and_deformed_figures_mark_the_computed_radii() {
 fn single_plot_writes_the_deformed_plate_and_a_bad_sibling_is_refused_first() {
     let dir = temp_dir("fig-single");
     let svg = dir.join("s.svg");
-    let out = boltzone(&[
-        "single",
-        "--a",
-        "0.1",
-        "--b",
-        "0.31",
-        "--d",
-        "0.1",
-        "--c",
-        "1.54",
-        "--tol",
-        "1e-2",
-        "--plot",
-        svg.to_str().unwrap(),
-    ]);
+    let run = |line: &str, plot: &std::path::Path| {
+        let mut args: Vec<&str> = line.split_whitespace().collect();
+        args.extend(["--plot", plot.to_str().unwrap()]);
+        boltzone(&args)
+    };
+    let out = run("single --a 0.1 --b 0.31 --d 0.1 --c 1.54 --tol 1e-2", &svg);
     assert!(out.status.success());
     let text = std::fs::read_to_string(dir.join("s-deformed.svg")).unwrap();
     assert!(texts(&text)
@@ -161,17 +152,7 @@ fn single_plot_writes_the_deformed_plate_and_a_bad_sibling_is_refused_first() {
     // a directory where FILE-deformed goes: exit 2 naming --plot, nothing written
     let bad = dir.join("q.svg");
     std::fs::create_dir(dir.join("q-deformed.svg")).unwrap();
-    let out = boltzone(&[
-        "single",
-        "--a",
-        "0.1",
-        "--b",
-        "0.31",
-        "--d",
-        "0.1",
-        "--plot",
-        bad.to_str().unwrap(),
-    ]);
+    let out = run("single --a 0.1 --b 0.31 --d 0.1", &bad);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--plot"));
     assert!(!bad.exists());

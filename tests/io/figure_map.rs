@@ -3,9 +3,8 @@
 //! exactly), a signed panel's colour bar symmetric about 0 (read from the SVG), and `map`'s
 //! axes ticked at round values (no 5.01).
 
-use super::py::temp_dir;
+use super::py::{boltzone_ok, temp_dir};
 use super::svg_util::texts;
-use crate::common::boltzone;
 use boltzone::plot::contour::{axis_label, contour_segments, log_ticks, nice_ticks, tick_label};
 use boltzone::plot::{diverging, svg_string, HeatMapFigure, HeatPanel};
 
@@ -97,21 +96,9 @@ fn a_signed_panel_gets_a_diverging_scale_centred_on_zero() {
 fn map_axes_are_ticked_at_round_values() {
     let dir = temp_dir("fig-map");
     let svg = dir.join("m.svg");
-    let out = boltzone(&[
-        "map",
-        "--a-over-d",
-        "0.3,1,3",
-        "--b-over-a",
-        "1.3,2,4",
-        "--tol",
-        "1e-2",
-        "--svg",
-        svg.to_str().unwrap(),
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    boltzone_ok(
+        "map --a-over-d 0.3,1,3 --b-over-a 1.3,2,4 --tol 1e-2 --svg",
+        &[&svg],
     );
     let t = texts(&std::fs::read_to_string(&svg).unwrap());
     // A/D cells span 0.3/√(10/3)… 3·√3: round ticks 0.2, 0.5, 1, 2, 5 inside
