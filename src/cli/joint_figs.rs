@@ -164,7 +164,7 @@ pub fn deformed_figure(d: &Deformed<'_>) -> SectionFigure {
         markers,
         x_range: (0.0, r[cut] * 1.02),
         // room above for the legend
-        y_range: (z0 - 0.3 * h, z1 + 1.2 * h),
+        y_range: (z0 - 0.15 * h, z1 + 0.75 * h),
     }
 }
 
