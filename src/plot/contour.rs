@@ -156,20 +156,31 @@ pub fn contour_segments(x: &[f64], y: &[f64], z: &[f64], level: f64) -> Vec<Segm
     out
 }
 
-/// A linear axis's tick label for `v` on an axis spanning `span`: the decimals of a tenth of the
-/// span's round step (so 0.25, not 0.2500000001), in exponent form (2.5e-8) when the span is
-/// below 10⁻³ or above 10⁶, and "0" for a zero that rounding made negative.
+/// A linear axis's tick label for `v` on an axis spanning `span`: the fewest decimals that show
+/// `v` to 10⁻⁹ of the span (so 0.25 and 1.5, not 0.2500000001 or a rounded 2), in exponent form
+/// (2.5e-8) when the span is below 10⁻³ or above 10⁶, and "0" for a zero that rounding made
+/// negative.
 pub fn axis_label(v: f64, span: f64) -> String {
-    let step = nice_ticks(0.0, span.abs(), 10)
-        .get(1)
-        .copied()
-        .unwrap_or(1.0);
-    if v.abs() < 1e-9 * span.abs() {
+    let tol = 1e-9 * span.abs();
+    if v.abs() <= tol {
         return "0".into();
     }
-    if span.abs() < 1e-3 || span.abs() > 1e6 {
-        let digits = decimals(step / 10f64.powf(v.abs().log10().floor()));
-        return format!("{:.*e}", digits.min(6), v);
+    let exponent = span.abs() < 1e-3 || span.abs() > 1e6;
+    let scale = if exponent {
+        10f64.powf(v.abs().log10().floor())
+    } else {
+        1.0
+    };
+    let m = v / scale;
+    let digits = (0..=12usize)
+        .find(|&d| {
+            let p = 10f64.powi(d as i32);
+            ((m * p).round() / p - m).abs() * scale <= tol
+        })
+        .unwrap_or(12);
+    if exponent {
+        format!("{:.*e}", digits, v)
+    } else {
+        format!("{:.*}", digits, v)
     }
-    tick_label(v, step)
 }

@@ -143,8 +143,20 @@ fn single_plot_writes_the_deformed_plate_and_a_bad_sibling_is_refused_first() {
         args.extend(["--plot", plot.to_str().unwrap()]);
         boltzone(&args)
     };
-    let out = run("single --a 0.1 --b 0.31 --d 0.1 --c 1.54 --tol 1e-2", &svg);
-    assert!(out.status.success());
+    let out = run(
+        "single --a 0.1 --b 0.31 --d 0.1 --c 1.54 --tol 1e-2 --json",
+        &svg,
+    );
+    let r_o = json_of(&out)["r_o"].as_f64().unwrap();
+    // σ_z against r: R_o's marker where the scale set by B and the 45° cone's B + D puts it
+    let text = std::fs::read_to_string(&svg).unwrap();
+    let (xb, x45) = (marker_x(&text, B), marker_x(&text, CONE45));
+    let want = xb + (r_o - 0.31) * (x45 - xb) / 0.1;
+    let got = marker_x(&text, R_O);
+    assert!(
+        (got - want).abs() <= 1.0,
+        "single: R_o marker at {got} px, want {want}"
+    );
     let text = std::fs::read_to_string(dir.join("s-deformed.svg")).unwrap();
     assert!(texts(&text)
         .iter()

@@ -24,6 +24,10 @@ fn ticks_are_round_numbers() {
     assert_eq!(axis_label(-1e-20, 0.25), "0");
     assert_eq!(axis_label(2e-8, 1.2e-7), "2e-8");
     assert_eq!(axis_label(1.5e-8, 3e-8), "1.5e-8");
+    // the decimals each value needs, whatever step the axis took (example 07's r/A: 1.5, 2)
+    assert_eq!(axis_label(1.5, 5.0), "1.5");
+    assert_eq!(axis_label(2.0, 5.0), "2");
+    assert_eq!(axis_label(0.30000000000000004, 1.0), "0.3");
 }
 
 #[test]
