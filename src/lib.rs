@@ -49,6 +49,7 @@ pub mod compare;
 pub mod contact;
 pub mod error;
 pub mod fem;
+pub mod figures;
 pub mod fsutil;
 pub mod hankel;
 pub mod heat;
