@@ -6,6 +6,8 @@ mod deck;
 pub mod exit;
 mod figure;
 mod figures;
+mod hankel_curve;
+mod joint_figs;
 mod map;
 mod output;
 mod report;
