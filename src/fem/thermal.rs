@@ -200,10 +200,11 @@ impl Thermal {
     fn with_element<T>(&self, mesh: &Mesh, e: usize, f: impl FnOnce(&ElementThermal) -> T) -> T {
         let table = &self.tables[self.table_of[e]];
         let t = self.element_temperatures(mesh, e);
-        let strain = |t: f64| table.strain(t, self.reference).unwrap_or(f64::NAN);
+        let alpha = |t: f64| table.at(t).map_or(f64::NAN, |r| r.1);
         f(&ElementThermal {
             temperature: &t,
-            strain: &strain,
+            reference: self.reference,
+            alpha: &alpha,
         })
     }
 

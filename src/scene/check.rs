@@ -105,6 +105,7 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
         }
     }
     check_model(scene, &c)?;
+    super::temperature::check(scene, text)?;
     check_outputs(scene, &c)
 }
 

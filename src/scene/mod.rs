@@ -43,6 +43,7 @@ pub mod file;
 pub mod materials;
 pub mod run;
 pub mod sweep;
+pub mod temperature;
 pub mod units;
 
 pub use error::SceneError;

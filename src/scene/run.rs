@@ -15,6 +15,7 @@ use super::error::SceneError;
 use super::file::{InterfaceKind, MaterialSpec, Method, Model, ProfileKind, Scene};
 use super::materials;
 use super::units::UnitSystem;
+use crate::contact::thermal;
 use crate::contact::two_plate::{self, EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use crate::fem::single::{self as fem_single, FaceCondition, SingleParams};
 use crate::hankel::hole::{single_plate_separation, HoleParams};
@@ -222,7 +223,13 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
     let t1 = Instant::now();
     let other = match (scene.model, method) {
         (Model::TwoPlate, _) => {
-            let s = two_plate::solve(&joint, &two_plate_params(scene, nut))?;
+            let params = two_plate_params(scene, nut);
+            let s = match &scene.temperature {
+                Some(t) => {
+                    thermal::solve_with_temperature(&joint, &params, &t.joint_temperature(&joint)?)?
+                }
+                None => two_plate::solve(&joint, &params)?,
+            };
             (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
             out.full_contact = Some(s.full_contact);
             out.nut_deflection = Some(s.nut_deflection / l);

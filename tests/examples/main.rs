@@ -188,3 +188,13 @@ fn ex17_scene_plan() {
     quick();
     ex17::main().unwrap();
 }
+
+#[allow(dead_code)]
+#[path = "../../examples/20_thermal_contact.rs"]
+mod ex20;
+
+#[test]
+fn ex20_thermal_contact() {
+    quick();
+    ex20::main().unwrap();
+}

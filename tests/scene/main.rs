@@ -7,6 +7,7 @@ mod common;
 mod errors;
 mod examples;
 mod fuzz;
+mod temperature;
 mod units;
 
 use std::path::PathBuf;

@@ -23,7 +23,7 @@
 //! use boltzone::fem::element::{thermal::ElementThermal, ElementKind};
 //! use boltzone::Material;
 //! let x = [[1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]];
-//! let th = ElementThermal { temperature: &[10.0; 4], strain: &|t| 1e-5 * t };
+//! let th = ElementThermal { temperature: &[10.0; 4], reference: 0.0, alpha: &|_| 1e-5 };
 //! let f = ElementKind::Q4.thermal_forces(&x, &Material::unit(0.3)?, &th);
 //! assert!((f[1] + f[3] + f[5] + f[7]).abs() < 1e-18); // no net axial force
 //! # Ok::<(), Box<dyn std::error::Error>>(())
@@ -34,13 +34,15 @@ use super::{cst4, elasticity, q4, q9, ElementKind, ElementPoint, Stress};
 use crate::material::Material;
 use std::f64::consts::PI;
 
-/// An element's nodal temperatures and the thermal strain of a temperature.
+/// An element's nodal temperatures, the stress-free temperature and α(T).
 #[derive(Clone, Copy)]
 pub struct ElementThermal<'a> {
     /// Temperature at each node, in the element's node order.
     pub temperature: &'a [f64],
-    /// The thermal strain e(T) = α(T)(T − T_ref) at a temperature T.
-    pub strain: &'a dyn Fn(f64) -> f64,
+    /// The stress-free temperature T_ref.
+    pub reference: f64,
+    /// The expansion coefficient α(T) at a temperature T.
+    pub alpha: &'a dyn Fn(f64) -> f64,
 }
 
 impl ElementThermal<'_> {
@@ -49,8 +51,22 @@ impl ElementThermal<'_> {
         self.temperature.iter().sum::<f64>() / self.temperature.len().max(1) as f64
     }
 
+    /// The listing's element strain α(T̄)(T̄ − T_ref), T̄ the mean of the nodes.
+    pub fn mean_strain(&self) -> f64 {
+        let t = self.mean();
+        (self.alpha)(t) * (t - self.reference)
+    }
+
+    /// α(T)(T − T_ref) at a point with shape-function values `n`; T − T_ref is interpolated
+    /// from the nodes' differences, so that T = T_ref everywhere gives exactly zero.
     fn at_shape(&self, n: &[f64]) -> f64 {
-        (self.strain)(n.iter().zip(self.temperature).map(|(a, b)| a * b).sum())
+        let (t, dt) = n
+            .iter()
+            .zip(self.temperature)
+            .fold((0.0, 0.0), |(t, dt), (a, b)| {
+                (t + a * b, dt + a * (b - self.reference))
+            });
+        (self.alpha)(t) * dt
     }
 }
 
@@ -100,7 +116,7 @@ impl ElementKind {
     /// dofs u₀, w₀, …; Cst4 condensed as its stiffness). Add them to the load vector.
     pub fn thermal_forces(self, x: &[[f64; 2]], m: &Material, th: &ElementThermal) -> Vec<f64> {
         if self == Self::Cst4 {
-            return cst4::thermal_load(x, m, (th.strain)(th.mean()));
+            return cst4::thermal_load(x, m, th.mean_strain());
         }
         let el = parent(self);
         let k3 = bulk3(m);
@@ -132,7 +148,7 @@ impl ElementKind {
         th: &ElementThermal,
     ) -> Vec<ElementPoint> {
         if self == Self::Cst4 {
-            return cst4::points(x, &elasticity(m), u, (th.strain)(th.mean()));
+            return cst4::points(x, &elasticity(m), u, th.mean_strain());
         }
         let k3 = bulk3(m);
         let mut pts = self.quadrature_points(x, m, u);
@@ -151,7 +167,7 @@ impl ElementKind {
         th: &ElementThermal,
     ) -> ElementPoint {
         if self == Self::Cst4 {
-            return cst4::centre(x, &elasticity(m), u, (th.strain)(th.mean()));
+            return cst4::centre(x, &elasticity(m), u, th.mean_strain());
         }
         let mut p = self.centre_stress(x, m, u);
         let e = self.parent_strain(x, th, [0.0, 0.0]);
@@ -168,7 +184,7 @@ impl ElementKind {
         th: &ElementThermal,
     ) -> Vec<Stress> {
         if self == Self::Cst4 {
-            return cst4::corner_stresses(x, &elasticity(m), u, (th.strain)(th.mean()));
+            return cst4::corner_stresses(x, &elasticity(m), u, th.mean_strain());
         }
         let k3 = bulk3(m);
         let nodes: &[[f64; 2]] = if self == Self::Q9 {
