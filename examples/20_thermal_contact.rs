@@ -18,12 +18,15 @@
 //!
 //! **What it shows.** A plate whose loaded face is hotter than its contact face bends with its rim
 //! toward the interface (free curvature α ΔT/D), so the rims of both plates close and the contact
-//! zone grows; a hotter interface lifts the rims and the zone shrinks. The scale that matters is
+//! zone grows — at 0.4 °F the rims touch: a second contact at r = C, which the solver reports as
+//! R_o = C (full contact); a hotter interface lifts the rims and the zone shrinks. The scale that matters is
 //! E α ΔT against P: here a few tenths of a degree across a 0.1 in plate already move R_o by
 //! about a percent (the free plate's rim moves by α ΔT C²/(2D) = 6.5·10⁻⁵ in per °F, against
 //! bolt-load gaps of ~10⁻⁵ in). Uniform temperatures change nothing on a frictionless interface
-//! (each plate expands freely); welded plates at different temperatures shear each other and
-//! bend like a bimetal strip. A heat flow through equal plates bends both alike: no change.
+//! (each plate expands freely). Welded equal plates at different temperatures shear each other
+//! (|τ| ≈ 1100 psi for 1 °F here) but do not move R_o: the mismatch is antisymmetric about the
+//! interface, so its gap and normal traction there vanish and both plates bend together. A heat
+//! flow through equal plates bends both alike: no change either.
 //!
 //! Checks (the example fails if one does not hold): T = T_ref everywhere gives the isothermal
 //! R_o; a uniform rise, and different uniform temperatures, leave R_o and p(r) of the
@@ -43,8 +46,6 @@ use std::time::Instant;
 
 const T_REF: f64 = 70.0;
 const ALPHA: f64 = 13e-6;
-/// Rounding bound on the pressure change of a case with an exact "no change" (`tests/contact/thermal.rs`).
-const ROUNDING: f64 = 3e-8;
 
 fn joint() -> anyhow::Result<Joint> {
     let p = Plate::new(0.1, Material::new(10.0e6, 0.33)?)?;
@@ -59,22 +60,41 @@ fn joint() -> anyhow::Result<Joint> {
 
 fn row(name: &str, s: &TwoPlateSolution, iso: f64, secs: f64) {
     let pmax = s.pressure.iter().fold(0.0f64, |m, p| m.max(*p));
+    let tmax = s.shear.iter().fold(0.0f64, |m, t| m.max(t.abs()));
+    let note = if s.full_contact {
+        "  full contact (R_o = C)"
+    } else {
+        ""
+    };
     println!(
-        "{name:<44} {:>9.5} ± {:.1e} in {:>+8.3} % {:>9.1} psi {:>6.2} s",
+        "{name:<44} {:>9.5} ± {:.1e} in {:>+9.4} % {:>7.1} psi {:>6.1} psi {:>5.2} s{note}",
         s.r_o,
         s.r_o_error,
         100.0 * (s.r_o / iso - 1.0),
         pmax,
+        tmax,
         secs
     );
 }
 
-fn max_change(a: &TwoPlateSolution, b: &TwoPlateSolution) -> f64 {
+/// (ΔR_o/R_o, Δp/p_max) of `a` against `b`, p compared at `b`'s nodes.
+fn change(a: &TwoPlateSolution, b: &TwoPlateSolution) -> (f64, f64) {
     let pmax = b.pressure.iter().fold(0.0f64, |m, p| m.max(p.abs()));
-    let dp = (0..a.radius.len().min(b.radius.len()))
+    let dp = (0..b.radius.len())
         .map(|i| (a.pressure_at(b.radius[i]) - b.pressure[i]).abs() / pmax)
         .fold(0.0, f64::max);
-    dp.max((a.r_o - b.r_o).abs() / b.r_o)
+    ((a.r_o - b.r_o).abs() / b.r_o, dp)
+}
+
+/// Round-off model of a "nothing changes" case: the free thermal displacement α ΔT C (`dt` the
+/// temperature change that makes it) rides on
+/// bolt-load displacements g_max (the largest gap) whose differences make p, and the solve loses
+/// cond(K)·ε of it, cond(K) ≈ κ (C/h)² (h the finest element at R_o; the constant κ of a graded
+/// mesh taken as 10): the bound on Δp/p_max.
+fn rounding(iso: &TwoPlateSolution, dt: f64, c: f64) -> f64 {
+    let g = iso.gap.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let h = iso.info.levels.last().map_or(c, |l| l.h);
+    10.0 * ALPHA * dt * c / g * (c / h).powi(2) * f64::EPSILON
 }
 
 pub fn main() -> anyhow::Result<()> {
@@ -109,8 +129,8 @@ pub fn main() -> anyhow::Result<()> {
     let iso_secs = t0.elapsed().as_secs_f64();
     println!("joint: A = 0.1 in, B = 0.31 in, D = 0.1 in, C = 1 in, P = 1000 psi, aluminium");
     println!(
-        "{:<44} {:>9}   {:>10} {:>9} {:>13} {:>8}",
-        "case", "R_o", "(error)", "ΔR_o", "p_max", "time"
+        "{:<44} {:>9}   {:>10} {:>11} {:>11} {:>10} {:>7}",
+        "case", "R_o", "(error)", "ΔR_o", "p_max", "|τ|_max", "time"
     );
     row("isothermal", &iso, iso.r_o, iso_secs);
 
@@ -128,30 +148,37 @@ pub fn main() -> anyhow::Result<()> {
     );
     let (flow, secs) = run([linear(75.0, 80.0), linear(72.0, 67.0)], &params)?;
     row("heat flow through: 80→75 | 72→67 °F", &flow, iso.r_o, secs);
-    for (name, s) in [
-        ("T_ref", &same),
-        ("uniform", &rise),
-        ("different uniform", &apart),
+    for (name, s, dt) in [
+        ("T = T_ref", &same, 0.0),
+        ("uniform", &rise, 100.0),
+        ("different uniform", &apart, 150.0),
+        // free displacement α (|T − T_ref| C + |dT/dz| C²/2) = α (10 + 25)
+        ("through-flow", &flow, 35.0),
     ] {
+        let ((dr, dp), bound) = (change(s, &iso), rounding(&iso, dt, 1.0));
+        println!(
+            "  {name}: ΔR_o/R_o = {dr:.1e}, Δp/p_max = {dp:.1e} (round-off bound {bound:.1e})"
+        );
+        // R_o: its estimator averages the rounding away (measured ≤ 5e-11 in tests/contact)
         ensure!(
-            max_change(s, &iso) < ROUNDING,
-            "{name}: changed by {:e}",
-            max_change(s, &iso)
+            dr <= 1e-9 && dp <= bound.max(1e-12),
+            "{name}: changed by {dr:e}, {dp:e}"
         );
     }
-    ensure!(
-        max_change(&flow, &iso) < ROUNDING,
-        "through-flow changed by {:e}",
-        max_change(&flow, &iso)
-    );
 
     // Welded plates at different temperatures: the differential expansion shears the interface.
     let welded = TwoPlateParams {
         interface: InterfaceModel::Welded,
         ..params
     };
+    let t0 = Instant::now();
     let iso_welded = solve(&j, &welded)?;
-    row("isothermal (welded)", &iso_welded, iso.r_o, 0.0);
+    row(
+        "isothermal (welded)",
+        &iso_welded,
+        iso.r_o,
+        t0.elapsed().as_secs_f64(),
+    );
     match run([uniform(T_REF + 1.0), uniform(T_REF)], &welded) {
         Ok((s, secs)) => row("upper +1 °F (welded)", &s, iso.r_o, secs),
         Err(e) => println!("upper +1 °F (welded): {e}"),

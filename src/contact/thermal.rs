@@ -64,7 +64,10 @@ impl TemperatureGrid {
             reason,
         };
         for (field, v) in [("grid radii r", &r), ("grid depths s", &s)] {
-            if v.is_empty() || v.windows(2).any(|w| !(w[1] > w[0])) {
+            if v.is_empty()
+                || v.windows(2)
+                    .any(|w| w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater))
+            {
                 return Err(bad(
                     field,
                     v.len() as f64,
