@@ -4,7 +4,7 @@
 //! **What is computed.** With a stress-free reference temperature T_ref, the thermal strain of
 //! an isotropic material is ε_th = α(T)(T − T_ref)(1, 1, 1, 0) in (ε_r, ε_z, ε_θ, γ_rz) (Appendix
 //! C's α(T)·(T − T_ref), α the secant coefficient of its table). The equilibrium equations become
-//! K u = f + f_th with f_th = ∑ₑ ∫ Bᵀ D ε_th dV ([`ElementKind::thermal_forces`]) and the stresses
+//! K u = f + f_th with f_th = ∑ₑ ∫ Bᵀ D ε_th dV ([`ElementKind::thermal_forces`](super::ElementKind::thermal_forces)) and the stresses
 //! σ = D (B u − ε_th). Tension positive, compression negative; forces whole-ring; units the
 //! caller's (α per degree of the temperatures').
 //!
