@@ -45,7 +45,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::element::{thermal::ElementThermal, ElementPoint};
+use super::element::{thermal::ElementThermal, ElementKind, ElementPoint};
 use super::error::FemError;
 use super::loads::Loads;
 use super::mesh::Mesh;
@@ -259,15 +259,10 @@ impl Thermal {
         materials: &[Material],
         u: &[[f64; 2]],
     ) -> Result<Vec<ElementPoint>, FemError> {
-        let mut out = Vec::new();
-        for e in 0..mesh.n_elements() {
-            let m = material(mesh, materials, e)?;
-            let (x, ue) = (mesh.element_coords(e), element_u(mesh, u, e));
-            out.extend(self.with_element(mesh, e, |th| {
-                mesh.kind().thermal_quadrature_points(&x, m, &ue, th)
-            }));
-        }
-        Ok(out)
+        let per = self.each_element(mesh, materials, u, |k, x, m, ue, th| {
+            k.thermal_quadrature_points(x, m, ue, th)
+        })?;
+        Ok(per.into_iter().flatten().collect())
     }
 
     /// Stress σ = D (B u − ε_th) at each element's centre.
@@ -277,13 +272,24 @@ impl Thermal {
         materials: &[Material],
         u: &[[f64; 2]],
     ) -> Result<Vec<ElementPoint>, FemError> {
+        self.each_element(mesh, materials, u, |k, x, m, ue, th| {
+            k.thermal_centre_stress(x, m, ue, th)
+        })
+    }
+
+    /// `f(kind, coordinates, material, element displacements, thermal state)` of every element.
+    fn each_element<T>(
+        &self,
+        mesh: &Mesh,
+        materials: &[Material],
+        u: &[[f64; 2]],
+        f: impl Fn(ElementKind, &[[f64; 2]], &Material, &[f64], &ElementThermal) -> T,
+    ) -> Result<Vec<T>, FemError> {
         (0..mesh.n_elements())
             .map(|e| {
                 let m = material(mesh, materials, e)?;
                 let (x, ue) = (mesh.element_coords(e), element_u(mesh, u, e));
-                Ok(self.with_element(mesh, e, |th| {
-                    mesh.kind().thermal_centre_stress(&x, m, &ue, th)
-                }))
+                Ok(self.with_element(mesh, e, |th| f(mesh.kind(), &x, m, &ue, th)))
             })
             .collect()
     }

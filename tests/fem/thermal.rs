@@ -14,6 +14,7 @@ use boltzone::fem::element::cst4;
 use boltzone::fem::thermal::{interpolate, Thermal, ThermalMaterial};
 use boltzone::fem::*;
 use boltzone::io::deck::{run, Appendix, Code, Deck, DeckElement, DeckMaterial, DeckNode};
+use boltzone::Material;
 
 const KINDS: [ElementKind; 4] = [
     ElementKind::Cst4,
@@ -137,14 +138,12 @@ const D: f64 = 0.25;
 const ALPHA: f64 = 1e-5;
 
 fn constant() -> ThermalMaterial {
-    ThermalMaterial::constant(boltzone::Material::new(1e7, 0.3).unwrap(), ALPHA).unwrap()
+    ThermalMaterial::constant(Material::new(1e7, 0.3).unwrap(), ALPHA).unwrap()
 }
 
-/// The free plate 1 ≤ r ≤ 3, 0 ≤ z ≤ D with T = 100 (1 + z/D) (ΔT = 100 through it), α
-/// constant: the exact solution is stress-free, u = α T r, w = α (100 z + 50 z²/D) − κ r²/2 with
-/// κ = α ΔT/D. Returns the mesh, u, max |σ| / (E α ΔT) and the largest nodal displacement
-/// error relative to the largest exact displacement.
-fn bent_plate(kind: ElementKind, nr: usize, nz: usize) -> (Mesh, Vec<[f64; 2]>, f64, f64) {
+/// The plate 1 ≤ r ≤ 3, 0 ≤ z ≤ D in nr × nz elements with T = 100 (1 + z/D), its thermal
+/// field and element materials.
+fn gradient_plate(kind: ElementKind, nr: usize, nz: usize) -> (Mesh, Thermal, Vec<Material>) {
     let mut mesh = ring(kind, nr, nz, D, false);
     let t: Vec<f64> = mesh
         .nodes()
@@ -153,6 +152,15 @@ fn bent_plate(kind: ElementKind, nr: usize, nz: usize) -> (Mesh, Vec<[f64; 2]>, 
         .collect();
     let th = Thermal::new(&mesh, vec![constant()], t, 0.0).unwrap();
     let mats = th.apply(&mut mesh).unwrap();
+    (mesh, th, mats)
+}
+
+/// The free plate 1 ≤ r ≤ 3, 0 ≤ z ≤ D with T = 100 (1 + z/D) (ΔT = 100 through it), α
+/// constant: the exact solution is stress-free, u = α T r, w = α (100 z + 50 z²/D) − κ r²/2 with
+/// κ = α ΔT/D. Returns the mesh, u, max |σ| / (E α ΔT) and the largest nodal displacement
+/// error relative to the largest exact displacement.
+fn bent_plate(kind: ElementKind, nr: usize, nz: usize) -> (Mesh, Vec<[f64; 2]>, f64, f64) {
+    let (mesh, th, mats) = gradient_plate(kind, nr, nz);
     let mut s = Supports::new(mesh.n_nodes());
     let n0 = mesh.bottom(0)[0];
     s.roller_z(n0);
@@ -202,14 +210,8 @@ fn fitted_curvature(mesh: &Mesh, u: &[[f64; 2]]) -> f64 {
 fn free_plate_under_a_gradient_bends_to_alpha_dt_over_d_exactly_on_q9() {
     // w is quadratic in r and z: in the Q9 space, so the exact field satisfies the discrete
     // equations: its residual K u − f_th is round-off of the element sums
-    let mut mesh = ring(ElementKind::Q9, 8, 2, D, false); // (affine elements: a curved map leaves r² outside the space)
-    let t: Vec<f64> = mesh
-        .nodes()
-        .iter()
-        .map(|x| 100.0 * (1.0 + x[1] / D))
-        .collect();
-    let th = Thermal::new(&mesh, vec![constant()], t, 0.0).unwrap();
-    let mats = th.apply(&mut mesh).unwrap();
+    // (affine elements: a curved map would leave r² outside the space)
+    let (mesh, th, mats) = gradient_plate(ElementKind::Q9, 8, 2);
     let kappa = ALPHA * 100.0 / D;
     let exact: Vec<[f64; 2]> = mesh
         .nodes()
