@@ -58,7 +58,7 @@ fn pressure_change(a: &TwoPlateSolution, b: &TwoPlateSolution) -> f64 {
 /// Rounding bounds. The free thermal displacement (α ΔT C ≈ 2e-3 in for ΔT = 150 °F) is ~200
 /// times the bolt-load displacements (~1e-5 in) whose differences make the gap and p: the
 /// solve's relative round-off (≤ 1.4e-10 measured on a floating plate in tests/fem/thermal.rs)
-/// can reach ~3e-8 of p. Measured: Δp/p_max ≤ 5.4e-9, ΔR_o/R_o ≤ 5.2e-11.
+/// can reach ~3e-8 of p. Measured: Δp/p_max ≤ 1.1e-8, ΔR_o/R_o ≤ 5.3e-11.
 const P_ROUNDING: f64 = 3e-8;
 const R_O_ROUNDING: f64 = 1e-9;
 
@@ -138,4 +138,62 @@ fn mirrored_gradients_move_r_o_the_way_the_rims_bend() {
         let f: f64 = s.force.iter().sum();
         assert!((f - total).abs() < 1e-8 * total, "{f} vs {total}");
     }
+}
+
+#[test]
+fn a_conduction_field_equals_the_linear_description_it_reproduces() {
+    // Heat through the stack (upper outer face 80 °F, lower outer face 67 °F, interface
+    // conductance h = 20 k/D): T is linear in each plate with a jump at the interface, which the
+    // conduction FE reproduces exactly; its grid (bilinear, exact on a linear field) must give the
+    // joint of the matching `Linear` temperatures.
+    use boltzone::contact::thermal::TemperatureGrid;
+    use boltzone::fem::{ElementKind, Mesh, PlateSpec, Spacing};
+    use boltzone::heat::conduction::solve_conduction;
+    let r = Spacing::uniform(0.1, 1.0, 6).unwrap();
+    let plates = [
+        PlateSpec {
+            z: Spacing::uniform(-0.1, 0.0, 3).unwrap(),
+            material: 0,
+        },
+        PlateSpec {
+            z: Spacing::uniform(0.0, 0.1, 3).unwrap(),
+            material: 1,
+        },
+    ];
+    let mesh = Mesh::structured(ElementKind::Q4, &r, &plates).unwrap();
+    let fixed: Vec<(usize, f64)> = mesh
+        .top(1)
+        .into_iter()
+        .map(|n| (n, 80.0))
+        .chain(mesh.bottom(0).into_iter().map(|n| (n, 67.0)))
+        .collect();
+    let heat = solve_conduction(&mesh, &[1.0, 1.0], &|_| 200.0, &fixed).unwrap();
+    let t = &heat.temperature;
+    // series resistances D/k, 1/h, D/k = 0.1, 0.005, 0.1: the interface faces
+    let q = 13.0 / 0.205;
+    let (t_up, t_lo) = (80.0 - 0.1 * q, 67.0 + 0.1 * q);
+    assert!(
+        (t[mesh.bottom(1)[2]] - t_up).abs() < 1e-10,
+        "{}",
+        t[mesh.bottom(1)[2]]
+    );
+    let grid =
+        |p, top| PlateTemperature::Field(TemperatureGrid::from_mesh(&mesh, p, t, top).unwrap());
+    let from_heat = with(grid(1, false), grid(0, true));
+    let linear = with(
+        PlateTemperature::Linear {
+            interface: t_up,
+            outer: 80.0,
+        },
+        PlateTemperature::Linear {
+            interface: t_lo,
+            outer: 67.0,
+        },
+    );
+    let (dr, dp) = (
+        (from_heat.r_o - linear.r_o).abs() / linear.r_o,
+        pressure_change(&from_heat, &linear),
+    );
+    println!("conduction field vs linear: ΔR_o/R_o = {dr:e}, Δp/p_max = {dp:e}");
+    assert!(dr < R_O_ROUNDING && dp < P_ROUNDING, "{dr:e}, {dp:e}");
 }
