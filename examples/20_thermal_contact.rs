@@ -18,9 +18,10 @@
 //!
 //! **What it shows.** A plate whose loaded face is hotter than its contact face bends with its rim
 //! toward the interface (free curvature α ΔT/D), so the rims of both plates close and the contact
-//! zone grows — at 0.4 °F the rims touch: a second contact at r = C, which the solver reports as
-//! R_o = C (full contact); a hotter interface lifts the rims and the zone shrinks. The scale that matters is
-//! E α ΔT against P: here a few tenths of a degree across a 0.1 in plate already move R_o by
+//! zone grows. At 0.4 °F the rims touch: the solver finds the interface closed at r = C and
+//! reports R_o = C ("full contact"), while the figure's pressure still ends near 0.36 in (zero
+//! out to 0.5 in): a contact in two parts, which R_o alone does not describe. A hotter interface
+//! lifts the rims and the zone shrinks. The scale that matters is E α ΔT against P: here a few tenths of a degree across a 0.1 in plate already move R_o by
 //! about a percent (the free plate's rim moves by α ΔT C²/(2D) = 6.5·10⁻⁵ in per °F, against
 //! bolt-load gaps of ~10⁻⁵ in). Uniform temperatures change nothing on a frictionless interface
 //! (each plate expands freely). Welded equal plates at different temperatures shear each other
@@ -63,7 +64,7 @@ fn row(name: &str, s: &TwoPlateSolution, iso: f64, secs: f64) {
     let pmax = s.pressure.iter().fold(0.0f64, |m, p| m.max(*p));
     let tmax = s.shear.iter().fold(0.0f64, |m, t| m.max(t.abs()));
     let note = if s.full_contact {
-        "  full contact (R_o = C)"
+        "  closed at the rim: reported R_o = C (the main zone ends near 0.36 in, figure)"
     } else {
         ""
     };
