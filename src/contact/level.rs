@@ -221,6 +221,11 @@ pub fn solve_level(
     let u = dofs.expand(&ties.prolong(&y));
     let line = mesh.bottom(model.upper);
     let mut forces = line_forces(model, &u, &line)?;
+    // Contact = K u − f: the part of K u the external forces (thermal ones) do not balance.
+    for (f, &n) in forces.iter_mut().zip(&line) {
+        f[0] -= loads.forces()[n][0];
+        f[1] -= loads.forces()[n][1];
+    }
     // A component held by a support (edge, axis) transmits that support's reaction, not contact.
     for (i, f) in forces.iter_mut().enumerate() {
         let (up, low) = model.pair(i);

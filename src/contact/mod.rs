@@ -13,7 +13,9 @@
 //! - [`two_plate`]: the model (symmetric pair on a rigid plane, unequal or dissimilar pairs
 //!   welded or frictionless, the report's load variants), level after level of a mesh refined at
 //!   R_o; [`level`]: one mesh level on [`crate::fem`] (one factorization, a Schur complement on
-//!   the interface window, the LCP); [`tie`]: tied unknowns of closed pairs.
+//!   the interface window, the LCP); [`tie`]: tied unknowns of closed pairs;
+//! - [`thermal`]: the model with a temperature field (uniform, linear through each plate, or
+//!   from heat conduction) and thermal strains.
 //!
 //! The semi-analytic check of the symmetric case is [`crate::hankel::receding`].
 //!
@@ -39,6 +41,7 @@ pub mod params;
 pub mod pgs;
 mod refine;
 pub mod separation;
+pub mod thermal;
 pub mod tie;
 pub mod two_plate;
 

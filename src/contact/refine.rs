@@ -22,11 +22,12 @@
 use super::error::ContactError;
 use super::level::{solve_level, LevelSetup, LevelSolution, Model};
 use super::params::{EdgeSupport, Loading, TwoPlateParams};
+use super::thermal::ScaledTemperature;
 use crate::fem::{Component, ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
 use crate::joint::Joint;
 
 /// Radii and thicknesses of the joint as meshed.
-pub(crate) struct MeshLayout {
+pub(crate) struct MeshLayout<'a> {
     pub a: f64,
     pub b: f64,
     pub c: f64,
@@ -36,6 +37,8 @@ pub(crate) struct MeshLayout {
     pub d: [f64; 2],
     pub two: bool,
     pub welded: bool,
+    /// The temperature field, if any ([`super::thermal`]; then `two`).
+    pub thermal: Option<&'a ScaledTemperature<'a>>,
 }
 
 /// What a level keeps of the one before it: its solution, its R_o estimate and element size.
@@ -114,10 +117,16 @@ pub(crate) fn solve_adaptive(
     g: &MeshLayout,
     params: &TwoPlateParams,
     prev: Option<&PreviousLevel>,
+    thermal: Option<&Loads>,
 ) -> Result<(LevelSolution, usize, usize), ContactError> {
     let r = model.mesh.radial_nodes().to_vec();
     let load = joint.load();
-    let (supports, loads) = boundary(model, joint, g, params)?;
+    let (supports, mut loads) = boundary(model, joint, g, params)?;
+    if let Some(t) = thermal {
+        for (n, f) in t.forces().iter().enumerate() {
+            loads.add_point(n, *f);
+        }
+    }
     let held: Vec<bool> = (0..r.len())
         .map(|i| {
             let (up, low) = model.pair(i);

@@ -54,6 +54,7 @@ use super::level::{LevelSolution, Model};
 pub use super::params::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use super::refine::{mesh, solve_adaptive, MeshLayout, PreviousLevel};
 use super::separation::{estimate, NodalInterface, SeparationEstimate};
+use super::thermal::{JointTemperature, ScaledTemperature};
 use crate::error::InputError;
 use crate::joint::{Joint, OuterRadius, Plate};
 use crate::numerics::convergence::{fitted_rate, level_estimate};
@@ -160,6 +161,15 @@ pub(crate) fn solve_keeping(
     joint: &Joint,
     params: &TwoPlateParams,
 ) -> Result<(TwoPlateSolution, UnitField), ContactError> {
+    solve_keeping_with(joint, params, None)
+}
+
+/// [`solve_keeping`] with an optional temperature field ([`super::thermal`]).
+pub(crate) fn solve_keeping_with(
+    joint: &Joint,
+    params: &TwoPlateParams,
+    temperature: Option<&JointTemperature>,
+) -> Result<(TwoPlateSolution, UnitField), ContactError> {
     check(params)?;
     let (up, lo) = (joint.upper(), joint.lower());
     let length = up.thickness().min(lo.thickness());
@@ -210,16 +220,22 @@ pub(crate) fn solve_keeping(
         },
         ..*params
     };
-    let (mut s, (model, last)) = solve_unit(&scaled, &scaled_params).map_err(|e| match e {
-        ContactError::WindowExhausted { radius } => ContactError::WindowExhausted {
-            radius: radius * length,
-        },
-        ContactError::ReferenceInTension { radius, reaction } => ContactError::ReferenceInTension {
-            radius: radius * length,
-            reaction: reaction * stress * length * length,
-        },
-        e => e,
-    })?;
+    let thermal = temperature
+        .map(|t| ScaledTemperature::new(t, length, modulus, stress))
+        .transpose()?;
+    let (mut s, (model, last)) =
+        solve_unit(&scaled, &scaled_params, thermal.as_ref()).map_err(|e| match e {
+            ContactError::WindowExhausted { radius } => ContactError::WindowExhausted {
+                radius: radius * length,
+            },
+            ContactError::ReferenceInTension { radius, reaction } => {
+                ContactError::ReferenceInTension {
+                    radius: radius * length,
+                    reaction: reaction * stress * length * length,
+                }
+            }
+            e => e,
+        })?;
     let displacement = length * stress / modulus;
     s.r_o *= length;
     s.r_o_error *= length;
@@ -272,9 +288,10 @@ fn solve_level_at(
     h: f64,
     prev: Option<&PreviousLevel>,
 ) -> Result<Level, ContactError> {
-    let model = mesh(joint, g, params.element, h, prev.map(|p| p.r_o))?;
+    let mut model = mesh(joint, g, params.element, h, prev.map(|p| p.r_o))?;
+    let thermal = g.thermal.map(|t| t.apply(&mut model)).transpose()?;
     let nodes = model.mesh.n_nodes();
-    let (sol, window, attempts) = solve_adaptive(&model, joint, g, params, prev)?;
+    let (sol, window, attempts) = solve_adaptive(&model, joint, g, params, prev, thermal.as_ref())?;
     let est = match separation(&sol) {
         Some(est) => est,
         // Closed out to the rim: full contact, R_o = C (an answer, not a failure).
@@ -361,12 +378,14 @@ fn truncation(
 fn solve_unit(
     joint: &Joint,
     params: &TwoPlateParams,
+    thermal: Option<&ScaledTemperature>,
 ) -> Result<(TwoPlateSolution, (Model, LevelSolution)), ContactError> {
     let start = Instant::now();
     let load = joint.load();
     let (a, b) = (joint.hole_radius(), load.outer());
     let d = [joint.upper().thickness(), joint.lower().thickness()];
-    let two = params.both_plates || !joint.is_symmetric();
+    // (a temperature field breaks the mirror symmetry of the one-plate model)
+    let two = params.both_plates || !joint.is_symmetric() || thermal.is_some();
     let c = match joint.outer_radius() {
         OuterRadius::Finite(c) => c,
         OuterRadius::Infinite => f64::INFINITY,
@@ -379,6 +398,7 @@ fn solve_unit(
         d,
         two,
         welded: two && params.interface == InterfaceModel::Welded,
+        thermal,
     };
     let h0 = params.coarse * d[0].min(d[1]);
     let (cut, truncation_error) = truncation(joint, &g, params, c, h0)?;

@@ -107,6 +107,7 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
     }
     check_model(scene, &c)?;
     check_heat(scene, &c)?;
+    super::temperature::check(scene, text)?;
     check_outputs(scene, &c)
 }
 

@@ -223,6 +223,9 @@ pub struct Scene {
     /// The surfaces and contact conductance law ([`super::heat`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub heat: Option<super::heat::HeatSpec>,
+    /// Plate temperatures (two-plate model with thermal strains; [`super::temperature`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub temperature: Option<super::temperature::TemperatureSpec>,
     /// Dotted keys mapped to lists of values; the product of the lists is solved.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub sweep: BTreeMap<String, Vec<toml::Value>>,

@@ -16,6 +16,7 @@ use super::field::{self, Midplane};
 use super::file::{InterfaceKind, MaterialSpec, Method, Model, ProfileKind, Scene};
 use super::materials;
 use super::units::UnitSystem;
+use crate::contact::thermal;
 use crate::contact::two_plate::{self, EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use crate::fem::single::{self as fem_single, FaceCondition, SingleParams};
 use crate::hankel::hole::{single_plate_separation, HoleParams};
@@ -251,14 +252,17 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
     let other = match (scene.model, method) {
         (Model::TwoPlate, _) => {
             let params = two_plate_params(scene, nut);
-            let s = match scene.outputs.field {
-                Some(_) => {
+            let s = match (&scene.temperature, &scene.outputs.field) {
+                (Some(t), _) => {
+                    thermal::solve_with_temperature(&joint, &params, &t.joint_temperature(&joint)?)?
+                }
+                (None, Some(_)) => {
                     let (s, f) = crate::contact::field::solve_field(&joint, &params)?;
                     let (grid, _) = field::two_plate_grid(&s, &f)?;
                     out.field = Some(field::scaled(grid, l, scene.units.stress()));
                     s
                 }
-                None => two_plate::solve(&joint, &params)?,
+                (None, None) => two_plate::solve(&joint, &params)?,
             };
             (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
             out.full_contact = Some(s.full_contact);

@@ -5,4 +5,5 @@ mod cli;
 mod lcp;
 mod receding_vs_fe;
 mod separation;
+mod thermal;
 mod two_plate;

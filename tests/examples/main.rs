@@ -197,3 +197,13 @@ fn ex18_heat_speed() {
     quick();
     ex18::main().unwrap();
 }
+
+#[allow(dead_code)]
+#[path = "../../examples/20_thermal_contact.rs"]
+mod ex20;
+
+#[test]
+fn ex20_thermal_contact() {
+    quick();
+    ex20::main().unwrap();
+}
