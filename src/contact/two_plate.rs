@@ -141,6 +141,9 @@ pub struct TwoPlateSolution {
     pub gap: Vec<f64>,
     /// Mean axial displacement under the nut (upper plate, negative toward the interface).
     pub nut_deflection: f64,
+    /// With [`InterfaceModel::Friction`] on two meshed plates: stick and slip zones and the slip.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction: Option<super::friction::FrictionZones>,
     /// The study's record.
     pub info: TwoPlateInfo,
 }
@@ -231,6 +234,9 @@ pub(crate) fn solve_keeping(
     s.shear.iter_mut().for_each(|t| *t *= stress);
     s.gap.iter_mut().for_each(|g| *g *= displacement);
     s.nut_deflection *= displacement;
+    if let Some(f) = &mut s.friction {
+        f.slip.iter_mut().for_each(|x| *x *= displacement);
+    }
     s.info.cut = s.info.cut.map(|c| c * length);
     s.info.truncation_error *= length;
     for l in &mut s.info.levels {
@@ -461,11 +467,17 @@ fn solve_unit(
         shear: sol.shear.clone(),
         gap: sol.gap.iter().map(|x| gap_factor * x).collect(),
         nut_deflection: sol.nut_deflection,
+        friction: params
+            .interface
+            .friction_coefficient()
+            .and_then(|mu| super::friction_level::zones(&model, &sol, mu)),
         info: TwoPlateInfo {
             model: if !g.two {
                 "symmetric (one plate on a rigid frictionless plane)"
             } else if g.welded {
                 "welded"
+            } else if params.interface.friction_coefficient().is_some() {
+                "friction"
             } else {
                 "frictionless"
             },
@@ -528,6 +540,11 @@ fn check(p: &TwoPlateParams) -> Result<(), InputError> {
             p.max_levels as f64,
             "need 1 ≤ min_levels ≤ max_levels ≤ 14",
         );
+    }
+    if let Some(mu) = p.interface.friction_coefficient() {
+        if !(mu >= 0.0 && mu.is_finite()) {
+            return bad("TwoPlateParams::interface mu", mu, "must be finite and ≥ 0");
+        }
     }
     if let Loading::NutDisplacement(v) = p.loading {
         crate::error::positive("nut displacement", v)?;
