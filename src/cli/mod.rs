@@ -5,6 +5,7 @@ mod check;
 mod deck;
 pub mod exit;
 mod figure;
+mod friction_out;
 mod map;
 mod output;
 mod report;
