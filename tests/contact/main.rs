@@ -3,6 +3,7 @@
 
 mod cli;
 mod friction;
+mod friction_cli;
 mod lcp;
 mod receding_vs_fe;
 mod separation;
