@@ -57,13 +57,14 @@
 //!     held: None,
 //! };
 //! let s = solve_friction(&p, &LcpParams::default())?;
-//! assert!((s.force[0] - 1.0).abs() < 1e-15 && (s.force[1] + 0.5).abs() < 1e-15);
+//! let f = &s.lcp.force;
+//! assert!((f[0] - 1.0).abs() < 1e-15 && (f[1] + 0.5).abs() < 1e-15);
 //! assert_eq!(s.state, vec![PointState::SlipOut]);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::error::ContactError;
-use super::lcp::{LcpInfo, LcpParams};
+use super::lcp::{LcpInfo, LcpParams, LcpSolution};
 use crate::error::InputError;
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
@@ -130,15 +131,12 @@ pub struct FrictionZones {
 /// The solution of a [`FrictionProblem`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct FrictionSolution {
-    /// Forces λ in the order of F.
-    pub force: DVector<f64>,
-    /// Gaps and slips g⁰ + F λ in the order of F.
-    pub gap: DVector<f64>,
+    /// Forces λ and gaps and slips g⁰ + F λ in the order of F, the closed points, and the
+    /// iteration record (`residual`: the largest relative violation of the conditions, see
+    /// [`FrictionProblem::residual`]).
+    pub lcp: LcpSolution,
     /// The state of each point (m, then the held point).
     pub state: Vec<PointState>,
-    /// Iteration record (`prefix` and `murty` as in [`LcpInfo`]; `residual` is the largest
-    /// relative violation of the conditions, see [`FrictionProblem::residual`]).
-    pub info: LcpInfo,
 }
 
 impl FrictionProblem {
@@ -277,14 +275,7 @@ pub fn solve_friction(
     params: &LcpParams,
 ) -> Result<FrictionSolution, ContactError> {
     p.check()?;
-    if !(params.tolerance.is_finite() && params.tolerance > 0.0 && params.tolerance < 1.0) {
-        return Err(InputError::Parameter {
-            field: "LcpParams::tolerance",
-            value: params.tolerance,
-            reason: "must lie in (0, 1)",
-        }
-        .into());
-    }
+    params.check()?;
     let start = Instant::now();
     let m = p.points();
     let nt = m + usize::from(p.held.is_some());
@@ -336,11 +327,15 @@ pub fn solve_friction(
             info.residual = p.residual(&x, &g);
             info.active = (0..m).filter(|&k| state[k].closed()).count();
             info.time = start.elapsed();
+            let active = state[..m].iter().map(|s| s.closed()).collect();
             return Ok(FrictionSolution {
-                force: x,
-                gap: g,
+                lcp: LcpSolution {
+                    force: x,
+                    gap: g,
+                    active,
+                    info,
+                },
                 state,
-                info,
             });
         }
         seen.insert(state.clone());
@@ -418,9 +413,9 @@ pub fn solve_friction_incremental(
         }
         let mut sol = solve_friction(&step, params)?;
         for (j, s) in slip.iter().enumerate() {
-            sol.gap[m + j] += s;
+            sol.lcp.gap[m + j] += s;
         }
-        slip.copy_from(&sol.gap.rows(m, slip.len()));
+        slip.copy_from(&sol.lcp.gap.rows(m, slip.len()));
         last = Some(sol);
     }
     last.ok_or(ContactError::NotConverged {

@@ -77,16 +77,7 @@ pub(crate) fn solve(
     if let Some(i) = held_line {
         states[i] = s.state[m];
     }
-    let active = s.state[..m].iter().map(|st| st.closed()).collect();
-    Ok((
-        LcpSolution {
-            force: s.force,
-            gap: s.gap,
-            active,
-            info: s.info,
-        },
-        states,
-    ))
+    Ok((s.lcp, states))
 }
 
 /// The next level's tied points and window under friction: the reference alone (when

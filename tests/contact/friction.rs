@@ -13,17 +13,7 @@ use boltzone::contact::LcpParams;
 use boltzone::{reference, FaceLoad, Joint, Material, OuterRadius, Plate};
 use nalgebra::{DMatrix, DVector};
 
-/// A small deterministic generator (no dependency): 64-bit LCG, uniform in [-1, 1).
-struct Lcg(u64);
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
-    }
-}
+use super::lcp::Lcg;
 
 /// A random problem of `m` points (and a held point when `held`): F = B Bᵀ + I, normal gaps
 /// mostly penetrating, slips of either sign.
@@ -132,17 +122,17 @@ fn agrees_with_enumeration_of_all_states() {
             Err(e) => panic!("trial {trial}: {e}; enumeration: {all:?} {p:?}"),
         };
         assert!(
-            s.info.residual < 1e-12,
+            s.lcp.info.residual < 1e-12,
             "trial {trial}: residual {}",
-            s.info.residual
+            s.lcp.info.residual
         );
         // the solver's answer is one of the enumerated solutions...
         let best = all
             .iter()
-            .map(|y| (y - &s.force).amax())
+            .map(|y| (y - &s.lcp.force).amax())
             .fold(f64::INFINITY, f64::min);
         assert!(
-            best < 1e-10 * s.force.amax().max(1.0),
+            best < 1e-10 * s.lcp.force.amax().max(1.0),
             "trial {trial}: {best:e} from {} solutions",
             all.len()
         );
@@ -166,16 +156,17 @@ fn one_point_closed_forms() {
         };
         let s = solve_friction(&p, &LcpParams::default()).unwrap();
         let det = a * d - b * b;
-        let (ln, lt) = ((-d * -1.0 + b * s0) / det, (b * -1.0 - a * s0) / det);
+        let g0 = -1.0;
+        let (ln, lt) = ((-d * g0 + b * s0) / det, (b * g0 - a * s0) / det);
         let (en, et) = if lt.abs() <= mu * ln {
             (ln, lt)
         } else {
             let sigma = -lt.signum(); // the slip's sign
-            let ln = 1.0 / (a - sigma * b * mu);
+            let ln = -g0 / (a - sigma * b * mu);
             (ln, -sigma * mu * ln)
         };
         assert!(
-            (s.force[0] - en).abs() < 1e-14 && (s.force[1] - et).abs() < 1e-14,
+            (s.lcp.force[0] - en).abs() < 1e-14 && (s.lcp.force[1] - et).abs() < 1e-14,
             "{s0} {mu}"
         );
     }
@@ -189,9 +180,9 @@ fn proportional_loading_needs_one_increment() {
         let one = solve_friction(&p, &LcpParams::default()).unwrap();
         for steps in [2, 5, 20] {
             let inc = solve_friction_incremental(&p, &LcpParams::default(), steps).unwrap();
-            let d = (&inc.force - &one.force).amax();
+            let d = (&inc.lcp.force - &one.lcp.force).amax();
             assert!(
-                d < 1e-12 * one.force.amax(),
+                d < 1e-12 * one.lcp.force.amax(),
                 "trial {trial}, {steps} steps: {d:e}"
             );
             assert_eq!(inc.state, one.state);
