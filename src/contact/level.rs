@@ -106,7 +106,7 @@ pub struct LevelSolution {
     /// Interface pressure: force / tributary area.
     pub pressure: Vec<f64>,
     /// Interface shear stress on the upper plate (radial force / tributary area; outward > 0):
-    /// zero for frictionless contact, the welded model's shear otherwise.
+    /// zero for frictionless contact, the welded or frictional model's shear otherwise.
     pub shear: Vec<f64>,
     /// Gap w_upper − w_lower (rigid plane: w_upper).
     pub gap: Vec<f64>,

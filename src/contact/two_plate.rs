@@ -8,7 +8,8 @@
 //! - **Unequal or dissimilar plates** (Fig. 5(c)): both plates meshed, coincident interface node
 //!   pairs, either [`InterfaceModel::Welded`] (u and w tied inside the contact zone: the report's
 //!   model, exact when friction prevents slip) or [`InterfaceModel::Frictionless`] (only w tied,
-//!   unilaterally). The head presses the upper plate's outer face, the nut the lower one's.
+//!   unilaterally), or [`InterfaceModel::Friction`] (Coulomb friction of coefficient μ:
+//!   [`super::friction`]). The head presses the upper plate's outer face, the nut the lower one's.
 //! - Loads: the joint's face pressure (uniform or triangular with the peak at A or B, Figs. 19–20)
 //!   or a uniform displacement under the nut (Fig. 21); outer edge free or fixed (Fig. 20(c)).
 //!
@@ -95,7 +96,8 @@ pub struct TwoPlateLevel {
 /// The record of [`solve`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct TwoPlateInfo {
-    /// Which model ran: "symmetric (one plate on a rigid frictionless plane)", "welded", "frictionless".
+    /// Which model ran: "symmetric (one plate on a rigid frictionless plane)", "welded",
+    /// "frictionless", "friction".
     pub model: &'static str,
     /// The levels, coarse to fine.
     pub levels: Vec<TwoPlateLevel>,
@@ -134,7 +136,7 @@ pub struct TwoPlateSolution {
     /// Interface pressure p(r) (force / tributary area; 0 where open).
     pub pressure: Vec<f64>,
     /// Interface shear stress τ on the upper plate (outward > 0): zero for frictionless and
-    /// symmetric contact, the welded model's shear stress inside the contact zone.
+    /// symmetric contact, the welded or frictional model's shear stress inside the contact zone.
     pub shear: Vec<f64>,
     /// Gap g(r) between the two plates (0 in contact); for the symmetric model twice the lift
     /// of the one plate off the plane.
