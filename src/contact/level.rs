@@ -81,7 +81,7 @@ impl Model {
 /// What the level needs to know besides the mesh.
 #[derive(Debug, Clone)]
 pub struct LevelSetup<'a> {
-    /// Radial lines of tied interface points (non-empty).
+    /// Radial lines of tied interface points (non-empty unless supports hold the stack).
     pub tied: &'a [usize],
     /// Radial lines of the LCP unknowns.
     pub window: &'a [usize],

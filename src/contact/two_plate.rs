@@ -236,6 +236,7 @@ pub(crate) fn solve_keeping(
     s.shear.iter_mut().for_each(|t| *t *= stress);
     s.gap.iter_mut().for_each(|g| *g *= displacement);
     s.nut_deflection *= displacement;
+    s.overlap *= displacement;
     if let Some(f) = &mut s.friction {
         f.slip.iter_mut().for_each(|x| *x *= displacement);
     }
