@@ -6,6 +6,7 @@ mod deck;
 pub mod exit;
 mod figure;
 mod figures;
+mod friction_out;
 mod hankel_curve;
 mod joint_figs;
 mod map;

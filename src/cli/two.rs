@@ -4,7 +4,7 @@
 
 use super::args::{Element, Geometry, OutputFiles};
 use super::check;
-use super::exit::{sig, Status};
+use super::exit::{sig, usage, Status};
 use super::joint_figs::JointFigure;
 use boltzone::contact::two_plate::{
     solve, solve_field, EdgeSupport, InterfaceModel, Loading, TwoPlateField, TwoPlateParams,
@@ -24,6 +24,8 @@ pub enum Interface {
     Welded,
     /// Only w tied, unilaterally; no shear.
     Frictionless,
+    /// Unilateral contact with Coulomb friction of coefficient --mu.
+    Friction,
 }
 
 /// Shape of the bearing pressure under head and nut.
@@ -81,6 +83,9 @@ pub struct Args {
     /// dissimilar materials).
     #[arg(long, value_enum, default_value_t = Interface::Frictionless)]
     interface: Interface,
+    /// Coulomb friction coefficient μ ≥ 0 (with --interface friction only).
+    #[arg(long)]
+    mu: Option<f64>,
     /// Element type (q9: the only one whose R_o error estimate is reliable; the linear ones are
     /// cheaper but can miss the tolerance by a factor of three).
     #[arg(long, value_enum, default_value_t = Element::Q9)]
@@ -136,6 +141,26 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
         check::positive("--nut-displacement", "nut displacement", n)?;
     }
     check::tolerance("--tol", args.tol)?;
+    match (args.interface, args.mu) {
+        (Interface::Friction, Some(mu)) => {
+            check::non_negative("--mu", "friction coefficient mu", mu)?;
+        }
+        (Interface::Friction, None) => {
+            return usage(
+                "--interface",
+                "friction",
+                "needs the friction coefficient --mu M",
+            );
+        }
+        (_, Some(mu)) => {
+            return usage(
+                "--mu",
+                mu,
+                "a friction coefficient needs --interface friction",
+            );
+        }
+        (_, None) => {}
+    }
     check::domain(
         g.a,
         g.b,
@@ -182,6 +207,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         interface: match args.interface {
             Interface::Welded => InterfaceModel::Welded,
             Interface::Frictionless => InterfaceModel::Frictionless,
+            Interface::Friction => InterfaceModel::Friction {
+                mu: args.mu.unwrap_or(0.0),
+            },
         },
         loading: args
             .nut_displacement
@@ -272,6 +300,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         if let Some(q) = r_o_over_a {
             out["r_o_over_a"] = q.into();
         }
+        if let Some(f) = &s.friction {
+            super::friction_out::json(&mut out, &s, f)?;
+        }
         out["bearing_pressure"] = p.into();
         super::output::stamp(&mut out, &args, start)?;
         super::print_json(&out)?;
@@ -301,7 +332,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             println!(
                 "WARNING: no sign-consistent contact edge (welded dissimilar plates have an \
                  oscillatory edge singularity){}; the welded model is ill-posed here: use \
-                 --interface frictionless (or the frictional model when it lands)",
+                 --interface frictionless or --interface friction --mu M",
                 if s.overlap > 0.0 {
                     format!(", the plates overlap by {:.2e} in", s.overlap)
                 } else {
@@ -311,6 +342,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         }
         if s.full_contact {
             println!("full contact: the plates touch out to the rim, R_o = C");
+        }
+        if let Some(f) = &s.friction {
+            println!("{}", super::friction_out::summary(&s, f));
         }
         println!("deflection under the nut: {:.4e} in", s.nut_deflection);
     }
@@ -390,11 +424,14 @@ fn curve_csv(s: &TwoPlateSolution, p: f64) -> String {
         ),
         format!(
             "p = interface pressure (compression > 0), g = gap between the plates, tau = \
-             interface shear on the upper plate (welded model, 0 otherwise); bearing pressure P = \
+             interface shear on the upper plate (welded and friction models, 0 otherwise); bearing pressure P = \
              {p:e} psi"
         ),
         super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
     ];
+    if let Some(f) = &s.friction {
+        return super::friction_out::curve_csv(s, f, &notes);
+    }
     let rows: Vec<Vec<f64>> = (0..s.radius.len())
         .map(|i| vec![s.radius[i], s.pressure[i], s.gap[i], s.shear[i]])
         .collect();

@@ -7,6 +7,7 @@
 //!
 //! - [`lcp`]: the interface LCP g = g⁰ + Fλ solved by primal–dual active sets (semismooth Newton)
 //!   with a Murty fallback; [`pgs`]: projected Gauss–Seidel as an independent check;
+//! - [`friction`]: Coulomb friction on the interface (open, stick and slip states);
 //! - [`separation`]: R_o finer than one element from the √(R_o − r) pressure and the
 //!   (r − R_o)^{3/2} gap of a smooth separation;
 //! - [`params`]: the model's input (interface model, loading, edge support, study knobs);
@@ -35,6 +36,8 @@
 
 mod error;
 pub mod field;
+pub mod friction;
+mod friction_level;
 pub mod lcp;
 pub mod level;
 pub mod params;

@@ -20,7 +20,8 @@
 //! ```
 
 use super::error::ContactError;
-use super::level::{solve_level, LevelSetup, LevelSolution, Model};
+use super::friction_level;
+use super::level::{solve_level_mu, LevelSetup, LevelSolution, Model};
 use super::params::{EdgeSupport, Loading, TwoPlateParams};
 use super::thermal::ScaledTemperature;
 use crate::fem::{Component, ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
@@ -136,14 +137,20 @@ pub(crate) fn solve_adaptive(
         })
         .collect();
     // First choice: from the previous level; fallback: one reference point under the load.
-    let mut plan = prev.and_then(|p| refined_plan(&r, p));
     let mut reference = nearest(&r, centroid(load));
+    let fix_rigid = params.edge == EdgeSupport::Free && params.loading == Loading::Pressure;
+    let mu = params.interface.friction_coefficient().filter(|_| g.two);
+    let mut plan = match mu {
+        None => prev.and_then(|p| refined_plan(&r, p)),
+        Some(_) => prev.map(|p| friction_level::plan(&r, reference, fix_rigid, p.r_o + 6.0 * p.h)),
+    };
     let mut r_win = (g.b + params.window * g.d[0].max(g.d[1])).min(g.c);
     let mut tries = 0;
     loop {
         tries += 1;
         let (mut tied, mut window) = match &plan {
             Some(p) => p.clone(),
+            None if mu.is_some() => friction_level::plan(&r, reference, fix_rigid, r_win),
             None => (
                 vec![reference],
                 (0..r.len())
@@ -158,11 +165,11 @@ pub(crate) fn solve_adaptive(
             tied: &tied,
             window: &window,
             welded: g.welded,
-            fix_rigid: params.edge == EdgeSupport::Free && params.loading == Loading::Pressure,
+            fix_rigid,
             lcp: params.lcp,
             nut: (g.a, g.b),
         };
-        let sol = solve_level(model, &setup, &supports, &loads)?;
+        let sol = solve_level_mu(model, &setup, mu, &supports, &loads)?;
         let fmax = sol.force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
         let gmax = sol.gap.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         // Round-off level of the checks: the LCP's own tolerance.

@@ -8,7 +8,8 @@
 //! - **Unequal or dissimilar plates** (Fig. 5(c)): both plates meshed, coincident interface node
 //!   pairs, either [`InterfaceModel::Welded`] (u and w tied inside the contact zone: the report's
 //!   model, exact when friction prevents slip) or [`InterfaceModel::Frictionless`] (only w tied,
-//!   unilaterally). The head presses the upper plate's outer face, the nut the lower one's.
+//!   unilaterally), or [`InterfaceModel::Friction`] (Coulomb friction of coefficient μ:
+//!   [`super::friction`]). The head presses the upper plate's outer face, the nut the lower one's.
 //! - Loads: the joint's face pressure (uniform or triangular with the peak at A or B, Figs. 19–20)
 //!   or a uniform displacement under the nut (Fig. 21); outer edge free or fixed (Fig. 20(c)).
 //!
@@ -96,7 +97,8 @@ pub struct TwoPlateLevel {
 /// The record of [`solve`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct TwoPlateInfo {
-    /// Which model ran: "symmetric (one plate on a rigid frictionless plane)", "welded", "frictionless".
+    /// Which model ran: "symmetric (one plate on a rigid frictionless plane)", "welded",
+    /// "frictionless", "friction".
     pub model: &'static str,
     /// The levels, coarse to fine.
     pub levels: Vec<TwoPlateLevel>,
@@ -135,13 +137,16 @@ pub struct TwoPlateSolution {
     /// Interface pressure p(r) (force / tributary area; 0 where open).
     pub pressure: Vec<f64>,
     /// Interface shear stress τ on the upper plate (outward > 0): zero for frictionless and
-    /// symmetric contact, the welded model's shear stress inside the contact zone.
+    /// symmetric contact, the welded or frictional model's shear stress inside the contact zone.
     pub shear: Vec<f64>,
     /// Gap g(r) between the two plates (0 in contact); for the symmetric model twice the lift
     /// of the one plate off the plane.
     pub gap: Vec<f64>,
     /// Mean axial displacement under the nut (upper plate, negative toward the interface).
     pub nut_deflection: f64,
+    /// With [`InterfaceModel::Friction`] on two meshed plates: stick and slip zones and the slip.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction: Option<super::friction::FrictionZones>,
     /// The study's record.
     pub info: TwoPlateInfo,
 }
@@ -247,6 +252,10 @@ pub(crate) fn solve_keeping_with(
     s.shear.iter_mut().for_each(|t| *t *= stress);
     s.gap.iter_mut().for_each(|g| *g *= displacement);
     s.nut_deflection *= displacement;
+    s.overlap *= displacement;
+    if let Some(f) = &mut s.friction {
+        f.slip.iter_mut().for_each(|x| *x *= displacement);
+    }
     s.info.cut = s.info.cut.map(|c| c * length);
     s.info.truncation_error *= length;
     for l in &mut s.info.levels {
@@ -481,11 +490,17 @@ fn solve_unit(
         shear: sol.shear.clone(),
         gap: sol.gap.iter().map(|x| gap_factor * x).collect(),
         nut_deflection: sol.nut_deflection,
+        friction: params
+            .interface
+            .friction_coefficient()
+            .and_then(|mu| super::friction_level::zones(&model, &sol, mu)),
         info: TwoPlateInfo {
             model: if !g.two {
                 "symmetric (one plate on a rigid frictionless plane)"
             } else if g.welded {
                 "welded"
+            } else if params.interface.friction_coefficient().is_some() {
+                "friction"
             } else {
                 "frictionless"
             },
@@ -548,6 +563,11 @@ fn check(p: &TwoPlateParams) -> Result<(), InputError> {
             p.max_levels as f64,
             "need 1 ≤ min_levels ≤ max_levels ≤ 14",
         );
+    }
+    if let Some(mu) = p.interface.friction_coefficient() {
+        if !(mu >= 0.0 && mu.is_finite()) {
+            return bad("TwoPlateParams::interface mu", mu, "must be finite and ≥ 0");
+        }
     }
     if let Loading::NutDisplacement(v) = p.loading {
         crate::error::positive("nut displacement", v)?;

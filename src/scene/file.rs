@@ -66,6 +66,8 @@ pub enum InterfaceKind {
     Frictionless,
     /// u and w tied inside the contact zone (the report's model).
     Welded,
+    /// Coulomb friction with `joint.mu`.
+    Friction,
 }
 
 /// `[hole]`.
@@ -138,6 +140,9 @@ pub struct JointSpec {
     /// Interface model (default frictionless).
     #[serde(default)]
     pub interface: InterfaceKind,
+    /// Friction coefficient μ ≥ 0 (with `interface = "friction"` only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mu: Option<f64>,
     /// Fix the outer edge r = C (report Fig. 20(c); default false).
     #[serde(default)]
     pub fixed_edge: bool,

@@ -159,6 +159,9 @@ pub fn two_plate_params(scene: &Scene, nut: Option<f64>) -> TwoPlateParams {
         interface: match scene.joint.interface {
             InterfaceKind::Welded => InterfaceModel::Welded,
             InterfaceKind::Frictionless => InterfaceModel::Frictionless,
+            InterfaceKind::Friction => InterfaceModel::Friction {
+                mu: scene.joint.mu.unwrap_or(0.0),
+            },
         },
         loading: nut.map_or(Loading::Pressure, Loading::NutDisplacement),
         edge: if scene.joint.fixed_edge {

@@ -207,3 +207,13 @@ fn ex20_thermal_contact() {
     quick();
     ex20::main().unwrap();
 }
+
+#[allow(dead_code)]
+#[path = "../../examples/21_friction.rs"]
+mod ex21;
+
+#[test]
+fn ex21_friction() {
+    quick();
+    ex21::main().unwrap();
+}
