@@ -1,0 +1,705 @@
+//! The two-plate model WITH the hole, semi-analytically: two equal plates D thick, hole radius A,
+//! frictionless interface, pressed by p(r) on A ≤ r ≤ B — the report's own problem (Ch. II.B,
+//! Table 1's two-plate column) — and its separation radius R_o.
+//!
+//! **Problem.** By symmetry one plate A ≤ r, 0 ≤ z ≤ D on a frictionless rigid plane: top face
+//! σ_z = −p, τ_rz = 0; hole free; bottom τ_rz = 0, w = 0 on A ≤ r ≤ R_o (contact) and σ_z = 0
+//! beyond; R_o where the contact pressure ends like √(R_o − r). Reflected in the plane, it is the
+//! single plate 2D thick of [`crate::hankel::hole`] with its midplane cut for r > R_o. It lives
+//! here, beside the receding solver it extends, because its unknown and its root condition are
+//! that solver's (the Abel function φ of a contact disk and its edge value φ(c)).
+//!
+//! **Method** (superposition; compression negative, w upward, lengths in the units of D).
+//! For a trial contact radius c the solution is the sum of
+//! 1. the *bilateral* holed plate: the single plate with the hole, midplane held everywhere
+//!    ([`HolePlate`]: slab + Papkovich–Fadle modes + corner enrichment), midplane stress s₀(r);
+//! 2. the *crack field* X of a layer without hole on the plane, in contact on r ≤ c and pressed
+//!    on its bottom r > c by l(r) = s₀(r) + σ_z^Z(r, 0): the receding layer's Fredholm equation
+//!    ([`super::system`]) with a bottom load instead of a top one (Abel function
+//!    φ = ψ + H_l, H_l(t) = −(2/π)∫_c^∞ l(s) s ds/√(s² − t²) the half-space part, whose √(c − t)
+//!    behaviour is taken out so that ψ is smooth and Nyström converges geometrically);
+//! 3. a *hole correction* Z of X: Lamé + symmetric Papkovich–Fadle modes of the 2D slab + the
+//!    corner enrichment at (A, D) ([`crate::hankel::hole::fit`]), which keep w = τ_rz = 0 on the
+//!    plane and so leave the contact condition alone, fitted to cancel X's traction on r = A
+//!    (computed with [`super::layer_field`] at Chebyshev heights and interpolated: X is analytic
+//!    in z across the plane, where its ξ-integrals converge slowly).
+//!
+//! The total is free on r > c exactly because of l's definition; Z's own σ_z there feeds back into
+//! l, so 2–3 are iterated (a contraction: X's traction on the hole and Z's stress beyond c both
+//! decay over c − A). The edge coefficient of the total is X's φ(c); R_o is its root, by the
+//! receding solver's scan and Brent search.
+//!
+//! **Error control.** R_o's estimate adds (a) the change from a run with ⌈3n/4⌉ Nyström points,
+//! (b) the change from a run with half the hole modes (the bilateral plate and Z), (c) the root
+//! tolerance; the residual traction on the hole is measured on the fit's check heights.
+//!
+//! **Accuracy.** `tests/hankel/two_plate_hole.rs`: A → 0 reproduces the receding solver, the
+//! contact force balances the load; against the FE two-plate model in
+//! `examples/19_two_plate_hankel.rs`. **Cost.** Seconds per geometry in this first version (the
+//! crack field's transforms are brute-force quadratures; see the example).
+//!
+//! ```no_run
+//! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+//! use boltzone::hankel::receding::holed::{two_plate_hole, HoledParams};
+//! let load = FaceLoad::uniform(0.1, 0.31, 1.0)?;
+//! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3)?, load)?;
+//! let out = two_plate_hole(&plate, &HoledParams::default())?;
+//! assert!(out.r_o > 0.31 && out.info.error < 1e-5 * out.r_o);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use super::contact::RecedingError;
+use super::layer_field::bottom_kernels;
+use super::search::{root, Scan};
+use super::system::{cos_m1, Nystrom, XiRule};
+use crate::error::InputError;
+use crate::hankel::hole::corner::CornerLoads;
+use crate::hankel::hole::eigen::{symmetric_roots, Mode};
+use crate::hankel::hole::fit::{fit, heights, Boundary, Fit, HoleData};
+use crate::hankel::hole::{HoleParams, HolePlate};
+use crate::hankel::midplane::MidplaneCurve;
+use crate::hankel::transform::LoadTransform;
+use crate::joint::{OuterRadius, SinglePlate};
+use crate::load::FaceLoad;
+use crate::numerics::quadrature::gauss_legendre;
+use std::f64::consts::{FRAC_2_PI, PI};
+use std::time::Instant;
+
+/// Knobs of [`two_plate_hole`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HoledParams {
+    /// The hole correction: modes N (`terms`, default 16 here) and corner terms, for both the
+    /// bilateral plate and the crack field's correction.
+    pub hole: HoleParams,
+    /// Nyström points on [0, c] (default 24).
+    pub nodes: usize,
+    /// Chebyshev heights on [−D, D] at which the crack field's hole traction is integrated
+    /// (default 24; even).
+    pub heights: usize,
+    /// Root tolerance on R_o relative to D (default 1e-10).
+    pub rel_tol: f64,
+    /// The crack iteration stops when φ(c) changes by less than this fraction of p̄(0)/c
+    /// (default 1e-12).
+    pub iteration_tol: f64,
+    /// Iterations allowed per contact radius (default 60).
+    pub max_iterations: usize,
+    /// Scan step as a fraction of D (default 0.25).
+    pub step: f64,
+    /// The scan gives up at B + `reach`·D (default 8).
+    pub reach: f64,
+    /// Whether to estimate the error by the two extra runs (⌈3n/4⌉ points; N/2 modes).
+    pub estimate: bool,
+}
+
+impl Default for HoledParams {
+    fn default() -> Self {
+        Self {
+            hole: HoleParams {
+                terms: Some(16),
+                ..HoleParams::default()
+            },
+            nodes: 24,
+            heights: 24,
+            rel_tol: 1e-10,
+            iteration_tol: 1e-12,
+            max_iterations: 60,
+            step: 0.25,
+            reach: 8.0,
+            estimate: true,
+        }
+    }
+}
+
+/// What [`two_plate_hole`] did and how well.
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
+pub struct HoledInfo {
+    /// Estimated absolute error of R_o (see the module docs).
+    pub error: f64,
+    /// R_o with ⌈3n/4⌉ Nyström points (NaN when not estimated).
+    pub r_o_fewer_nodes: f64,
+    /// R_o with half the hole modes (NaN when not estimated).
+    pub r_o_half_terms: f64,
+    /// Largest residual traction of crack field + its correction on the hole, relative to P.
+    pub residual_max: f64,
+    /// The bilateral plate's residual traction on the hole, relative to P.
+    pub bilateral_residual: f64,
+    /// Largest crack-field traction on the hole before correction, relative to P.
+    pub crack_traction: f64,
+    /// Iterations of the last solve.
+    pub iterations: usize,
+    /// Contact radii tried (all runs).
+    pub solves: usize,
+    /// Wall-clock seconds.
+    pub seconds: f64,
+}
+
+/// R_o and its record.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HoledContact {
+    /// The separation radius R_o.
+    pub r_o: f64,
+    /// Error estimate and cost.
+    pub info: HoledInfo,
+}
+
+/// Gauss–Legendre panels (20 points) on [a, b] no wider than `width`: (x, w).
+fn panels(a: f64, b: f64, width: f64) -> Vec<(f64, f64)> {
+    let rule = gauss_legendre(20);
+    let k = ((b - a) / width).ceil().max(1.0) as usize;
+    let h = (b - a) / k as f64;
+    (0..k)
+        .flat_map(|j| {
+            let mid = a + (j as f64 + 0.5) * h;
+            rule.iter()
+                .map(move |&(x, w)| (mid + 0.5 * h * x, 0.5 * h * w))
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
+/// J₀(x) − 1 without cancellation at small x.
+fn j0_m1(x: f64) -> f64 {
+    if x < 0.1 {
+        let y = 0.25 * x * x;
+        // −y + y²/4 − y³/36 + y⁴/576: the next term is < 1e-17 at x < 0.1
+        -y * (1.0 - y / 4.0 * (1.0 - y / 9.0 * (1.0 - y / 16.0)))
+    } else {
+        libm::j0(x) - 1.0
+    }
+}
+
+/// The geometry's fixed parts: the bilateral plate, the correction basis, the hole's ξ-rule.
+struct Setup {
+    a: f64,
+    d: f64,
+    /// p̄(0) of the load.
+    p0: f64,
+    /// P, the mean pressure.
+    p_ref: f64,
+    bilateral: HolePlate,
+    slab_mid: MidplaneCurve,
+    modes: Vec<Mode>,
+    corner: Option<CornerLoads>,
+    /// Radius up to which the corner fields' midplane rule is built.
+    r_max: f64,
+    /// Length beyond c over which l is integrated.
+    tail: f64,
+    /// Fit heights (face to plane) and the corner columns there.
+    z_fit: Vec<f64>,
+    corner_cols: Vec<f64>,
+    /// Upper Chebyshev heights and the barycentric matrices (fit height × Chebyshev height)
+    /// for even (σ_r) and odd (τ_rz) extension.
+    z_cheb: Vec<f64>,
+    interp_even: Vec<Vec<f64>>,
+    interp_odd: Vec<Vec<f64>>,
+    /// Hole ξ-rule: (ξ, w, J₀(ξA), J₁(ξA)/(ξA), J₁(ξA)) and kernels per Chebyshev height.
+    hole_xi: Vec<(f64, f64, f64, f64, f64)>,
+    hole_kernels: Vec<Vec<[f64; 3]>>,
+    /// ξ beyond which l̄ is taken from its endpoint expansion.
+    xi_l: f64,
+}
+
+/// One contact radius solved.
+struct Crack {
+    /// c·φ(c)/p̄(0).
+    edge: f64,
+    residual: f64,
+    crack_traction: f64,
+    iterations: usize,
+}
+
+impl Setup {
+    fn new(plate: &SinglePlate, params: &HoledParams) -> Result<Self, RecedingError> {
+        let (a, d) = (plate.hole_radius(), plate.half_thickness());
+        if a <= 0.0 {
+            return Err(InputError::Parameter {
+                field: "hole radius A",
+                value: a,
+                reason: "the holed two-plate route needs A > 0 (use the receding solver)",
+            }
+            .into());
+        }
+        if plate.outer_radius() != OuterRadius::Infinite {
+            return Err(InputError::Parameter {
+                field: "outer radius C",
+                value: f64::NAN,
+                reason: "the holed two-plate route supports infinite plates only so far",
+            }
+            .into());
+        }
+        if params.heights < 4 || params.heights % 2 == 1 || params.heights > 128 {
+            return Err(InputError::Parameter {
+                field: "Chebyshev heights",
+                value: params.heights as f64,
+                reason: "an even number in 4..=128",
+            }
+            .into());
+        }
+        let mat = plate.material();
+        let nu = mat.poisson_ratio();
+        let g = mat.shear_modulus();
+        let load = plate.load();
+        let p_ref = load.mean_pressure().abs().max(f64::MIN_POSITIVE);
+        let bilateral = HolePlate::new(plate, &params.hole)?;
+        let n = bilateral.info().terms;
+        let b = load.outer();
+        let tail = 14.0 * d;
+        let r_max = b + params.reach * d + tail + d;
+        let slab_mid = MidplaneCurve::new(bilateral.slab(), a, r_max, 1e-12 * p_ref)?;
+        let modes: Vec<Mode> = symmetric_roots(n)
+            .iter()
+            .map(|x| Mode::new(*x, a, d, nu, g))
+            .collect();
+        let ct = params.hole.corner_terms;
+        let corner = (ct > 0).then(|| CornerLoads::new(a, d, nu, g, ct));
+        let z_fit = heights(d, if ct > 0 { 8 * n } else { 4 * n });
+        let corner_cols = corner.as_ref().map_or_else(Vec::new, |cl| {
+            cl.tractions(a, &z_fit)
+                .iter()
+                .flat_map(|t| {
+                    let mut sr = Vec::new();
+                    let mut tau = Vec::new();
+                    for c in t {
+                        sr.extend([c[0].re, c[0].im, c[1].re, c[1].im]);
+                        tau.extend([c[2].re, c[2].im, c[3].re, c[3].im]);
+                    }
+                    sr.extend(tau);
+                    sr
+                })
+                .collect()
+        });
+        // Chebyshev points of the first kind on [−D, D]; the upper half are integrated
+        let m = params.heights;
+        let theta = |j: usize| PI * (j as f64 + 0.5) / m as f64;
+        let x_all: Vec<f64> = (0..m).map(|j| theta(j).cos()).collect();
+        let w_all: Vec<f64> = (0..m)
+            .map(|j| if j % 2 == 0 { 1.0 } else { -1.0 } * theta(j).sin())
+            .collect();
+        let z_cheb: Vec<f64> = x_all[..m / 2].iter().map(|x| d * x).collect();
+        let interp = |odd: bool| -> Vec<Vec<f64>> {
+            z_fit
+                .iter()
+                .map(|&z| {
+                    let x = z / d;
+                    let mut row = vec![0.0; m / 2];
+                    if let Some(j) = x_all.iter().position(|&xj| (xj - x).abs() < 1e-15) {
+                        let (k, s) = if j < m / 2 { (j, 1.0) } else { (m - 1 - j, -1.0) };
+                        row[k] = if odd { s } else { 1.0 };
+                        return row;
+                    }
+                    let terms: Vec<f64> = (0..m).map(|j| w_all[j] / (x - x_all[j])).collect();
+                    let total: f64 = terms.iter().sum();
+                    for (j, t) in terms.iter().enumerate() {
+                        // the lower point m−1−k mirrors the upper point k
+                        let (k, s) = if j < m / 2 { (j, 1.0) } else { (m - 1 - j, -1.0) };
+                        row[k] += if odd { s } else { 1.0 } * t / total;
+                    }
+                    row
+                })
+                .collect()
+        };
+        let (interp_even, interp_odd) = (interp(false), interp(true));
+        // the hole ξ-rule: e^(−ξ z_min) < 2e-6 at its end; panels resolve cos ξ(r ± A) for the
+        // crack loads within c + 8D
+        let z_min = z_cheb[m / 2 - 1];
+        let xi_max = 13.0 / z_min;
+        let omega = r_max - tail + 8.0 * d + a;
+        let width = (3.0 * PI / omega).min(1.0 / d);
+        let hole_xi: Vec<(f64, f64, f64, f64, f64)> = panels(0.0, xi_max, width)
+            .into_iter()
+            .map(|(xi, w)| {
+                let x = xi * a;
+                let j1 = libm::j1(x);
+                (xi, w, libm::j0(x), j1 / x, j1)
+            })
+            .collect();
+        let hole_kernels = hole_xi
+            .iter()
+            .map(|&(xi, ..)| {
+                z_cheb
+                    .iter()
+                    .map(|&z| {
+                        let k = bottom_kernels(xi, d, z, nu);
+                        [k.r0, k.r1, k.t]
+                    })
+                    .collect()
+            })
+            .collect();
+        Ok(Self {
+            a,
+            d,
+            p0: LoadTransform::new(load).eval(0.0),
+            p_ref,
+            bilateral,
+            slab_mid,
+            modes,
+            corner,
+            r_max,
+            tail,
+            z_fit,
+            corner_cols,
+            z_cheb,
+            interp_even,
+            interp_odd,
+            hole_xi,
+            hole_kernels,
+            xi_l: 40.0 / d,
+        })
+    }
+
+    /// The bilateral plate's midplane σ_z.
+    fn s0(&self, r: f64) -> f64 {
+        self.slab_mid.eval(r).value + self.bilateral.correction_midplane(r)
+    }
+}
+
+/// Barycentric interpolation on Gauss–Legendre panels of equal width from `start`.
+struct PanelInterp {
+    start: f64,
+    width: f64,
+    panels: usize,
+    nodes: Vec<f64>,
+    weights: Vec<f64>,
+}
+
+impl PanelInterp {
+    fn new(start: f64, end: f64, width: f64) -> Self {
+        let panels = ((end - start) / width).ceil().max(1.0) as usize;
+        let nodes: Vec<f64> = gauss_legendre(20).iter().map(|&(x, _)| x).collect();
+        let weights = (0..nodes.len())
+            .map(|j| {
+                1.0 / (0..nodes.len())
+                    .filter(|&k| k != j)
+                    .map(|k| nodes[j] - nodes[k])
+                    .product::<f64>()
+            })
+            .collect();
+        Self {
+            start,
+            width: (end - start) / panels as f64,
+            panels,
+            nodes,
+            weights,
+        }
+    }
+
+    /// The nodes (x, w) of every panel, in order.
+    fn rule(&self) -> Vec<(f64, f64)> {
+        panels(
+            self.start,
+            self.start + self.width * self.panels as f64,
+            self.width,
+        )
+    }
+
+    /// The interpolant of `values` (one per node of [`Self::rule`]) at `s` (0 beyond the end).
+    fn eval(&self, values: &[f64], s: f64) -> f64 {
+        let u = (s - self.start) / self.width;
+        if !(0.0..=self.panels as f64).contains(&u) {
+            return 0.0;
+        }
+        let k = (u.floor() as usize).min(self.panels - 1);
+        let x = 2.0 * (u - k as f64) - 1.0;
+        let v = &values[20 * k..20 * (k + 1)];
+        let (mut num, mut den) = (0.0, 0.0);
+        for j in 0..20 {
+            let dx = x - self.nodes[j];
+            if dx == 0.0 {
+                return v[j];
+            }
+            let t = self.weights[j] / dx;
+            num += t * v[j];
+            den += t;
+        }
+        num / den
+    }
+}
+
+impl Setup {
+    /// Solves the crack field and its hole correction for contact radius `c` with `n` Nyström
+    /// points, iterating l ← s₀ + σ_z^Z.
+    fn crack(&self, c: f64, n: usize, params: &HoledParams) -> Result<Crack, RecedingError> {
+        let d = self.d;
+        let zero = LoadTransform::new(&FaceLoad::uniform(0.0, c, 0.0)?);
+        let rule = XiRule::new(d, &zero, 3.0 * c, 1e-15);
+        let (xi_r, a_r, b_r) = rule.nodes();
+        let (xi_r, a_r, b_r) = (xi_r.to_vec(), a_r.to_vec(), b_r.to_vec());
+        // l on Gauss panels of [c, c + tail] resolving J₀(ξs) up to ξ_l
+        let lint = PanelInterp::new(c, c + self.tail, (3.0 * PI / self.xi_l).min(0.5 * d));
+        let s_rule = lint.rule();
+        let s0: Vec<f64> = s_rule.iter().map(|&(s, _)| self.s0(s)).collect();
+        let mode_mid: Vec<Vec<num_complex::Complex64>> = s_rule
+            .iter()
+            .map(|&(s, _)| self.modes.iter().map(|m| m.midplane_sigma_z(s)).collect())
+            .collect();
+        let corner_mid: Vec<Vec<f64>> = s_rule
+            .iter()
+            .map(|&(s, _)| {
+                self.corner
+                    .as_ref()
+                    .map_or_else(Vec::new, |cl| cl.midplane_basis(s, self.r_max))
+            })
+            .collect();
+        // t-grid on [0, c]: t = c − u² (H_l ~ √(c − t) becomes smooth), panels resolving
+        // cos ξt up to the hole rule's end
+        let xi_h = self.hole_xi.last().map_or(0.0, |x| x.0);
+        let sc = c.sqrt();
+        let t_rule: Vec<(f64, f64)> = panels(0.0, sc, (3.0 * PI / (2.0 * xi_h * sc)).min(0.05 * sc))
+            .into_iter()
+            .map(|(u, w)| (c - u * u, 2.0 * u * w))
+            .collect();
+        let cos_t: Vec<Vec<f64>> = t_rule
+            .iter()
+            .map(|&(t, _)| xi_r.iter().map(|x| (x * t).cos()).collect())
+            .collect();
+        let cosm1_t: Vec<Vec<f64>> = t_rule
+            .iter()
+            .map(|&(t, _)| xi_r.iter().map(|x| cos_m1(x * t)).collect())
+            .collect();
+        let hole_cosm1: Vec<Vec<f64>> = t_rule
+            .iter()
+            .map(|&(t, _)| self.hole_xi.iter().map(|h| cos_m1(h.0 * t)).collect())
+            .collect();
+        // s-weights w·s·J₀(ξs) and w·s·(J₀ − 1) for the rule and the hole's low ξ
+        let js = |xi: f64| -> (Vec<f64>, Vec<f64>) {
+            s_rule
+                .iter()
+                .map(|&(s, w)| {
+                    let m1 = j0_m1(xi * s);
+                    (w * s * (1.0 + m1), w * s * m1)
+                })
+                .unzip()
+        };
+        let rule_j: Vec<(Vec<f64>, Vec<f64>)> = xi_r.iter().map(|&x| js(x)).collect();
+        let hole_low = self.hole_xi.partition_point(|h| h.0 <= self.xi_l);
+        let hole_j: Vec<Vec<f64>> = self.hole_xi[..hole_low]
+            .iter()
+            .map(|h| js(h.0).1)
+            .collect();
+        let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(a, b)| a * b).sum::<f64>();
+        let v_width = d;
+        let h_l = |l: &[f64], t: f64| -> f64 {
+            let v0 = ((c - t) * (c + t)).max(0.0).sqrt();
+            let end = c + self.tail;
+            let v1 = ((end - t) * (end + t)).sqrt();
+            -FRAC_2_PI
+                * panels(v0, v1, v_width)
+                    .iter()
+                    .map(|&(v, w)| w * lint.eval(l, (t * t + v * v).sqrt()))
+                    .sum::<f64>()
+        };
+        let mut fitted: Option<Fit> = None;
+        let mut last = f64::NAN;
+        let mut out = Crack {
+            edge: f64::NAN,
+            residual: f64::NAN,
+            crack_traction: 0.0,
+            iterations: 0,
+        };
+        let scale = self.p0 / c;
+        for it in 1..=params.max_iterations {
+            let l: Vec<f64> = (0..s_rule.len())
+                .map(|i| {
+                    s0[i]
+                        + fitted.as_ref().map_or(0.0, |f| {
+                            let m: f64 = mode_mid[i]
+                                .iter()
+                                .zip(&f.modes)
+                                .map(|(v, a)| (a * v).re)
+                                .sum();
+                            m + dot(&corner_mid[i], &f.extra)
+                        })
+                })
+                .collect();
+            let l0: f64 = s_rule.iter().zip(&l).map(|(&(s, w), v)| w * s * v).sum();
+            let hl: Vec<f64> = t_rule.iter().map(|&(t, _)| h_l(&l, t)).collect();
+            let hl_total: f64 = t_rule.iter().zip(&hl).map(|(&(_, w), h)| w * h).sum();
+            let m = xi_r.len();
+            let mut alpha = vec![0.0; m];
+            let mut beta = vec![0.0; m];
+            for k in 0..m {
+                let (hc, hv) = t_rule.iter().enumerate().fold((0.0, 0.0), |acc, (i, &(_, w))| {
+                    (acc.0 + w * hl[i] * cos_t[i][k], acc.1 + w * hl[i] * cosm1_t[i][k])
+                });
+                let lbar = dot(&rule_j[k].0, &l);
+                let ltil = dot(&rule_j[k].1, &l);
+                alpha[k] = -a_r[k] * (lbar + hc);
+                beta[k] = -b_r[k] * (ltil + hv);
+            }
+            let sys = Nystrom::solve_general(rule.clone(), c, n, -l0 - hl_total, &alpha, &beta)
+                .ok_or(RecedingError::Singular { c })?;
+            let (c0, g, h) = sys.series();
+            let psi = |i: usize| -> f64 {
+                c0 + (0..m)
+                    .map(|k| g[k] * cosm1_t[i][k] - h[k] * cos_t[i][k])
+                    .sum::<f64>()
+            };
+            let phi: Vec<f64> = (0..t_rule.len()).map(|i| psi(i) + hl[i]).collect();
+            let edge = sys.phi(c) + h_l(&l, c);
+            out.edge = edge / scale;
+            out.iterations = it;
+            // the crack field's bottom load b = q + l, b̃(ξ) = b̄(ξ) − b̄(0), on the hole rule
+            let lc = lint.eval(&l, c);
+            let hstep = 1e-3 * lint.width;
+            let dl = (-3.0 * lc + 4.0 * lint.eval(&l, c + hstep) - lint.eval(&l, c + 2.0 * hstep))
+                / (2.0 * hstep);
+            let btil: Vec<f64> = self
+                .hole_xi
+                .iter()
+                .enumerate()
+                .map(|(k, &(xi, ..))| {
+                    let q: f64 = t_rule
+                        .iter()
+                        .enumerate()
+                        .map(|(i, &(_, w))| w * phi[i] * hole_cosm1[i][k])
+                        .sum();
+                    let lt = if k < hole_low {
+                        dot(&hole_j[k], &l)
+                    } else {
+                        let x = xi * c;
+                        -lc * c * libm::j1(x) / xi - dl * c * libm::j0(x) / (xi * xi) - l0
+                    };
+                    q + lt
+                })
+                .collect();
+            let nz = self.z_cheb.len();
+            let (mut sr, mut tau) = (vec![0.0; nz], vec![0.0; nz]);
+            for (k, &(_, w, j0, j1x, j1)) in self.hole_xi.iter().enumerate() {
+                let wb = w * btil[k];
+                for j in 0..nz {
+                    let kk = self.hole_kernels[k][j];
+                    sr[j] += wb * (kk[0] * j0 - kk[1] * j1x);
+                    tau[j] += wb * kk[2] * j1;
+                }
+            }
+            let data: Vec<HoleData> = self
+                .z_fit
+                .iter()
+                .enumerate()
+                .map(|(i, &z)| HoleData {
+                    z,
+                    sigma_r: dot(&self.interp_even[i], &sr),
+                    tau_rz: dot(&self.interp_odd[i], &tau),
+                })
+                .collect();
+            if it == 1 {
+                out.crack_traction = data
+                    .iter()
+                    .fold(0.0f64, |m, p| m.max(p.sigma_r.hypot(p.tau_rz)))
+                    / self.p_ref;
+            }
+            let f = self.fit(&data);
+            out.residual = f.residual(
+                &self.modes,
+                &Boundary {
+                    r: self.a,
+                    data: &data,
+                    extra: &self.corner_cols,
+                },
+            )
+            .0 / self.p_ref;
+            fitted = Some(f);
+            if (edge - last).abs() < params.iteration_tol * scale {
+                return Ok(out);
+            }
+            last = edge;
+        }
+        Ok(out)
+    }
+
+    /// The correction cancelling `data` on the hole (collocation on every other height).
+    fn fit(&self, data: &[HoleData]) -> Fit {
+        let columns = 4 * self.corner.as_ref().map_or(0, |c| c.count());
+        let colloc: Vec<HoleData> = data.iter().step_by(2).copied().collect();
+        let extra: Vec<f64> = self
+            .corner_cols
+            .chunks(2 * columns.max(1))
+            .step_by(2)
+            .flatten()
+            .copied()
+            .collect();
+        fit(
+            &self.modes,
+            self.a,
+            false,
+            columns,
+            &[Boundary {
+                r: self.a,
+                data: &colloc,
+                extra: &extra,
+            }],
+        )
+    }
+
+    /// R_o with `n` Nyström points (bracketing `near` first): (R_o, last solve, solves).
+    fn search(
+        &self,
+        b: f64,
+        n: usize,
+        params: &HoledParams,
+        near: Option<f64>,
+    ) -> Result<(f64, Crack, usize), RecedingError> {
+        let mut solves = 0;
+        let mut edge = |c: f64| {
+            solves += 1;
+            self.crack(c, n, params).map(|k| k.edge)
+        };
+        let scan = Scan {
+            b,
+            d: self.d,
+            step: params.step * self.d,
+            end: b + params.reach * self.d,
+            tol: params.rel_tol * self.d,
+            max_iterations: 100,
+        };
+        let r_o = root(&mut edge, &scan, near)?.ok_or(RecedingError::NotFound {
+            from: b,
+            to: scan.end,
+        })?;
+        let last = self.crack(r_o, n, params)?;
+        Ok((r_o, last, solves + 1))
+    }
+}
+
+/// R_o of two equal plates with a hole on a frictionless interface: `plate` is the single plate
+/// of the reflected picture (its half-thickness is one plate's thickness D). See the module docs.
+pub fn two_plate_hole(
+    plate: &SinglePlate,
+    params: &HoledParams,
+) -> Result<HoledContact, RecedingError> {
+    let start = Instant::now();
+    let setup = Setup::new(plate, params)?;
+    let b = plate.load().outer();
+    let (r_o, last, mut solves) = setup.search(b, params.nodes, params, None)?;
+    let mut info = HoledInfo {
+        error: params.rel_tol * setup.d,
+        r_o_fewer_nodes: f64::NAN,
+        r_o_half_terms: f64::NAN,
+        residual_max: last.residual,
+        bilateral_residual: setup.bilateral.info().residual_max,
+        crack_traction: last.crack_traction,
+        iterations: last.iterations,
+        solves: 0,
+        seconds: 0.0,
+    };
+    if params.estimate {
+        let fewer = (3 * params.nodes).div_ceil(4).max(4);
+        let (r1, _, s1) = setup.search(b, fewer, params, Some(r_o))?;
+        let half = HoledParams {
+            hole: HoleParams {
+                terms: Some((setup.modes.len() / 2).max(1)),
+                ..params.hole
+            },
+            ..*params
+        };
+        let setup_half = Setup::new(plate, &half)?;
+        let (r2, _, s2) = setup_half.search(b, params.nodes, &half, Some(r_o))?;
+        solves += s1 + s2;
+        info.r_o_fewer_nodes = r1;
+        info.r_o_half_terms = r2;
+        info.error += (r1 - r_o).abs() + (r2 - r_o).abs();
+    }
+    info.solves = solves;
+    info.seconds = start.elapsed().as_secs_f64();
+    Ok(HoledContact { r_o, info })
+}
