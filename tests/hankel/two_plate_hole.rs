@@ -91,3 +91,65 @@ fn table1_first_row() {
     let out = two_plate_hole(&plate, &HoledParams::default()).unwrap();
     println!("{:?} {:?}", out.r_o / 0.1, out.info);
 }
+
+/// Table 1's rows (A/D, B/A) and the report's two-plate R_o/A.
+const TABLE1: [(f64, f64, f64); 12] = [
+    (1.0, 3.1, 3.7),
+    (1.0, 2.2, 2.7),
+    (1.0, 1.6, 2.1),
+    (1.0, 1.3, 1.7),
+    (0.75, 3.1, 3.8),
+    (0.75, 2.2, 2.8),
+    (0.75, 1.6, 2.2),
+    (0.75, 1.3, 2.0),
+    (0.5, 3.1, 4.1),
+    (0.5, 2.2, 3.2),
+    (0.5, 1.6, 2.8),
+    (0.5, 1.3, 2.5),
+];
+
+#[test]
+#[ignore = "study (minutes): Table 1, C = ∞, this route against the FE two-plate model at --tol 1e-4, 1e-5, 1e-6"]
+fn table1_against_the_fe() {
+    use boltzone::contact::params::TwoPlateParams;
+    use boltzone::contact::two_plate::solve;
+    use boltzone::Joint;
+    let rows: Vec<(f64, f64, f64)> = match std::env::var("ROWS") {
+        Ok(s) => s
+            .split(',')
+            .filter_map(|i| i.parse::<usize>().ok())
+            .map(|i| TABLE1[i])
+            .collect(),
+        Err(_) => TABLE1.to_vec(),
+    };
+    println!("A/D  B/A  report  hankel R_o/A  est(rel)  [FE tol: R_o/A  est(rel)  (FE−H)/R_o  |FE−H|/est]");
+    for (ad, ba, report) in rows {
+        let plate = table1(ad, ba);
+        let h = two_plate_hole(&plate, &HoledParams::default()).unwrap();
+        let mut line = format!(
+            "{ad:4} {ba:4} {report:4}  {:.10} {:.1e} ({:.1} s)",
+            h.r_o / 0.1,
+            h.info.error / h.r_o,
+            h.info.seconds
+        );
+        let joint = Joint::symmetric(0.1, 0.1 * ba, 0.1 / ad, Material::new(3.0e7, 0.3).unwrap())
+            .unwrap();
+        for tol in [1e-4, 1e-5, 1e-6] {
+            let p = TwoPlateParams {
+                tolerance: tol,
+                ..TwoPlateParams::default()
+            };
+            let fe = solve(&joint, &p).unwrap();
+            let diff = (fe.r_o - h.r_o) / h.r_o;
+            line += &format!(
+                "  [{tol:.0e}: {:.7} {:.1e} {:+.1e} {:.2} {:.2}s]",
+                fe.r_o / 0.1,
+                fe.r_o_error / fe.r_o,
+                diff,
+                (fe.r_o - h.r_o).abs() / fe.r_o_error,
+                fe.info.seconds
+            );
+        }
+        println!("{line}");
+    }
+}

@@ -74,7 +74,7 @@ pub struct HoledParams {
     /// Nyström points on [0, c] (default 24).
     pub nodes: usize,
     /// Chebyshev heights on [−D, D] at which the crack field's hole traction is integrated
-    /// (default 24; even).
+    /// (default 18; even).
     pub heights: usize,
     /// Root tolerance on R_o relative to D (default 1e-10).
     pub rel_tol: f64,
@@ -99,7 +99,7 @@ impl Default for HoledParams {
                 ..HoleParams::default()
             },
             nodes: 24,
-            heights: 24,
+            heights: 18,
             rel_tol: 1e-10,
             iteration_tol: 1e-12,
             max_iterations: 60,
@@ -117,7 +117,7 @@ pub struct HoledInfo {
     pub error: f64,
     /// R_o with ⌈3n/4⌉ Nyström points (NaN when not estimated).
     pub r_o_fewer_nodes: f64,
-    /// R_o with half the hole modes (NaN when not estimated).
+    /// R_o with half the hole modes and 2/3 of the Chebyshev heights (NaN when not estimated).
     pub r_o_half_terms: f64,
     /// Largest residual traction of crack field + its correction on the hole, relative to P.
     pub residual_max: f64,
@@ -299,13 +299,18 @@ impl Setup {
                 .collect()
         };
         let (interp_even, interp_odd) = (interp(false), interp(true));
-        // the hole ξ-rule: e^(−ξ z_min) < 2e-6 at its end; panels resolve cos ξ(r ± A) for the
-        // crack loads within c + 8D
+        // the hole ξ-rule: e^(−ξ z_min) < 2e-6 at its end; 20-point panels of 2.25 periods
+        // (Gauss–Legendre's error on them ≈ (e·ωh/80)^40 ≈ 2e-13) of cos ξ(r ± A) for the crack
+        // loads within c + 8D up to ξ_l, and of the contact edge c beyond (l's transform is
+        // its endpoint expansion there)
         let z_min = z_cheb[m / 2 - 1];
-        let xi_max = 13.0 / z_min;
-        let omega = r_max - tail + 8.0 * d + a;
-        let width = (3.0 * PI / omega).min(1.0 / d);
-        let hole_xi: Vec<(f64, f64, f64, f64, f64)> = panels(0.0, xi_max, width)
+        let xi_l = 40.0 / d;
+        let xi_max = (13.0 / z_min).max(2.0 * xi_l);
+        let c_max = b + params.reach * d;
+        let width = |omega: f64| (4.5 * PI / omega).min(1.0 / d);
+        let mut rule = panels(0.0, xi_l, width(c_max + 8.0 * d + a));
+        rule.extend(panels(xi_l, xi_max, width(c_max + a + d)));
+        let hole_xi: Vec<(f64, f64, f64, f64, f64)> = rule
             .into_iter()
             .map(|(xi, w)| {
                 let x = xi * a;
@@ -343,7 +348,7 @@ impl Setup {
             interp_odd,
             hole_xi,
             hole_kernels,
-            xi_l: 40.0 / d,
+            xi_l,
         })
     }
 
@@ -424,8 +429,8 @@ impl Setup {
         let rule = XiRule::new(d, &zero, 3.0 * c, 1e-15);
         let (xi_r, a_r, b_r) = rule.nodes();
         let (xi_r, a_r, b_r) = (xi_r.to_vec(), a_r.to_vec(), b_r.to_vec());
-        // l on Gauss panels of [c, c + tail] resolving J₀(ξs) up to ξ_l
-        let lint = PanelInterp::new(c, c + self.tail, (3.0 * PI / self.xi_l).min(0.5 * d));
+        // l on Gauss panels of [c, c + tail] resolving J₀(ξs) up to ξ_l (2.25 periods per panel)
+        let lint = PanelInterp::new(c, c + self.tail, (4.5 * PI / self.xi_l).min(0.5 * d));
         let s_rule = lint.rule();
         let s0: Vec<f64> = s_rule.iter().map(|&(s, _)| self.s0(s)).collect();
         let mode_mid: Vec<Vec<num_complex::Complex64>> = s_rule
@@ -440,14 +445,17 @@ impl Setup {
                     .map_or_else(Vec::new, |cl| cl.midplane_basis(s, self.r_max))
             })
             .collect();
-        // t-grid on [0, c]: t = c − u² (H_l ~ √(c − t) becomes smooth), panels resolving
-        // cos ξt up to the hole rule's end
+        // t-grid on [0, c]: panels resolving cos ξt up to the hole rule's end, and on the last
+        // δ = min(c/2, D/2) t = c − u² (H_l ~ √(c − t) becomes smooth)
         let xi_h = self.hole_xi.last().map_or(0.0, |x| x.0);
-        let sc = c.sqrt();
-        let t_rule: Vec<(f64, f64)> = panels(0.0, sc, (3.0 * PI / (2.0 * xi_h * sc)).min(0.05 * sc))
-            .into_iter()
-            .map(|(u, w)| (c - u * u, 2.0 * u * w))
-            .collect();
+        let delta = (0.5 * c).min(0.5 * d);
+        let su = delta.sqrt();
+        let mut t_rule = panels(0.0, c - delta, 4.5 * PI / xi_h);
+        t_rule.extend(
+            panels(0.0, su, (4.5 * PI / (2.0 * xi_h * su)).min(0.25 * su))
+                .into_iter()
+                .map(|(u, w)| (c - u * u, 2.0 * u * w)),
+        );
         let cos_t: Vec<Vec<f64>> = t_rule
             .iter()
             .map(|&(t, _)| xi_r.iter().map(|x| (x * t).cos()).collect())
@@ -690,6 +698,7 @@ pub fn two_plate_hole(
                 terms: Some((setup.modes.len() / 2).max(1)),
                 ..params.hole
             },
+            heights: (params.heights / 3 * 2).max(4),
             ..*params
         };
         let setup_half = Setup::new(plate, &half)?;
