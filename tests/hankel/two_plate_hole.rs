@@ -21,7 +21,10 @@ fn faces_carry_the_load_and_no_shear() {
         let top = bottom_kernels(xi, d, d, 0.3);
         let tol = 1e-12 * xi * (1.0 + xi * d);
         assert!((bottom.z + xi).abs() < tol, "{xi}: {bottom:?}");
-        assert!(bottom.t.abs() < tol && top.t.abs() < tol && top.z.abs() < tol, "{xi}: {top:?}");
+        assert!(
+            bottom.t.abs() < tol && top.t.abs() < tol && top.z.abs() < tol,
+            "{xi}: {top:?}"
+        );
         let mirrored = top_kernels(xi, d, d, 0.3);
         assert!((mirrored.z + xi).abs() < tol);
     }
@@ -65,9 +68,21 @@ fn bilateral_limit_is_the_slab() {
         let slab = stress_for_transform(d, nu, pbar, b, r, z, &q);
         // the slab's τ_rz and σ_z are odd/even about its midplane z = 0 = the layer's bottom
         let e = 1e-9;
-        assert!((sr - slab.sigma_r.value).abs() < e, "σ_r {r} {z}: {sr} {:?}", slab.sigma_r);
-        assert!((tau - slab.tau_rz.value).abs() < e, "τ {r} {z}: {tau} {:?}", slab.tau_rz);
-        assert!((sz - slab.sigma_z.value).abs() < e, "σ_z {r} {z}: {sz} {:?}", slab.sigma_z);
+        assert!(
+            (sr - slab.sigma_r.value).abs() < e,
+            "σ_r {r} {z}: {sr} {:?}",
+            slab.sigma_r
+        );
+        assert!(
+            (tau - slab.tau_rz.value).abs() < e,
+            "τ {r} {z}: {tau} {:?}",
+            slab.tau_rz
+        );
+        assert!(
+            (sz - slab.sigma_z.value).abs() < e,
+            "σ_z {r} {z}: {sz} {:?}",
+            slab.sigma_z
+        );
     }
 }
 
@@ -132,8 +147,8 @@ fn table1_against_the_fe() {
             h.info.error / h.r_o,
             h.info.seconds
         );
-        let joint = Joint::symmetric(0.1, 0.1 * ba, 0.1 / ad, Material::new(3.0e7, 0.3).unwrap())
-            .unwrap();
+        let joint =
+            Joint::symmetric(0.1, 0.1 * ba, 0.1 / ad, Material::new(3.0e7, 0.3).unwrap()).unwrap();
         for tol in [1e-4, 1e-5, 1e-6] {
             let p = TwoPlateParams {
                 tolerance: tol,

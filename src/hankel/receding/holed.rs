@@ -283,7 +283,11 @@ impl Setup {
                     let x = z / d;
                     let mut row = vec![0.0; m / 2];
                     if let Some(j) = x_all.iter().position(|&xj| (xj - x).abs() < 1e-15) {
-                        let (k, s) = if j < m / 2 { (j, 1.0) } else { (m - 1 - j, -1.0) };
+                        let (k, s) = if j < m / 2 {
+                            (j, 1.0)
+                        } else {
+                            (m - 1 - j, -1.0)
+                        };
                         row[k] = if odd { s } else { 1.0 };
                         return row;
                     }
@@ -291,7 +295,11 @@ impl Setup {
                     let total: f64 = terms.iter().sum();
                     for (j, t) in terms.iter().enumerate() {
                         // the lower point m−1−k mirrors the upper point k
-                        let (k, s) = if j < m / 2 { (j, 1.0) } else { (m - 1 - j, -1.0) };
+                        let (k, s) = if j < m / 2 {
+                            (j, 1.0)
+                        } else {
+                            (m - 1 - j, -1.0)
+                        };
                         row[k] += if odd { s } else { 1.0 } * t / total;
                     }
                     row
@@ -480,10 +488,7 @@ impl Setup {
         };
         let rule_j: Vec<(Vec<f64>, Vec<f64>)> = xi_r.iter().map(|&x| js(x)).collect();
         let hole_low = self.hole_xi.partition_point(|h| h.0 <= self.xi_l);
-        let hole_j: Vec<Vec<f64>> = self.hole_xi[..hole_low]
-            .iter()
-            .map(|h| js(h.0).1)
-            .collect();
+        let hole_j: Vec<Vec<f64>> = self.hole_xi[..hole_low].iter().map(|h| js(h.0).1).collect();
         let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(a, b)| a * b).sum::<f64>();
         let v_width = d;
         let h_l = |l: &[f64], t: f64| -> f64 {
@@ -526,9 +531,15 @@ impl Setup {
             let mut alpha = vec![0.0; m];
             let mut beta = vec![0.0; m];
             for k in 0..m {
-                let (hc, hv) = t_rule.iter().enumerate().fold((0.0, 0.0), |acc, (i, &(_, w))| {
-                    (acc.0 + w * hl[i] * cos_t[i][k], acc.1 + w * hl[i] * cosm1_t[i][k])
-                });
+                let (hc, hv) = t_rule
+                    .iter()
+                    .enumerate()
+                    .fold((0.0, 0.0), |acc, (i, &(_, w))| {
+                        (
+                            acc.0 + w * hl[i] * cos_t[i][k],
+                            acc.1 + w * hl[i] * cosm1_t[i][k],
+                        )
+                    });
                 let lbar = dot(&rule_j[k].0, &l);
                 let ltil = dot(&rule_j[k].1, &l);
                 alpha[k] = -a_r[k] * (lbar + hc);
@@ -597,15 +608,16 @@ impl Setup {
                     / self.p_ref;
             }
             let f = self.fit(&data);
-            out.residual = f.residual(
-                &self.modes,
-                &Boundary {
-                    r: self.a,
-                    data: &data,
-                    extra: &self.corner_cols,
-                },
-            )
-            .0 / self.p_ref;
+            out.residual =
+                f.residual(
+                    &self.modes,
+                    &Boundary {
+                        r: self.a,
+                        data: &data,
+                        extra: &self.corner_cols,
+                    },
+                )
+                .0 / self.p_ref;
             fitted = Some(f);
             if (edge - last).abs() < params.iteration_tol * scale {
                 return Ok(out);
