@@ -15,7 +15,7 @@
 //!    ([`HolePlate`]: slab + Papkovich–Fadle modes + corner enrichment), midplane stress s₀(r);
 //! 2. the *crack field* X of a layer without hole on the plane, in contact on r ≤ c and pressed
 //!    on its bottom r > c by l(r) = s₀(r) + σ_z^Z(r, 0): the receding layer's Fredholm equation
-//!    ([`super::system`]) with a bottom load instead of a top one (Abel function
+//!    (module `system`) with a bottom load instead of a top one (Abel function
 //!    φ = ψ + H_l, H_l(t) = −(2/π)∫_c^∞ l(s) s ds/√(s² − t²) the half-space part, whose √(c − t)
 //!    behaviour is taken out so that ψ is smooth and Nyström converges geometrically);
 //! 3. a *hole correction* Z of X: Lamé + symmetric Papkovich–Fadle modes of the 2D slab + the

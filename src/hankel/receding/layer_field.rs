@@ -39,6 +39,8 @@
 //! assert!((k.z + 2.0).abs() < 1e-14 && k.t.abs() < 1e-14);
 //! ```
 
+use super::layer::scaled_sinh_minus_x;
+
 /// The kernels (R₀, R₁, T, Z) at one (ξ, z) per unit b̄ (see the module docs).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct LayerKernels {
@@ -52,21 +54,12 @@ pub struct LayerKernels {
     pub z: f64,
 }
 
-/// sinh 2t − 2t without cancellation at small t.
+/// sinh 2t − 2t without cancellation at small t (the series of [`super::layer`] below 1).
 fn sinh_minus(t2: f64) -> f64 {
     if t2 >= 1.0 {
         t2.sinh() - t2
     } else {
-        // Σ_{k≥1} x^(2k+1)/(2k+1)!: the k = 9 term is < 1/19! ≈ 8e-18 of the first at x < 1
-        let x2 = t2 * t2;
-        let mut term = t2 * x2 / 6.0;
-        let mut sum = term;
-        for k in 2..=9 {
-            let n = (2 * k) as f64;
-            term *= x2 / (n * (n + 1.0));
-            sum += term;
-        }
-        sum
+        0.5 * t2.exp() * scaled_sinh_minus_x(t2)
     }
 }
 
