@@ -35,12 +35,15 @@
 //!
 //! **Accuracy** (`tests/hankel/two_plate_hole.rs`). The layer kernels: face conditions and the
 //! bilateral limit (the slab's own kernels, to 1e-9). R_o against the FE two-plate model, which
-//! shares no code, on all twelve Table 1 geometries (C = ∞; study `table1_against_the_fe`): the
-//! estimates here are 4e-11 to 2e-7 R_o, and the FE's differences from this route stay within
-//! the FE's own estimates at --tol 1e-4, 1e-5 and 1e-6 (at 1e-6 the FE lies HIGH by 1e-7 to
-//! 3e-6 R_o); `agrees_with_the_fe_on_table1_first_row` checks one row with coarse settings.
-//! Not yet measured: the A → 0 limit (study `small_holes_approach_the_receding_solution`), the
-//! contact force (no pressure curve yet).
+//! shares no code, on all twelve Table 1 geometries (C = ∞, ν = 0.3; study
+//! `table1_against_the_fe`, 25 minutes): this route's estimates are 4e-11 to 1.3e-6 R_o on eleven
+//! rows and 7e-5 R_o on (A/D, B/A) = (0.75, 1.6), where the coarse variant's 12 Chebyshev heights
+//! are too few (the crack field's traction there is 0.035 P); the FE at --tol 1e-4 lies within
+//! its estimate on all twelve (|FE − this|/estimate 0.23–0.65); at --tol 1e-5 and 1e-6 it lies
+//! HIGH by up to 2.0e-5 R_o and outside its estimate (1.3–2.5×) on four rows: (0.75, 1.3),
+//! (0.5, 2.2), (0.5, 1.6), (0.5, 1.3). `agrees_with_the_fe_on_table1_first_row` checks one row
+//! with coarse settings. Not yet measured: the A → 0 limit (study
+//! `small_holes_approach_the_receding_solution`), the contact force (no pressure curve yet).
 //!
 //! **Cost.** 0.5–3 minutes per geometry (wall, on the shared 2-core machine; about a quarter
 //! of that in CPU) with the error estimate's two extra searches: about 24 contact radii, each a
