@@ -42,8 +42,10 @@
 //! its estimate on all twelve (|FE − this|/estimate 0.23–0.65); at --tol 1e-5 and 1e-6 it lies
 //! HIGH by up to 2.0e-5 R_o and outside its estimate (1.3–2.5×) on four rows: (0.75, 1.3),
 //! (0.5, 2.2), (0.5, 1.6), (0.5, 1.3). `agrees_with_the_fe_on_table1_first_row` checks one row
-//! with coarse settings. Not yet measured: the A → 0 limit (study
-//! `small_holes_approach_the_receding_solution`), the contact force (no pressure curve yet).
+//! with coarse settings. A → 0 (study `small_holes_approach_the_receding_solution`, B = 3D):
+//! R_o minus the no-hole receding solver's under the disk load is −8.3e-8, −2.0e-8, −5.0e-9 (in, D = 0.1 in)
+//! at A = 0.2D, 0.1D, 0.05D — the predicted A² (observed rates 2.07, 1.99). Not yet measured: the
+//! contact force (no pressure curve yet).
 //!
 //! **Cost.** 0.5–3 minutes per geometry (wall, on the shared 2-core machine; about a quarter
 //! of that in CPU) with the error estimate's two extra searches: about 24 contact radii, each a
