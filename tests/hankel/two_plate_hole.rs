@@ -105,8 +105,42 @@ fn table1_rows_record() {
     let rows = std::env::var("ROWS").unwrap_or_else(|_| "0".into());
     for i in rows.split(',').filter_map(|i| i.parse::<usize>().ok()) {
         let (ad, ba, _) = TABLE1[i];
-        let out = two_plate_hole(&table1(ad, ba), &HoledParams::default()).unwrap();
-        println!("{ad} {ba}: R_o/A = {:.12} {:?}", out.r_o / 0.1, out.info);
+        let base = HoledParams::default();
+        let variants = [
+            ("default", base),
+            (
+                "xi_l 70",
+                HoledParams {
+                    xi_l: 70.0,
+                    estimate: false,
+                    ..base
+                },
+            ),
+            (
+                "tail 20",
+                HoledParams {
+                    tail: 20.0,
+                    estimate: false,
+                    ..base
+                },
+            ),
+            (
+                "heights 26",
+                HoledParams {
+                    heights: 26,
+                    estimate: false,
+                    ..base
+                },
+            ),
+        ];
+        for (name, p) in variants {
+            let out = two_plate_hole(&table1(ad, ba), &p).unwrap();
+            println!(
+                "{ad} {ba} {name}: R_o/A = {:.12} {:?}",
+                out.r_o / 0.1,
+                out.info
+            );
+        }
     }
 }
 

@@ -104,6 +104,10 @@ pub struct HoledParams {
     pub reach: f64,
     /// Whether to estimate the error by the two extra runs (⌈3n/4⌉ points; N/2 modes).
     pub estimate: bool,
+    /// ξ·D beyond which l's transform is its two-term endpoint expansion (default 40).
+    pub xi_l: f64,
+    /// Length beyond c over which l is integrated, in D (default 14: l ~ e^(−2.1(r − c)/D)).
+    pub tail: f64,
 }
 
 impl Default for HoledParams {
@@ -121,6 +125,8 @@ impl Default for HoledParams {
             step: 0.25,
             reach: 8.0,
             estimate: true,
+            xi_l: 40.0,
+            tail: 14.0,
         }
     }
 }
@@ -250,6 +256,8 @@ impl Setup {
             }
             .into());
         }
+        crate::error::positive("holed xi_l", params.xi_l)?;
+        crate::error::positive("holed tail", params.tail)?;
         let mat = plate.material();
         let nu = mat.poisson_ratio();
         let g = mat.shear_modulus();
@@ -258,7 +266,7 @@ impl Setup {
         let bilateral = HolePlate::new(plate, &params.hole)?;
         let n = bilateral.info().terms;
         let b = load.outer();
-        let tail = 14.0 * d;
+        let tail = params.tail * d;
         let r_max = b + params.reach * d + tail + d;
         let slab_mid = MidplaneCurve::new(bilateral.slab(), a, r_max, 1e-12 * p_ref)?;
         let modes: Vec<Mode> = symmetric_roots(n)
@@ -327,7 +335,7 @@ impl Setup {
         // loads within c + 8D up to ξ_l, and of the contact edge c beyond (l's transform is
         // its endpoint expansion there)
         let z_min = z_cheb[m / 2 - 1];
-        let xi_l = 40.0 / d;
+        let xi_l = params.xi_l / d;
         let xi_max = (13.0 / z_min).max(2.0 * xi_l);
         let c_max = b + params.reach * d;
         let width = |omega: f64| (4.5 * PI / omega).min(1.0 / d);
