@@ -132,6 +132,19 @@ fn table1_rows_record() {
                     ..base
                 },
             ),
+            (
+                "N adaptive to 1e-8 P",
+                HoledParams {
+                    hole: boltzone::hankel::hole::HoleParams {
+                        terms: None,
+                        residual_target: 1e-8,
+                        max_terms: 64,
+                        ..Default::default()
+                    },
+                    estimate: false,
+                    ..base
+                },
+            ),
         ];
         for (name, p) in variants {
             let out = two_plate_hole(&table1(ad, ba), &p).unwrap();

@@ -41,8 +41,13 @@
 //! are too few (the crack field's traction there is 0.035 P); the FE at --tol 1e-4 lies within
 //! its estimate on all twelve (|FE − this|/estimate 0.23–0.65); at --tol 1e-5 and 1e-6 it lies
 //! HIGH by up to 2.0e-5 R_o and outside its estimate (1.3–2.5×) on four rows: (0.75, 1.3),
-//! (0.5, 2.2), (0.5, 1.6), (0.5, 1.3). `agrees_with_the_fe_on_table1_first_row` checks one row
-//! with coarse settings. A → 0 (study `small_holes_approach_the_receding_solution`, B = 3D):
+//! (0.5, 2.2), (0.5, 1.6), (0.5, 1.3). On the last (study `table1_rows_record`, ROWS=11) this
+//! route's R_o/A = 2.4256934 moves by at most 3.1e-7 when ξ_l goes 40 → 70/D, the tail 14 → 20D,
+//! the heights 18 → 26, or N adapts until the bilateral residual is 5e-9 P (from 1.1e-5 P at
+//! N = 16), while the FE's 2.425743 (estimate ±8e-6 relative) is also where its finite-C runs,
+//! meshed whole, converge like C⁻² (2.42356, 2.42520, 2.42561, 2.42571, 2.42574 at C = 2.65…42.4
+//! in): the FE's excess is not its cut of the infinite plate.
+//! `agrees_with_the_fe_on_table1_first_row` checks one row with coarse settings. A → 0 (study `small_holes_approach_the_receding_solution`, B = 3D):
 //! R_o minus the no-hole receding solver's under the disk load is −8.3e-8, −2.0e-8, −5.0e-9 (in, D = 0.1 in)
 //! at A = 0.2D, 0.1D, 0.05D — the predicted A² (observed rates 2.07, 1.99). Not yet measured: the
 //! contact force (no pressure curve yet).
