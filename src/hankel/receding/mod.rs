@@ -7,7 +7,7 @@
 //! - `search`: the scan and root search for R_o and the check of the unilateral conditions;
 //! - [`layer_field`]: the layer's stresses at any height under a bottom (or top) pressure;
 //! - [`holed`]: the two-plate model with the hole (bilateral holed plate + crack field + its
-//!   hole correction, iterated);
+//!   hole correction, iterated); `crack`: one trial contact radius of it;
 //! - [`contact`]: the solver ([`Layer::receding_contact`]) and its results (derivation,
 //!   accuracy and cost there).
 //!
@@ -21,6 +21,7 @@
 //! ```
 
 pub mod contact;
+mod crack;
 pub mod holed;
 pub mod layer;
 pub mod layer_field;
