@@ -214,7 +214,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let hankel = match args.method {
         Method::Fem => false,
         Method::Hankel => true,
-        Method::Auto => args.tol < AUTO_HANKEL_BELOW && super::two_hankel::unsupported(&args).is_none(),
+        Method::Auto => {
+            args.tol < AUTO_HANKEL_BELOW && super::two_hankel::unsupported(&args).is_none()
+        }
     };
     if hankel {
         return super::two_hankel::run(&args, load, start);
