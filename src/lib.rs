@@ -28,9 +28,11 @@
 //! 6. [`material`], [`load`], [`rules`] (the 45° cone of Rötscher, the VDI 2230 cone and other
 //!    cone rules), [`plot`] (SVG/PNG figures);
 //! 7. [`numerics`] (quadrature, roots, special functions, interpolation, convergence
-//!    estimates), [`error`] (typed input errors), [`reference`](mod@reference) (the report's
-//!    Tables 1 and 2 and the Chapter V table, as data), [`fsutil`] (files written whole or not
-//!    at all), [`value`] (the one value-with-error type [`Value`]: value, error, converged).
+//!    estimates), [`fortran`] (the 1970 punched cards: one fixed-column field reader, one blank
+//!    policy, the one deck error type [`fortran::DeckError`]), [`error`] (typed input
+//!    errors), [`reference`](mod@reference) (the report's Tables 1 and 2 and the Chapter V
+//!    table, as data), [`fsutil`] (files written whole or not at all), [`value`] (the one
+//!    value-with-error type [`Value`]: value, error, converged).
 //!
 //! Sign convention throughout: compression negative (σ_z = −p under a face pressure p > 0); z is
 //! measured from the midplane (single plate) or the interface (joint); lengths and stresses in
@@ -49,6 +51,7 @@ pub mod compare;
 pub mod contact;
 pub mod error;
 pub mod fem;
+pub mod fortran;
 pub mod fsutil;
 pub mod hankel;
 pub mod heat;

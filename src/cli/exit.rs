@@ -91,8 +91,7 @@ pub fn code_of(e: &anyhow::Error) -> u8 {
                 .is_some_and(RecedingError::is_input)
             || c.downcast_ref::<CompareError>()
                 .is_some_and(CompareError::is_input)
-            || c.is::<boltzone::io::deck::DeckError>()
-            || c.is::<boltzone::heat::deck::NetworkDeckError>()
+            || c.is::<boltzone::fortran::DeckError>()
             || c.is::<boltzone::heat::network::NetworkError>()
     });
     if input {

@@ -10,7 +10,7 @@
 //! - [`joint`]: ∫ h_c(p(r)) 2πr dr over the contact zone of a two-plate solution, ring by ring as
 //!   the Chapter V table, plus gas and radiation across the open gap;
 //! - [`network`]: the steady conductance-network solver of Appendix D; [`deck`]: its card decks
-//!   (fields per [`fortran`]);
+//!   (fields per [`crate::fortran`]);
 //! - [`lap`]: Chapter V's lap joint as such a network, with the geometry it assumes;
 //! - [`conduction`]: steady axisymmetric conduction on the [`crate::fem`] meshes, plates joined
 //!   by an interface conductance h(r).
@@ -28,7 +28,6 @@
 pub mod conduction;
 pub mod correlation;
 pub mod deck;
-pub mod fortran;
 pub mod joint;
 pub mod lap;
 pub mod network;

@@ -8,6 +8,7 @@ mod cli;
 mod common;
 mod csv_out;
 mod exact;
+mod fields;
 mod json_out;
 mod mutants;
 mod plot_out;

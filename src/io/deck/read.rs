@@ -3,27 +3,9 @@
 //! elements as the listing does, and check the rules that matter to the result.
 
 use super::check::check;
-use super::field::Card;
 use super::model::{Appendix, Code, Deck, DeckElement, DeckMaterial, DeckNode, PressureCard};
-use super::DeckError;
+use crate::fortran::{Card, Cards, DeckError};
 use crate::material::Material;
-
-/// The cards of one deck, with the line that follows its last one (for "deck ends" errors).
-struct Cards<'a> {
-    cards: Vec<Card<'a>>,
-    pos: usize,
-    end: usize,
-}
-
-impl<'a> Cards<'a> {
-    fn next(&mut self, expected: &str) -> Result<Card<'a>, DeckError> {
-        let c = self.cards.get(self.pos).copied().ok_or_else(|| {
-            DeckError::new(self.end, expected, "", "the deck ends before this card")
-        })?;
-        self.pos += 1;
-        Ok(c)
-    }
-}
 
 /// Reads every deck of a file, each as Appendix B or C by its own cards (see
 /// [`read_decks_as`]).
@@ -39,14 +21,14 @@ pub fn read_decks_as(text: &str, appendix: Option<Appendix>) -> Result<Vec<Deck>
     let mut decks = Vec::new();
     let mut chunk: Vec<Card> = Vec::new();
     let mut last_line = 0;
-    for (i, line) in text.lines().enumerate() {
-        last_line = i + 1;
-        if line.starts_with("*****") {
-            if let Some(d) = read_chunk(std::mem::take(&mut chunk), i + 1, appendix)? {
+    for card in Card::lines(text) {
+        last_line = card.line;
+        if card.text.starts_with("*****") {
+            if let Some(d) = read_chunk(std::mem::take(&mut chunk), card.line, appendix)? {
                 decks.push(d);
             }
         } else {
-            chunk.push(Card::new(i + 1, line.strip_suffix('\r').unwrap_or(line)));
+            chunk.push(card);
         }
     }
     if let Some(d) = read_chunk(chunk, last_line + 1, appendix)? {
@@ -74,16 +56,7 @@ fn read_chunk(
     if cards.is_empty() {
         return Ok(None);
     }
-    let read = |a| {
-        read_deck(
-            Cards {
-                cards: cards.clone(),
-                pos: 0,
-                end,
-            },
-            a,
-        )
-    };
+    let read = |a| read_deck(Cards::new(cards.clone(), end), a);
     let deck = match appendix {
         Some(a) => read(a)?,
         None if cards.len() > 1 && !cards[1].columns(26, 35).trim().is_empty() => {
@@ -135,7 +108,7 @@ fn read_deck(mut cards: Cards, appendix: Appendix) -> Result<Deck, DeckError> {
             line: card.line,
         });
     }
-    if let Some(extra) = cards.cards.get(cards.pos) {
+    if let Some(extra) = cards.rest().first() {
         return Err(DeckError::new(
             extra.line,
             "card after the last pressure card",
