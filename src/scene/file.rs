@@ -377,3 +377,11 @@ fn syntax(text: &str, e: &toml::de::Error) -> SceneError {
 pub fn library_names() -> String {
     materials::names()
 }
+
+/// Reads the scene file at `path` as text (its errors name the path).
+pub fn read(path: &std::path::Path) -> Result<String, SceneError> {
+    std::fs::read_to_string(path).map_err(|source| SceneError::Read {
+        path: path.display().to_string(),
+        source,
+    })
+}

@@ -46,14 +46,6 @@ pub mod sweep;
 pub mod units;
 
 pub use error::SceneError;
-pub use file::{Method, Model, Scene};
+pub use file::{read, Method, Model, Scene};
 pub use run::{solve, Solution, Step};
 pub use units::UnitSystem;
-
-/// Reads and parses the scene file at `path`.
-pub fn read(path: &std::path::Path) -> Result<String, SceneError> {
-    std::fs::read_to_string(path).map_err(|source| SceneError::Read {
-        path: path.display().to_string(),
-        source,
-    })
-}
