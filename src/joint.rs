@@ -12,6 +12,15 @@
 //!
 //! Lengths in any one unit (inches in the report and the command-line tool).
 //!
+//! # Accuracy
+//!
+//! Exact (no numerics); every bad value is a typed error naming the field:
+//! `tests/contact/two_plate.rs` (`bad_parameters_are_typed_errors`).
+//!
+//! # Cost
+//!
+//! None.
+//!
 //! ```
 //! use boltzone::{Joint, Material};
 //! let j = Joint::symmetric(0.1, 0.31, 0.1, Material::unit(0.3)?)?;

@@ -38,6 +38,15 @@
 //! measured from the midplane (single plate) or the interface (joint); lengths and stresses in
 //! any consistent units (the command-line tool uses inches and psi).
 //!
+//! # Accuracy
+//!
+//! Each module's Accuracy section names the test or example that re-measures it; one test crate per
+//! folder under `tests/`, every example run at a quick size by `tests/examples/`.
+//!
+//! # Cost
+//!
+//! Each module's Cost section; `cargo bench` (benches `hankel`, `fem`, `contact`, `hole`).
+//!
 //! ```
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 //! let load = FaceLoad::uniform(0.1, 0.31, 1.0)?;

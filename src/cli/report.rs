@@ -3,6 +3,16 @@
 //! and its error estimate, the results, the rules of thumb beside R_o with their errors, and the
 //! figure of `--plot` when one is drawn. Checked by `tests/io/plot_out.rs` (the record against
 //! the run's JSON, the rules against their closed forms).
+//!
+//! # Accuracy
+//!
+//! No numerics of its own: `tests/io/plot_out.rs`
+//! (`calculation_report_records_inputs_results_and_rules`) checks it against the run's JSON and the
+//! cones' closed forms.
+//!
+//! # Cost
+//!
+//! Milliseconds, after the solve.
 
 use super::figure::rule_radii;
 use boltzone::contact::two_plate::TwoPlateSolution;

@@ -22,10 +22,14 @@
 //! R_o does not depend on E or on the load's magnitude. The report's values are never inputs:
 //! [`table1`] and [`table2`] only print them beside ours, from [`crate::reference`].
 //!
-//! **Accuracy.** Every R_o to the tolerance asked by its own estimate; the estimates are
-//! checked in the solvers' tests and examples 13 and 14; the tables end to end in
-//! `tests/compare/tables.rs`. **Cost.** `cargo bench --bench contact` (all of Table 1) and
-//! example 13 (per map point).
+//! # Accuracy
+//!
+//! Every R_o to the tolerance asked by its own estimate; the estimates are checked in the solvers'
+//! tests and examples 13 and 14; the tables end to end in `tests/compare/tables.rs`.
+//!
+//! # Cost
+//!
+//! `cargo bench --bench contact` (all of Table 1) and example 13 (per map point).
 //!
 //! ```
 //! use boltzone::compare::{compare, CompareParams, Geometry};

@@ -10,11 +10,15 @@
 //! the interface curves (coordinates × length, displacements × length·stress/modulus, moduli ×
 //! modulus), so that the stresses recovered from it are in the joint's units.
 //!
-//! Accuracy: the field is the finest level's; `tests/io/vtu.rs` checks the written file against
-//! the interface curves of the same solution (gap from the displacements) and the bolt force.
+//! # Accuracy
 //!
-//! Cost: the finest level's model (mesh, materials) and displacements are kept instead of
-//! dropped, and rescaled once (linear in the nodes); nothing is solved again.
+//! The field is the finest level's; `tests/io/vtu.rs` checks the written file against the interface
+//! curves of the same solution (gap from the displacements) and the bolt force.
+//!
+//! # Cost
+//!
+//! The finest level's model (mesh, materials) and displacements are kept instead of dropped, and
+//! rescaled once (linear in the nodes); nothing is solved again.
 //!
 //! ```
 //! use boltzone::contact::two_plate::{solve_field, TwoPlateParams};

@@ -23,15 +23,18 @@
 //! Welded dissimilar plates may have no sign-consistent contact edge; the level record then says
 //! that the report's rule decided ([`TwoPlateLevel::report_rule`]).
 //!
-//! **Accuracy.** Over the design map (68 geometries, A/D ∈ [0.2, 5], B/A ∈ [1.1, 5],
-//! C = 15.4 A) no actual error exceeded the estimate at tolerances from 2e-3 to 1e-4 (at most
-//! 0.57 of it, against runs converged to 3e-6): example 13 repeats the check point by point,
-//! `tests/contact/two_plate.rs` (`error_estimate_measures_the_actual_error`) on two
-//! geometries; R_o converges at order 2 in the element size at R_o (same file,
-//! `r_o_converges_at_the_observed_rate`); the semi-analytic receding contact agrees within both
-//! estimates (`tests/contact/receding_vs_fe.rs`).
+//! # Accuracy
 //!
-//! **Cost.** `cargo bench --bench contact`: one Table 1 geometry to 0.05 %, and all of Table 1.
+//! Over the design map (68 geometries, A/D ∈ [0.2, 5], B/A ∈ [1.1, 5], C = 15.4 A) no actual error
+//! exceeded the estimate at tolerances from 2e-3 to 1e-4 (at most 0.57 of it, against runs
+//! converged to 3e-6): example 13 repeats the check point by point, `tests/contact/two_plate.rs`
+//! (`error_estimate_measures_the_actual_error`) on two geometries; R_o converges at order 2 in the
+//! element size at R_o (same file, `r_o_converges_at_the_observed_rate`); the semi-analytic
+//! receding contact agrees within both estimates (`tests/contact/receding_vs_fe.rs`).
+//!
+//! # Cost
+//!
+//! `cargo bench --bench contact`: one Table 1 geometry to 0.05 %, and all of Table 1.
 //!
 //! Units: any consistent set (inches, psi). Forces are totals around the circle; p > 0 is
 //! compression; g > 0 an open gap; the nut deflection is negative toward the interface.

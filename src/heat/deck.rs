@@ -13,8 +13,8 @@
 //!
 //! Blank groups (node numbers 0 and value 0) are ignored; fields are read by
 //! [`crate::fortran::Card`] (implied decimals, E/D exponents; a blank field is 0, and a blank
-//! that FORTRAN 66 read as a zero and that changes the value is an error). The program then looped back for another deck,
-//! so a file may hold several; blank cards after the last deck are ignored. Where the listing
+//! that FORTRAN 66 read as a zero and that changes the value is an error). The program then
+//! looped back for another deck, so a file may hold several; blank cards after the last deck are ignored. Where the listing
 //! would silently lose a value, this reader stops with an error instead: a conductance punched
 //! from the higher node to the lower (the listing overwrote it with the symmetric entry), one
 //! from a node to itself (the listing zeroed the diagonal), a pair or a ground given twice (the
@@ -24,11 +24,16 @@
 //! Errors ([`DeckError`], the one deck error type) give the line, the columns, the field and
 //! the text found there.
 //!
-//! Accuracy and robustness: `tests/heat_deck.rs` solves a deck written by hand against the same
-//! network built through the API, and feeds hundreds of seeded mutations of it (10⁴ in an ignored
-//! test) without a panic, every error naming a line and a field.
-//! Cost: linear in the deck's length (the example `examples/15_lap_joint_heat.rs` writes and
-//! reads the Chapter V network as a deck).
+//! # Accuracy
+//!
+//! `tests/heat/deck.rs` solves a deck written by hand against the same network built through
+//! the API and against its closed form (`hand_written_deck_equals_the_api_network`), and feeds
+//! hundreds of seeded mutations of it (10⁴ in an ignored test) without a panic, every error
+//! naming a line and a field (`mutated_decks_never_panic_and_errors_name_line_and_field`).
+//!
+//! # Cost
+//!
+//! Linear in the deck's length (example 15 writes and reads the Chapter V network as a deck).
 //!
 //! ```
 //! use boltzone::heat::deck::parse_network_decks;

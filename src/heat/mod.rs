@@ -18,6 +18,14 @@
 //! Sign convention: interface pressure p > 0 in compression (σ_z = −p); heat flows toward a node
 //! are positive.
 //!
+//! # Accuracy
+//!
+//! Each file's Accuracy section; the test crate is `tests/heat/`.
+//!
+//! # Cost
+//!
+//! Each file's Cost section; example 15 (the lap joint).
+//!
 //! ```
 //! use boltzone::heat::units::{Conductance, Resistance};
 //! let g = Conductance::btu_per_hr_f(1.0);

@@ -1,5 +1,13 @@
 //! Errors of scenes: bad input located by key and line, and the solvers' own errors.
 //!
+//! # Accuracy
+//!
+//! Not numerical: `tests/scene/errors.rs` (errors located by key and line, exit codes 2 and 3).
+//!
+//! # Cost
+//!
+//! None.
+//!
 //! ```
 //! let e = boltzone::scene::Scene::parse("units = \"furlongs\"\n").unwrap_err();
 //! assert!(e.is_input() && e.line() == Some(1), "{e}");

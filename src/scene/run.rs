@@ -1,7 +1,14 @@
-//! Answers one scene: builds the library objects in SI units, runs the one route that serves
-//! the outputs asked, and converts the results back to the scene's units. Accuracy: the
-//! route's own; `tests/scene/examples.rs` finds R_o bit for bit equal to the library call on
-//! every example scene. Cost: the route's (`boltzone solve --explain` prints it per step).
+//! Answers one scene: builds the library objects in SI units, runs the one route that serves the
+//! outputs asked, and converts the results back to the scene's units.
+//!
+//! # Accuracy
+//!
+//! The route's own; `tests/scene/examples.rs` finds R_o bit for bit equal to the library call on
+//! every example scene.
+//!
+//! # Cost
+//!
+//! The route's (`boltzone solve --explain` prints it per step).
 //!
 //! ```
 //! let text = "model = \"single-plate\"\n[hole]\nradius = 0.1\n[load]\nouter_radius = 0.31\n\

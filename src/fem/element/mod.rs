@@ -19,10 +19,15 @@
 //!
 //! Sign convention: tension positive, compression negative.
 //!
-//! **Accuracy.** Symmetric stiffness with exactly one rigid-body mode and the patch tests
-//! (displacement- and traction-driven, skew rollers) to round-off for every kind
-//! (`tests/fem/elements.rs`); convergence orders on the Lamé cylinder (`tests/fem/lame.rs`).
-//! **Cost.** Per element, 4–9 quadrature points; assembly in `cargo bench --bench fem`.
+//! # Accuracy
+//!
+//! Symmetric stiffness with exactly one rigid-body mode and the patch tests (displacement- and
+//! traction-driven, skew rollers) to round-off for every kind (`tests/fem/elements.rs`);
+//! convergence orders on the Lamé cylinder (`tests/fem/lame.rs`).
+//!
+//! # Cost
+//!
+//! Per element, 4–9 quadrature points; assembly in `cargo bench --bench fem`.
 //!
 //! ```
 //! use boltzone::fem::element::ElementKind;

@@ -48,24 +48,28 @@
 //! one before, or after a single doubling the residual met or halved), else the larger of the
 //! last two changes.
 //!
-//! **Accuracy.** Modes alone: the residual falls like N^(−1.74) (the corner exponent;
-//! `tests/hankel/hole_correction.rs`, `residual_falls_at_the_corner_singularity_rate`). With
-//! the default 3 corner terms: like N^(−4) or faster (λ₂ = 4.8083 + 1.4639i bounds it at
-//! N^(−3.8)), down to the slab data's quadrature floor, ~3e-9 P; every Table 1 geometry reaches
-//! 1e-6 P at N ≤ 32 (example 05). R_o's actual error (against N = 256) falls 2.8× or more per
-//! doubling and is 2.1e-6 R_o or less already at N = 4; at the default tolerance ten of Table
-//! 1's rows stop at N = 8 and the two narrowest at N = 16, with estimates of 1.3e-8–8.8e-7 R_o
-//! and actual errors of 9e-14–9e-8 R_o (example 14). Against the finite-element single plate
-//! the difference is within the two estimates, < 0.005 % on Table 1, including a rim 1.3D
-//! beyond the load (`tests/fem/hole_agreement.rs`).
+//! # Accuracy
 //!
-//! **Cost** (R_o to 1e-6, default parameters; `cargo bench --bench hole` and example 14, one
-//! thread): 4.6–6.5 ms for the Table 1 rows that stop at N = 8, 8.7 ms for the two at N = 16,
-//! 72 ms for all twelve. About 30 % goes to the slab's traction on the hole at M/2 + 1
-//! Chebyshev–Lobatto heights (M = 24–72, [`profile`]; 4–12 thousand ξ-nodes, 1.1–3.0 ms), 25–35 %
-//! to the corner fields' tractions, the rest to the fit (Householder QR), the residual and the
-//! root search on interpolants sized for the bracket. The direct route
-//! ([`SlabSampling::Direct`]: every fitted and checked height integrated) costs 9.3–18 ms.
+//! Modes alone: the residual falls like N^(−1.74) (the corner exponent;
+//! `tests/hankel/hole_correction.rs`, `residual_falls_at_the_corner_singularity_rate`). With the
+//! default 3 corner terms: like N^(−4) or faster (λ₂ = 4.8083 + 1.4639i bounds it at N^(−3.8)),
+//! down to the slab data's quadrature floor, ~3e-9 P; every Table 1 geometry reaches 1e-6 P at N ≤
+//! 32 (example 05). R_o's actual error (against N = 256) falls 2.8× or more per doubling and is
+//! 2.1e-6 R_o or less already at N = 4; at the default tolerance ten of Table 1's rows stop at N =
+//! 8 and the two narrowest at N = 16, with estimates of 1.3e-8–8.8e-7 R_o and actual errors of
+//! 9e-14–9e-8 R_o (example 14). Against the finite-element single plate the difference is within
+//! the two estimates, < 0.005 % on Table 1, including a rim 1.3D beyond the load
+//! (`tests/fem/hole_agreement.rs`).
+//!
+//! # Cost
+//!
+//! (R_o to 1e-6, default parameters; `cargo bench --bench hole` and example 14, one thread):
+//! 4.6–6.5 ms for the Table 1 rows that stop at N = 8, 8.7 ms for the two at N = 16, 72 ms for all
+//! twelve. About 30 % goes to the slab's traction on the hole at M/2 + 1 Chebyshev–Lobatto heights
+//! (M = 24–72, [`profile`]; 4–12 thousand ξ-nodes, 1.1–3.0 ms), 25–35 % to the corner fields'
+//! tractions, the rest to the fit (Householder QR), the residual and the root search on
+//! interpolants sized for the bracket. The direct route ([`SlabSampling::Direct`]: every fitted and
+//! checked height integrated) costs 9.3–18 ms.
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};

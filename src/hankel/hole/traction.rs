@@ -30,9 +30,14 @@
 //! e^(−ξζ) and beats at the frequency B − A): which is why [`super::profile`] samples only a few
 //! Chebyshev heights and interpolates.
 //!
-//! **Accuracy.** The batched tractions match the slab solver's per-point integrals
+//! # Accuracy
+//!
+//! The batched tractions match the slab solver's per-point integrals
 //! (`tests/hankel/hole_correction.rs`, `batched_hole_tractions_match_the_slab_solver`).
-//! **Cost.** See [`super::profile`].
+//!
+//! # Cost
+//!
+//! See [`super::profile`].
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{QuadParams, Slab}};

@@ -49,17 +49,21 @@
 //! assembled by [`crate::fem::assemble()`](fn@crate::fem::assemble) and solved by the sparse
 //! Cholesky of [`crate::fem::Factorization`].
 //!
-//! **Accuracy** (`tests/io/exact.rs`): a distorted patch through a deck reproduces uniform
-//! stress to rounding; the Lamé cylinder's nodal displacement error falls at the observed rate 2
-//! under refinement; a deck of the Table 1 single plate matches the library's solve on the same
-//! mesh to 1e-10; the thermal decks reproduce the free and held bodies' exact solutions.
-//! `tests/io/read.rs` and `tests/io/mutants.rs` check the reader and that ≥ 10⁴ mutated decks
-//! never panic and always name line and field.
+//! # Accuracy
 //!
-//! **Cost**: one sparse factorization per deck. The Table 1 plate as `boltzone deck --emit`
-//! writes it (300 nodes, 540 equations; `tests/io/exact.rs`, `emitted_table1_deck_is_stable`,
-//! prints the time) solves in about 6 ms; reading is linear in the cards (100 000 mutated decks
-//! read and, where valid, run in 4.3 s, `tests/io/mutants.rs`).
+//! (`tests/io/exact.rs`): a distorted patch through a deck reproduces uniform stress to rounding;
+//! the Lamé cylinder's nodal displacement error falls at the observed rate 2 under refinement; a
+//! deck of the Table 1 single plate matches the library's solve on the same mesh to 1e-10; the
+//! thermal decks reproduce the free and held bodies' exact solutions. `tests/io/read.rs` and
+//! `tests/io/mutants.rs` check the reader and that ≥ 10⁴ mutated decks never panic and always name
+//! line and field.
+//!
+//! # Cost
+//!
+//! One sparse factorization per deck. The Table 1 plate as `boltzone deck --emit` writes it (300
+//! nodes, 540 equations; `tests/io/exact.rs`, `emitted_table1_deck_is_stable`, prints the time)
+//! solves in about 6 ms; reading is linear in the cards (100 000 mutated decks read and, where
+//! valid, run in 4.3 s, `tests/io/mutants.rs`).
 //!
 //! ```
 //! use boltzone::io::deck::{read_decks, run};
