@@ -35,6 +35,10 @@ use crate::load::FaceLoad;
 use crate::material::Material;
 use serde::{Deserialize, Serialize};
 
+/// Where a wide or infinite single plate is cut, in half-thicknesses D beyond B: the rim's
+/// effect on the midplane σ_z decays like e^(−2.1 (C − r)/D), so beyond B + 30 D it is below
+/// f64 resolution of R_o (used by the finite-element and the Hankel single plates).
+pub const FAR_RIM: f64 = 30.0;
 /// Outer radius C of the plates.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub enum OuterRadius {

@@ -35,20 +35,7 @@
 
 use super::error::ContactError;
 use super::level::Model;
-use super::two_plate::{solve_keeping, TwoPlateParams, TwoPlateSolution};
-use crate::joint::Joint;
 use crate::material::Material;
-
-/// As [`super::two_plate::solve`], and the finest level's field (mesh, materials,
-/// displacements, which interface nodes are closed) in the joint's own units, for output
-/// ([`crate::io::vtu`]).
-pub fn solve_field(
-    joint: &Joint,
-    params: &TwoPlateParams,
-) -> Result<(TwoPlateSolution, TwoPlateField), ContactError> {
-    let (s, field) = solve_keeping(joint, params)?;
-    Ok((s, field.rescaled()?))
-}
 
 /// The finest level's field in the joint's units (module docs).
 #[derive(Debug, Clone)]

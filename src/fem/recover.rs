@@ -181,7 +181,7 @@ pub fn nodal_stresses(
 /// forces are `forces` (one per line node): solves M t = forces, M_ij = ∫ N_i N_j 2πr dr.
 pub fn line_traction(mesh: &Mesh, line: &[usize], forces: &[f64]) -> Result<Vec<f64>, FemError> {
     if forces.len() != line.len() {
-        return Err(FemError::Input(crate::InputError::Parameter {
+        return Err(FemError::Input(crate::error::InputError::Parameter {
             field: "number of line forces",
             value: forces.len() as f64,
             reason: "must equal the number of line nodes",

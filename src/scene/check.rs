@@ -73,6 +73,20 @@ fn k(s: &str) -> Seg {
     Seg::Key(s.into())
 }
 
+impl Scene {
+    /// Parses and checks a scene (errors name the key, the value and the line).
+    pub fn parse(text: &str) -> Result<Self, SceneError> {
+        let scene = Self::parse_unchecked(text)?;
+        check(&scene, text)?;
+        Ok(scene)
+    }
+
+    /// Checks every value (the line of each error is looked up in `text`).
+    pub fn check(&self, text: &str) -> Result<(), SceneError> {
+        check(self, text)
+    }
+}
+
 /// Checks `scene`, looking lines up in `text`.
 pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
     let c = Checker { text };

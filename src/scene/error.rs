@@ -14,9 +14,9 @@
 //! ```
 
 use crate::contact::ContactError;
+use crate::error::InputError;
 use crate::fem::FemError;
 use crate::hankel::separation::SeparationError;
-use crate::InputError;
 
 /// Why a scene could not be read or answered.
 #[derive(Debug, thiserror::Error)]

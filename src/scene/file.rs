@@ -315,8 +315,8 @@ pub fn key_near(text: &str, line: usize) -> String {
 }
 
 impl Scene {
-    /// Parses and checks a scene (errors name the key, the value and the line).
-    pub fn parse(text: &str) -> Result<Self, SceneError> {
+    /// Parses a scene without checking its values ([`Scene::parse`] checks them too).
+    pub(super) fn parse_unchecked(text: &str) -> Result<Self, SceneError> {
         let de = toml::Deserializer::parse(text).map_err(|e| syntax(text, &e))?;
         let scene: Scene = serde_path_to_error::deserialize(de).map_err(|e| {
             let path: Vec<Seg> = e
@@ -344,7 +344,6 @@ impl Scene {
                 reason: inner.message().trim().to_string(),
             }
         })?;
-        scene.check(text)?;
         Ok(scene)
     }
 
@@ -364,11 +363,6 @@ impl Scene {
             s.plates[i].material = Some(self.material_of(i));
         }
         s
-    }
-
-    /// Checks every value (the line of each error is looked up in `text`).
-    pub fn check(&self, text: &str) -> Result<(), SceneError> {
-        super::check::check(self, text)
     }
 }
 

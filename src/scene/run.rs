@@ -26,7 +26,9 @@ use crate::contact::two_plate::{self, EdgeSupport, InterfaceModel, Loading, TwoP
 use crate::fem::single::{self as fem_single, FaceCondition, SingleParams};
 use crate::hankel::hole::{single_plate_separation, HoleParams};
 use crate::hankel::{SeparationParams, Slab};
-use crate::{FaceLoad, Joint, Material, OuterRadius, Peak, Plate};
+use crate::joint::{Joint, OuterRadius, Plate};
+use crate::load::{FaceLoad, Peak};
+use crate::material::Material;
 use serde::Serialize;
 use std::f64::consts::PI;
 use std::time::Instant;
@@ -304,7 +306,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
 }
 
 /// The single-plate substitute of a symmetric joint.
-fn substitute(joint: &Joint) -> Result<crate::SinglePlate, SceneError> {
+fn substitute(joint: &Joint) -> Result<crate::joint::SinglePlate, SceneError> {
     joint.single_plate_substitute().ok_or(SceneError::Invalid {
         key: "plates".into(),
         line: 1,

@@ -57,7 +57,7 @@ pub fn single_plate_separation(
     // A rim farther than B + 30 D is an end effect decaying like e^(−2.1 (C − r)/D) at the
     // midplane, below f64 resolution of R_o (see `fem::single`): the plate is infinite to
     // every digit, and its rim correction (whose cost grows with C/D) is skipped.
-    let far = crate::fem::single::FAR_RIM * plate.half_thickness() + plate.load().outer();
+    let far = crate::joint::FAR_RIM * plate.half_thickness() + plate.load().outer();
     let infinite;
     let plate = match plate.outer_radius() {
         OuterRadius::Finite(c) if c > far => {

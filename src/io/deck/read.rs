@@ -208,7 +208,7 @@ fn read_materials(
             };
             if let Err(e) = Material::new(row[1], row[2]) {
                 let (f, v, cols) = match e {
-                    crate::InputError::PoissonRatio { .. } => ("nu", row[2], cn),
+                    crate::error::InputError::PoissonRatio { .. } => ("nu", row[2], cn),
                     _ => ("E", row[1], ce),
                 };
                 return Err(p.error(cols.0, cols.1, f, &v.to_string(), &e.to_string()));
