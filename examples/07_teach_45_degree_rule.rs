@@ -37,7 +37,7 @@ use boltzone::compare::{compare, CompareParams, Geometry};
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
 use boltzone::fem::single::{coarse_radial_spacing, solve_midplane, FaceCondition, SingleParams};
 use boltzone::fem::{ElementKind, SolveParams};
-use boltzone::plot::{write_figure, Curve, CurveFigure, Marker};
+use boltzone::plot::{write_figure, Curve, CurveFigure, Marker, PALETTE};
 use boltzone::reference;
 use boltzone::OuterRadius;
 use std::f64::consts::PI;
@@ -156,34 +156,34 @@ pub fn run(out: &Path) -> anyhow::Result<Summary> {
             Curve {
                 label: "single plate 2D thick: midplane −σ_z/P".into(),
                 points: clip(&mid.r, &compression),
-                color: (200, 60, 30),
+                color: PALETTE[6],
             },
             Curve {
                 label: "two plates: interface pressure p/P".into(),
                 points: clip(&two.radius, &two.pressure),
-                color: (20, 80, 200),
+                color: PALETTE[5],
             },
         ],
         markers: vec![
             Marker {
                 label: format!("load edge B/A = {:.2}", g.b / a),
                 x: g.b / a,
-                color: (120, 120, 120),
+                color: PALETTE[0],
             },
             Marker {
                 label: format!("two-plate R_o/A = {:.3}", c.two.value / a),
                 x: c.two.value / a,
-                color: (20, 80, 200),
+                color: PALETTE[2],
             },
             Marker {
                 label: format!("single-plate zero R_o/A = {:.3}", c.single.value / a),
                 x: c.single.value / a,
-                color: (200, 60, 30),
+                color: PALETTE[7],
             },
             Marker {
                 label: format!("45° rule (B + D)/A = {:.3}", cone45 / a),
                 x: cone45 / a,
-                color: (0, 150, 60),
+                color: PALETTE[3],
             },
         ],
         x_range: (1.0, x_max),

@@ -20,13 +20,13 @@
 //! suite does).
 
 use boltzone::contact::two_plate::{solve, TwoPlateParams, TwoPlateSolution};
-use boltzone::fem::{ElementKind, Mesh, PlateSpec, Spacing};
-use boltzone::heat::conduction::solve_conduction;
+use boltzone::fem::Spacing;
 use boltzone::heat::correlation::{ContactConductance, Correlation, Surfaces};
 use boltzone::heat::joint::{joint_conductance, rings, JointParams};
 use boltzone::heat::lap::{LapJoint, LapSolution};
 use boltzone::heat::network::Network;
 use boltzone::heat::units::{Coefficient, Conductivity, Length, Pressure};
+use boltzone::heat::zone::{zone_resistance, Zone};
 use boltzone::reference::chapter5_interface;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius};
 use std::f64::consts::PI;
@@ -89,23 +89,16 @@ fn axisymmetric_check(s: &TwoPlateSolution, params: &JointParams, n: usize) -> [
             0.0
         }
     };
-    // FE: Q9, n radial elements, 4 per plate in z.
+    // FE: Q9, n radial elements, 4 per plate in z (heat::zone).
+    let zone = Zone {
+        outer_radius: 0.75,
+        thickness: [D, D],
+        conductivity: Conductivity::btu_per_hr_ft_f(100.0),
+        radial: n,
+        axial: 4,
+    };
+    let q_fe = 1.0 / zone_resistance(s, params, &zone).unwrap().resistance.si();
     let r = Spacing::uniform(a, re, n).unwrap();
-    let plates = [
-        PlateSpec {
-            z: Spacing::uniform(0.0, t, 4).unwrap(),
-            material: 0,
-        },
-        PlateSpec {
-            z: Spacing::uniform(t, 2.0 * t, 4).unwrap(),
-            material: 0,
-        },
-    ];
-    let mesh = Mesh::structured(ElementKind::Q9, &r, &plates).unwrap();
-    let mut fixed: Vec<(usize, f64)> = mesh.outer(1).into_iter().map(|i| (i, 1.0)).collect();
-    fixed.extend(mesh.outer(0).into_iter().map(|i| (i, 0.0)));
-    let fe = solve_conduction(&mesh, &[k], &h, &fixed).unwrap();
-    let q_fe: f64 = mesh.outer(1).iter().map(|&i| fe.flow[i]).sum();
     // Plane ring networks on the same radii: nodes 1..n at r_0..r_{n-1} per plate, the rim as
     // ground through the last radial link.
     let radii = r.points();

@@ -1,20 +1,27 @@
 //! Figures as SVG or PNG (by the file's extension) with plotters: curves against one axis with
-//! marked radii ([`CurveFigure`]), and heat maps over a log–log grid with colour bars
-//! ([`HeatMapFigure`]). Files are written whole or not at all ([`crate::fsutil`]: a temporary
+//! marked radii ([`CurveFigure`]), heat maps over a log–log grid with colour bars and contour
+//! lines ([`HeatMapFigure`], [`contour`]), and cross-section drawings at equal scales
+//! ([`SectionFigure`]). Files are written whole or not at all ([`crate::fsutil`]: a temporary
 //! name beside the target, renamed into place; [`write_atomic`]), so a reader never sees half a
-//! figure.
+//! figure; [`svg_string`] gives the SVG text for inlining (the HTML report).
+//!
+//! Colours: give each series of a figure its own entry of [`PALETTE`] (Okabe & Ito's,
+//! distinguishable with the common colour-vision deficiencies). PNG is anti-aliased by drawing
+//! three times larger and averaging ([`raster`]).
 //!
 //! PNG text is drawn with the DejaVu Sans font shipped in `assets/` (licence beside it), compiled
 //! in and registered on first use: plotters' `ab_glyph` backend has no system fonts.
 //!
 //! # Accuracy
 //!
-//! Not numerical: the figures are checked by `tests/io/plot_out.rs`
-//! (`plots_mark_r_o_and_the_rules`) and looked at by example 07.
+//! Not numerical: what each figure shows is read back from its SVG by `tests/io/plot_out.rs`,
+//! `tests/io/figure_joint.rs` and `tests/io/figure_map.rs` (markers at the computed radii, equal
+//! scales, round ticks); the PNG rasterisation by `tests/io/figure_png.rs`.
 //!
 //! # Cost
 //!
-//! Milliseconds per figure (plotters' SVG and bitmap backends).
+//! A figure draws in milliseconds (SVG) to tens of milliseconds (PNG, 9× the pixels); measured
+//! in `tests/io/figure_joint.rs`'s `two --plot` run.
 //!
 //! ```
 //! use boltzone::plot::{write_figure, Curve, CurveFigure};
@@ -30,9 +37,32 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod contour;
+mod heat;
+pub mod raster;
+pub mod section;
+
+pub use heat::{diverging, viridis, HeatMapFigure, HeatPanel};
+pub use section::{Outline, SectionFigure};
+
+use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
+
+/// Okabe & Ito's eight colours (2008), distinguishable with the common colour-vision
+/// deficiencies: black, orange, sky blue, bluish green, yellow, blue, vermilion, reddish purple.
+/// Give each series of a figure its own entry (yellow is pale on white: last resort).
+pub const PALETTE: [(u8, u8, u8); 8] = [
+    (0, 0, 0),
+    (230, 159, 0),
+    (86, 180, 233),
+    (0, 158, 115),
+    (240, 228, 66),
+    (0, 114, 178),
+    (213, 94, 0),
+    (204, 121, 167),
+];
 
 /// Failures of figure output.
 #[derive(Debug, thiserror::Error)]
@@ -53,7 +83,7 @@ pub enum PlotError {
     },
 }
 
-fn pe<E: std::fmt::Display>(e: E) -> PlotError {
+pub(crate) fn pe<E: std::fmt::Display>(e: E) -> PlotError {
     PlotError::Draw(e.to_string())
 }
 
@@ -65,7 +95,9 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
     })
 }
 
-fn register_font() {
+/// Registers the shipped DejaVu Sans as "sans-serif" for plotters' text (once per process;
+/// [`write_figure`] and [`svg_string`] call it): needed before drawing on a backend directly.
+pub fn register_font() {
     static ONCE: std::sync::Once = std::sync::Once::new();
     ONCE.call_once(|| {
         let font: &'static [u8] = include_bytes!("../assets/DejaVuSans.ttf");
@@ -80,28 +112,49 @@ pub trait Figure {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), PlotError>;
 }
 
+/// `fig` as SVG text of `size` pixels (for inlining in HTML).
+pub fn svg_string<F: Figure>(fig: &F, size: (u32, u32)) -> Result<String, PlotError> {
+    register_font();
+    let mut s = String::new();
+    {
+        let root = SVGBackend::with_string(&mut s, size).into_drawing_area();
+        fig.draw(&root)?;
+        root.present().map_err(pe)?;
+    }
+    Ok(s)
+}
+
 /// Writes `fig` as SVG or PNG (by `path`'s extension) of `size` pixels, atomically.
 pub fn write_figure<F: Figure>(fig: &F, path: &Path, size: (u32, u32)) -> Result<(), PlotError> {
     // Both backends measure text with the registered font (SVG for layout, PNG to draw).
     register_font();
     match path.extension().and_then(|e| e.to_str()) {
-        Some("svg") => {
-            let mut s = String::new();
+        Some("svg") => write_atomic(path, svg_string(fig, size)?.as_bytes()),
+        Some("png") => {
+            // drawn FACTOR times larger and averaged down: anti-aliased ([`raster`])
+            let k = raster::FACTOR as usize;
+            let mut big = vec![255u8; size.0 as usize * size.1 as usize * 3 * k * k];
             {
-                let root = SVGBackend::with_string(&mut s, size).into_drawing_area();
+                let root = raster::Supersampled::new(&mut big, size).into_drawing_area();
                 fig.draw(&root)?;
                 root.present().map_err(pe)?;
             }
-            write_atomic(path, s.as_bytes())
-        }
-        Some("png") => {
+            let small = raster::downsample(&big, size);
             let io = |source| PlotError::Io {
                 path: path.to_path_buf(),
                 source,
             };
             let draw = |tmp: &Path| {
                 let root = BitMapBackend::new(tmp, size).into_drawing_area();
-                fig.draw(&root)?;
+                root.draw(
+                    &plotters::element::BitMapElement::with_owned_buffer(
+                        (0, 0),
+                        size,
+                        small.clone(),
+                    )
+                    .ok_or_else(|| PlotError::Draw("internal: bitmap size".into()))?,
+                )
+                .map_err(pe)?;
                 root.present().map_err(pe)
             };
             crate::fsutil::replace_with(path, draw, io)
@@ -156,7 +209,7 @@ pub fn typeset(text: &str) -> String {
     text.replace("R_o", "R\u{2092}")
 }
 
-fn rgb(c: (u8, u8, u8)) -> RGBColor {
+pub(crate) fn rgb(c: (u8, u8, u8)) -> RGBColor {
     RGBColor(c.0, c.1, c.2)
 }
 
@@ -176,6 +229,8 @@ impl Figure for CurveFigure {
             .configure_mesh()
             .x_desc(typeset(&self.x_label))
             .y_desc(typeset(&self.y_label))
+            .x_label_formatter(&|v| contour::axis_label(*v, x1 - x0))
+            .y_label_formatter(&|v| contour::axis_label(*v, y1 - y0))
             .label_style(("sans-serif", 15))
             .draw()
             .map_err(pe)?;
@@ -196,157 +251,47 @@ impl Figure for CurveFigure {
                 .label(typeset(&c.label))
                 .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], col.stroke_width(2)));
         }
-        for m in &self.markers {
-            let col = rgb(m.color);
-            chart
-                .draw_series(DashedLineSeries::new(
-                    [(m.x, y0), (m.x, y1)],
-                    6,
-                    4,
-                    col.stroke_width(2),
-                ))
-                .map_err(pe)?
-                .label(typeset(&m.label))
-                .legend(move |(x, y)| {
-                    // dashed in the legend as on the plot: three dashes of 4 px
-                    let dash = |a: i32| PathElement::new([(a, 0), (a + 4, 0)], col.stroke_width(2));
-                    EmptyElement::at((x, y)) + dash(0) + dash(8) + dash(16)
-                });
-        }
+        draw_markers(&mut chart, &self.markers, (y0, y1))?;
+        draw_legend(&mut chart)
+    }
+}
+
+/// Draws the legend of `chart`'s labelled series in its upper right corner.
+pub(crate) fn draw_legend<'a, DB: DrawingBackend + 'a>(
+    chart: &mut ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+) -> Result<(), PlotError> {
+    chart
+        .configure_series_labels()
+        .label_font(("sans-serif", 15))
+        .background_style(WHITE.mix(0.9))
+        .border_style(BLACK)
+        .position(SeriesLabelPosition::UpperRight)
+        .draw()
+        .map_err(pe)
+}
+
+/// Draws `markers` as dashed vertical lines from y0 to y1 with dashed legend entries.
+pub(crate) fn draw_markers<'a, DB: DrawingBackend + 'a>(
+    chart: &mut ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+    markers: &[Marker],
+    (y0, y1): (f64, f64),
+) -> Result<(), PlotError> {
+    for m in markers {
+        let col = rgb(m.color);
         chart
-            .configure_series_labels()
-            .label_font(("sans-serif", 15))
-            .background_style(WHITE.mix(0.9))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(pe)
+            .draw_series(DashedLineSeries::new(
+                [(m.x, y0), (m.x, y1)],
+                6,
+                4,
+                col.stroke_width(2),
+            ))
+            .map_err(pe)?
+            .label(typeset(&m.label))
+            .legend(move |(x, y)| {
+                // dashed in the legend as on the plot: three dashes of 4 px
+                let dash = |a: i32| PathElement::new([(a, 0), (a + 4, 0)], col.stroke_width(2));
+                EmptyElement::at((x, y)) + dash(0) + dash(8) + dash(16)
+            });
     }
-}
-
-/// One panel of a [`HeatMapFigure`]: z over the grid, row-major (x index outer).
-#[derive(Debug, Clone, PartialEq)]
-pub struct HeatPanel {
-    /// Caption.
-    pub title: String,
-    /// Values, z\[i·len(y) + j\] at (x\[i\], y\[j\]).
-    pub z: Vec<f64>,
-}
-
-/// Heat maps over a grid that is logarithmic in both x and y, one panel each, 2 per row.
-#[derive(Debug, Clone, PartialEq)]
-pub struct HeatMapFigure {
-    /// x values (positive, increasing).
-    pub x: Vec<f64>,
-    /// y values (positive, increasing).
-    pub y: Vec<f64>,
-    /// x axis label.
-    pub x_label: String,
-    /// y axis label.
-    pub y_label: String,
-    /// The panels.
-    pub panels: Vec<HeatPanel>,
-}
-
-/// The viridis colour map (five anchors, linear between them) at t ∈ [0, 1].
-pub fn viridis(t: f64) -> RGBColor {
-    const C: [(f64, f64, f64); 5] = [
-        (68.0, 1.0, 84.0),
-        (59.0, 82.0, 139.0),
-        (33.0, 145.0, 140.0),
-        (94.0, 201.0, 98.0),
-        (253.0, 231.0, 37.0),
-    ];
-    let s = t.clamp(0.0, 1.0) * 4.0;
-    let k = (s.floor() as usize).min(3);
-    let f = s - k as f64;
-    let mix = |a: f64, b: f64| (a + f * (b - a)).round() as u8;
-    let (a, b) = (C[k], C[k + 1]);
-    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
-}
-
-/// Cell edges in log10 around log-spaced centres (geometric midpoints; half a step beyond ends).
-fn edges(v: &[f64]) -> Vec<f64> {
-    let l: Vec<f64> = v.iter().map(|x| x.log10()).collect();
-    let n = l.len();
-    if n == 1 {
-        return vec![l[0] - 0.05, l[0] + 0.05];
-    }
-    let mut e = vec![l[0] - 0.5 * (l[1] - l[0])];
-    e.extend(l.windows(2).map(|w| 0.5 * (w[0] + w[1])));
-    e.push(l[n - 1] + 0.5 * (l[n - 1] - l[n - 2]));
-    e
-}
-
-impl Figure for HeatMapFigure {
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), PlotError> {
-        root.fill(&WHITE).map_err(pe)?;
-        let rows = self.panels.len().div_ceil(2);
-        let areas = root.split_evenly((rows, 2));
-        let (ex, ey) = (edges(&self.x), edges(&self.y));
-        let ny = self.y.len();
-        let fmt = |v: &f64| format!("{:.2}", 10f64.powf(*v));
-        for (panel, area) in self.panels.iter().zip(&areas) {
-            let (lo, hi) = panel
-                .z
-                .iter()
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &z| {
-                    (a.min(z), b.max(z))
-                });
-            let span = if hi > lo { hi - lo } else { 1.0 };
-            let w = area.dim_in_pixel().0;
-            let (main, bar) = area.split_horizontally(w.saturating_sub(90));
-            let mut chart = ChartBuilder::on(&main)
-                .caption(typeset(&panel.title), ("sans-serif", 16))
-                .margin(8)
-                .x_label_area_size(40)
-                .y_label_area_size(50)
-                .build_cartesian_2d(ex[0]..ex[ex.len() - 1], ey[0]..ey[ey.len() - 1])
-                .map_err(pe)?;
-            chart
-                .configure_mesh()
-                .disable_mesh()
-                .x_desc(typeset(&self.x_label))
-                .y_desc(typeset(&self.y_label))
-                .x_label_formatter(&fmt)
-                .y_label_formatter(&fmt)
-                .label_style(("sans-serif", 13))
-                .draw()
-                .map_err(pe)?;
-            chart
-                .draw_series(panel.z.iter().enumerate().map(|(k, &z)| {
-                    let (i, j) = (k / ny, k % ny);
-                    Rectangle::new(
-                        [(ex[i], ey[j]), (ex[i + 1], ey[j + 1])],
-                        viridis((z - lo) / span).filled(),
-                    )
-                }))
-                .map_err(pe)?;
-            // Colour bar with its scale on the right.
-            let mut cb = ChartBuilder::on(&bar)
-                .margin_top(32)
-                .margin_bottom(48)
-                .margin_left(4)
-                .right_y_label_area_size(55)
-                .build_cartesian_2d(0.0..1.0, lo..lo + span)
-                .map_err(pe)?;
-            cb.configure_mesh()
-                .disable_mesh()
-                .disable_x_axis()
-                .label_style(("sans-serif", 12))
-                .y_label_formatter(&|v: &f64| format!("{v:.1}"))
-                .draw()
-                .map_err(pe)?;
-            let steps = 64;
-            cb.draw_series((0..steps).map(|s| {
-                let (a, b) = (s as f64 / steps as f64, (s + 1) as f64 / steps as f64);
-                Rectangle::new(
-                    [(0.0, lo + a * span), (1.0, lo + b * span)],
-                    viridis(0.5 * (a + b)).filled(),
-                )
-            }))
-            .map_err(pe)?;
-        }
-        Ok(())
-    }
+    Ok(())
 }

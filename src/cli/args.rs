@@ -122,3 +122,13 @@ impl OutputFiles {
         Ok(())
     }
 }
+
+/// `--units`: the unit system of every length, stress and force given and printed.
+#[derive(Debug, Clone, Copy, clap::Args, serde::Serialize)]
+pub struct Units {
+    /// Unit system of every length, stress and force given and printed: in-psi-lbf (the
+    /// report's), mm-MPa-N or m-Pa-N.
+    #[arg(long, default_value = "in-psi-lbf", value_parser = clap::builder::ValueParser::new(
+        |s: &str| s.parse::<boltzone::scene::UnitSystem>()))]
+    pub units: boltzone::scene::UnitSystem,
+}

@@ -15,17 +15,23 @@
 //! Milliseconds per figure, after the solve.
 
 use super::exit::usage;
-use boltzone::plot::{write_figure, Curve, CurveFigure, Marker};
+use boltzone::plot::{write_figure, Curve, CurveFigure, Marker, PALETTE};
 use boltzone::rules;
 use std::path::Path;
 
 /// Pixel size of the figure.
-const SIZE: (u32, u32) = (900, 600);
+pub const SIZE: (u32, u32) = (900, 600);
 
 /// Rejects a `--plot` path whose extension is neither svg nor png (exit 2).
 pub fn check_plot_path(flag: &str, path: &Path) -> anyhow::Result<()> {
     match path.extension().and_then(|e| e.to_str()) {
-        Some("svg" | "png") => super::check::output_path(flag, path),
+        Some("svg" | "png") => {
+            super::check::output_path(flag, path)?;
+            for what in ["gap", "deformed"] {
+                super::check::output_path(flag, &super::joint_figs::sibling(path, what))?;
+            }
+            Ok(())
+        }
         _ => usage(flag, path.display(), "must end in .svg or .png"),
     }
 }
@@ -47,28 +53,41 @@ pub struct RadiusCurve<'a> {
     pub r_o: (f64, f64),
 }
 
-/// Draws `curve` against r with B, R_o and the rules' radii marked to `path`. `b`, `d` and
-/// `d2` are the bearing radius and the plates' thicknesses, `c` the plate radius (None:
-/// infinite).
+/// Draws `curve` against r with B, R_o and the rules' radii marked to `path` ([`radius_figure`]).
+/// Returns the right end of the r axis.
 pub fn radius_plot(
     path: &Path,
     curve: &RadiusCurve<'_>,
+    geom: (f64, f64, f64, Option<f64>),
+) -> anyhow::Result<f64> {
+    let (fig, x_end) = radius_figure(curve, geom);
+    write_figure(&fig, path, SIZE)?;
+    eprintln!("wrote {}", path.display());
+    Ok(x_end)
+}
+
+/// `curve` against r with B, R_o and the rules' radii marked, and the right end of its r
+/// axis. `b`, `d` and `d2` are the bearing radius and the plates' thicknesses, `c` the plate
+/// radius (None: infinite).
+pub fn radius_figure(
+    curve: &RadiusCurve<'_>,
     (b, d, d2, c): (f64, f64, f64, Option<f64>),
-) -> anyhow::Result<()> {
+) -> (CurveFigure, f64) {
     let (r_o, r_o_error) = curve.r_o;
     let mut markers = vec![
         Marker {
             label: format!("B = {b:.4} in"),
             x: b,
-            color: (90, 90, 90),
+            color: PALETTE[1],
         },
         Marker {
             label: format!("Rₒ = {r_o:.4} ± {r_o_error:.1e} in (computed)"),
             x: r_o,
-            color: (200, 30, 30),
+            color: PALETTE[6],
         },
     ];
-    let colors = [(30, 90, 200), (20, 150, 60), (150, 60, 170)];
+    // one Okabe–Ito colour per series (curve black as in the report's figures)
+    let colors = [PALETTE[5], PALETTE[3], PALETTE[7]];
     for ((name, radius), color) in rule_radii((b, d, d2, c)).into_iter().zip(colors) {
         markers.push(Marker {
             label: format!("{name}: R = {radius:.4} in"),
@@ -96,7 +115,7 @@ pub fn radius_plot(
         curves: vec![Curve {
             label: curve.label.into(),
             points,
-            color: (0, 0, 0),
+            color: PALETTE[0],
         }],
         markers,
         x_range: (curve.r.first().copied().unwrap_or(0.0), x_end),
@@ -106,9 +125,7 @@ pub fn radius_plot(
             y_max + 5.0 * pad,
         ),
     };
-    write_figure(&fig, path, SIZE)?;
-    eprintln!("wrote {}", path.display());
-    Ok(())
+    (fig, x_end)
 }
 
 /// The rules of thumb's contact radii for bearing radius `b`, plates `d` (under the head) and

@@ -14,9 +14,13 @@ mod check;
 mod deck;
 pub mod exit;
 mod figure;
+mod figures;
+mod hankel_curve;
+mod joint_figs;
 mod map;
 mod output;
 mod report;
+mod serve;
 mod single;
 mod slab;
 mod solve;
@@ -55,6 +59,10 @@ enum Command {
     Table2(table2::Args),
     /// Design map over A/D x B/A: both models and the rules' errors, as CSV and heat maps.
     Map(map::Args),
+    /// The report's Figs. 12–29 and the classic slab curves as SVG, PNG and CSV, with a gallery.
+    Figures(figures::Args),
+    /// The teaching page and its JSON API (/api/joint) on a local HTTP server.
+    Serve(serve::Args),
     /// Run 1970 card decks (Appendices B, C) on the report's element; --emit writes one.
     Deck(deck::Args),
     /// Answer a scene file (TOML: joint, load, model, outputs, units, sweep).
@@ -74,6 +82,8 @@ pub fn run(cli: Cli) -> anyhow::Result<Status> {
         Some(Command::Table1(a)) => table1::run(a),
         Some(Command::Table2(a)) => table2::run(a),
         Some(Command::Map(a)) => map::run(a),
+        Some(Command::Figures(a)) => figures::run(a),
+        Some(Command::Serve(a)) => serve::run(a),
         Some(Command::Deck(a)) => deck::run(a),
         Some(Command::Solve(a)) => solve::run(a),
         Some(Command::Reference) => reference().map(|()| Status::Converged),

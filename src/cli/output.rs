@@ -41,7 +41,7 @@ pub fn command_line() -> String {
         .join(" ")
 }
 
-/// Adds `version`, `units`, `command` and `inputs` (the parsed arguments with defaults filled
+/// Adds `version`, `units` (in-psi-lbf unless `v` names its own), `command` and `inputs` (the parsed arguments with defaults filled
 /// in; flags not given and without a default are left out) to the JSON object `v`, and
 /// `seconds` since `start` when `v` has no timing of its own. Existing keys are kept.
 pub fn stamp<T: Serialize>(v: &mut Value, inputs: &T, start: Instant) -> anyhow::Result<()> {
@@ -52,7 +52,7 @@ pub fn stamp<T: Serialize>(v: &mut Value, inputs: &T, start: Instant) -> anyhow:
     let Value::Object(m) = v else {
         anyhow::bail!("internal: only a JSON object carries provenance");
     };
-    m.insert("units".into(), UNITS.into());
+    m.entry("units").or_insert_with(|| UNITS.into());
     m.insert("inputs".into(), inputs);
     stamp_run(v, start)
 }
@@ -75,11 +75,25 @@ pub fn stamp_run(v: &mut Value, start: Instant) -> anyhow::Result<()> {
 /// is `r [in]`), provenance `notes` (one `#` line each, after the standard lines: version,
 /// command, units) and `rows` of equal length.
 pub fn curve_csv(columns: &[&str], notes: &[String], rows: &[Vec<f64>]) -> String {
+    curve_csv_in(boltzone::scene::UnitSystem::InPsiLbf, columns, notes, rows)
+}
+
+/// [`curve_csv`] in the unit system `units` (its units line says which).
+pub fn curve_csv_in(
+    units: boltzone::scene::UnitSystem,
+    columns: &[&str],
+    notes: &[String],
+    rows: &[Vec<f64>],
+) -> String {
+    let (l, st, f) = units.symbols();
     let mut out = columns.join(",");
     out += "\n";
     out += &format!("# boltzone {}\n", env!("CARGO_PKG_VERSION"));
     out += &format!("# command: {}\n", command_line());
-    out += &format!("# units: {UNITS} (lengths in, stresses psi, forces lbf)\n");
+    out += &format!(
+        "# units: {} (lengths {l}, stresses {st}, forces {f})\n",
+        units.name()
+    );
     for n in notes {
         out += &format!("# {}\n", n.replace('\n', " "));
     }

@@ -1,14 +1,17 @@
-//! `two --report FILE.md`: a one-page calculation report of the user's joint in Markdown — the
-//! boltzone version, units and command, the inputs as understood (defaults filled in), the method
-//! and its error estimate, the results, the rules of thumb beside R_o with their errors, and the
-//! figure of `--plot` when one is drawn. Checked by `tests/io/plot_out.rs` (the record against
-//! the run's JSON, the rules against their closed forms).
+//! `two --report FILE.md` or `FILE.html`: a one-page calculation report of the user's joint —
+//! the boltzone version, units and command, the inputs as understood (defaults filled in), the
+//! method and its error estimate, the results, the rules of thumb beside R_o with their errors,
+//! and the figures. Markdown links the `--plot` files; HTML is self-contained, its figures (the
+//! interface pressure, the gap, the deformed joint) inlined as SVG. The report is built once as
+//! [`Block`]s and rendered either way. Checked by `tests/io/plot_out.rs` (the Markdown record
+//! against the run's JSON, the rules against their closed forms) and `tests/io/figure_joint.rs`
+//! (the HTML: the same rows, three inline SVGs, no external reference).
 //!
 //! # Accuracy
 //!
 //! No numerics of its own: `tests/io/plot_out.rs`
-//! (`calculation_report_records_inputs_results_and_rules`) checks it against the run's JSON and the
-//! cones' closed forms.
+//! (`calculation_report_records_inputs_results_and_rules`) checks the Markdown against the run's
+//! JSON and the cones' closed forms, `tests/io/figure_joint.rs` the HTML.
 //!
 //! # Cost
 //!
@@ -17,11 +20,10 @@
 use super::figure::rule_radii;
 use boltzone::contact::two_plate::TwoPlateSolution;
 use std::fmt::Write;
-use std::path::Path;
 
 /// What the report shows besides the solution: the parsed arguments, the joint's A, B, D, D₂,
-/// C (None: infinite), the bearing pressure P (psi), the tolerance and the figure's path.
-pub struct ReportInputs<'a> {
+/// C (None: infinite), the bearing pressure P (psi) and the tolerance.
+pub struct ReportInputs {
     /// The arguments as understood (serialized).
     pub inputs: serde_json::Value,
     /// A, B, D, D₂, C.
@@ -30,83 +32,210 @@ pub struct ReportInputs<'a> {
     pub pressure: f64,
     /// Wanted relative error of R_o.
     pub tolerance: f64,
-    /// The `--plot` file, if any.
-    pub plot: Option<&'a Path>,
 }
 
-/// The report as Markdown.
-pub fn two_report(s: &TwoPlateSolution, r: &ReportInputs<'_>) -> String {
+/// A piece of a report.
+pub enum Block {
+    /// A heading of `level` (1 or 2).
+    Heading(u8, String),
+    /// A paragraph (text; `code` spans marked by backticks).
+    Para(String),
+    /// A table: header and rows.
+    Table(Vec<String>, Vec<Vec<String>>),
+    /// A figure: caption, the file of `--plot` (Markdown link) and its SVG text (HTML).
+    Figure(String, Option<String>, String),
+}
+
+/// The report as [`Block`]s; `figures` are (caption, file, SVG text).
+pub fn two_report(
+    s: &TwoPlateSolution,
+    r: &ReportInputs,
+    figures: Vec<(String, Option<String>, String)>,
+) -> Vec<Block> {
     let (a, b, d, d2, c) = r.geometry;
-    let mut m = String::new();
-    let _ = writeln!(m, "# Calculation report: bolted joint, two-plate model\n");
-    let _ = writeln!(
-        m,
-        "boltzone {}; units {} (lengths in, stresses psi, forces lbf).\n\nCommand: `{}`\n",
-        env!("CARGO_PKG_VERSION"),
-        super::output::UNITS,
-        super::output::command_line()
-    );
-    m += "## Inputs\n\n| input | value | unit |\n|---|---|---|\n";
+    let row = |cells: &[&str]| cells.iter().map(|c| c.to_string()).collect::<Vec<_>>();
+    let head = |cells: &[&str]| row(cells);
+    let mut v = vec![
+        Block::Heading(
+            1,
+            "Calculation report: bolted joint, two-plate model".into(),
+        ),
+        Block::Para(format!(
+            "boltzone {}; units {} (lengths in, stresses psi, forces lbf).",
+            env!("CARGO_PKG_VERSION"),
+            super::output::UNITS
+        )),
+        Block::Para(format!("Command: `{}`", super::output::command_line())),
+        Block::Heading(2, "Inputs".into()),
+    ];
+    let mut inputs = Vec::new();
     if let serde_json::Value::Object(map) = &r.inputs {
         for (k, v) in map.iter().filter(|(_, v)| !v.is_null()) {
             let shown = match v {
                 serde_json::Value::String(t) => t.clone(),
                 v => v.to_string(),
             };
-            let _ = writeln!(m, "| {k} | {shown} | {} |", unit_of(k));
+            inputs.push(row(&[k, &shown, unit_of(k)]));
         }
     }
+    v.push(Block::Table(head(&["input", "value", "unit"]), inputs));
     let last = s.info.levels.last();
-    let _ = writeln!(
-        m,
-        "\n## Method\n\nThe two-plate model of Gould & Mikic (1970), Chapter II.B: axisymmetric \
-         finite elements, unilateral contact at the interface ({} model). The mesh is refined \
-         at A, B and R_o level by level until the error estimate of R_o (max(|d₃|, |d₂|/4, \
-         |d₁|/16) of the last level changes, plus the error of cutting a wide plate) meets the \
-         relative tolerance {}: {} levels, finest mesh {} nodes / {} unknowns, {:.2} s.\n",
+    v.push(Block::Heading(2, "Method".into()));
+    v.push(Block::Para(format!(
+        "The two-plate model of Gould & Mikic (1970), Chapter II.B: axisymmetric finite \
+         elements, unilateral contact at the interface ({} model). The mesh is refined at A, B \
+         and R_o level by level until the error estimate of R_o (max(|d₃|, |d₂|/4, |d₁|/16) of \
+         the last level changes, plus the error of cutting a wide plate) meets the relative \
+         tolerance {}: {} levels, finest mesh {} nodes / {} unknowns, {:.2} s.",
         s.info.model,
         r.tolerance,
         s.info.levels.len(),
         last.map_or(0, |l| l.nodes),
         last.map_or(0, |l| l.dofs),
         s.info.seconds
-    );
-    m += "## Results\n\n| quantity | value |\n|---|---|\n";
-    let _ = writeln!(
-        m,
-        "| separation radius R_o | {:.6} ± {:.1e} in |",
-        s.r_o, s.r_o_error
-    );
-    if a > 0.0 {
-        let _ = writeln!(m, "| R_o / A | {:.5} |", s.r_o / a);
-    }
+    )));
     let yes = |x: bool| if x { "yes" } else { "no" };
-    let _ = writeln!(m, "| contact diameter 2R_o | {:.6} in |", 2.0 * s.r_o);
-    let _ = writeln!(m, "| converged to the tolerance | {} |", yes(s.converged));
-    let _ = writeln!(m, "| full contact (R_o = C) | {} |", yes(s.full_contact));
-    let _ = writeln!(m, "| mean bearing pressure P | {:.6e} psi |", r.pressure);
-    let _ = writeln!(
-        m,
-        "| deflection under the nut | {:.4e} in |",
-        s.nut_deflection
-    );
-    m += "\n## Rules of thumb\n\nContact radius R of each rule and its error against the \
-          computed R_o.\n\n| rule | R [in] | (R − R_o)/R_o |\n|---|---|---|\n";
-    for (name, radius) in rule_radii((b, d, d2, c)) {
-        let _ = writeln!(
-            m,
-            "| {name} | {radius:.4} | {:+.1} % |",
-            100.0 * (radius - s.r_o) / s.r_o
-        );
+    let mut results = vec![row(&[
+        "separation radius R_o",
+        &format!("{:.6} ± {:.1e} in", s.r_o, s.r_o_error),
+    ])];
+    if a > 0.0 {
+        results.push(row(&["R_o / A", &format!("{:.5}", s.r_o / a)]));
     }
-    if let Some(p) = r.plot {
-        let _ = writeln!(
-            m,
-            "\n## Figure\n\n![interface pressure against r]({})",
-            p.display()
-        );
+    results.extend([
+        row(&["contact diameter 2R_o", &format!("{:.6} in", 2.0 * s.r_o)]),
+        row(&["converged to the tolerance", yes(s.converged)]),
+        row(&["full contact (R_o = C)", yes(s.full_contact)]),
+        row(&[
+            "mean bearing pressure P",
+            &format!("{:.6e} psi", r.pressure),
+        ]),
+        row(&[
+            "deflection under the nut",
+            &format!("{:.4e} in", s.nut_deflection),
+        ]),
+    ]);
+    v.push(Block::Heading(2, "Results".into()));
+    v.push(Block::Table(head(&["quantity", "value"]), results));
+    v.push(Block::Heading(2, "Rules of thumb".into()));
+    v.push(Block::Para(
+        "Contact radius R of each rule and its error against the computed R_o.".into(),
+    ));
+    let rules = rule_radii((b, d, d2, c))
+        .into_iter()
+        .map(|(name, radius)| {
+            row(&[
+                name,
+                &format!("{radius:.4}"),
+                &format!("{:+.1} %", 100.0 * (radius - s.r_o) / s.r_o),
+            ])
+        })
+        .collect();
+    v.push(Block::Table(
+        head(&["rule", "R [in]", "(R − R_o)/R_o"]),
+        rules,
+    ));
+    if !figures.is_empty() {
+        v.push(Block::Heading(2, "Figures".into()));
+    }
+    v.extend(
+        figures
+            .into_iter()
+            .map(|(t, f, svg)| Block::Figure(t, f, svg)),
+    );
+    v
+}
+
+/// The blocks as Markdown (figures linked to their files; figures without a file left out).
+pub fn markdown(blocks: &[Block]) -> String {
+    let mut m = String::new();
+    for b in blocks {
+        match b {
+            Block::Heading(level, t) => {
+                let _ = writeln!(m, "{} {t}\n", "#".repeat(usize::from(*level)));
+            }
+            Block::Para(t) => {
+                let _ = writeln!(m, "{t}\n");
+            }
+            Block::Table(head, rows) => {
+                let _ = writeln!(m, "| {} |", head.join(" | "));
+                let _ = writeln!(m, "|{}", "---|".repeat(head.len()));
+                for r in rows {
+                    let _ = writeln!(m, "| {} |", r.join(" | "));
+                }
+                m.push('\n');
+            }
+            Block::Figure(caption, Some(file), _) => {
+                let _ = writeln!(m, "![{caption}]({file})\n");
+            }
+            Block::Figure(_, None, _) => {}
+        }
     }
     m
+}
+
+/// `t` with &, <, > and " escaped for HTML.
+fn esc(t: &str) -> String {
+    t.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+/// The blocks as one self-contained HTML page (figures inlined as SVG, no external file).
+pub fn html(blocks: &[Block]) -> String {
+    let mut h = String::from(
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <title>boltzone calculation report</title>\n<style>\n\
+         body { font-family: sans-serif; max-width: 60em; margin: 2em auto; }\n\
+         table { border-collapse: collapse; margin: 1em 0; }\n\
+         td, th { border: 1px solid #999; padding: 0.2em 0.6em; text-align: left; }\n\
+         figure { margin: 1em 0; } svg { max-width: 100%; height: auto; }\n\
+         </style>\n</head>\n<body>\n",
+    );
+    for b in blocks {
+        match b {
+            Block::Heading(level, t) => {
+                let _ = writeln!(h, "<h{level}>{}</h{level}>", esc(t));
+            }
+            Block::Para(t) => {
+                // backtick spans as <code>
+                let parts: Vec<String> = esc(t).split('`').map(str::to_string).collect();
+                let mut p = String::new();
+                for (k, part) in parts.iter().enumerate() {
+                    if k % 2 == 1 {
+                        let _ = write!(p, "<code>{part}</code>");
+                    } else {
+                        p += part;
+                    }
+                }
+                let _ = writeln!(h, "<p>{p}</p>");
+            }
+            Block::Table(head, rows) => {
+                h += "<table>\n<tr>";
+                for c in head {
+                    let _ = write!(h, "<th>{}</th>", esc(c));
+                }
+                h += "</tr>\n";
+                for r in rows {
+                    h += "<tr>";
+                    for c in r {
+                        let _ = write!(h, "<td>{}</td>", esc(c));
+                    }
+                    h += "</tr>\n";
+                }
+                h += "</table>\n";
+            }
+            Block::Figure(caption, _, svg) => {
+                let _ = writeln!(
+                    h,
+                    "<figure>\n{svg}\n<figcaption>{}</figcaption>\n</figure>",
+                    esc(caption)
+                );
+            }
+        }
+    }
+    h + "</body>\n</html>\n"
 }
 
 /// The unit of a `two` flag's value ("" for counts, names, switches and ratios).

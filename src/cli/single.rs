@@ -123,9 +123,9 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
             "needs --method fem (the Hankel route loads the faces by a pressure)",
         );
     }
-    if args.out.any() && args.method == Method::Hankel {
+    if (args.out.field.is_some() || args.out.plot.is_some()) && args.method == Method::Hankel {
         return super::exit::usage(
-            "--curve/--field/--plot",
+            "--field/--plot",
             "given",
             "need --method fem (the finest FE level is what they show)",
         );
@@ -254,6 +254,28 @@ fn run_hankel(
     let (sep, hole) = single_plate_separation(plate, &search, &params).map_err(|e| {
         anyhow::anyhow!("the Hankel route cannot treat this plate ({e}); try --method fem")
     })?;
+    if let Some(path) = &args.out.curve {
+        let r = super::hankel_curve::radii(plate, 200);
+        let (values, worst) = super::hankel_curve::midplane_curve(plate, &params, &hole, &r)?;
+        let notes = [
+            format!(
+                "method: single plate 2D thick with a traction-free hole, semi-analytic (Hankel \
+                 transform of the slab + hole correction with {} modes, \
+                 boltzone::hankel::hole); P = 1 psi: stresses scale with P",
+                hole.terms
+            ),
+            "sigma_z = midplane normal stress, compression negative".to_string(),
+            format!(
+                "sigma_z error bound: {worst:.2e} psi (slab quadrature + hole residual traction)"
+            ),
+            super::output::r_o_note(sep.r_o, sep.error, sep.converged),
+        ];
+        let rows: Vec<Vec<f64>> = r.iter().zip(&values).map(|(r, v)| vec![*r, v[0]]).collect();
+        super::write_output(
+            path,
+            &super::output::curve_csv(&["r [in]", "sigma_z [psi]"], &notes, &rows),
+        )?;
+    }
     let r_o_over_a = (args.geom.a > 0.0).then(|| sep.r_o / args.geom.a);
     if args.json {
         let mut v = serde_json::json!({
@@ -340,7 +362,22 @@ fn write_finest(
             y: &m.sigma_z,
             r_o: (s.r_o, s.r_o_error),
         };
-        super::figure::radius_plot(path, &curve, (g.b, g.d, g.d, args.c))?;
+        let x_end = super::figure::radius_plot(path, &curve, (g.b, g.d, g.d, args.c))?;
+        let d = super::joint_figs::Deformed {
+            what: "single plate 2D thick (E = P = 1 psi)",
+            mesh: &h.mesh,
+            u: &h.u,
+            mirror: true,
+            names: vec![
+                "upper half (computed)".into(),
+                "lower half (mirror image)".into(),
+            ],
+            b: g.b,
+            r_o: (s.r_o, s.r_o_error),
+            x_end,
+        };
+        let deformed = super::joint_figs::sibling(path, "deformed");
+        super::joint_figs::deformed_plot(&deformed, &d)?;
     }
     if let Some(path) = &args.out.curve {
         let notes = [
@@ -360,9 +397,7 @@ fn write_finest(
         )?;
     }
     if let Some(path) = &args.out.field {
-        let mut grid = boltzone::io::vtu::Grid::plate(&h.mesh, &[plate.material()], &h.u, 0)?;
-        let lower = grid.mirrored(1);
-        grid.append(&lower);
+        let grid = boltzone::scene::field::single_plate_grid(plate.material(), h)?;
         let note = format!(
             "{method}; plate 0 = upper half z >= 0 (computed), plate 1 = its mirror image; {}; \
              command: {}",

@@ -11,7 +11,7 @@
 //!
 //! That of the slab route (`cargo bench --bench hankel`).
 
-use super::args::Geometry;
+use super::args::{Geometry, Units};
 use super::check;
 use super::exit::{num, sig, Status};
 use boltzone::hankel::{Midplane, MidplaneCurve, SeparationParams, Slab};
@@ -25,14 +25,19 @@ pub struct Args {
     #[command(flatten)]
     #[serde(flatten)]
     geom: Geometry,
+    /// Lengths in (A, B, D and every printed length) and the stress of the curve.
+    #[command(flatten)]
+    #[serde(flatten)]
+    units: Units,
     /// Relative tolerance on R_o.
     #[arg(long, default_value_t = 1e-10, allow_negative_numbers = true)]
     tol: f64,
     /// Print one JSON object instead of text.
     #[arg(long)]
     json: bool,
-    /// Write the midplane σ_z at P = 1 psi against r (0 ≤ r ≤ max(3B, B + 6D)) to this CSV file
-    /// (header `r [in],sigma_z [psi],sigma_z_error [psi]`, then `#` provenance lines, then data).
+    /// Write the midplane σ_z at P = 1 (psi, or the --units stress) against r (0 ≤ r ≤
+    /// max(3B, B + 6D)) to this CSV file (header `r [in],sigma_z [psi],sigma_z_error [psi]` in
+    /// the --units symbols, then `#` provenance lines, then data).
     #[arg(long)]
     curve: Option<PathBuf>,
 }
@@ -65,8 +70,10 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     };
     let sep = slab.separation_radius(&params)?;
     super::exit::finite("R_o error estimate", sep.error)?;
+    let u = args.units.units;
+    let l = u.symbols().0;
     if let Some(path) = &args.curve {
-        super::write_output(path, &curve_csv(&slab, &sep)?)?;
+        super::write_output(path, &curve_csv(&slab, &sep, u)?)?;
     }
     if args.json {
         let mut v = serde_json::json!({
@@ -79,18 +86,19 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             "evaluations": sep.evaluations,
             "seconds": sep.seconds,
             "model": "infinite slab 2D thick, no hole, uniform load on both faces (Hankel transforms)",
+            "units": u.name(),
         });
         super::output::stamp(&mut v, &args, start)?;
         super::print_json(&v)?;
     } else {
         println!(
-            "infinite slab 2D thick (D = {} in), no hole, uniform load on {} ≤ r ≤ {} in",
+            "infinite slab 2D thick (D = {} {l}), no hole, uniform load on {} ≤ r ≤ {} {l}",
             num(args.geom.d),
             num(args.geom.a),
             num(args.geom.b)
         );
         println!(
-            "R_o   = {} in  ± {:.1e} in{}",
+            "R_o   = {} {l}  ± {:.1e} {l}{}",
             sig(sep.r_o, 13),
             sep.error,
             if sep.converged {
@@ -115,7 +123,12 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
 
 /// The midplane σ_z (P = 1 psi) against r on 0 ≤ r ≤ max(3B, B + 6D), 1001 points, in the one
 /// curve layout ([`super::output`]).
-fn curve_csv(slab: &Slab, sep: &boltzone::hankel::SeparationInfo) -> anyhow::Result<String> {
+fn curve_csv(
+    slab: &Slab,
+    sep: &boltzone::hankel::SeparationInfo,
+    units: boltzone::scene::UnitSystem,
+) -> anyhow::Result<String> {
+    let (l, st, _) = units.symbols();
     let (b, d) = (slab.load().outer(), slab.half_thickness());
     let r_end = (3.0 * b).max(b + 6.0 * d);
     // interpolated curve, or for very thin slabs (more than MAX_CURVE_PANELS panels of width D)
@@ -130,12 +143,15 @@ fn curve_csv(slab: &Slab, sep: &boltzone::hankel::SeparationInfo) -> anyhow::Res
         };
     let notes = [
         format!(
-            "method: infinite slab 2D thick without hole (Hankel transforms), D = {d:e} in, \
-             load on {a:e} <= r <= {b:e} in at P = 1 psi (sigma_z scales with P; compression \
+            "method: infinite slab 2D thick without hole (Hankel transforms), D = {d:e} {l}, \
+             load on {a:e} <= r <= {b:e} {l} at P = 1 {st} (sigma_z scales with P; compression \
              negative); sigma_z_error = quadrature error estimate",
             a = slab.load().inner()
         ),
-        super::output::r_o_note(sep.r_o, sep.error, sep.converged),
+        format!(
+            "R_o = {:e} {l} +- {:.2e} {l}, converged: {}",
+            sep.r_o, sep.error, sep.converged
+        ),
     ];
     let n = 1000;
     let rows: Vec<Vec<f64>> = (0..=n)
@@ -145,9 +161,11 @@ fn curve_csv(slab: &Slab, sep: &boltzone::hankel::SeparationInfo) -> anyhow::Res
             vec![r, e.value, e.error]
         })
         .collect();
-    Ok(super::output::curve_csv(
-        &["r [in]", "sigma_z [psi]", "sigma_z_error [psi]"],
-        &notes,
-        &rows,
-    ))
+    let cols = [
+        format!("r [{l}]"),
+        format!("sigma_z [{st}]"),
+        format!("sigma_z_error [{st}]"),
+    ];
+    let cols: Vec<&str> = cols.iter().map(String::as_str).collect();
+    Ok(super::output::curve_csv_in(units, &cols, &notes, &rows))
 }

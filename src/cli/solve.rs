@@ -14,7 +14,7 @@
 use super::exit::{sig, Status, UsageError};
 use boltzone::scene::sweep::{points, rows, solve_all, Point};
 use boltzone::scene::{read, SceneError, Solution};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `boltzone solve`.
 #[derive(Debug, clap::Args)]
@@ -56,6 +56,8 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         if let Some(path) = &base.outputs.interface_pressure {
             super::write_output(path, &curve_csv(&pts, &[Ok(s.clone())], &args.scene))?;
         }
+        let o = &base.outputs;
+        write_fields(&s, (o.field.as_deref(), o.midplane.as_deref()), &args.scene)?;
         if args.json {
             let mut v = serde_json::to_value(&s)?;
             super::output::stamp_run(&mut v, start)?;
@@ -93,6 +95,15 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     }
     if let Some(path) = &base.outputs.interface_pressure {
         super::write_output(path, &curve_csv(&pts, &results, &args.scene))?;
+    }
+    // one field and midplane file per point: NAME_i.EXT, i the point's index from 0
+    for (i, r) in results.iter().enumerate() {
+        if let Ok(s) = r {
+            let o = &base.outputs;
+            let f = o.field.as_deref().map(|p| numbered(p, i));
+            let m = o.midplane.as_deref().map(|p| numbered(p, i));
+            write_fields(s, (f.as_deref(), m.as_deref()), &args.scene)?;
+        }
     }
     if let Some(path) = &base.outputs.results {
         super::write_output(path, &sweep_csv(&pts, &results, &args.scene))?;
@@ -147,6 +158,12 @@ fn print_text(s: &Solution) {
     }
     if let Some(d) = s.nut_deflection {
         println!("deflection under the nut: {d:.4e} {}", s.length_unit);
+    }
+    if let (Some(g), Some(u)) = (s.joint_conductance, s.conductance_unit) {
+        println!(
+            "joint conductance (integral of h_c dA over the contact zone): {} {u}",
+            sig(g, 6)
+        );
     }
 }
 
@@ -234,4 +251,71 @@ fn sweep_csv(
         }
     }
     out
+}
+
+/// `[outputs] field` (VTU) and `midplane` (CSV, the one curve layout), in the scene's units.
+fn write_fields(
+    s: &Solution,
+    (field, midplane): (Option<&Path>, Option<&Path>),
+    file: &Path,
+) -> anyhow::Result<()> {
+    let (l, st, _) = s.units.symbols();
+    let r_o = format!(
+        "R_o = {:e} {l} +- {:.2e} {l}, converged: {}",
+        s.r_o, s.r_o_error, s.converged
+    );
+    if let (Some(path), Some(grid)) = (field, &s.field) {
+        let note = format!(
+            "boltzone solve {}: finest mesh of the {} route ({:?} model); units {}: coordinates, \
+             displacements and gap in {l}, stresses and contact_pressure in {st} (compression \
+             negative; contact_pressure > 0 in compression); {r_o}; command: {}",
+            file.display(),
+            serde_json::to_value(s.method)?.as_str().unwrap_or(""),
+            s.model,
+            s.units.name(),
+            super::output::command_line()
+        );
+        super::write_output(path, &grid.to_vtu(&note))?;
+    }
+    if let (Some(path), Some(m)) = (midplane, &s.midplane) {
+        let r = format!("r [{l}]");
+        let z = format!("sigma_z [{st}]");
+        let e = format!("sigma_z_error [{st}]");
+        let mut cols = vec![r.as_str(), z.as_str()];
+        let rows: Vec<Vec<f64>> = match &m.error {
+            Some(err) => {
+                cols.push(e.as_str());
+                (0..m.radius.len())
+                    .map(|i| vec![m.radius[i], m.sigma_z[i], err[i]])
+                    .collect()
+            }
+            None => (0..m.radius.len())
+                .map(|i| vec![m.radius[i], m.sigma_z[i]])
+                .collect(),
+        };
+        let notes = [
+            format!(
+                "scene {}: midplane normal stress, compression negative ({:?} model, {} route)",
+                file.display(),
+                s.model,
+                serde_json::to_value(s.method)?.as_str().unwrap_or("")
+            ),
+            r_o,
+        ];
+        super::write_output(
+            path,
+            &super::output::curve_csv_in(s.units, &cols, &notes, &rows),
+        )?;
+    }
+    Ok(())
+}
+
+/// `dir/NAME_i.EXT` for `dir/NAME.EXT`: point `i`'s file of a sweep.
+fn numbered(path: &Path, i: usize) -> PathBuf {
+    let stem = path.file_stem().unwrap_or_default().to_string_lossy();
+    let name = match path.extension() {
+        Some(e) => format!("{stem}_{i}.{}", e.to_string_lossy()),
+        None => format!("{stem}_{i}"),
+    };
+    path.with_file_name(name)
 }

@@ -14,6 +14,7 @@
 use super::args::{Element, Geometry, OutputFiles};
 use super::check;
 use super::exit::{sig, Status};
+use super::joint_figs::JointFigure;
 use boltzone::contact::two_plate::{
     solve, solve_field, EdgeSupport, InterfaceModel, Loading, TwoPlateField, TwoPlateParams,
     TwoPlateSolution,
@@ -100,13 +101,21 @@ pub struct Args {
     #[command(flatten)]
     #[serde(flatten)]
     out: OutputFiles,
-    /// Write a calculation report (Markdown: inputs, units, version, method, results, rules of
-    /// thumb, the --plot figure) to this file.
+    /// Write a calculation report (inputs, units, version, method, results, rules of thumb,
+    /// figures) to this file: Markdown linking the --plot files, or with the extension .html a
+    /// self-contained page with the figures inlined as SVG.
     #[arg(long)]
     report: Option<PathBuf>,
     /// Print the result as JSON.
     #[arg(long)]
     json: bool,
+}
+
+/// Whether a report file is HTML (by its extension, .html or .htm).
+fn is_html(path: &std::path::Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("html") || e.eq_ignore_ascii_case("htm"))
 }
 
 /// Checks every flag before any work starts (exit 2 naming the flag).
@@ -194,29 +203,37 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         tolerance: args.tol,
         ..Default::default()
     };
-    let s = match &args.out.field {
-        None => solve(&joint, &params)?,
-        Some(path) => {
-            let (s, field) = solve_field(&joint, &params)?;
-            super::write_output(path, &field_vtu(&s, &field)?)?;
-            s
-        }
+    let html = args.report.as_ref().is_some_and(|p| is_html(p));
+    let (s, field) = if args.out.field.is_some() || args.out.plot.is_some() || html {
+        let (s, field) = solve_field(&joint, &params)?;
+        (s, Some(field))
+    } else {
+        (solve(&joint, &params)?, None)
     };
+    if let (Some(path), Some(field)) = (&args.out.field, &field) {
+        super::write_output(path, &field_vtu(&s, field)?)?;
+    }
     if let Some(path) = &args.out.curve {
         super::write_output(path, &curve_csv(&s, p))?;
     }
-    if let Some(path) = &args.out.plot {
-        let g = &args.geom;
-        let d2 = args.d2.unwrap_or(g.d);
-        let curve = super::figure::RadiusCurve {
-            title: format!("Interface pressure; model: {}", s.info.model),
-            y_label: "p [psi]",
-            label: "p(r), finest mesh",
-            r: &s.radius,
-            y: &s.pressure,
-            r_o: (s.r_o, s.r_o_error),
-        };
-        super::figure::radius_plot(path, &curve, (g.b, g.d, d2, args.c))?;
+    let html = args.report.as_ref().is_some_and(|p| is_html(p));
+    let figs = match &field {
+        Some(field) if args.out.plot.is_some() || html => {
+            let g = &args.geom;
+            figures(&s, field, (g.b, g.d, args.d2.unwrap_or(g.d), args.c))
+        }
+        _ => Vec::new(),
+    };
+    let file_of = |suffix: &str| {
+        args.out.plot.as_ref().map(|p| match suffix {
+            "" => p.clone(),
+            _ => super::joint_figs::sibling(p, suffix),
+        })
+    };
+    for (suffix, _, fig) in &figs {
+        if let Some(path) = file_of(suffix) {
+            fig.write(&path)?;
+        }
     }
     if let Some(path) = &args.report {
         let g = &args.geom;
@@ -225,9 +242,20 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             geometry: (g.a, g.b, g.d, args.d2.unwrap_or(g.d), args.c),
             pressure: p,
             tolerance: args.tol,
-            plot: args.out.plot.as_deref(),
         };
-        super::write_output(path, &super::report::two_report(&s, &inputs))?;
+        let mut shown = Vec::new();
+        for (suffix, caption, fig) in &figs {
+            let file = file_of(suffix).map(|f| f.display().to_string());
+            let svg = if html { fig.svg()? } else { String::new() };
+            shown.push((caption.to_string(), file, svg));
+        }
+        let blocks = super::report::two_report(&s, &inputs, shown);
+        let text = if html {
+            super::report::html(&blocks)
+        } else {
+            super::report::markdown(&blocks)
+        };
+        super::write_output(path, &text)?;
     }
     let Some(last) = s.info.levels.last() else {
         anyhow::bail!("the two-plate solver returned no mesh level");
@@ -298,6 +326,69 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     Ok(Status::from_converged(s.converged))
 }
 
+/// The figures of `--plot FILE` and the HTML report: the interface pressure (to FILE), the gap
+/// (FILE-gap) and the deformed joint (FILE-deformed, [`super::joint_figs`]), each with its
+/// caption and file suffix; `geom` is B, D, D₂, C.
+fn figures(
+    s: &TwoPlateSolution,
+    field: &TwoPlateField,
+    geom: (f64, f64, f64, Option<f64>),
+) -> Vec<(&'static str, &'static str, JointFigure)> {
+    use super::figure::{radius_figure, RadiusCurve};
+    let model = format!("model: {}", s.info.model);
+    let curve = |title: &str, y_label, label, y| RadiusCurve {
+        title: format!("{title}; {model}"),
+        y_label,
+        label,
+        r: &s.radius,
+        y,
+        r_o: (s.r_o, s.r_o_error),
+    };
+    let p = curve(
+        "Interface pressure",
+        "p [psi]",
+        "p(r), finest mesh",
+        &s.pressure,
+    );
+    let (p, x_end) = radius_figure(&p, geom);
+    let g = curve(
+        "Gap between the plates",
+        "g [in]",
+        "g(r), finest mesh",
+        &s.gap,
+    );
+    let (g, _) = radius_figure(&g, geom);
+    let mirror = field.model.lower.is_none();
+    let names = if mirror {
+        vec!["upper plate".into(), "lower plate (mirror image)".into()]
+    } else {
+        vec!["lower plate".into(), "upper plate".into()]
+    };
+    let d = super::joint_figs::Deformed {
+        what: "joint",
+        mesh: &field.model.mesh,
+        u: &field.u,
+        mirror,
+        names,
+        b: geom.0,
+        r_o: (s.r_o, s.r_o_error),
+        x_end,
+    };
+    vec![
+        ("", "interface pressure against r", JointFigure::Curve(p)),
+        (
+            "gap",
+            "gap between the plates against r",
+            JointFigure::Curve(g),
+        ),
+        (
+            "deformed",
+            "the deformed joint (displacements exaggerated)",
+            JointFigure::Section(super::joint_figs::deformed_figure(&d)),
+        ),
+    ]
+}
+
 /// r, p, g, τ of the finest mesh in the one curve layout ([`super::output`]).
 fn curve_csv(s: &TwoPlateSolution, p: f64) -> String {
     let notes = [
@@ -323,32 +414,7 @@ fn curve_csv(s: &TwoPlateSolution, p: f64) -> String {
 /// the upper one; interface nodes of both carry the contact pressure, the gap and the status
 /// (1 closed, 0 open), every other node 0.
 fn field_vtu(s: &TwoPlateSolution, field: &TwoPlateField) -> anyhow::Result<String> {
-    let model = &field.model;
-    let mesh = &model.mesh;
-    let mut grid = boltzone::io::vtu::Grid::plate(mesh, &model.materials, &field.u, 0)?;
-    let n = mesh.n_nodes();
-    let (mut p, mut g, mut st) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
-    let mut faces = vec![mesh.bottom(model.upper)];
-    faces.extend(model.lower.map(|l| mesh.top(l)));
-    for face in &faces {
-        for (i, &node) in face.iter().enumerate() {
-            p[node] = s.pressure[i];
-            g[node] = s.gap[i];
-            st[node] = if field.closed[i] { 1.0 } else { 0.0 };
-        }
-    }
-    grid.add_scalar("contact_pressure", p);
-    grid.add_scalar("gap", g);
-    grid.add_scalar("contact_status", st);
-    let layout = if model.lower.is_none() {
-        // the symmetric joint: the computed upper plate (id 1) and its mirror image (id 0)
-        grid.plate.iter_mut().for_each(|id| *id = 1);
-        let lower = grid.mirrored(-1);
-        grid.append(&lower);
-        "plate 1 = upper plate (computed on a rigid frictionless plane), plate 0 = its mirror image"
-    } else {
-        "plate 1 = upper plate, plate 0 = lower plate"
-    };
+    let (grid, layout) = boltzone::scene::field::two_plate_grid(s, field)?;
     let note = format!(
         "method: two-plate FE contact, finest mesh, {} model; {layout}; interface nodes carry \
          contact_pressure [psi] (compression > 0), gap [in] (between the plates) and \

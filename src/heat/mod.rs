@@ -13,7 +13,7 @@
 //!   (fields per [`crate::fortran`]);
 //! - [`lap`]: Chapter V's lap joint as such a network, with the geometry it assumes;
 //! - [`conduction`]: steady axisymmetric conduction on the [`crate::fem`] meshes, plates joined
-//!   by an interface conductance h(r).
+//!   by an interface conductance h(r); [`zone`]: a joint's contact-zone resistance by it.
 //!
 //! Sign convention: interface pressure p > 0 in compression (σ_z = −p); heat flows toward a node
 //! are positive.
@@ -40,3 +40,4 @@ pub mod joint;
 pub mod lap;
 pub mod network;
 pub mod units;
+pub mod zone;

@@ -20,6 +20,7 @@
 
 use super::error::SceneError;
 use super::file::{line_of, path_name, MaterialSpec, Method, Model, ProfileKind, Scene, Seg};
+use super::heat::{CorrelationSpec, CORRELATIONS};
 use super::materials;
 use std::path::Path;
 
@@ -128,7 +129,77 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
         }
     }
     check_model(scene, &c)?;
+    check_heat(scene, &c)?;
     check_outputs(scene, &c)
+}
+
+/// `[heat]` and `[outputs] conductance` ([`super::heat`]).
+fn check_heat(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
+    let asked = [k("outputs"), k("conductance")];
+    let Some(h) = &scene.heat else {
+        return match scene.outputs.conductance {
+            true => Err(c.fail(&asked, true, "needs a [heat] table")),
+            false => Ok(()),
+        };
+    };
+    if scene.outputs.conductance && scene.model != Model::TwoPlate {
+        return Err(c.fail(&asked, true, "needs model = \"two-plate\""));
+    }
+    let at = |key: &str, i: Option<usize>| {
+        let mut p = vec![k("heat"), k(key)];
+        p.extend(i.map(Seg::Index));
+        p
+    };
+    match &h.correlation {
+        CorrelationSpec::Name(n)
+            if !["cmy1969", "yovanovich1982", "mikic-elastic"].contains(&n.as_str()) =>
+        {
+            return Err(c.fail(
+                &at("correlation", None),
+                format!("\"{n}\""),
+                &format!("give one of {CORRELATIONS} or {{ coefficient = c, exponent = n }}"),
+            ));
+        }
+        CorrelationSpec::Law(l) => {
+            let mut p = at("correlation", None);
+            p.push(k("coefficient"));
+            c.positive(&p, l.coefficient, "the coefficient c")?;
+            p.pop();
+            p.push(k("exponent"));
+            c.positive(&p, l.exponent, "the exponent n")?;
+        }
+        CorrelationSpec::Name(_) => {}
+    }
+    for i in 0..2 {
+        c.positive(
+            &at("conductivity", Some(i)),
+            h.conductivity[i],
+            "a conductivity",
+        )?;
+        for (key, v) in [("roughness", h.roughness[i]), ("slope", h.slope[i])] {
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(c.fail(&at(key, Some(i)), v, "must be 0 or positive"));
+            }
+        }
+    }
+    for (key, v) in [("roughness", h.roughness), ("slope", h.slope)] {
+        if v == [0.0, 0.0] {
+            return Err(c.fail(
+                &at(key, None),
+                "[0, 0]",
+                "both zero: the combined value must be positive",
+            ));
+        }
+    }
+    match h.hardness {
+        Some(v) => c.positive(&at("hardness", None), v, "the hardness H"),
+        None if h.needs_hardness() => Err(c.fail(
+            &[k("heat")],
+            "(no hardness)",
+            "this correlation needs hardness = H (the scene's stress unit)",
+        )),
+        None => Ok(()),
+    }
 }
 
 fn check_load(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
@@ -284,11 +355,33 @@ fn check_model(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
 fn check_outputs(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
     let o = &scene.outputs;
     if let Some(f) = &o.field {
-        return Err(c.fail(
-            &[k("outputs"), k("field")],
-            f.display(),
-            "the full field (VTU) is not yet available from scenes",
-        ));
+        let path = [k("outputs"), k("field")];
+        if scene.model == Model::Slab || scene.method == Method::Hankel {
+            return Err(c.fail(
+                &path,
+                f.display(),
+                "the field comes from finite elements: use model two-plate, or single-plate with method fem or auto",
+            ));
+        }
+        c.output(&path, f)?;
+    }
+    if let Some(f) = &o.midplane {
+        let path = [k("outputs"), k("midplane")];
+        match scene.model {
+            Model::TwoPlate => return Err(c.fail(
+                &path,
+                f.display(),
+                "needs model single-plate or slab (the two-plate interface is interface_pressure)",
+            )),
+            Model::SinglePlate if scene.method == Method::Hankel => {
+                return Err(c.fail(
+                    &path,
+                    f.display(),
+                    "the single plate's midplane comes from finite elements: method fem or auto",
+                ))
+            }
+            _ => c.output(&path, f)?,
+        }
     }
     if let Some(p) = &o.interface_pressure {
         let path = [k("outputs"), k("interface_pressure")];
@@ -300,7 +393,12 @@ fn check_outputs(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
     if let Some(p) = &o.results {
         c.output(&[k("outputs"), k("results")], p)?;
     }
-    if !o.r_o && o.interface_pressure.is_none() {
+    if !o.r_o
+        && o.interface_pressure.is_none()
+        && !o.conductance
+        && o.field.is_none()
+        && o.midplane.is_none()
+    {
         return Err(c.fail(
             &[k("outputs"), k("r_o")],
             false,

@@ -162,9 +162,15 @@ pub struct OutputSpec {
     /// CSV of r, p, g at the interface (two-plate).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub interface_pressure: Option<PathBuf>,
-    /// VTU of the full field (not yet available).
+    /// VTU of the finest mesh's field (two-plate; single-plate by finite elements).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub field: Option<PathBuf>,
+    /// CSV of the midplane normal stress σ_z(r) (single-plate, slab).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub midplane: Option<PathBuf>,
+    /// The joint's interface conductance from `[heat]` (two-plate; default false).
+    #[serde(default)]
+    pub conductance: bool,
     /// CSV of a sweep's results, one row per point.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub results: Option<PathBuf>,
@@ -180,6 +186,8 @@ impl Default for OutputSpec {
             r_o: true,
             interface_pressure: None,
             field: None,
+            midplane: None,
+            conductance: false,
             results: None,
         }
     }
@@ -221,6 +229,9 @@ pub struct Scene {
     /// Outputs wanted.
     #[serde(default)]
     pub outputs: OutputSpec,
+    /// The surfaces and contact conductance law ([`super::heat`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub heat: Option<super::heat::HeatSpec>,
     /// Dotted keys mapped to lists of values; the product of the lists is solved.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub sweep: BTreeMap<String, Vec<toml::Value>>,

@@ -8,6 +8,9 @@
 //! finite elements [`crate::fem::single::solve`] (Fernlund's substitution, report Chapter
 //! II.A), `slab` → [`crate::hankel::Slab::separation_radius`] (no hole, infinite). Sign
 //! convention: compression negative in stresses, the interface pressure p > 0 in compression.
+//! Optional outputs: the finest mesh's field (VTU) and the midplane σ_z (CSV) by [`field`];
+//! the joint's interface conductance ∫ h_c(p) dA from a `[heat]` table by [`heat`] (report
+//! Chapter V, eq. 1.1).
 //!
 //! **Units.** `units = "in-psi-lbf"` (default), `"mm-MPa-N"` or `"m-Pa-N"` ([`units`]); the
 //! scene is converted to SI (m, Pa, N) on the way in and every result back to its own units.
@@ -43,7 +46,9 @@
 
 pub mod check;
 pub mod error;
+pub mod field;
 pub mod file;
+pub mod heat;
 pub mod materials;
 pub mod run;
 pub mod sweep;

@@ -19,6 +19,7 @@
 //! ```
 
 use super::error::SceneError;
+use super::field::{self, Midplane};
 use super::file::{InterfaceKind, MaterialSpec, Method, Model, ProfileKind, Scene};
 use super::materials;
 use super::units::UnitSystem;
@@ -26,6 +27,7 @@ use crate::contact::two_plate::{self, EdgeSupport, InterfaceModel, Loading, TwoP
 use crate::fem::single::{self as fem_single, FaceCondition, SingleParams};
 use crate::hankel::hole::{single_plate_separation, HoleParams};
 use crate::hankel::{SeparationParams, Slab};
+use crate::io::vtu::Grid;
 use crate::joint::{Joint, OuterRadius, Plate};
 use crate::load::{FaceLoad, Peak};
 use crate::material::Material;
@@ -85,11 +87,24 @@ pub struct Solution {
     /// interface).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub nut_deflection: Option<f64>,
+    /// The joint's interface conductance ∫ h_c dA (two-plate, `[outputs] conductance = true`;
+    /// W/K, Btu/(hr·°F) in in-psi-lbf).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub joint_conductance: Option<f64>,
+    /// The unit of `joint_conductance`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub conductance_unit: Option<&'static str>,
     /// The plan: routes that ran and were skipped, time per step.
     pub plan: Vec<Step>,
     /// Interface curve (two-plate; written as CSV, not printed).
     #[serde(skip)]
     pub interface: Option<InterfaceCurve>,
+    /// The finest mesh's field in the scene's units (`[outputs] field`; written as VTU).
+    #[serde(skip)]
+    pub field: Option<Grid>,
+    /// The midplane σ_z(r) in the scene's units (`[outputs] midplane`; written as CSV).
+    #[serde(skip)]
+    pub midplane: Option<Midplane>,
 }
 
 /// The material of plate `i` in SI units.
@@ -188,6 +203,14 @@ pub fn pick(scene: &Scene) -> (Method, &'static str) {
         (Model::Slab, _) => (Method::Hankel, "Hankel transforms: the slab's exact route"),
         (Model::SinglePlate, Method::Fem) => (Method::Fem, "finite elements (asked)"),
         (Model::SinglePlate, Method::Hankel) => (Method::Hankel, "Hankel + hole correction (asked)"),
+        (Model::SinglePlate, Method::Auto)
+            if scene.outputs.field.is_some() || scene.outputs.midplane.is_some() =>
+        {
+            (
+                Method::Fem,
+                "finite elements: the field or midplane asked comes from the FE levels (Hankel gives R_o alone)",
+            )
+        }
         (Model::SinglePlate, Method::Auto) if scene.load.nut_displacement.is_some() => (
             Method::Fem,
             "finite elements: the Hankel route loads the faces by a pressure only",
@@ -225,13 +248,27 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         inputs: scene.understood(),
         full_contact: None,
         nut_deflection: None,
+        joint_conductance: None,
+        conductance_unit: None,
         plan: Vec::new(),
         interface: None,
+        field: None,
+        midplane: None,
     };
     let t1 = Instant::now();
+    let mut heat_step = None;
     let other = match (scene.model, method) {
         (Model::TwoPlate, _) => {
-            let s = two_plate::solve(&joint, &two_plate_params(scene, nut))?;
+            let params = two_plate_params(scene, nut);
+            let s = match scene.outputs.field {
+                Some(_) => {
+                    let (s, f) = crate::contact::two_plate::solve_field(&joint, &params)?;
+                    let (grid, _) = field::two_plate_grid(&s, &f)?;
+                    out.field = Some(field::scaled(grid, l, scene.units.stress()));
+                    s
+                }
+                None => two_plate::solve(&joint, &params)?,
+            };
             (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
             out.full_contact = Some(s.full_contact);
             out.nut_deflection = Some(s.nut_deflection / l);
@@ -242,6 +279,14 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                     pressure: s.pressure.iter().map(|p| p / st).collect(),
                     gap: s.gap.iter().map(|g| g / l).collect(),
                 });
+            }
+            if scene.outputs.conductance {
+                let t = Instant::now();
+                let last = scene.plates.len().saturating_sub(1);
+                let m = [material(scene, 0)?, material(scene, last)?];
+                out.joint_conductance = Some(super::heat::conductance(scene, &s, m)?);
+                out.conductance_unit = Some(scene.units.heat_symbols().1);
+                heat_step = Some(t.elapsed().as_secs_f64());
             }
             None
         }
@@ -258,6 +303,10 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
             };
             let s = slab.separation_radius(&params)?;
             (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.error / l, s.converged);
+            if scene.outputs.midplane.is_some() {
+                let m = field::slab_midplane(&slab, s.r_o, scene.tolerance);
+                out.midplane = Some(field::midplane_scaled(m, l, scene.units.stress()));
+            }
             None
         }
         (Model::SinglePlate, Method::Fem) => {
@@ -268,7 +317,22 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                 tolerance: scene.tolerance,
                 ..SingleParams::default()
             };
-            let s = fem_single::solve(&substitute(&joint)?, &params)?;
+            let plate = substitute(&joint)?;
+            let s = if scene.outputs.field.is_some() || scene.outputs.midplane.is_some() {
+                let (s, h) = fem_single::solve_with_field(&plate, &params)?;
+                let st = scene.units.stress();
+                if scene.outputs.field.is_some() {
+                    let grid = field::single_plate_grid(plate.material(), &h)?;
+                    out.field = Some(field::scaled(grid, l, st));
+                }
+                if scene.outputs.midplane.is_some() {
+                    let m = field::single_plate_midplane(&plate, &h)?;
+                    out.midplane = Some(field::midplane_scaled(m, l, st));
+                }
+                s
+            } else {
+                fem_single::solve(&plate, &params)?
+            };
             (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
             Some("Hankel + hole correction")
         }
@@ -283,7 +347,21 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         name: format!("{:?} route", method).to_lowercase(),
         ran: true,
         note: why.into(),
-        seconds: t1.elapsed().as_secs_f64(),
+        seconds: t1.elapsed().as_secs_f64() - heat_step.unwrap_or(0.0),
+    });
+    plan.push(match heat_step {
+        Some(seconds) => Step {
+            name: "joint conductance".into(),
+            ran: true,
+            note: "integral of h_c(p) dA over the contact zone of the same solution".into(),
+            seconds,
+        },
+        None => Step {
+            name: "joint conductance".into(),
+            ran: false,
+            note: "skipped: not asked".into(),
+            seconds: 0.0,
+        },
     });
     if let Some(skipped) = other {
         plan.push(Step {
@@ -293,13 +371,36 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
             seconds: 0.0,
         });
     }
-    if scene.model == Model::TwoPlate && scene.outputs.interface_pressure.is_none() {
-        plan.push(Step {
-            name: "interface curve".into(),
-            ran: false,
-            note: "skipped: not asked".into(),
-            seconds: 0.0,
-        });
+    let o = &scene.outputs;
+    for (name, asked, served) in [
+        (
+            "interface curve",
+            o.interface_pressure.is_some(),
+            scene.model == Model::TwoPlate,
+        ),
+        (
+            "field (finest mesh)",
+            o.field.is_some(),
+            scene.model != Model::Slab,
+        ),
+        (
+            "midplane sigma_z",
+            o.midplane.is_some(),
+            scene.model != Model::TwoPlate,
+        ),
+    ] {
+        if served {
+            plan.push(Step {
+                name: name.into(),
+                ran: asked,
+                note: if asked {
+                    "from the same solution (time included in the route)".into()
+                } else {
+                    "skipped: not asked".into()
+                },
+                seconds: 0.0,
+            });
+        }
     }
     out.plan = plan;
     Ok(out)

@@ -70,6 +70,30 @@ impl UnitSystem {
         }
     }
 
+    /// W/(m·K) per conductivity unit: Btu/(hr·ft·°F) in in-psi-lbf, W/(m·K) otherwise.
+    pub fn conductivity(self) -> f64 {
+        match self {
+            Self::InPsiLbf => crate::heat::units::Conductivity::btu_per_hr_ft_f(1.0).si(),
+            Self::MmMpaN | Self::MPaN => 1.0,
+        }
+    }
+
+    /// W/K per thermal conductance unit: Btu/(hr·°F) in in-psi-lbf, W/K otherwise.
+    pub fn conductance(self) -> f64 {
+        match self {
+            Self::InPsiLbf => crate::heat::units::Conductance::btu_per_hr_f(1.0).si(),
+            Self::MmMpaN | Self::MPaN => 1.0,
+        }
+    }
+
+    /// Symbols of (conductivity, conductance).
+    pub fn heat_symbols(self) -> (&'static str, &'static str) {
+        match self {
+            Self::InPsiLbf => ("Btu/(hr·ft·°F)", "Btu/(hr·°F)"),
+            Self::MmMpaN | Self::MPaN => ("W/(m·K)", "W/K"),
+        }
+    }
+
     /// The system's name as written in a scene.
     pub fn name(self) -> &'static str {
         match self {
@@ -86,5 +110,17 @@ impl UnitSystem {
             Self::MmMpaN => ("mm", "MPa", "N"),
             Self::MPaN => ("m", "Pa", "N"),
         }
+    }
+}
+
+impl std::str::FromStr for UnitSystem {
+    type Err = String;
+
+    /// A system by its scene name (`in-psi-lbf`, `mm-MPa-N`, `m-Pa-N`).
+    fn from_str(s: &str) -> Result<Self, String> {
+        [Self::InPsiLbf, Self::MmMpaN, Self::MPaN]
+            .into_iter()
+            .find(|u| u.name() == s)
+            .ok_or_else(|| format!("\"{s}\": give in-psi-lbf, mm-MPa-N or m-Pa-N"))
     }
 }

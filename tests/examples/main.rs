@@ -63,6 +63,9 @@ mod ex16;
 #[allow(dead_code)]
 #[path = "../../examples/17_scene_plan.rs"]
 mod ex17;
+#[allow(dead_code)]
+#[path = "../../examples/18_heat_speed.rs"]
+mod ex18;
 
 #[test]
 fn ex01_slab_work_precision() {
@@ -187,4 +190,10 @@ fn ex16_error_bars() {
 fn ex17_scene_plan() {
     quick();
     ex17::main().unwrap();
+}
+
+#[test]
+fn ex18_heat_speed() {
+    quick();
+    ex18::main().unwrap();
 }

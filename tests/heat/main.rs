@@ -9,3 +9,4 @@ mod joint;
 mod lap;
 mod network;
 mod network_fixtures;
+mod zone;

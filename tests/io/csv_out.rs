@@ -1,7 +1,7 @@
 //! The one curve layout of every `--curve` file (`two`, `slab`, `single`): ONE header row with
 //! units, `#` provenance lines after it, then data, first column r. Read back in Rust and, when
-//! `BOLTZONE_PYTHON` is set (`.ci/run`), by `numpy.genfromtxt(names=True)` and pandas (if
-//! installed), independent readers that must see the same names and the same numbers. The
+//! `BOLTZONE_PYTHON` is set (`.ci/run`), by `numpy.genfromtxt(names=True)` and
+//! `pandas.read_csv(comment="#")` (both installed by `.ci/run`), independent readers that must see the same names and the same numbers. The
 //! exported interface pressure integrates to the bolt force within the quadrature error of the
 //! exported resolution.
 
@@ -10,18 +10,15 @@ use std::path::Path;
 
 /// numpy's and pandas' view of each file: names, data, (pandas) columns and shape.
 const READ: &str = r##"
-import sys, json, numpy as np
+import sys, json, numpy as np, pandas as pd
 out = []
 for f in sys.argv[1:]:
     d = np.genfromtxt(f, comments="#", names=True, delimiter=",")
     rec = {"names": list(d.dtype.names), "data": [[float(x) for x in row] for row in d.tolist()]}
-    try:
-        import pandas as pd
-        t = pd.read_csv(f, comment="#")
-        rec["pandas_columns"] = list(t.columns)
-        rec["pandas_shape"] = list(t.shape)
-    except ImportError:
-        pass
+    t = pd.read_csv(f, comment="#")
+    rec["pandas_columns"] = list(t.columns)
+    rec["pandas_shape"] = list(t.shape)
+    rec["pandas_data"] = t.to_numpy().tolist()
     out.append(rec)
 print(json.dumps(out))
 "##;
@@ -62,10 +59,11 @@ fn layout(path: &Path, header: &str, method: &str) -> (Vec<String>, Vec<Vec<f64>
 #[test]
 fn every_curve_has_one_header_then_provenance_and_numpy_reads_it() {
     let dir = temp_dir("csv-layout");
-    let (slab, single, two) = (
+    let (slab, single, two, hankel) = (
         dir.join("slab.csv"),
         dir.join("single.csv"),
         dir.join("two.csv"),
+        dir.join("hankel.csv"),
     );
     let g = "--a 0.1 --b 0.31 --d 0.1";
     let cases = [
@@ -89,6 +87,13 @@ fn every_curve_has_one_header_then_provenance_and_numpy_reads_it() {
             "r [in],p [psi],g [in],tau [psi]",
             "# method: two-plate FE contact",
             vec!["r_in", "p_psi", "g_in", "tau_psi"],
+        ),
+        (
+            format!("single {g} --c 1.54 --method hankel --curve"),
+            &hankel,
+            "r [in],sigma_z [psi]",
+            "# method: single plate 2D thick with a traction-free hole, semi-analytic",
+            vec!["r_in", "sigma_z_psi"],
         ),
     ];
     let mut parsed = Vec::new();
@@ -121,16 +126,28 @@ fn every_curve_has_one_header_then_provenance_and_numpy_reads_it() {
             // shortest round-trip digits: both readers get the same f64
             assert_eq!(row, &np_row, "{}", case.0);
         }
-        if let Some(cols) = rec.get("pandas_columns") {
-            let cols: Vec<&str> = cols
-                .as_array()
-                .unwrap()
-                .iter()
-                .map(|v| v.as_str().unwrap())
-                .collect();
-            assert_eq!(cols, names.iter().map(String::as_str).collect::<Vec<_>>());
-            assert_eq!(rec["pandas_shape"][0].as_u64(), Some(rows.len() as u64));
-        }
+        let cols: Vec<&str> = rec["pandas_columns"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_str().unwrap())
+            .collect();
+        assert_eq!(cols, names.iter().map(String::as_str).collect::<Vec<_>>());
+        assert_eq!(rec["pandas_shape"][0].as_u64(), Some(rows.len() as u64));
+        // pandas reads the same f64 values as Rust (shortest round-trip digits)
+        let pd_rows: Vec<Vec<f64>> = rec["pandas_data"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| {
+                r.as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|x| x.as_f64().unwrap())
+                    .collect()
+            })
+            .collect();
+        assert_eq!(&pd_rows, rows, "pandas' data of {}", case.0);
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -7,12 +7,17 @@ mod cli;
 #[path = "../common/mod.rs"]
 mod common;
 mod csv_out;
+mod curve_hankel;
 mod exact;
 mod fields;
+mod figure_joint;
+mod figure_map;
+mod figure_png;
 mod json_out;
 mod mutants;
 mod plot_out;
 mod py;
 mod read;
 mod report_cases;
+mod svg_util;
 mod vtu;

@@ -268,9 +268,9 @@ fn field_paths_are_checked_before_any_work() {
         (
             vec![
                 "single", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--method", "hankel",
-                "--curve", p,
+                "--plot", p,
             ],
-            "--curve",
+            "--plot",
         ),
         (
             vec![

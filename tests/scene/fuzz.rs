@@ -33,7 +33,7 @@ const VALUES: [&str; 22] = [
     "\"steel-304\"",
     "{ E = 2e11, nu = 0.3 }",
 ];
-const KEYS: [&str; 10] = [
+const KEYS: [&str; 18] = [
     "radius",
     "outer_radius",
     "thickness",
@@ -44,6 +44,14 @@ const KEYS: [&str; 10] = [
     "profile",
     "interface",
     "tolrance",
+    "correlation",
+    "conductivity",
+    "roughness",
+    "slope",
+    "hardness",
+    "conductance",
+    "field",
+    "midplane",
 ];
 const SYNTAX: [&str; 8] = ["[", "]", "=", "\"", "[[plates]]", "[hole]", "= =", "#"];
 
@@ -94,6 +102,7 @@ fn run(n: usize, seed: u64) {
         crate::example("table2_case5"),
         crate::example("chapter6_pair"),
         crate::example("m8_aluminium_sweep"),
+        crate::example("chapter5_lap"),
     ];
     let mut rng = Rng::new(seed);
     let (mut ok, mut bad) = (0, 0);

@@ -4,9 +4,12 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod command_units;
 mod errors;
 mod examples;
+mod field;
 mod fuzz;
+mod heat;
 mod units;
 
 use std::path::PathBuf;

@@ -1,0 +1,227 @@
+//! `GET /api/joint?a=…&b=…&d=…[&c=…&nu=…&d2=…]` (a contract): one joint, answered as
+//! `{"two": {"r_o", "r_o_error", "converged", …}, "single": {…}, "rules": […], "curves": {…}}`.
+//!
+//! `two` is what `boltzone two --a A --b B --d D [--c C] [--nu ν] [--d2 D2] --json` prints for
+//! the same joint (304 steel E = 28e6 psi, P = 1 psi, frictionless interface, Q9 elements,
+//! tolerance 5e-4: the command's defaults), by the same solver
+//! ([`boltzone::contact::two_plate::solve`]). `single` is Fernlund's single plate 2D thick (D
+//! of the upper plate) by [`boltzone::fem::single`] at the same tolerance; `rules` the 45°,
+//! VDI 2230 (finite plates) and 30° cones' contact radii with their error against the two-plate
+//! R_o (percent, with the error bar the R_o's error gives); `curves` the two-plate interface
+//! pressure `{"r", "p"}` and the single plate's midplane σ_z `{"r", "sigma_z"}` (P = 1 psi,
+//! compression negative), both out to 1.6 times the largest radius of interest. Lengths in
+//! inches, stresses in psi. Query errors name the field (HTTP 400).
+
+use crate::cli::check;
+use boltzone::contact::two_plate::{solve, TwoPlateParams};
+use boltzone::fem::single::{midplane_of, solve_with_field, SingleParams};
+use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate, SinglePlate, Value};
+use serde_json::json;
+
+/// The tolerance of `two`'s default, shared by both models here.
+pub const TOLERANCE: f64 = 5e-4;
+/// Young's modulus of `two`'s default (psi).
+const E: f64 = 28.0e6;
+
+/// A joint asked for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct JointQuery {
+    /// Hole radius A (in).
+    pub a: f64,
+    /// Bearing radius B (in).
+    pub b: f64,
+    /// Upper plate thickness D (in).
+    pub d: f64,
+    /// Outer radius C (None: infinite).
+    pub c: Option<f64>,
+    /// Poisson's ratio (default 0.3).
+    pub nu: f64,
+    /// Lower plate thickness (None: D).
+    pub d2: Option<f64>,
+}
+
+/// Decodes `%XX` and `+` of a query component.
+fn decode(s: &str) -> String {
+    let bytes = s.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'+' => out.push(b' '),
+            b'%' if i + 2 < bytes.len() => {
+                let hex = |c: u8| (c as char).to_digit(16);
+                match (hex(bytes[i + 1]), hex(bytes[i + 2])) {
+                    (Some(h), Some(l)) => {
+                        out.push((16 * h + l) as u8);
+                        i += 2;
+                    }
+                    _ => out.push(b'%'),
+                }
+            }
+            c => out.push(c),
+        }
+        i += 1;
+    }
+    String::from_utf8_lossy(&out).into_owned()
+}
+
+/// Parses the query string (a, b, d required; c, nu, d2 optional; no other keys): the error
+/// names the field and the value.
+pub fn parse(query: &str) -> anyhow::Result<JointQuery> {
+    let (mut a, mut b, mut d, mut c, mut nu, mut d2) = (None, None, None, None, None, None);
+    for pair in query.split('&').filter(|p| !p.is_empty()) {
+        let (k, v) = pair.split_once('=').unwrap_or((pair, ""));
+        let (k, v) = (decode(k), decode(v));
+        let x: f64 = match v.trim().parse() {
+            Ok(x) if f64::is_finite(x) => x,
+            _ => return crate::cli::exit::usage(&k, format!("'{v}'"), "must be a finite number"),
+        };
+        let slot = match k.as_str() {
+            "a" => &mut a,
+            "b" => &mut b,
+            "d" => &mut d,
+            "c" => &mut c,
+            "nu" => &mut nu,
+            "d2" => &mut d2,
+            _ => {
+                return crate::cli::exit::usage(
+                    &k,
+                    format!("'{v}'"),
+                    "is not a parameter (a, b, d, c, nu, d2)",
+                )
+            }
+        };
+        if slot.replace(x).is_some() {
+            return crate::cli::exit::usage(&k, x, "is given twice");
+        }
+    }
+    let need = |name: &str, v: Option<f64>| match v {
+        Some(x) => Ok(x),
+        None => crate::cli::exit::usage(name, "missing", "is required (a, b, d in inches)"),
+    };
+    let q = JointQuery {
+        a: need("a", a)?,
+        b: need("b", b)?,
+        d: need("d", d)?,
+        c,
+        nu: nu.unwrap_or(0.3),
+        d2,
+    };
+    check::annulus(q.a, q.b)?;
+    check::positive("d", "plate thickness D", q.d)?;
+    if let Some(d2) = q.d2 {
+        check::positive("d2", "lower plate thickness D2", d2)?;
+        check::ratio("d2", d2, q.d, 1e3, "thickness")?;
+    }
+    if let Some(c) = q.c {
+        check::outer_radius("c", c, q.b)?;
+    }
+    check::poisson("nu", q.nu, check::NU_MAX_FEM)?;
+    check::domain(
+        q.a,
+        q.b,
+        q.d2.map_or(q.d, |d2| d2.min(q.d)),
+        check::B_OVER_D_TWO,
+    )?;
+    Ok(q)
+}
+
+fn value_json(v: Value) -> serde_json::Value {
+    json!({"value": v.value, "error": v.error, "converged": v.converged})
+}
+
+/// Answers the joint `q` (module docs).
+pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
+    let start = std::time::Instant::now();
+    let mat = Material::new(E, q.nu)?;
+    let outer = q.c.map_or(OuterRadius::Infinite, OuterRadius::Finite);
+    let d2 = q.d2.unwrap_or(q.d);
+    let load = FaceLoad::uniform(q.a, q.b, 1.0)?;
+    let joint = Joint::new(
+        q.a,
+        outer,
+        Plate::new(q.d, mat)?,
+        Plate::new(d2, mat)?,
+        load.clone(),
+    )?;
+    let params = TwoPlateParams {
+        tolerance: TOLERANCE,
+        ..Default::default()
+    };
+    let (two, plate_single) = rayon::join(
+        || solve(&joint, &params),
+        || -> anyhow::Result<_> {
+            let plate = SinglePlate::new(q.a, outer, q.d, Material::unit(q.nu)?, load.clone())?;
+            let sp = SingleParams {
+                tolerance: TOLERANCE,
+                ..SingleParams::default()
+            };
+            let (s, h) = solve_with_field(&plate, &sp)?;
+            Ok((s, midplane_of(&plate, &h)?))
+        },
+    );
+    let two = two?;
+    let (single, mid) = plate_single?;
+    let two_value = Value::with_tolerance(two.r_o, two.r_o_error, TOLERANCE);
+    let rules: Vec<_> = crate::cli::figure::rule_radii((q.b, q.d, d2, q.c))
+        .into_iter()
+        .map(|(name, radius)| {
+            let e = Value::exact(radius).percent_difference(two_value);
+            json!({"name": name, "radius": radius, "error_percent": value_json(e)})
+        })
+        .collect();
+    let reach = 1.6
+        * rules
+            .iter()
+            .filter_map(|r| r["radius"].as_f64())
+            .fold(single.r_o.max(two.r_o), f64::max);
+    let clip = |r: &[f64], y: &[f64]| -> (Vec<f64>, Vec<f64>) {
+        r.iter()
+            .zip(y)
+            .filter(|(r, _)| **r <= reach)
+            .map(|(r, y)| (*r, *y))
+            .unzip()
+    };
+    let (pr, pp) = clip(&two.radius, &two.pressure);
+    let (sr, ss) = clip(&mid.r, &mid.sigma_z);
+    let levels = two.info.levels.last();
+    let mut out = json!({
+        "inputs": {"a": q.a, "b": q.b, "d": q.d, "nu": q.nu, "d2": d2},
+        "units": crate::cli::output::UNITS,
+        "two": {
+            "r_o": two.r_o, "r_o_error": two.r_o_error, "converged": two.converged,
+            "full_contact": two.full_contact, "overlap": two.overlap, "report_rule": two.report_rule,
+            "tolerance": TOLERANCE, "interface": two.info.model,
+            "nodes": levels.map(|l| l.nodes), "dofs": levels.map(|l| l.dofs),
+            "rate": two.info.rate, "nut_deflection": two.nut_deflection,
+            "seconds": two.info.seconds,
+        },
+        "single": {
+            "r_o": single.r_o, "r_o_error": single.r_o_error, "converged": single.converged,
+            "tolerance": TOLERANCE, "method": "fem", "thickness": 2.0 * q.d,
+            "seconds": single.info.seconds,
+        },
+        "rules": rules,
+        "curves": {
+            "pressure": {"r": pr, "p": pp},
+            "sigma_z": {"r": sr, "sigma_z": ss},
+        },
+    });
+    // no null in the answer: optional quantities are left out
+    if let Some(c) = q.c {
+        out["inputs"]["c"] = c.into();
+    }
+    if q.a > 0.0 {
+        out["two"]["r_o_over_a"] = (two.r_o / q.a).into();
+        out["single"]["r_o_over_a"] = (single.r_o / q.a).into();
+    }
+    for key in ["nodes", "dofs", "rate"] {
+        if out["two"][key].is_null() {
+            if let Some(m) = out["two"].as_object_mut() {
+                m.remove(key);
+            }
+        }
+    }
+    out["seconds"] = start.elapsed().as_secs_f64().into();
+    Ok(out)
+}
