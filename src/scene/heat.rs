@@ -45,7 +45,6 @@
 //! ```
 
 use super::error::SceneError;
-use super::file::Scene;
 use super::units::UnitSystem;
 use crate::contact::two_plate::TwoPlateSolution;
 use crate::heat::correlation::{effective_modulus, ContactConductance, Correlation, Surfaces};
@@ -156,20 +155,19 @@ impl HeatSpec {
     }
 }
 
-/// The joint conductance of `scene` from its solved two-plate joint `sol` (SI units), in the
-/// scene's conductance unit.
+/// The joint conductance of a scene's `[heat]` table `spec` (None: an error, the table is
+/// needed) from its solved two-plate joint `sol` (SI units), in the conductance unit of `units`.
 pub fn conductance(
-    scene: &Scene,
+    spec: Option<&HeatSpec>,
+    units: UnitSystem,
     sol: &TwoPlateSolution,
     materials: [Material; 2],
 ) -> Result<f64, SceneError> {
-    let spec = scene
-        .heat
-        .as_ref()
-        .ok_or_else(|| invalid("outputs.conductance", "true: needs a [heat] table".into()))?;
-    let mut params = JointParams::new(spec.contact(scene.units, materials)?);
+    let spec =
+        spec.ok_or_else(|| invalid("outputs.conductance", "true: needs a [heat] table".into()))?;
+    let mut params = JointParams::new(spec.contact(units, materials)?);
     params.length_unit = Length::from_si(1.0);
     params.pressure_unit = Pressure::from_si(1.0);
     let g = joint_conductance(sol, &params)?;
-    Ok(g.total.si() / scene.units.conductance())
+    Ok(g.total.si() / units.conductance())
 }

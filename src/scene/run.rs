@@ -284,7 +284,12 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                 let t = Instant::now();
                 let last = scene.plates.len().saturating_sub(1);
                 let m = [material(scene, 0)?, material(scene, last)?];
-                out.joint_conductance = Some(super::heat::conductance(scene, &s, m)?);
+                out.joint_conductance = Some(super::heat::conductance(
+                    scene.heat.as_ref(),
+                    scene.units,
+                    &s,
+                    m,
+                )?);
                 out.conductance_unit = Some(scene.units.heat_symbols().1);
                 heat_step = Some(t.elapsed().as_secs_f64());
             }
