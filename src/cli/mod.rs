@@ -15,6 +15,7 @@ mod deck;
 pub mod exit;
 mod figure;
 mod figures;
+mod friction_out;
 mod hankel_curve;
 mod joint_figs;
 mod map;
@@ -27,6 +28,7 @@ mod solve;
 mod table1;
 mod table2;
 mod two;
+mod two_hankel;
 
 use boltzone::compare::{compare, show, CompareParams, Geometry, Value};
 use boltzone::reference;

@@ -28,12 +28,16 @@ pub struct Args {
     interface: Interface,
 }
 
+const FRICTION_NOTE: &str =
+    "table2 compares the welded and frictionless models; for friction run `boltzone two --interface friction --mu M`";
+
 /// Runs `boltzone table2`.
 pub fn run(args: Args) -> anyhow::Result<Status> {
     args.out.check()?;
     let model = match args.interface {
         Interface::Welded => InterfaceModel::Welded,
         Interface::Frictionless => InterfaceModel::Frictionless,
+        Interface::Friction => return super::exit::usage("--interface", "friction", FRICTION_NOTE),
     };
     let t = std::time::Instant::now();
     let bar = progress(7, "Table 2");

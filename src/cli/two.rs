@@ -13,8 +13,9 @@
 
 use super::args::{Element, Geometry, OutputFiles};
 use super::check;
-use super::exit::{sig, Status};
+use super::exit::{sig, usage, Status};
 use super::joint_figs::JointFigure;
+use super::two_hankel::Method;
 use boltzone::contact::two_plate::{
     solve, solve_field, EdgeSupport, InterfaceModel, Loading, TwoPlateField, TwoPlateParams,
     TwoPlateSolution,
@@ -33,6 +34,8 @@ pub enum Interface {
     Welded,
     /// Only w tied, unilaterally; no shear.
     Frictionless,
+    /// Unilateral contact with Coulomb friction of coefficient --mu.
+    Friction,
 }
 
 /// Shape of the bearing pressure under head and nut.
@@ -54,22 +57,22 @@ pub struct Args {
     /// A, B, D (the upper plate's thickness; the lower plate's too unless --d2 is given), ν.
     #[command(flatten)]
     #[serde(flatten)]
-    geom: Geometry,
+    pub(super) geom: Geometry,
     /// Thickness of the lower plate (in).
     #[arg(long)]
-    d2: Option<f64>,
+    pub(super) d2: Option<f64>,
     /// Outer radius C of the plates (in); infinite if omitted.
     #[arg(long)]
-    c: Option<f64>,
+    pub(super) c: Option<f64>,
     /// Young's modulus E (psi; 304 steel by default).
     #[arg(long, default_value_t = 28.0e6)]
-    e: f64,
+    pub(super) e: f64,
     /// Poisson's ratio of the lower plate (default: --nu).
     #[arg(long)]
-    nu2: Option<f64>,
+    pub(super) nu2: Option<f64>,
     /// Young's modulus of the lower plate (default: --e).
     #[arg(long)]
-    e2: Option<f64>,
+    pub(super) e2: Option<f64>,
     /// Mean bearing pressure P (psi).
     #[arg(long, default_value_t = 1.0, conflicts_with = "force")]
     p: f64,
@@ -81,35 +84,48 @@ pub struct Args {
     load: Shape,
     /// Instead of a pressure, a uniform displacement (in) of each face under the nut (Fig. 21).
     #[arg(long)]
-    nut_displacement: Option<f64>,
+    pub(super) nut_displacement: Option<f64>,
     /// Fix the outer edge r = C (Fig. 20(c)).
     #[arg(long)]
-    fixed_edge: bool,
+    pub(super) fixed_edge: bool,
     /// Interface model for unequal or dissimilar plates (equal plates are exact either way);
     /// frictionless by default, as the library (welded: the report's model, ill-posed for
     /// dissimilar materials).
     #[arg(long, value_enum, default_value_t = Interface::Frictionless)]
     interface: Interface,
+    /// Coulomb friction coefficient μ ≥ 0 (with --interface friction only).
+    #[arg(long)]
+    mu: Option<f64>,
     /// Element type (q9: the only one whose R_o error estimate is reliable; the linear ones are
     /// cheaper but can miss the tolerance by a factor of three).
     #[arg(long, value_enum, default_value_t = Element::Q9)]
     element: Element,
     /// Wanted relative error of R_o.
     #[arg(long, default_value_t = 5e-4)]
-    tol: f64,
+    pub(super) tol: f64,
+    /// Solver: fem, hankel (equal infinite plates with a hole, R_o only; seconds, not
+    /// milliseconds) or auto (hankel where it applies and --tol is below 1e-5).
+    #[arg(long, value_enum, default_value_t = Method::Fem)]
+    method: Method,
     /// Curve, field and figure files.
     #[command(flatten)]
     #[serde(flatten)]
-    out: OutputFiles,
+    pub(super) out: OutputFiles,
     /// Write a calculation report (inputs, units, version, method, results, rules of thumb,
     /// figures) to this file: Markdown linking the --plot files, or with the extension .html a
     /// self-contained page with the figures inlined as SVG.
     #[arg(long)]
-    report: Option<PathBuf>,
+    pub(super) report: Option<PathBuf>,
     /// Print the result as JSON.
     #[arg(long)]
-    json: bool,
+    pub(super) json: bool,
 }
+
+/// `--method auto` takes the Hankel route only below this tolerance: above it the FE is 10–100×
+/// faster and its estimate held on all of Table 1 at 1e-4 (tests/hankel/two_plate_hole.rs,
+/// `table1_against_the_fe`); at 1e-5 and 1e-6 the FE was high by up to 2e-5, 1.3–2.5× its
+/// estimate, on four of the twelve rows.
+const AUTO_HANKEL_BELOW: f64 = 1e-5;
 
 /// Whether a report file is HTML (by its extension, .html or .htm).
 fn is_html(path: &std::path::Path) -> bool {
@@ -145,6 +161,26 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
         check::positive("--nut-displacement", "nut displacement", n)?;
     }
     check::tolerance("--tol", args.tol)?;
+    match (args.interface, args.mu) {
+        (Interface::Friction, Some(mu)) => {
+            check::non_negative("--mu", "friction coefficient mu", mu)?;
+        }
+        (Interface::Friction, None) => {
+            return usage(
+                "--interface",
+                "friction",
+                "needs the friction coefficient --mu M",
+            );
+        }
+        (_, Some(mu)) => {
+            return usage(
+                "--mu",
+                mu,
+                "a friction coefficient needs --interface friction",
+            );
+        }
+        (_, None) => {}
+    }
     check::domain(
         g.a,
         g.b,
@@ -156,6 +192,11 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     }
     if let Some(e2) = args.e2 {
         check::ratio("--e2", e2, args.e, 1e6, "Young's modulus")?;
+    }
+    if args.method == Method::Hankel {
+        if let Some((flag, value, why)) = super::two_hankel::unsupported(args) {
+            return super::exit::usage(flag, value, why);
+        }
     }
     args.out.check()?;
     if let Some(path) = &args.report {
@@ -179,6 +220,16 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         Shape::PeakA => FaceLoad::triangular(args.geom.a, args.geom.b, p, Peak::AtA)?,
         Shape::PeakB => FaceLoad::triangular(args.geom.a, args.geom.b, p, Peak::AtB)?,
     };
+    let hankel = match args.method {
+        Method::Fem => false,
+        Method::Hankel => true,
+        Method::Auto => {
+            args.tol < AUTO_HANKEL_BELOW && super::two_hankel::unsupported(&args).is_none()
+        }
+    };
+    if hankel {
+        return super::two_hankel::run(&args, load, start);
+    }
     let joint = Joint::new(
         args.geom.a,
         args.c.map_or(OuterRadius::Infinite, OuterRadius::Finite),
@@ -191,6 +242,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         interface: match args.interface {
             Interface::Welded => InterfaceModel::Welded,
             Interface::Frictionless => InterfaceModel::Frictionless,
+            Interface::Friction => InterfaceModel::Friction {
+                mu: args.mu.unwrap_or(0.0),
+            },
         },
         loading: args
             .nut_displacement
@@ -281,6 +335,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         if let Some(q) = r_o_over_a {
             out["r_o_over_a"] = q.into();
         }
+        if let Some(f) = &s.friction {
+            super::friction_out::json(&mut out, &s, f)?;
+        }
         out["bearing_pressure"] = p.into();
         super::output::stamp(&mut out, &args, start)?;
         super::print_json(&out)?;
@@ -310,7 +367,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             println!(
                 "WARNING: no sign-consistent contact edge (welded dissimilar plates have an \
                  oscillatory edge singularity){}; the welded model is ill-posed here: use \
-                 --interface frictionless (or the frictional model when it lands)",
+                 --interface frictionless or --interface friction --mu M",
                 if s.overlap > 0.0 {
                     format!(", the plates overlap by {:.2e} in", s.overlap)
                 } else {
@@ -320,6 +377,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         }
         if s.full_contact {
             println!("full contact: the plates touch out to the rim, R_o = C");
+        }
+        if let Some(f) = &s.friction {
+            println!("{}", super::friction_out::summary(&s, f));
         }
         println!("deflection under the nut: {:.4e} in", s.nut_deflection);
     }
@@ -399,11 +459,14 @@ fn curve_csv(s: &TwoPlateSolution, p: f64) -> String {
         ),
         format!(
             "p = interface pressure (compression > 0), g = gap between the plates, tau = \
-             interface shear on the upper plate (welded model, 0 otherwise); bearing pressure P = \
+             interface shear on the upper plate (welded and friction models, 0 otherwise); bearing pressure P = \
              {p:e} psi"
         ),
         super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
     ];
+    if let Some(f) = &s.friction {
+        return super::friction_out::curve_csv(s, f, &notes);
+    }
     let rows: Vec<Vec<f64>> = (0..s.radius.len())
         .map(|i| vec![s.radius[i], s.pressure[i], s.gap[i], s.shear[i]])
         .collect();

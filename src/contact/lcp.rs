@@ -151,6 +151,20 @@ impl Default for LcpParams {
     }
 }
 
+impl LcpParams {
+    /// The tolerance must lie in (0, 1).
+    pub(crate) fn check(&self) -> Result<(), InputError> {
+        if !(self.tolerance.is_finite() && self.tolerance > 0.0 && self.tolerance < 1.0) {
+            return Err(InputError::Parameter {
+                field: "LcpParams::tolerance",
+                value: self.tolerance,
+                reason: "must lie in (0, 1)",
+            });
+        }
+        Ok(())
+    }
+}
+
 /// What the iteration did.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct LcpInfo {
@@ -214,14 +228,7 @@ fn active_set(
     start: Instant,
 ) -> Result<LcpSolution, ContactError> {
     lcp.check()?;
-    if !(params.tolerance.is_finite() && params.tolerance > 0.0 && params.tolerance < 1.0) {
-        return Err(InputError::Parameter {
-            field: "LcpParams::tolerance",
-            value: params.tolerance,
-            reason: "must lie in (0, 1)",
-        }
-        .into());
-    }
+    params.check()?;
     let m = lcp.points();
     let mut active: Vec<bool> = match warm {
         Some(w) if w.len() == m => w.to_vec(),

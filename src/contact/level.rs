@@ -55,6 +55,8 @@
 //! ```
 
 use super::error::ContactError;
+use super::friction::PointState;
+use super::friction_level;
 use super::lcp::{solve_lcp, Lcp, LcpInfo, LcpParams};
 use super::tie::Ties;
 use crate::fem::{
@@ -91,7 +93,7 @@ impl Model {
 /// What the level needs to know besides the mesh.
 #[derive(Debug, Clone)]
 pub struct LevelSetup<'a> {
-    /// Radial lines of tied interface points (non-empty).
+    /// Radial lines of tied interface points (non-empty unless supports hold the stack).
     pub tied: &'a [usize],
     /// Radial lines of the LCP unknowns.
     pub window: &'a [usize],
@@ -116,7 +118,7 @@ pub struct LevelSolution {
     /// Interface pressure: force / tributary area.
     pub pressure: Vec<f64>,
     /// Interface shear stress on the upper plate (radial force / tributary area; outward > 0):
-    /// zero for frictionless contact, the welded model's shear otherwise.
+    /// zero for frictionless contact, the welded or frictional model's shear otherwise.
     pub shear: Vec<f64>,
     /// Gap w_upper − w_lower (rigid plane: w_upper).
     pub gap: Vec<f64>,
@@ -135,6 +137,8 @@ pub struct LevelSolution {
     pub time_contact: Duration,
     /// Nodal displacements (u, w) of the whole mesh.
     pub u: Vec<[f64; 2]>,
+    /// With friction ([`super::friction`]): the state of each interface node.
+    pub friction: Option<Vec<PointState>>,
 }
 
 /// Ties, numbers, assembles, factors and solves the level (module docs). `supports` adds the
@@ -142,6 +146,19 @@ pub struct LevelSolution {
 pub fn solve_level(
     model: &Model,
     setup: &LevelSetup<'_>,
+    supports: &Supports,
+    loads: &Loads,
+) -> Result<LevelSolution, ContactError> {
+    solve_level_mu(model, setup, None, supports, loads)
+}
+
+/// [`solve_level`] with Coulomb friction of coefficient `mu` when given (two plates, not
+/// welded): every window point gets a tangential unknown, and so does the first tied point
+/// when it is held by supports (module `friction_level`).
+pub(crate) fn solve_level_mu(
+    model: &Model,
+    setup: &LevelSetup<'_>,
+    mu: Option<f64>,
     supports: &Supports,
     loads: &Loads,
 ) -> Result<LevelSolution, ContactError> {
@@ -193,7 +210,7 @@ pub fn solve_level(
     let time_linear = t0.elapsed();
 
     let t1 = Instant::now();
-    let comps: &[Component] = if setup.welded {
+    let comps: &[Component] = if setup.welded || mu.is_some() {
         &[Component::Z, Component::R]
     } else {
         &[Component::Z]
@@ -201,6 +218,7 @@ pub fn solve_level(
     let cols: Vec<Vec<(usize, f64)>> = comps
         .iter()
         .flat_map(|&c| setup.window.iter().map(move |&i| (c, i)))
+        .chain(friction_level::held(setup, mu).map(|i| (Component::R, i)))
         .map(|(c, i)| pair_vector(model, &dofs, &ties, i, c))
         .collect();
     let mut b = Mat::<f64>::zeros(ties.n(), cols.len());
@@ -216,12 +234,21 @@ pub fn solve_level(
     let m = cols.len();
     let g0 = DVector::from_fn(m, |k, _| dot(&cols[k], &|e| x0[e]));
     let flex = DMatrix::from_fn(m, m, |a, c| dot(&cols[a], &|e| xb[(e, c)]));
-    let lcp = Lcp {
-        flexibility: (&flex + flex.transpose()) * 0.5,
-        gap0: g0,
-        welded: setup.welded,
+    let flexibility = (&flex + flex.transpose()) * 0.5;
+    let (sol, states) = match mu {
+        None => {
+            let lcp = Lcp {
+                flexibility,
+                gap0: g0,
+                welded: setup.welded,
+            };
+            (solve_lcp(&lcp, &setup.lcp)?, None)
+        }
+        Some(mu) => {
+            let (s, st) = friction_level::solve(model, setup, mu, flexibility, g0, loads)?;
+            (s, Some(st))
+        }
     };
-    let sol = solve_lcp(&lcp, &setup.lcp)?;
     let mut y = x0;
     for (k, l) in sol.force.iter().enumerate() {
         if *l != 0.0 {
@@ -233,6 +260,11 @@ pub fn solve_level(
     let u = dofs.expand(&ties.prolong(&y));
     let line = mesh.bottom(model.upper);
     let mut forces = line_forces(model, &u, &line)?;
+    // Contact = K u − f: the part of K u the external forces (thermal ones) do not balance.
+    for (f, &n) in forces.iter_mut().zip(&line) {
+        f[0] -= loads.forces()[n][0];
+        f[1] -= loads.forces()[n][1];
+    }
     // A component held by a support (edge, axis) transmits that support's reaction, not contact.
     for (i, f) in forces.iter_mut().enumerate() {
         let (up, low) = model.pair(i);
@@ -283,6 +315,7 @@ pub fn solve_level(
         time_linear,
         time_contact: t1.elapsed(),
         u,
+        friction: states,
     })
 }
 

@@ -7,13 +7,16 @@
 //!
 //! - [`lcp`]: the interface LCP g = g⁰ + Fλ solved by primal–dual active sets (semismooth Newton)
 //!   with a Murty fallback; [`pgs`]: projected Gauss–Seidel as an independent check;
+//! - [`friction`]: Coulomb friction on the interface (open, stick and slip states);
 //! - [`separation`]: R_o finer than one element from the √(R_o − r) pressure and the
 //!   (r − R_o)^{3/2} gap of a smooth separation;
 //! - [`params`]: the model's input (interface model, loading, edge support, study knobs);
 //! - [`two_plate`]: the model (symmetric pair on a rigid plane, unequal or dissimilar pairs
 //!   welded or frictionless, the report's load variants), level after level of a mesh refined at
 //!   R_o; [`level`]: one mesh level on [`crate::fem`] (one factorization, a Schur complement on
-//!   the interface window, the LCP); [`tie`]: tied unknowns of closed pairs.
+//!   the interface window, the LCP); [`tie`]: tied unknowns of closed pairs;
+//! - [`thermal`]: the model with a temperature field (uniform, linear through each plate, or
+//!   from heat conduction) and thermal strains.
 //!
 //! The semi-analytic check of the symmetric case is [`crate::hankel::receding`].
 //!
@@ -38,12 +41,15 @@
 
 mod error;
 pub mod field;
+pub mod friction;
+mod friction_level;
 pub mod lcp;
 pub mod level;
 pub mod params;
 pub mod pgs;
 mod refine;
 pub mod separation;
+pub mod thermal;
 pub mod tie;
 pub mod two_plate;
 

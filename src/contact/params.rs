@@ -18,12 +18,27 @@ use crate::fem::ElementKind;
 use serde::Serialize;
 
 /// How the two plates interact inside the contact zone.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub enum InterfaceModel {
     /// u and w tied where in contact (the report's model).
     Welded,
     /// Only w tied, unilaterally; no shear.
     Frictionless,
+    /// Unilateral contact with Coulomb friction of coefficient `mu` ≥ 0 ([`super::friction`]).
+    Friction {
+        /// The friction coefficient μ.
+        mu: f64,
+    },
+}
+
+impl InterfaceModel {
+    /// μ of the frictional model, None for the others.
+    pub fn friction_coefficient(&self) -> Option<f64> {
+        match *self {
+            Self::Friction { mu } => Some(mu),
+            _ => None,
+        }
+    }
 }
 
 /// What presses the plates together.

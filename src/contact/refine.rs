@@ -30,13 +30,15 @@
 //! ```
 
 use super::error::ContactError;
-use super::level::{solve_level, LevelSetup, LevelSolution, Model};
+use super::friction_level;
+use super::level::{solve_level_mu, LevelSetup, LevelSolution, Model};
 use super::params::{EdgeSupport, Loading, TwoPlateParams};
+use super::thermal::ScaledTemperature;
 use crate::fem::{Component, ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
 use crate::joint::Joint;
 
 /// Radii and thicknesses of the joint as meshed.
-pub(crate) struct MeshLayout {
+pub(crate) struct MeshLayout<'a> {
     pub a: f64,
     pub b: f64,
     pub c: f64,
@@ -46,6 +48,8 @@ pub(crate) struct MeshLayout {
     pub d: [f64; 2],
     pub two: bool,
     pub welded: bool,
+    /// The temperature field, if any ([`super::thermal`]; then `two`).
+    pub thermal: Option<&'a ScaledTemperature<'a>>,
 }
 
 /// What a level keeps of the one before it: its solution, its R_o estimate and element size.
@@ -124,10 +128,16 @@ pub(crate) fn solve_adaptive(
     g: &MeshLayout,
     params: &TwoPlateParams,
     prev: Option<&PreviousLevel>,
+    thermal: Option<&Loads>,
 ) -> Result<(LevelSolution, usize, usize), ContactError> {
     let r = model.mesh.radial_nodes().to_vec();
     let load = joint.load();
-    let (supports, loads) = boundary(model, joint, g, params)?;
+    let (supports, mut loads) = boundary(model, joint, g, params)?;
+    if let Some(t) = thermal {
+        for (n, f) in t.forces().iter().enumerate() {
+            loads.add_point(n, *f);
+        }
+    }
     let held: Vec<bool> = (0..r.len())
         .map(|i| {
             let (up, low) = model.pair(i);
@@ -137,14 +147,20 @@ pub(crate) fn solve_adaptive(
         })
         .collect();
     // First choice: from the previous level; fallback: one reference point under the load.
-    let mut plan = prev.and_then(|p| refined_plan(&r, p));
     let mut reference = nearest(&r, centroid(load));
+    let fix_rigid = params.edge == EdgeSupport::Free && params.loading == Loading::Pressure;
+    let mu = params.interface.friction_coefficient().filter(|_| g.two);
+    let mut plan = match mu {
+        None => prev.and_then(|p| refined_plan(&r, p)),
+        Some(_) => prev.map(|p| friction_level::plan(&r, reference, fix_rigid, p.r_o + 6.0 * p.h)),
+    };
     let mut r_win = (g.b + params.window * g.d[0].max(g.d[1])).min(g.c);
     let mut tries = 0;
     loop {
         tries += 1;
         let (mut tied, mut window) = match &plan {
             Some(p) => p.clone(),
+            None if mu.is_some() => friction_level::plan(&r, reference, fix_rigid, r_win),
             None => (
                 vec![reference],
                 (0..r.len())
@@ -159,11 +175,11 @@ pub(crate) fn solve_adaptive(
             tied: &tied,
             window: &window,
             welded: g.welded,
-            fix_rigid: params.edge == EdgeSupport::Free && params.loading == Loading::Pressure,
+            fix_rigid,
             lcp: params.lcp,
             nut: (g.a, g.b),
         };
-        let sol = solve_level(model, &setup, &supports, &loads)?;
+        let sol = solve_level_mu(model, &setup, mu, &supports, &loads)?;
         let fmax = sol.force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
         let gmax = sol.gap.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         // Round-off level of the checks: the LCP's own tolerance.

@@ -8,7 +8,8 @@
 //! - **Unequal or dissimilar plates** (Fig. 5(c)): both plates meshed, coincident interface node
 //!   pairs, either [`InterfaceModel::Welded`] (u and w tied inside the contact zone: the report's
 //!   model, exact when friction prevents slip) or [`InterfaceModel::Frictionless`] (only w tied,
-//!   unilaterally). The head presses the upper plate's outer face, the nut the lower one's.
+//!   unilaterally), or [`InterfaceModel::Friction`] (Coulomb friction of coefficient μ:
+//!   [`super::friction`]). The head presses the upper plate's outer face, the nut the lower one's.
 //! - Loads: the joint's face pressure (uniform or triangular with the peak at A or B, Figs. 19–20)
 //!   or a uniform displacement under the nut (Fig. 21); outer edge free or fixed (Fig. 20(c)).
 //!
@@ -57,6 +58,7 @@ use super::level::{LevelSolution, Model};
 pub use super::params::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use super::refine::{mesh, solve_adaptive, MeshLayout, PreviousLevel};
 use super::separation::{estimate, NodalInterface, SeparationEstimate};
+use super::thermal::{JointTemperature, ScaledTemperature};
 use crate::error::InputError;
 use crate::joint::{Joint, OuterRadius, Plate};
 use crate::numerics::convergence::{fitted_rate, level_estimate};
@@ -98,7 +100,8 @@ pub struct TwoPlateLevel {
 /// The record of [`solve`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct TwoPlateInfo {
-    /// Which model ran: "symmetric (one plate on a rigid frictionless plane)", "welded", "frictionless".
+    /// Which model ran: "symmetric (one plate on a rigid frictionless plane)", "welded",
+    /// "frictionless", "friction".
     pub model: &'static str,
     /// The levels, coarse to fine.
     pub levels: Vec<TwoPlateLevel>,
@@ -137,13 +140,16 @@ pub struct TwoPlateSolution {
     /// Interface pressure p(r) (force / tributary area; 0 where open).
     pub pressure: Vec<f64>,
     /// Interface shear stress τ on the upper plate (outward > 0): zero for frictionless and
-    /// symmetric contact, the welded model's shear stress inside the contact zone.
+    /// symmetric contact, the welded or frictional model's shear stress inside the contact zone.
     pub shear: Vec<f64>,
     /// Gap g(r) between the two plates (0 in contact); for the symmetric model twice the lift
     /// of the one plate off the plane.
     pub gap: Vec<f64>,
     /// Mean axial displacement under the nut (upper plate, negative toward the interface).
     pub nut_deflection: f64,
+    /// With [`InterfaceModel::Friction`] on two meshed plates: stick and slip zones and the slip.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction: Option<super::friction::FrictionZones>,
     /// The study's record.
     pub info: TwoPlateInfo,
 }
@@ -173,6 +179,15 @@ pub fn solve_field(
 pub(crate) fn solve_keeping(
     joint: &Joint,
     params: &TwoPlateParams,
+) -> Result<(TwoPlateSolution, UnitField), ContactError> {
+    solve_keeping_with(joint, params, None)
+}
+
+/// [`solve_keeping`] with an optional temperature field ([`super::thermal`]).
+pub(crate) fn solve_keeping_with(
+    joint: &Joint,
+    params: &TwoPlateParams,
+    temperature: Option<&JointTemperature>,
 ) -> Result<(TwoPlateSolution, UnitField), ContactError> {
     check(params)?;
     let (up, lo) = (joint.upper(), joint.lower());
@@ -224,16 +239,22 @@ pub(crate) fn solve_keeping(
         },
         ..*params
     };
-    let (mut s, (model, last)) = solve_unit(&scaled, &scaled_params).map_err(|e| match e {
-        ContactError::WindowExhausted { radius } => ContactError::WindowExhausted {
-            radius: radius * length,
-        },
-        ContactError::ReferenceInTension { radius, reaction } => ContactError::ReferenceInTension {
-            radius: radius * length,
-            reaction: reaction * stress * length * length,
-        },
-        e => e,
-    })?;
+    let thermal = temperature
+        .map(|t| ScaledTemperature::new(t, length, modulus, stress))
+        .transpose()?;
+    let (mut s, (model, last)) =
+        solve_unit(&scaled, &scaled_params, thermal.as_ref()).map_err(|e| match e {
+            ContactError::WindowExhausted { radius } => ContactError::WindowExhausted {
+                radius: radius * length,
+            },
+            ContactError::ReferenceInTension { radius, reaction } => {
+                ContactError::ReferenceInTension {
+                    radius: radius * length,
+                    reaction: reaction * stress * length * length,
+                }
+            }
+            e => e,
+        })?;
     let displacement = length * stress / modulus;
     s.r_o *= length;
     s.r_o_error *= length;
@@ -245,6 +266,10 @@ pub(crate) fn solve_keeping(
     s.shear.iter_mut().for_each(|t| *t *= stress);
     s.gap.iter_mut().for_each(|g| *g *= displacement);
     s.nut_deflection *= displacement;
+    s.overlap *= displacement;
+    if let Some(f) = &mut s.friction {
+        f.slip.iter_mut().for_each(|x| *x *= displacement);
+    }
     s.info.cut = s.info.cut.map(|c| c * length);
     s.info.truncation_error *= length;
     for l in &mut s.info.levels {
@@ -286,9 +311,10 @@ fn solve_level_at(
     h: f64,
     prev: Option<&PreviousLevel>,
 ) -> Result<Level, ContactError> {
-    let model = mesh(joint, g, params.element, h, prev.map(|p| p.r_o))?;
+    let mut model = mesh(joint, g, params.element, h, prev.map(|p| p.r_o))?;
+    let thermal = g.thermal.map(|t| t.apply(&mut model)).transpose()?;
     let nodes = model.mesh.n_nodes();
-    let (sol, window, attempts) = solve_adaptive(&model, joint, g, params, prev)?;
+    let (sol, window, attempts) = solve_adaptive(&model, joint, g, params, prev, thermal.as_ref())?;
     let est = match separation(&sol) {
         Some(est) => est,
         // Closed out to the rim: full contact, R_o = C (an answer, not a failure).
@@ -375,12 +401,14 @@ fn truncation(
 fn solve_unit(
     joint: &Joint,
     params: &TwoPlateParams,
+    thermal: Option<&ScaledTemperature>,
 ) -> Result<(TwoPlateSolution, (Model, LevelSolution)), ContactError> {
     let start = Instant::now();
     let load = joint.load();
     let (a, b) = (joint.hole_radius(), load.outer());
     let d = [joint.upper().thickness(), joint.lower().thickness()];
-    let two = params.both_plates || !joint.is_symmetric();
+    // (a temperature field breaks the mirror symmetry of the one-plate model)
+    let two = params.both_plates || !joint.is_symmetric() || thermal.is_some();
     let c = match joint.outer_radius() {
         OuterRadius::Finite(c) => c,
         OuterRadius::Infinite => f64::INFINITY,
@@ -393,6 +421,7 @@ fn solve_unit(
         d,
         two,
         welded: two && params.interface == InterfaceModel::Welded,
+        thermal,
     };
     let h0 = params.coarse * d[0].min(d[1]);
     let (cut, truncation_error) = truncation(joint, &g, params, c, h0)?;
@@ -475,11 +504,17 @@ fn solve_unit(
         shear: sol.shear.clone(),
         gap: sol.gap.iter().map(|x| gap_factor * x).collect(),
         nut_deflection: sol.nut_deflection,
+        friction: params
+            .interface
+            .friction_coefficient()
+            .and_then(|mu| super::friction_level::zones(&model, &sol, mu)),
         info: TwoPlateInfo {
             model: if !g.two {
                 "symmetric (one plate on a rigid frictionless plane)"
             } else if g.welded {
                 "welded"
+            } else if params.interface.friction_coefficient().is_some() {
+                "friction"
             } else {
                 "frictionless"
             },
@@ -542,6 +577,11 @@ fn check(p: &TwoPlateParams) -> Result<(), InputError> {
             p.max_levels as f64,
             "need 1 ≤ min_levels ≤ max_levels ≤ 14",
         );
+    }
+    if let Some(mu) = p.interface.friction_coefficient() {
+        if !(mu >= 0.0 && mu.is_finite()) {
+            return bad("TwoPlateParams::interface mu", mu, "must be finite and ≥ 0");
+        }
     }
     if let Loading::NutDisplacement(v) = p.loading {
         crate::error::positive("nut displacement", v)?;

@@ -185,6 +185,20 @@ impl Mesh {
         })
     }
 
+    /// Replaces the element materials (one index per element), e.g. one material per element
+    /// for moduli that follow a temperature field ([`crate::fem::thermal`]).
+    pub fn set_element_materials(&mut self, material: Vec<usize>) -> Result<(), InputError> {
+        if material.len() != self.material.len() {
+            return Err(InputError::Parameter {
+                field: "number of element materials",
+                value: material.len() as f64,
+                reason: "must equal the number of elements",
+            });
+        }
+        self.material = material;
+        Ok(())
+    }
+
     /// Moves every node to `f(r, z)` (e.g. to distort a patch-test mesh). The plate/row layout is
     /// kept, so the face and row queries still name the same nodes.
     pub fn transform_nodes(&mut self, f: impl Fn([f64; 2]) -> [f64; 2]) {

@@ -18,6 +18,8 @@
 //!   analysis, numeric refactorization, many right-hand sides);
 //! - [`recover`]: stresses at Gauss points, element centres and nodes; reactions; the traction
 //!   along a supported line;
+//! - [`thermal`]: temperatures per node, E(T), ν(T), α(T), thermal loads and stresses
+//!   σ = D (ε − ε_th) (Appendix C on every element);
 //! - [`single`]: the single-plate model (Fernlund's substitution) and its separation radius R_o;
 //! - [`lame`]: the Lamé cylinder, the closed-form check of the elements;
 //! - [`error`]: [`FemError`], the failures of all of the above.
@@ -65,6 +67,7 @@ pub mod recover;
 pub mod single;
 pub mod solve;
 pub mod spacing;
+pub mod thermal;
 
 pub use assemble::{assemble, Pattern, Stiffness};
 pub use dofs::{Component, DofMap, NodeSupport, Supports};

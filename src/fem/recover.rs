@@ -53,7 +53,7 @@ use super::solve::{Factorization, SolveParams};
 use crate::material::Material;
 use faer::sparse::{SparseColMat, Triplet};
 
-fn material<'a>(
+pub(crate) fn material<'a>(
     mesh: &Mesh,
     materials: &'a [Material],
     e: usize,
@@ -66,7 +66,7 @@ fn material<'a>(
     })
 }
 
-fn element_u(mesh: &Mesh, u: &[[f64; 2]], e: usize) -> Vec<f64> {
+pub(crate) fn element_u(mesh: &Mesh, u: &[[f64; 2]], e: usize) -> Vec<f64> {
     mesh.element_nodes(e).iter().flat_map(|&n| u[n]).collect()
 }
 

@@ -19,7 +19,9 @@
 //! ```
 
 use super::error::SceneError;
-use super::file::{line_of, path_name, MaterialSpec, Method, Model, ProfileKind, Scene, Seg};
+use super::file::{
+    line_of, path_name, InterfaceKind, MaterialSpec, Method, Model, ProfileKind, Scene, Seg,
+};
 use super::heat::{CorrelationSpec, CORRELATIONS};
 use super::materials;
 use std::path::Path;
@@ -128,8 +130,23 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
             return Err(c.fail(&p, cr, "the slab is infinite: omit joint.outer_radius"));
         }
     }
+    let mu = [k("joint"), k("mu")];
+    match (scene.joint.interface, scene.joint.mu) {
+        (InterfaceKind::Friction, Some(m)) if !(m >= 0.0 && m.is_finite()) => {
+            return Err(c.fail(&mu, m, "the friction coefficient must be finite and ≥ 0"))
+        }
+        (InterfaceKind::Friction, None) => {
+            let p = [k("joint"), k("interface")];
+            return Err(c.fail(&p, "\"friction\"", "needs joint.mu"));
+        }
+        (InterfaceKind::Frictionless | InterfaceKind::Welded, Some(m)) => {
+            return Err(c.fail(&mu, m, "needs joint.interface = \"friction\""))
+        }
+        _ => {}
+    }
     check_model(scene, &c)?;
     check_heat(scene, &c)?;
+    super::temperature::check(scene, text)?;
     check_outputs(scene, &c)
 }
 

@@ -75,6 +75,8 @@ pub enum InterfaceKind {
     Frictionless,
     /// u and w tied inside the contact zone (the report's model).
     Welded,
+    /// Coulomb friction with `joint.mu`.
+    Friction,
 }
 
 /// `[hole]`.
@@ -147,6 +149,9 @@ pub struct JointSpec {
     /// Interface model (default frictionless).
     #[serde(default)]
     pub interface: InterfaceKind,
+    /// Friction coefficient μ ≥ 0 (with `interface = "friction"` only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mu: Option<f64>,
     /// Fix the outer edge r = C (report Fig. 20(c); default false).
     #[serde(default)]
     pub fixed_edge: bool,
@@ -232,6 +237,9 @@ pub struct Scene {
     /// The surfaces and contact conductance law ([`super::heat`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub heat: Option<super::heat::HeatSpec>,
+    /// Plate temperatures (two-plate model with thermal strains; [`super::temperature`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub temperature: Option<super::temperature::TemperatureSpec>,
     /// Dotted keys mapped to lists of values; the product of the lists is solved.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub sweep: BTreeMap<String, Vec<toml::Value>>,

@@ -52,6 +52,7 @@ pub mod heat;
 pub mod materials;
 pub mod run;
 pub mod sweep;
+pub mod temperature;
 pub mod units;
 
 pub use error::SceneError;

@@ -23,6 +23,7 @@ use super::field::{self, Midplane};
 use super::file::{InterfaceKind, MaterialSpec, Method, Model, ProfileKind, Scene};
 use super::materials;
 use super::units::UnitSystem;
+use crate::contact::thermal;
 use crate::contact::two_plate::{self, EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use crate::fem::single::{self as fem_single, FaceCondition, SingleParams};
 use crate::hankel::hole::{single_plate_separation, HoleParams};
@@ -167,6 +168,9 @@ pub fn two_plate_params(scene: &Scene, nut: Option<f64>) -> TwoPlateParams {
         interface: match scene.joint.interface {
             InterfaceKind::Welded => InterfaceModel::Welded,
             InterfaceKind::Frictionless => InterfaceModel::Frictionless,
+            InterfaceKind::Friction => InterfaceModel::Friction {
+                mu: scene.joint.mu.unwrap_or(0.0),
+            },
         },
         loading: nut.map_or(Loading::Pressure, Loading::NutDisplacement),
         edge: if scene.joint.fixed_edge {
@@ -260,14 +264,17 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
     let other = match (scene.model, method) {
         (Model::TwoPlate, _) => {
             let params = two_plate_params(scene, nut);
-            let s = match scene.outputs.field {
-                Some(_) => {
+            let s = match (&scene.temperature, &scene.outputs.field) {
+                (Some(t), _) => {
+                    thermal::solve_with_temperature(&joint, &params, &t.joint_temperature(&joint)?)?
+                }
+                (None, Some(_)) => {
                     let (s, f) = crate::contact::two_plate::solve_field(&joint, &params)?;
                     let (grid, _) = field::two_plate_grid(&s, &f)?;
                     out.field = Some(field::scaled(grid, l, scene.units.stress()));
                     s
                 }
-                None => two_plate::solve(&joint, &params)?,
+                (None, None) => two_plate::solve(&joint, &params)?,
             };
             (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
             out.full_contact = Some(s.full_contact);

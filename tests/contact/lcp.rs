@@ -5,9 +5,9 @@ use boltzone::contact::{projected_gauss_seidel, solve_lcp, solve_lcp_from, Lcp, 
 use nalgebra::{DMatrix, DVector};
 
 /// A small deterministic generator (no dependency): 64-bit LCG, uniform in [-1, 1).
-struct Lcg(u64);
+pub(crate) struct Lcg(pub(crate) u64);
 impl Lcg {
-    fn next(&mut self) -> f64 {
+    pub(crate) fn next(&mut self) -> f64 {
         self.0 = self
             .0
             .wrapping_mul(6364136223846793005)

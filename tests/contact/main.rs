@@ -2,7 +2,10 @@
 //! two-plate model, its agreement with the semi-analytic receding contact, and the `two` command.
 
 mod cli;
+mod friction;
+mod friction_cli;
 mod lcp;
 mod receding_vs_fe;
 mod separation;
+mod thermal;
 mod two_plate;

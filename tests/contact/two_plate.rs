@@ -188,6 +188,7 @@ fn unequal_plates_welded_and_frictionless() {
                     }
                 }
             }
+            InterfaceModel::Friction { .. } => unreachable!("friction: tests/contact/friction.rs"),
         }
         r.push(s.r_o);
     }

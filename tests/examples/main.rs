@@ -197,3 +197,23 @@ fn ex18_heat_speed() {
     quick();
     ex18::main().unwrap();
 }
+
+#[allow(dead_code)]
+#[path = "../../examples/20_thermal_contact.rs"]
+mod ex20;
+
+#[test]
+fn ex20_thermal_contact() {
+    quick();
+    ex20::main().unwrap();
+}
+
+#[allow(dead_code)]
+#[path = "../../examples/21_friction.rs"]
+mod ex21;
+
+#[test]
+fn ex21_friction() {
+    quick();
+    ex21::main().unwrap();
+}

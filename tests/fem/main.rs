@@ -10,3 +10,4 @@ mod hole_agreement;
 mod lame;
 mod single;
 mod system;
+mod thermal;

@@ -17,3 +17,4 @@ mod separation;
 mod shear_kernels;
 mod slab;
 mod transform;
+mod two_plate_hole;

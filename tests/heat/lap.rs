@@ -28,6 +28,7 @@ fn uniform_contact(p0: f64) -> TwoPlateSolution {
         shear: vec![0.0; 2],
         gap: vec![0.0; 2],
         nut_deflection: 0.0,
+        friction: None,
         info: TwoPlateInfo {
             model: "synthetic",
             levels: Vec::new(),

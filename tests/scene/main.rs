@@ -10,6 +10,7 @@ mod examples;
 mod field;
 mod fuzz;
 mod heat;
+mod temperature;
 mod units;
 
 use std::path::PathBuf;

@@ -198,12 +198,13 @@ fn triangle_stress(t: &Tri, d: &[[f64; 4]; 4], all: &[f64; 10], eth: f64) -> ([f
     (apply_d(d, &e), ue)
 }
 
-pub(crate) fn points(x: &[[f64; 2]], d: &[[f64; 4]; 4], u: &[f64]) -> Vec<ElementPoint> {
+/// The four triangles' centroid points; `eth` the element's uniform thermal strain (0 without).
+pub(crate) fn points(x: &[[f64; 2]], d: &[[f64; 4]; 4], u: &[f64], eth: f64) -> Vec<ElementPoint> {
     let tris = triangles(x);
-    let all = expand(&tris, d, u, 0.0);
+    let all = expand(&tris, d, u, eth);
     tris.iter()
         .map(|t| {
-            let (s, ue) = triangle_stress(t, d, &all, 0.0);
+            let (s, ue) = triangle_stress(t, d, &all, eth);
             ElementPoint {
                 r: t.r,
                 z: t.z,
@@ -216,10 +217,10 @@ pub(crate) fn points(x: &[[f64; 2]], d: &[[f64; 4]; 4], u: &[f64]) -> Vec<Elemen
 }
 
 /// Volume-weighted mean of the four triangles' stresses at the centre node.
-pub(crate) fn centre(x: &[[f64; 2]], d: &[[f64; 4]; 4], u: &[f64]) -> ElementPoint {
+pub(crate) fn centre(x: &[[f64; 2]], d: &[[f64; 4]; 4], u: &[f64], eth: f64) -> ElementPoint {
     let tris = triangles(x);
-    let pts = points(x, d, u);
-    let all = expand(&tris, d, u, 0.0);
+    let pts = points(x, d, u, eth);
+    let all = expand(&tris, d, u, eth);
     let w: f64 = pts.iter().map(|p| p.weight).sum();
     let mut s = [0.0; 4];
     for p in &pts {
@@ -243,8 +244,13 @@ pub(crate) fn centre(x: &[[f64; 2]], d: &[[f64; 4]; 4], u: &[f64]) -> ElementPoi
 
 /// Each corner gets the mean stress of the two triangles that contain it (a triangle element:
 /// its one stress).
-pub(crate) fn corner_stresses(x: &[[f64; 2]], d: &[[f64; 4]; 4], u: &[f64]) -> Vec<Stress> {
-    let pts = points(x, d, u);
+pub(crate) fn corner_stresses(
+    x: &[[f64; 2]],
+    d: &[[f64; 4]; 4],
+    u: &[f64],
+    eth: f64,
+) -> Vec<Stress> {
+    let pts = points(x, d, u, eth);
     if pts.len() == 1 {
         return vec![pts[0].stress; 4];
     }

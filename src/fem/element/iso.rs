@@ -71,14 +71,14 @@ pub(crate) fn map(el: &dyn Parent, x: &[[f64; 2]], p: [f64; 2]) -> Mapped {
 }
 
 /// Gauss points of the tensor rule with their parent weights.
-fn gauss(el: &dyn Parent) -> impl Iterator<Item = ([f64; 2], f64)> + '_ {
+pub(crate) fn gauss(el: &dyn Parent) -> impl Iterator<Item = ([f64; 2], f64)> + '_ {
     let rule = el.rule();
     rule.iter()
         .flat_map(move |&(xi, wi)| rule.iter().map(move |&(eta, wj)| ([xi, eta], wi * wj)))
 }
 
 /// Element average of the volumetric row (ε_r + ε_z + ε_θ per dof).
-fn mean_dilatation(el: &dyn Parent, x: &[[f64; 2]]) -> Vec<f64> {
+pub(crate) fn mean_dilatation(el: &dyn Parent, x: &[[f64; 2]]) -> Vec<f64> {
     let nd = 2 * x.len();
     let (mut acc, mut vol) = (vec![0.0; nd], 0.0);
     for (p, w) in gauss(el) {
@@ -93,7 +93,7 @@ fn mean_dilatation(el: &dyn Parent, x: &[[f64; 2]]) -> Vec<f64> {
 }
 
 /// Replaces the volumetric part of the B columns by the element mean.
-fn bbar(b: &mut [[f64; 4]], mean: &[f64]) {
+pub(crate) fn bbar(b: &mut [[f64; 4]], mean: &[f64]) {
     for (bc, m) in b.iter_mut().zip(mean) {
         let shift = (m - (bc[0] + bc[1] + bc[2])) / 3.0;
         for c in bc.iter_mut().take(3) {

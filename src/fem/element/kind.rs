@@ -68,7 +68,7 @@ impl ElementKind {
     pub fn quadrature_points(self, x: &[[f64; 2]], m: &Material, u: &[f64]) -> Vec<ElementPoint> {
         let d = elasticity(m);
         match self {
-            Self::Cst4 => cst4::points(x, &d, u),
+            Self::Cst4 => cst4::points(x, &d, u, 0.0),
             Self::Q4 => iso::gauss_points(&q4::Q4, x, &d, u, false),
             Self::Q4Bbar => iso::gauss_points(&q4::Q4, x, &d, u, true),
             Self::Q9 => iso::gauss_points(&q9::Q9, x, &d, u, false),
@@ -80,7 +80,7 @@ impl ElementKind {
     pub fn centre_stress(self, x: &[[f64; 2]], m: &Material, u: &[f64]) -> ElementPoint {
         let d = elasticity(m);
         match self {
-            Self::Cst4 => cst4::centre(x, &d, u),
+            Self::Cst4 => cst4::centre(x, &d, u, 0.0),
             Self::Q4 => iso::at_parent(&q4::Q4, x, &d, u, [0.0, 0.0], false),
             Self::Q4Bbar => iso::at_parent(&q4::Q4, x, &d, u, [0.0, 0.0], true),
             Self::Q9 => iso::at_parent(&q9::Q9, x, &d, u, [0.0, 0.0], false),
@@ -92,7 +92,7 @@ impl ElementKind {
     pub fn nodal_stresses(self, x: &[[f64; 2]], m: &Material, u: &[f64]) -> Vec<Stress> {
         let d = elasticity(m);
         match self {
-            Self::Cst4 => cst4::corner_stresses(x, &d, u),
+            Self::Cst4 => cst4::corner_stresses(x, &d, u, 0.0),
             Self::Q4 | Self::Q4Bbar => q4::CORNERS
                 .iter()
                 .map(|&p| iso::at_parent(&q4::Q4, x, &d, u, p, self == Self::Q4Bbar).stress)

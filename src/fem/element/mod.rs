@@ -44,6 +44,7 @@ mod iso;
 mod kind;
 pub mod q4;
 pub mod q9;
+pub mod thermal;
 
 pub(crate) use common::{add_btdb, apply_d, mirror_upper, strain, GAUSS2, GAUSS3};
 pub use common::{elasticity, ElementPoint, Stress};

@@ -5,6 +5,9 @@
 //! - [`layer`]: the layer's Hankel kernels (bottom-face displacement under face pressures);
 //! - `system`: the Fredholm equation of a contact disk r ≤ c, by Nyström's method;
 //! - `search`: the scan and root search for R_o and the check of the unilateral conditions;
+//! - [`layer_field`]: the layer's stresses at any height under a bottom (or top) pressure;
+//! - [`holed`]: the two-plate model with the hole (bilateral holed plate + crack field + its
+//!   hole correction, iterated); `crack`: one trial contact radius of it;
 //! - [`contact`]: the solver ([`Layer::receding_contact`]) and its results (derivation,
 //!   accuracy and cost there).
 //!
@@ -29,7 +32,10 @@
 //! ```
 
 pub mod contact;
+mod crack;
+pub mod holed;
 pub mod layer;
+pub mod layer_field;
 mod search;
 mod system;
 

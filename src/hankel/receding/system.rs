@@ -83,10 +83,15 @@ impl XiRule {
     pub(crate) fn len(&self) -> usize {
         self.xi.len()
     }
+
+    /// The nodes ξ_m and the weights a_m (of k₁) and b_m (of M_p).
+    pub(crate) fn nodes(&self) -> (&[f64], &[f64], &[f64]) {
+        (&self.xi, &self.a, &self.b)
+    }
 }
 
 /// −2 sin²(x/2) = cos x − 1 without cancellation at small x.
-fn cos_m1(x: f64) -> f64 {
+pub(crate) fn cos_m1(x: f64) -> f64 {
     let s = (0.5 * x).sin();
     -2.0 * s * s
 }
@@ -98,9 +103,9 @@ pub(crate) struct Nystrom {
     rule: XiRule,
     /// C₀, the Lagrange multiplier of equilibrium (a rigid translation in disguise).
     c0: f64,
-    /// g_m = b_m (p̃_m − Ŵ_m) with Ŵ = q̄ − p̄(0) at the nodes.
+    /// g_m = β_m − b_m Ŵ_m with Ŵ = q̄ − q̄(0) at the nodes (β_m = b_m p̃_m for a top load).
     g: Vec<f64>,
-    /// h_m = a_m q̄(ξ_m).
+    /// h_m = a_m q̄(ξ_m) − α_m.
     h: Vec<f64>,
     /// The θ-rule of H(r) with φ folded in, (c sin θ_k, w_k φ(c sin θ_k) c cos θ_k), and H(c);
     /// built on first use by [`Self::abel`] (it does not depend on r).
@@ -111,6 +116,23 @@ impl Nystrom {
     /// Solves for contact over r ≤ `c` with an `n`-point rule; `p0` = p̄(0). `None` if the
     /// linear system is singular (never observed; it is a second-kind system).
     pub(crate) fn solve(rule: XiRule, c: f64, n: usize, p0: f64) -> Option<Self> {
+        let alpha = vec![0.0; rule.len()];
+        let beta: Vec<f64> = (0..rule.len())
+            .map(|k| rule.b[k] * rule.p_tilde[k])
+            .collect();
+        Self::solve_general(rule, c, n, p0, &alpha, &beta)
+    }
+
+    /// The same equation with a general right-hand side given as a cosine series on the rule's
+    /// nodes, f(t) = Σ_m [α_m cos ξ_m t + β_m (cos ξ_m t − 1)], and ∫₀^c φ = `total`.
+    pub(crate) fn solve_general(
+        rule: XiRule,
+        c: f64,
+        n: usize,
+        total: f64,
+        alpha: &[f64],
+        beta: &[f64],
+    ) -> Option<Self> {
         let gl = gauss_legendre(n);
         let s: Vec<f64> = gl.iter().map(|&(x, _)| 0.5 * c * (1.0 + x)).collect();
         let om: Vec<f64> = gl.iter().map(|&(_, w)| 0.5 * c * w).collect();
@@ -124,7 +146,7 @@ impl Nystrom {
             vb.column_mut(k).scale_mut(rule.b[k]);
         }
         let kmat = &ca * cm.transpose() + &vb * vm.transpose();
-        let f = &vm * DVector::from_fn(m, |k, _| rule.b[k] * rule.p_tilde[k]);
+        let f = &vm * DVector::from_column_slice(beta) + &cm * DVector::from_column_slice(alpha);
         let mut sys = DMatrix::zeros(n + 1, n + 1);
         let mut rhs = DVector::zeros(n + 1);
         for i in 0..n {
@@ -136,15 +158,13 @@ impl Nystrom {
             rhs[i] = f[i];
             sys[(n, i)] = om[i];
         }
-        rhs[n] = p0;
+        rhs[n] = total;
         let sol = sys.lu().solve(&rhs)?;
         let wphi = DVector::from_fn(n, |j, _| om[j] * sol[j]);
         let q_bar = cm.transpose() * &wphi;
         let w_hat = vm.transpose() * &wphi;
-        let g = (0..m)
-            .map(|k| rule.b[k] * (rule.p_tilde[k] - w_hat[k]))
-            .collect();
-        let h = (0..m).map(|k| rule.a[k] * q_bar[k]).collect();
+        let g = (0..m).map(|k| beta[k] - rule.b[k] * w_hat[k]).collect();
+        let h = (0..m).map(|k| rule.a[k] * q_bar[k] - alpha[k]).collect();
         Some(Self {
             c,
             rule,
@@ -163,6 +183,11 @@ impl Nystrom {
     /// ξ-nodes used.
     pub(crate) fn xi_nodes(&self) -> usize {
         self.rule.len()
+    }
+
+    /// φ(t) = C₀ + Σ_m [g_m (cos ξ_m t − 1) − h_m cos ξ_m t]: (C₀, g, h).
+    pub(crate) fn series(&self) -> (f64, &[f64], &[f64]) {
+        (self.c0, &self.g, &self.h)
     }
 
     /// φ(t) by Nyström interpolation, 0 ≤ t ≤ c.

@@ -23,6 +23,9 @@ use serde::Serialize;
 use std::f64::consts::PI;
 use std::time::Instant;
 
+/// The row (T, E, ν, α) of a material table at a temperature (moved to [`crate::fem::thermal`]).
+pub use crate::fem::thermal::interpolate;
+
 /// A node's displacement as the program printed it: (u_r, u_z), or (u_s, u_n) at a skew node.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct NodeResult {
@@ -131,23 +134,6 @@ pub fn element_state(deck: &Deck, e: &DeckElement) -> Result<(f64, Material, f64
         Appendix::C => row[3] * (t - deck.t_ref),
     };
     Ok((t, mat, eth))
-}
-
-/// The row (T, E, ν, α) of `table` at temperature `t`, linear between rows (a one-row table:
-/// that row at every temperature); None outside the table (the listing extrapolated below it
-/// and read past its end above it).
-pub fn interpolate(table: &[[f64; 4]], t: f64) -> Option<[f64; 4]> {
-    let (first, last) = (table.first()?, table.last()?);
-    if table.len() == 1 {
-        return Some(*first);
-    }
-    if !(t >= first[0] && t <= last[0]) {
-        return None;
-    }
-    let k = table.iter().position(|r| r[0] >= t)?.max(1);
-    let (a, b) = (table[k - 1], table[k]);
-    let s = (t - a[0]) / (b[0] - a[0]);
-    Some([0, 1, 2, 3].map(|i| a[i] + s * (b[i] - a[i])))
 }
 
 /// Runs `deck`: assembles the report's element over the deck's mesh, applies its codes, loads,

@@ -1,0 +1,103 @@
+//! What `boltzone two --interface friction` adds to its outputs: the stick and slip zones as
+//! radius intervals (text and JSON), and the slip s(r) and node state as two more columns of
+//! the one curve layout ([`super::output`]).
+
+use boltzone::contact::friction::{FrictionZones, PointState};
+use boltzone::contact::two_plate::TwoPlateSolution;
+
+/// Runs of nodes in one kind of state as [first radius, last radius] intervals (in).
+fn zones(s: &TwoPlateSolution, f: &FrictionZones, slip: bool) -> Vec<[f64; 2]> {
+    let want = |st: PointState| match st {
+        PointState::Stick => !slip,
+        PointState::SlipOut | PointState::SlipIn => slip,
+        PointState::Open => false,
+    };
+    let mut out: Vec<[f64; 2]> = Vec::new();
+    let mut prev = false;
+    for (i, &st) in f.state.iter().enumerate() {
+        let on = want(st);
+        match (on, prev, out.last_mut()) {
+            (true, true, Some(z)) => z[1] = s.radius[i],
+            (true, _, _) => out.push([s.radius[i], s.radius[i]]),
+            _ => {}
+        }
+        prev = on;
+    }
+    out
+}
+
+fn largest_slip(f: &FrictionZones, s: &TwoPlateSolution) -> f64 {
+    (0..f.slip.len())
+        .filter(|&i| f.state[i].closed() && s.pressure[i] > 0.0)
+        .fold(0.0, |m, i| m.max(f.slip[i].abs()))
+}
+
+/// Adds `mu`, `stick_zones` and `slip_zones` ([r₁, r₂] in inches, node to node) and
+/// `max_slip` (in, inside the contact zone) to the JSON object `out`.
+pub fn json(
+    out: &mut serde_json::Value,
+    s: &TwoPlateSolution,
+    f: &FrictionZones,
+) -> anyhow::Result<()> {
+    out["mu"] = f.mu.into();
+    out["stick_zones"] = serde_json::to_value(zones(s, f, false))?;
+    out["slip_zones"] = serde_json::to_value(zones(s, f, true))?;
+    out["max_slip"] = largest_slip(f, s).into();
+    Ok(())
+}
+
+/// One line for the text output: μ, the zones in inches, the largest slip.
+pub fn summary(s: &TwoPlateSolution, f: &FrictionZones) -> String {
+    let show = |z: Vec<[f64; 2]>| {
+        if z.is_empty() {
+            "none".to_string()
+        } else {
+            z.iter()
+                .map(|[a, b]| format!("{a:.4}-{b:.4}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        }
+    };
+    format!(
+        "friction mu = {}: stick r = {} in; slip r = {} in; largest slip {:.3e} in",
+        f.mu,
+        show(zones(s, f, false)),
+        show(zones(s, f, true)),
+        largest_slip(f, s)
+    )
+}
+
+/// The curve with the friction columns: r, p, g, τ, the slip s = u_upper − u_lower and the
+/// node state (0 open, 1 stick, 2 slip).
+pub fn curve_csv(s: &TwoPlateSolution, f: &FrictionZones, notes: &[String]) -> String {
+    let mut notes = notes.to_vec();
+    notes.push(format!(
+        "friction mu = {}: s = slip u_upper - u_lower (outward > 0), state 0 open, 1 stick, 2 slip",
+        f.mu
+    ));
+    let rows: Vec<Vec<f64>> = (0..s.radius.len())
+        .map(|i| {
+            let st = f.state[i];
+            vec![
+                s.radius[i],
+                s.pressure[i],
+                s.gap[i],
+                s.shear[i],
+                f.slip[i],
+                st.code(),
+            ]
+        })
+        .collect();
+    super::output::curve_csv(
+        &[
+            "r [in]",
+            "p [psi]",
+            "g [in]",
+            "tau [psi]",
+            "s [in]",
+            "state [-]",
+        ],
+        &notes,
+        &rows,
+    )
+}
