@@ -5,6 +5,15 @@
 //! report's notation (A, B, C, D, E, ν) with a word of explanation, so a message can be shown to a
 //! user as it is.
 //!
+//! # Accuracy
+//!
+//! Not numerical. Errors name the field and value: `tests/cli/regressions.rs`
+//! (`every_bad_value_is_named_by_its_flag`) and the typed-error tests of each solver.
+//!
+//! # Cost
+//!
+//! None.
+//!
 //! ```
 //! use boltzone::{FaceLoad, InputError};
 //! let err = FaceLoad::uniform(0.2, 0.1, 1.0).unwrap_err();

@@ -4,8 +4,14 @@
 //! temporary-name convention is `dir/.name.tmp<pid>.ext` (hidden, unique per process, same
 //! extension, so writers that choose a format by extension still see it).
 //!
-//! Accuracy: not numeric; the unit tests here check that a failed write leaves the target
-//! unchanged and no temporary file behind. Cost: one extra rename per file.
+//! # Accuracy
+//!
+//! Not numeric; the unit tests here check that a failed write leaves the target unchanged and no
+//! temporary file behind.
+//!
+//! # Cost
+//!
+//! One extra rename per file.
 //!
 //! ```
 //! let path = std::env::temp_dir().join(format!("boltzone-doc-{}.txt", std::process::id()));

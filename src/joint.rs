@@ -12,6 +12,15 @@
 //!
 //! Lengths in any one unit (inches in the report and the command-line tool).
 //!
+//! # Accuracy
+//!
+//! Exact (no numerics); every bad value is a typed error naming the field:
+//! `tests/contact/two_plate.rs` (`bad_parameters_are_typed_errors`).
+//!
+//! # Cost
+//!
+//! None.
+//!
 //! ```
 //! use boltzone::{Joint, Material};
 //! let j = Joint::symmetric(0.1, 0.31, 0.1, Material::unit(0.3)?)?;
@@ -26,6 +35,10 @@ use crate::load::FaceLoad;
 use crate::material::Material;
 use serde::{Deserialize, Serialize};
 
+/// Where a wide or infinite single plate is cut, in half-thicknesses D beyond B: the rim's
+/// effect on the midplane σ_z decays like e^(−2.1 (C − r)/D), so beyond B + 30 D it is below
+/// f64 resolution of R_o (used by the finite-element and the Hankel single plates).
+pub const FAR_RIM: f64 = 30.0;
 /// Outer radius C of the plates.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub enum OuterRadius {

@@ -14,27 +14,40 @@
 //!
 //! 1. the `boltzone` command (`src/cli/`, `src/main.rs`): one module per subcommand, no
 //!    numerics;
-//! 2. [`compare`] | [`heat`] | [`io`] | [`scene`] (scene files: a joint and the question in the
-//!    user's units, `boltzone solve`): single- vs two-plate R_o and the rules of thumb: Tables 1
+//! 2. [`figures`] | [`scene`]: the report's Figs. 12–29 recomputed | scene files: a joint and
+//!    the question in the user's units, answered with what the layers below offer (`boltzone
+//!    solve`, its heat and field outputs);
+//! 3. [`compare`] | [`heat`] | [`io`]: single- vs two-plate R_o and the rules of thumb: Tables 1
 //!    and 2 recomputed, the design map | heat through the joint: contact conductance, the
 //!    Appendix D network, conduction | the 1970 card decks of Appendices B and C, read, run and
-//!    written;
-//! 3. [`contact`]: the report's two-plate model on the finite elements, unilateral contact
+//!    written, and the VTU field writer;
+//! 4. [`contact`]: the report's two-plate model on the finite elements, unilateral contact
 //!    found automatically, R_o resolved below one element (`boltzone two`);
-//! 4. [`hankel`] | [`fem`]: the semi-analytic slab solutions (the slab, `hankel::hole`, the
+//! 5. [`hankel`] | [`fem`]: the semi-analytic slab solutions (the slab, `hankel::hole`, the
 //!    receding contact `hankel::receding`) | the axisymmetric finite elements (the report's
 //!    Appendices A and B, the single plate);
-//! 5. [`joint`]: the plates and the joint;
-//! 6. [`material`], [`load`], [`rules`] (the 45° cone of Rötscher, the VDI 2230 cone and other
+//! 6. [`joint`]: the plates and the joint;
+//! 7. [`material`], [`load`], [`rules`] (the 45° cone of Rötscher, the VDI 2230 cone and other
 //!    cone rules), [`plot`] (SVG/PNG figures);
-//! 7. [`numerics`] (quadrature, roots, special functions, interpolation, convergence
-//!    estimates), [`error`] (typed input errors), [`reference`](mod@reference) (the report's
-//!    Tables 1 and 2 and the Chapter V table, as data), [`fsutil`] (files written whole or not
-//!    at all), [`value`] (the one value-with-error type [`Value`]: value, error, converged).
+//! 8. [`numerics`] (quadrature, roots, special functions, interpolation, convergence
+//!    estimates), [`fortran`] (the 1970 punched cards: one fixed-column field reader, one blank
+//!    policy, the one deck error type [`fortran::DeckError`]), [`error`] (typed input
+//!    errors), [`reference`](mod@reference) (the report's Tables 1 and 2 and the Chapter V
+//!    table, as data), [`fsutil`] (files written whole or not at all), [`value`] (the one
+//!    value-with-error type [`Value`]: value, error, converged).
 //!
 //! Sign convention throughout: compression negative (σ_z = −p under a face pressure p > 0); z is
 //! measured from the midplane (single plate) or the interface (joint); lengths and stresses in
 //! any consistent units (the command-line tool uses inches and psi).
+//!
+//! # Accuracy
+//!
+//! Each module's Accuracy section names the test or example that re-measures it; one test crate per
+//! folder under `tests/`, every example run at a quick size by `tests/examples/`.
+//!
+//! # Cost
+//!
+//! Each module's Cost section; `cargo bench` (benches `hankel`, `fem`, `contact`, `hole`).
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -50,6 +63,7 @@ pub mod contact;
 pub mod error;
 pub mod fem;
 pub mod figures;
+pub mod fortran;
 pub mod fsutil;
 pub mod hankel;
 pub mod heat;

@@ -1,5 +1,13 @@
 //! The `boltzone` command-line tool. Run `boltzone --help` for the commands; exit codes are
 //! listed in `cli/exit.rs` (0 converged, 1 failure, 2 bad input, 3 not converged).
+//!
+//! # Accuracy
+//!
+//! No numerics: `tests/cli/` (the contract, its fuzz, the README's commands, regressions).
+//!
+//! # Cost
+//!
+//! None.
 
 mod cli;
 

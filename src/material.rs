@@ -5,6 +5,15 @@
 //! inches). Stresses come out in the unit of the applied pressure; displacements in the length unit
 //! times pressure/E.
 //!
+//! # Accuracy
+//!
+//! Exact conversions (E, ν ↔ λ, μ); the library steel is the report's constants:
+//! `tests/scene/units.rs` (`library_steel_304_is_the_reports_constants`).
+//!
+//! # Cost
+//!
+//! None.
+//!
 //! ```
 //! use boltzone::Material;
 //! let steel = Material::new(28.0e6, 0.3)?;

@@ -12,11 +12,16 @@
 //! PNG text is drawn with the DejaVu Sans font shipped in `assets/` (licence beside it), compiled
 //! in and registered on first use: plotters' `ab_glyph` backend has no system fonts.
 //!
-//! Accuracy: what each figure shows is read back from its SVG by `tests/io/plot_out.rs`,
+//! # Accuracy
+//!
+//! Not numerical: what each figure shows is read back from its SVG by `tests/io/plot_out.rs`,
 //! `tests/io/figure_joint.rs` and `tests/io/figure_map.rs` (markers at the computed radii, equal
-//! scales, round ticks); the PNG rasterisation by `tests/io/figure_png.rs`. Cost: a figure draws
-//! in milliseconds (SVG) to tens of milliseconds (PNG, 9× the pixels); measured in
-//! `tests/io/figure_joint.rs`'s `two --plot` run.
+//! scales, round ticks); the PNG rasterisation by `tests/io/figure_png.rs`.
+//!
+//! # Cost
+//!
+//! A figure draws in milliseconds (SVG) to tens of milliseconds (PNG, 9× the pixels); measured
+//! in `tests/io/figure_joint.rs`'s `two --plot` run.
 //!
 //! ```
 //! use boltzone::plot::{write_figure, Curve, CurveFigure};

@@ -5,6 +5,16 @@
 //!
 //! These values are data to compare with, never targets: no solver reads them.
 //!
+//! # Accuracy
+//!
+//! The stored values against the report's own arithmetic: `tests/compare/reference.rs`
+//! (`table1_discrepancies_follow_from_the_radii`, `table2_discrepancies_follow_from_the_diameters`,
+//! `chapter5_conductances_follow_from_the_areas`).
+//!
+//! # Cost
+//!
+//! None (constants).
+//!
 //! ```
 //! let t1 = boltzone::reference::table1();
 //! assert_eq!(t1.len(), 12);

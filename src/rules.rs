@@ -14,9 +14,14 @@
 //!
 //! Units: lengths in any one unit; angles in radians unless the name says degrees.
 //!
-//! **Accuracy.** Closed forms; the unit tests here check an exact identity (tan 30° = 1/√3), the
-//! correlation's derivatives by finite differences, and the truncation at C; and
-//! `tests/compare/tables.rs` checks that the 45° cone overpredicts the two-plate R_o. **Cost.**
+//! # Accuracy
+//!
+//! Closed forms; the unit tests here check an exact identity (tan 30° = 1/√3), the correlation's
+//! derivatives by finite differences, and the truncation at C; and `tests/compare/tables.rs` checks
+//! that the 45° cone overpredicts the two-plate R_o.
+//!
+//! # Cost
+//!
 //! O(1).
 //!
 //! ```

@@ -11,6 +11,17 @@
 //! Quantities derived from estimated values (differences in per cent, areas) carry the
 //! first-order propagation of the estimates and are converged when their inputs are.
 //!
+//! # Accuracy
+//!
+//! The propagation is first order in the errors (the sum of |∂f/∂x|·e_x); the doc example
+//! checks the `converged` rule. That an estimate bounds the actual error is each solver's
+//! claim, measured in its tests (e.g. `tests/contact/two_plate.rs`,
+//! `error_estimate_measures_the_actual_error`).
+//!
+//! # Cost
+//!
+//! None.
+//!
 //! ```
 //! use boltzone::Value;
 //! let r = Value::with_tolerance(0.4, 1e-5, 1e-4); // error 1e-5 ≤ 1e-4 · 0.4

@@ -1,6 +1,15 @@
 //! Arguments shared by the solver commands: the joint's geometry in the report's notation and
 //! the element family. Negative numbers are accepted by the parser so that the library's
 //! validation can name the field (`--d -1` → "plate thickness D = -1 must be positive").
+//!
+//! # Accuracy
+//!
+//! No numerics: bad values are named by their flag, `tests/cli/regressions.rs`
+//! (`every_bad_value_is_named_by_its_flag`).
+//!
+//! # Cost
+//!
+//! None.
 
 use boltzone::fem::ElementKind;
 use std::path::PathBuf;

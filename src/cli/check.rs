@@ -1,5 +1,15 @@
 //! Checks of command-line values before any work starts, so that a bad value is reported with
 //! its flag (`--d2 = -1: …`) rather than by a solver's internals, and exits 2.
+//!
+//! # Accuracy
+//!
+//! No numerics: `tests/cli/regressions.rs` (`every_bad_value_is_named_by_its_flag`,
+//! `output_paths_are_checked_before_any_work_and_nothing_is_left_behind`) and the argument fuzz of
+//! `tests/cli/fuzz.rs`.
+//!
+//! # Cost
+//!
+//! None: checks run before any work.
 
 use super::exit::{num, usage};
 use std::path::Path;

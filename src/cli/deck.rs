@@ -2,6 +2,17 @@
 //! elements and print what the old program printed ([`boltzone::io::deck`]); `--emit` writes a
 //! single plate of the library as an Appendix B deck. Bad decks exit 2 with the line, columns and
 //! field at fault.
+//!
+//! # Accuracy
+//!
+//! No numerics of its own (those of `boltzone::io::deck` and `boltzone::heat::deck`):
+//! `tests/io/cli.rs` (`json_contract_and_emit_round_trip`,
+//! `bad_decks_and_flags_exit_2_naming_line_and_field`,
+//! `appendix_d_decks_run_through_the_deck_command`).
+//!
+//! # Cost
+//!
+//! That of the decks it runs.
 
 use anyhow::Context;
 use boltzone::fem::Spacing;

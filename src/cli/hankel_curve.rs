@@ -9,9 +9,16 @@
 //! Error bound of each value: the slab quadrature's estimate plus the hole fit's largest residual
 //! traction × P (a traction error δt on the hole's face changes σ_z by at most max|δt|, see
 //! [`boltzone::hankel::hole`]); its maximum over the curve is in the file's notes.
-//! Accuracy: `tests/io/curve_hankel.rs` compares the curve with the FE curve of the same plate
-//! within both error bars. Cost: one hole fit at the final N and one quadrature rule (a fraction
-//! of the R_o search; measured in that test).
+//!
+//! # Accuracy
+//!
+//! `tests/io/curve_hankel.rs` compares the curve with the FE curve of the same plate within both
+//! error bars.
+//!
+//! # Cost
+//!
+//! One hole fit at the final N and one quadrature rule (a fraction of the R_o search; measured in
+//! that test).
 
 use boltzone::hankel::hole::{HoleInfo, HoleParams, HolePlate};
 use boltzone::hankel::midplane::MidplaneRule;

@@ -10,18 +10,9 @@ use boltzone::fem::Mesh;
 use boltzone::plot::{
     svg_string, write_figure, CurveFigure, Marker, Outline, SectionFigure, PALETTE,
 };
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-/// FILE with `-{what}` appended to its stem (`p.svg` → `p-gap.svg`).
-pub fn sibling(path: &Path, what: &str) -> PathBuf {
-    let stem = path
-        .file_stem()
-        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
-    let ext = path
-        .extension()
-        .map_or_else(String::new, |e| format!(".{}", e.to_string_lossy()));
-    path.with_file_name(format!("{stem}-{what}{ext}"))
-}
+pub use super::figure::sibling;
 
 /// The exaggeration of the drawing: the round number 1, 2 or 5 × 10ᵏ at or below
 /// `0.15 · thickness / max|u|` (the largest displacement drawn as 15 % of the joint's thickness).

@@ -1,6 +1,15 @@
 //! `boltzone map`: the design map of [`boltzone::compare::map`] over A/D × B/A, as CSV and as
 //! heat maps (SVG or PNG): R_o/A of both models, the substitution's discrepancy, and the 45° and
 //! VDI rules' errors against the two-plate answer.
+//!
+//! # Accuracy
+//!
+//! No numerics of its own (`boltzone::compare::map`): `tests/compare/cli.rs`
+//! (`map_writes_csv_and_figures`, `map_takes_your_own_points`, `bad_arguments_are_named`).
+//!
+//! # Cost
+//!
+//! That of the map's points (example 13).
 
 use super::exit::Status;
 use super::{check, progress, write_output};

@@ -1,4 +1,13 @@
 //! Command-line front end: one module per command; errors are reported by `main`.
+//!
+//! # Accuracy
+//!
+//! No numerics: each command's test is named in its module; the command line's contract is
+//! `tests/cli/`.
+//!
+//! # Cost
+//!
+//! None beyond the library calls.
 
 mod args;
 mod check;

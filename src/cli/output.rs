@@ -9,6 +9,16 @@
 //! printed in Rust's shortest round-trip exponent form (`1.25e-1`): every reader gets the f64
 //! back exactly. Checked by `tests/io/csv_out.rs` (numpy reads each command's curve) and
 //! `tests/io/json_out.rs` (every JSON object's provenance).
+//!
+//! # Accuracy
+//!
+//! No numerics: `tests/io/json_out.rs`
+//! (`every_json_object_carries_version_units_inputs_and_timing`) and `tests/io/csv_out.rs` (numpy
+//! reads every curve back).
+//!
+//! # Cost
+//!
+//! Linear in the output.
 
 use serde::Serialize;
 use serde_json::Value;

@@ -6,6 +6,16 @@
 //! [`Block`]s and rendered either way. Checked by `tests/io/plot_out.rs` (the Markdown record
 //! against the run's JSON, the rules against their closed forms) and `tests/io/figure_joint.rs`
 //! (the HTML: the same rows, three inline SVGs, no external reference).
+//!
+//! # Accuracy
+//!
+//! No numerics of its own: `tests/io/plot_out.rs`
+//! (`calculation_report_records_inputs_results_and_rules`) checks the Markdown against the run's
+//! JSON and the cones' closed forms, `tests/io/figure_joint.rs` the HTML.
+//!
+//! # Cost
+//!
+//! Milliseconds, after the solve.
 
 use super::figure::rule_radii;
 use boltzone::contact::two_plate::TwoPlateSolution;

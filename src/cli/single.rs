@@ -5,6 +5,15 @@
 //! level changes, [`boltzone::numerics::convergence::level_estimate`]); `--method hankel` runs
 //! [`boltzone::hankel::hole::single_plate_separation`] (infinite slab + hole correction, and a
 //! rim correction when `--c` is given).
+//!
+//! # Accuracy
+//!
+//! No numerics of its own: `tests/fem/cli.rs` and `tests/hankel/hole_cli.rs` check the JSON against
+//! the library's value and that bad input names the field.
+//!
+//! # Cost
+//!
+//! That of the method run (`cargo bench --bench fem`, `cargo bench --bench hole`).
 
 use super::args::{Element, Geometry, OutputFiles};
 use super::check;

@@ -1,6 +1,15 @@
 //! `boltzone slab`: the single-plate separation radius R_o of the infinite slab 2D thick (no
 //! hole) under a uniform face pressure on A ≤ r ≤ B, by Hankel transforms
 //! ([`boltzone::hankel::separation`]), and optionally the midplane σ_z/P curve as CSV.
+//!
+//! # Accuracy
+//!
+//! No numerics of its own: `tests/hankel/cli.rs` (`json_has_the_keys_and_the_library_value`,
+//! `curve_is_written_with_a_header`, `bad_input_names_the_field_and_writes_nothing`).
+//!
+//! # Cost
+//!
+//! That of the slab route (`cargo bench --bench hankel`).
 
 use super::args::{Geometry, Units};
 use super::check;

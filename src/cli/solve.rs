@@ -1,6 +1,15 @@
 //! `boltzone solve SCENE.toml`: answers a scene file ([`boltzone::scene`]): one joint, or every
 //! point of its `[sweep]` in parallel; `--json` prints the result object (a sweep:
 //! `{"results": [...]}`), `--explain` the plan (routes run and skipped, time per step).
+//!
+//! # Accuracy
+//!
+//! No numerics of its own (`boltzone::scene`): `tests/scene/errors.rs` (exit codes 2 and 3, sweeps,
+//! `--explain`) and `tests/scene/examples.rs` (the command equals the library call).
+//!
+//! # Cost
+//!
+//! That of the scene's routes (example 17).
 
 use super::exit::{sig, Status, UsageError};
 use boltzone::scene::sweep::{points, rows, solve_all, Point};

@@ -1,6 +1,15 @@
 //! `boltzone table1`: the report's Table 1 recomputed end to end ([`boltzone::compare::table1`]):
 //! single-plate and two-plate R_o/A, the discrepancies and the rules of thumb for its twelve
 //! geometries, the report's values beside ours.
+//!
+//! # Accuracy
+//!
+//! No numerics of its own: `tests/compare/tables.rs` (`table1_end_to_end`) and
+//! `tests/compare/cli.rs`.
+//!
+//! # Cost
+//!
+//! All of Table 1: `cargo bench --bench contact`.
 
 use super::args::TableOutput;
 use super::exit::Status;

@@ -1,5 +1,13 @@
 //! `boltzone table2`: the report's Table 2 recomputed ([`boltzone::compare::table2`]): our
 //! two-plate 2R_o of the seven test joints beside the report's and the measured ranges.
+//!
+//! # Accuracy
+//!
+//! No numerics of its own: `tests/compare/tables.rs` (`table2_end_to_end`).
+//!
+//! # Cost
+//!
+//! Seven two-plate solves (example 04).
 
 use super::args::TableOutput;
 use super::exit::Status;

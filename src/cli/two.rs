@@ -1,6 +1,15 @@
 //! `boltzone two`: the two-plate model (report Chapter II.B), solved by
 //! [`boltzone::contact::two_plate`]: separation radius R_o with its error, and on request the
 //! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV.
+//!
+//! # Accuracy
+//!
+//! No numerics of its own (`boltzone::contact::two_plate`): `tests/contact/cli.rs`
+//! (`json_and_curve`, `bad_input_is_reported_not_panicked`).
+//!
+//! # Cost
+//!
+//! That of the two-plate solve (`cargo bench --bench contact`).
 
 use super::args::{Element, Geometry, OutputFiles};
 use super::check;

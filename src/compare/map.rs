@@ -5,15 +5,16 @@
 //! rayon; each model's R_o meets the relative tolerance `tolerance` (default 1e-3 = 0.1 %) by its
 //! own error estimate, which the CSV carries beside each value.
 //!
-//! Cost: the default 40 × 40 map at 1e-3 took 48.4 s of CPU (≈ 30 ms per point; 40.4 s of
-//! wall time at 119 % CPU beside another job, about 25 s on two idle cores) —
-//! `examples/13_map_speed.rs` times both models point by point against the
-//! error they achieve.
+//! # Accuracy
 //!
-//! **Accuracy.** Each point's R_o to the tolerance by its own estimate (example 13 checks the
-//! estimates against references 50 times tighter); the map is smooth and monotone and equals
-//! Table 1 at its points (`tests/compare/map.rs`, `tests/compare/tables.rs`). **Cost.** Per point:
-//! example 13.
+//! Each point's R_o to the tolerance by its own estimate (example 13 checks the estimates against
+//! references 50 times tighter); the map is smooth and monotone and equals Table 1 at its points
+//! (`tests/compare/map.rs`, `tests/compare/tables.rs`).
+//!
+//! # Cost
+//!
+//! About 30 ms of CPU per point at 1e-3 (the default 40 × 40 map: 48 s of CPU); example 13
+//! times both models point by point against the error they achieve.
 //!
 //! ```
 //! use boltzone::compare::map::{compute, log_spaced, MapParams};

@@ -10,6 +10,16 @@
 //!   ([`crate::hankel::hole::single_plate_separation`]), an infinite plate: R_o with the error
 //!   estimate of that module (bracket, slab quadrature and hole residual).
 //!
+//! # Accuracy
+//!
+//! Every R_o to the tolerance asked by its own estimate: `tests/compare/tables.rs`
+//! (`fe_level_estimate_covers_an_overshooting_sequence`, `table1_end_to_end`); the FE and
+//! Hankel routes agree within their estimates in `tests/fem/hole_agreement.rs`.
+//!
+//! # Cost
+//!
+//! Example 16 (error bars) and example 13 (per map point); `cargo bench --bench contact`.
+//!
 //! ```
 //! use boltzone::compare::{single::single_fem, Geometry};
 //! use boltzone::OuterRadius;

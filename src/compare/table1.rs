@@ -4,8 +4,13 @@
 //! rules of thumb — every number computed by [`super::compare`]; the report's R_o/A and
 //! discrepancy stand beside ours, read from [`crate::reference::table1`].
 //!
-//! **Accuracy.** Every R_o to the tolerance asked by its own estimate; the table end to end, the
-//! map at Table 1's points equal to the table (`tests/compare/tables.rs`). **Cost.**
+//! # Accuracy
+//!
+//! Every R_o to the tolerance asked by its own estimate; the table end to end, the map at Table 1's
+//! points equal to the table (`tests/compare/tables.rs`).
+//!
+//! # Cost
+//!
 //! `cargo bench --bench contact` (`table1_all_24_values_rayon`).
 //!
 //! ```no_run

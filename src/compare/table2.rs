@@ -10,9 +10,15 @@
 //! nominally equal pairs whose measured thicknesses differ by a few thousandths) mesh both plates
 //! with the chosen [`InterfaceModel`]: welded inside the contact zone is the report's model.
 //!
-//! **Accuracy.** Two-plate R_o to the tolerance by its own estimate; the discrepancy function
-//! reproduces the report's printed percentages from its own numbers (`tests/compare/tables.rs`,
-//! `table2_end_to_end`). **Cost.** Seven two-plate runs in parallel.
+//! # Accuracy
+//!
+//! Two-plate R_o to the tolerance by its own estimate; the discrepancy function reproduces the
+//! report's printed percentages from its own numbers (`tests/compare/tables.rs`,
+//! `table2_end_to_end`).
+//!
+//! # Cost
+//!
+//! Seven two-plate runs in parallel.
 //!
 //! ```no_run
 //! use boltzone::compare::table2;

@@ -10,11 +10,15 @@
 //! the interface curves (coordinates × length, displacements × length·stress/modulus, moduli ×
 //! modulus), so that the stresses recovered from it are in the joint's units.
 //!
-//! Accuracy: the field is the finest level's; `tests/io/vtu.rs` checks the written file against
-//! the interface curves of the same solution (gap from the displacements) and the bolt force.
+//! # Accuracy
 //!
-//! Cost: the finest level's model (mesh, materials) and displacements are kept instead of
-//! dropped, and rescaled once (linear in the nodes); nothing is solved again.
+//! The field is the finest level's; `tests/io/vtu.rs` checks the written file against the interface
+//! curves of the same solution (gap from the displacements) and the bolt force.
+//!
+//! # Cost
+//!
+//! The finest level's model (mesh, materials) and displacements are kept instead of dropped, and
+//! rescaled once (linear in the nodes); nothing is solved again.
 //!
 //! ```
 //! use boltzone::contact::two_plate::{solve_field, TwoPlateParams};
@@ -31,20 +35,7 @@
 
 use super::error::ContactError;
 use super::level::Model;
-use super::two_plate::{solve_keeping, TwoPlateParams, TwoPlateSolution};
-use crate::joint::Joint;
 use crate::material::Material;
-
-/// As [`super::two_plate::solve`], and the finest level's field (mesh, materials,
-/// displacements, which interface nodes are closed) in the joint's own units, for output
-/// ([`crate::io::vtu`]).
-pub fn solve_field(
-    joint: &Joint,
-    params: &TwoPlateParams,
-) -> Result<(TwoPlateSolution, TwoPlateField), ContactError> {
-    let (s, field) = solve_keeping(joint, params)?;
-    Ok((s, field.rescaled()?))
-}
 
 /// The finest level's field in the joint's units (module docs).
 #[derive(Debug, Clone)]

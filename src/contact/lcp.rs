@@ -31,9 +31,14 @@
 //! inside out without tension ([`LcpInfo::prefix`]). Both are bounded by
 //! [`LcpParams::max_iterations`]; beyond it the solver returns [`ContactError::NotConverged`].
 //!
-//! **Accuracy.** Against brute-force enumeration of active sets on random problems, the KKT
-//! conditions and projected Gauss–Seidel (`tests/contact/lcp.rs`). **Cost.** A few dense
-//! solves of the window's size per level; its share of a two-plate run is printed by
+//! # Accuracy
+//!
+//! Against brute-force enumeration of active sets on random problems, the KKT conditions and
+//! projected Gauss–Seidel (`tests/contact/lcp.rs`).
+//!
+//! # Cost
+//!
+//! A few dense solves of the window's size per level; its share of a two-plate run is printed by
 //! `cargo bench --bench contact`.
 //!
 //! ```

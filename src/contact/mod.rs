@@ -20,11 +20,16 @@
 //!
 //! The semi-analytic check of the symmetric case is [`crate::hankel::receding`].
 //!
-//! **Accuracy.** `tests/contact/`: the LCP solver against brute-force enumeration of active
-//! sets, projected Gauss–Seidel and the KKT conditions (`lcp.rs`); the R_o estimators on
-//! synthetic data with a known R_o (`separation.rs`); the model's equilibrium,
-//! complementarity, observed order and error estimate (`two_plate.rs`); the semi-analytic
-//! receding contact (`receding_vs_fe.rs`). **Cost.** `cargo bench --bench contact`.
+//! # Accuracy
+//!
+//! `tests/contact/`: the LCP solver against brute-force enumeration of active sets, projected
+//! Gauss–Seidel and the KKT conditions (`lcp.rs`); the R_o estimators on synthetic data with a
+//! known R_o (`separation.rs`); the model's equilibrium, complementarity, observed order and error
+//! estimate (`two_plate.rs`); the semi-analytic receding contact (`receding_vs_fe.rs`).
+//!
+//! # Cost
+//!
+//! `cargo bench --bench contact`.
 //!
 //! ```
 //! use boltzone::contact::{solve_lcp, Lcp, LcpParams};

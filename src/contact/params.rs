@@ -2,6 +2,16 @@
 //! what presses them, how the outer edge is held, and the knobs of the level study. Kept apart
 //! from the driver so that the level-by-level machinery (module `refine`) can read them
 //! without importing the driver.
+//!
+//! # Accuracy
+//!
+//! Plain data; the models it selects are measured in `tests/contact/two_plate.rs`
+//! (`unequal_plates_welded_and_frictionless`, `report_load_variants`,
+//! `bad_parameters_are_typed_errors`).
+//!
+//! # Cost
+//!
+//! None: the driver's cost is in `cargo bench --bench contact`.
 
 use super::lcp::LcpParams;
 use crate::fem::ElementKind;

@@ -7,8 +7,14 @@
 //! no code with the active-set solver [`super::solve_lcp`] and serves to check it; it is not
 //! meant for production use. Units and signs as in [`super::lcp`].
 //!
-//! **Accuracy.** Agrees with the active-set solver (`tests/contact/lcp.rs`,
-//! `kkt_conditions_hold_and_pgs_agrees`). **Cost.** Linear convergence: many sweeps.
+//! # Accuracy
+//!
+//! Agrees with the active-set solver (`tests/contact/lcp.rs`,
+//! `kkt_conditions_hold_and_pgs_agrees`).
+//!
+//! # Cost
+//!
+//! Linear convergence: many sweeps.
 //!
 //! ```
 //! use boltzone::contact::projected_gauss_seidel;

@@ -17,9 +17,14 @@
 //! Nodal displacements are far more accurate than tributary pressures, so the gap estimate is
 //! the answer and the others measure its uncertainty. Units: those of r.
 //!
-//! **Accuracy.** Exact on the pure asymptotic form, second order with curvature, the spread
-//! bounding the error (`tests/contact/separation.rs`, synthetic data with a known R_o).
-//! **Cost.** O(points near the edge) per level.
+//! # Accuracy
+//!
+//! Exact on the pure asymptotic form, second order with curvature, the spread bounding the error
+//! (`tests/contact/separation.rs`, synthetic data with a known R_o).
+//!
+//! # Cost
+//!
+//! O(points near the edge) per level.
 //!
 //! ```
 //! use boltzone::contact::separation::{estimate, NodalInterface};

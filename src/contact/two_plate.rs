@@ -24,18 +24,21 @@
 //! Welded dissimilar plates may have no sign-consistent contact edge; the level record then says
 //! that the report's rule decided ([`TwoPlateLevel::report_rule`]).
 //!
-//! **Accuracy.** Over the design map (68 geometries, A/D ∈ [0.2, 5], B/A ∈ [1.1, 5],
-//! C = 15.4 A) no actual error exceeded the estimate at tolerances from 2e-3 to 1e-4 (at most
-//! 0.57 of it, against runs converged to 3e-6): example 13 repeats the check point by point,
-//! `tests/contact/two_plate.rs` (`error_estimate_measures_the_actual_error`) on two
-//! geometries; R_o converges at order 2 in the element size at R_o (same file,
-//! `r_o_converges_at_the_observed_rate`); the semi-analytic receding contact agrees within both
-//! estimates (`tests/contact/receding_vs_fe.rs`).
-//!
-//! **Cost.** `cargo bench --bench contact`: one Table 1 geometry to 0.05 %, and all of Table 1.
-//!
 //! Units: any consistent set (inches, psi). Forces are totals around the circle; p > 0 is
 //! compression; g > 0 an open gap; the nut deflection is negative toward the interface.
+//!
+//! # Accuracy
+//!
+//! Over the design map (68 geometries, A/D ∈ [0.2, 5], B/A ∈ [1.1, 5], C = 15.4 A) no actual error
+//! exceeded the estimate at tolerances from 2e-3 to 1e-4 (at most 0.57 of it, against runs
+//! converged to 3e-6): example 13 repeats the check point by point, `tests/contact/two_plate.rs`
+//! (`error_estimate_measures_the_actual_error`) on two geometries; R_o converges at order 2 in the
+//! element size at R_o (same file, `r_o_converges_at_the_observed_rate`); the semi-analytic
+//! receding contact agrees within both estimates (`tests/contact/receding_vs_fe.rs`).
+//!
+//! # Cost
+//!
+//! `cargo bench --bench contact`: one Table 1 geometry to 0.05 %, and all of Table 1.
 //!
 //! ```
 //! use boltzone::contact::two_plate::{solve, TwoPlateParams};
@@ -49,8 +52,8 @@
 //! ```
 
 use super::error::ContactError;
+pub use super::field::TwoPlateField;
 use super::field::UnitField;
-pub use super::field::{solve_field, TwoPlateField};
 use super::level::{LevelSolution, Model};
 pub use super::params::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use super::refine::{mesh, solve_adaptive, MeshLayout, PreviousLevel};
@@ -162,6 +165,17 @@ pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution,
 }
 
 /// [`solve`], keeping the finest level's model and solution in the solver's units.
+/// As [`solve`], and the finest level's field (mesh, materials, displacements, which interface
+/// nodes are closed) in the joint's own units, for output ([`crate::io::vtu`]; module
+/// [`super::field`]).
+pub fn solve_field(
+    joint: &Joint,
+    params: &TwoPlateParams,
+) -> Result<(TwoPlateSolution, TwoPlateField), ContactError> {
+    let (s, field) = solve_keeping(joint, params)?;
+    Ok((s, field.rescaled()?))
+}
+
 pub(crate) fn solve_keeping(
     joint: &Joint,
     params: &TwoPlateParams,

@@ -19,6 +19,17 @@
 //! positive definite, and the sparsity pattern depends only on WHICH components are constrained:
 //! changing prescribed values or materials reuses the symbolic factorization.
 //!
+//! # Accuracy
+//!
+//! Exact (a bookkeeping map): `tests/fem/system.rs`
+//! (`prescribed_displacement_under_a_flat_punch_gives_exact_reactions_and_axis_is_handled`) and
+//! skew rollers in `tests/fem/elements.rs` (`traction_patch_test_with_skew_rollers`,
+//! `skew_code_rejects_positive_angles`).
+//!
+//! # Cost
+//!
+//! Linear in the nodes.
+//!
 //! ```
 //! use boltzone::fem::{Component, DofMap, Supports};
 //! let mut s = Supports::new(3);

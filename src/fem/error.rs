@@ -1,6 +1,14 @@
 //! Failures of the finite-element solver: bad input (naming the field and value) and the ways a
 //! model can be defective (a missing support, a pattern of another mesh).
 //!
+//! # Accuracy
+//!
+//! Not numerical: `tests/fem/system.rs` (`a_pattern_of_another_dof_map_is_a_named_error`).
+//!
+//! # Cost
+//!
+//! None.
+//!
 //! ```
 //! use boltzone::fem::FemError;
 //! let e = FemError::Solver("the stiffness matrix is not positive definite".into());

@@ -8,9 +8,14 @@
 //! the relative L2 error of the displacement, ‖u_h − u‖ / ‖u‖ with ‖v‖² = ∫ |v|² 2πr dV,
 //! evaluated at the elements' quadrature points.
 //!
-//! **Accuracy.** The observed orders are 2 (Cst4, Q4, Q4 B-bar) and 3 (Q9) at ν = 0.3, and
-//! B-bar and Q9 do not lock at ν = 0.499 (`tests/fem/lame.rs`, example 02).
-//! **Cost.** One assembly and factorization per mesh (example 02 to 64 elements).
+//! # Accuracy
+//!
+//! The observed orders are 2 (Cst4, Q4, Q4 B-bar) and 3 (Q9) at ν = 0.3, and B-bar and Q9 do not
+//! lock at ν = 0.499 (`tests/fem/lame.rs`, example 02).
+//!
+//! # Cost
+//!
+//! One assembly and factorization per mesh (example 02 to 64 elements).
 //!
 //! ```
 //! use boltzone::fem::lame::{lame_error, LameCase};

@@ -30,13 +30,17 @@
 //! ([`Factorization`]), form flexibilities with [`Factorization::solve_many`], and read interface
 //! forces with [`reactions`] and tractions with [`line_traction`].
 //!
-//! **Accuracy.** The Lamé cylinder converges at order 2 (linear elements) and 3 (Q9), and
-//! B-bar and Q9 do not lock at ν = 0.499 (`tests/fem/lame.rs`, example 02); patch tests and
-//! assembly in `tests/fem/elements.rs`, `tests/fem/system.rs`; the single plate against the
-//! Hankel routes in `tests/fem/hankel_agreement.rs` and `tests/fem/hole_agreement.rs`.
+//! # Accuracy
 //!
-//! **Cost.** Mesh, assembly, factorization and solve against size: `cargo bench --bench fem`
-//! (10⁴, 10⁵ equations) and example 08 (to 10⁶).
+//! The Lamé cylinder converges at order 2 (linear elements) and 3 (Q9), and B-bar and Q9 do not
+//! lock at ν = 0.499 (`tests/fem/lame.rs`, example 02); patch tests and assembly in
+//! `tests/fem/elements.rs`, `tests/fem/system.rs`; the single plate against the Hankel routes in
+//! `tests/fem/hankel_agreement.rs` and `tests/fem/hole_agreement.rs`.
+//!
+//! # Cost
+//!
+//! Mesh, assembly, factorization and solve against size: `cargo bench --bench fem` (10⁴, 10⁵
+//! equations) and example 08 (to 10⁶).
 //!
 //! ```
 //! use boltzone::fem::single::{single_plate_r_o, SingleParams};

@@ -8,6 +8,15 @@
 //! O(n² log n) fill and O(n³) work (Hoffman, Martin & Rose 1973 show this is optimal order).
 //! Every free component of a node is numbered with it, so 2 × 2 node blocks stay together.
 //!
+//! # Accuracy
+//!
+//! A permutation (doc example); the solution does not depend on the ordering: `tests/fem/system.rs`
+//! (`parallel_and_sequential_factorizations_agree`).
+//!
+//! # Cost
+//!
+//! O(N log N) for N nodes; its effect on the factorization is timed by example 08.
+//!
 //! ```
 //! use boltzone::fem::*;
 //! let r = Spacing::uniform(0.0, 1.0, 20)?;

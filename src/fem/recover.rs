@@ -11,6 +11,16 @@
 //! converge faster than the nodal-averaged σ_z (a variationally consistent flux). On a plane with
 //! outward normal −z (the midplane under the upper half of a plate) σ_z = −t_z.
 //!
+//! # Accuracy
+//!
+//! Uniform stress recovered to round-off in the patch tests of `tests/fem/elements.rs`; exact
+//! reactions under a flat punch in `tests/fem/system.rs`; the line traction carries the applied
+//! force in `tests/fem/single.rs` (`midplane_traction_carries_the_applied_force`).
+//!
+//! # Cost
+//!
+//! Linear in the elements (the line traction: one banded solve per line).
+//!
 //! ```
 //! use boltzone::fem::*;
 //! use boltzone::{FaceLoad, Material};
@@ -171,7 +181,7 @@ pub fn nodal_stresses(
 /// forces are `forces` (one per line node): solves M t = forces, M_ij = ∫ N_i N_j 2πr dr.
 pub fn line_traction(mesh: &Mesh, line: &[usize], forces: &[f64]) -> Result<Vec<f64>, FemError> {
     if forces.len() != line.len() {
-        return Err(FemError::Input(crate::InputError::Parameter {
+        return Err(FemError::Input(crate::error::InputError::Parameter {
             field: "number of line forces",
             value: forces.len() as f64,
             reason: "must equal the number of line nodes",

@@ -21,21 +21,6 @@
 //! agreed within 3.3e-5 relative, the size of the uniform level's own last change: the far
 //! field left coarse does not bias R_o at that level.
 //!
-//! **Accuracy.** Error estimate ([`level_estimate`]): the level-to-level changes of R_o are irregular (the
-//! crossing moves through the elements; at many points the changes alternate in sign, and at
-//! some the value stalls for two levels before moving on), so the last value is not
-//! extrapolated and its error is estimated as the largest of the last three changes shrunk at
-//! rate 2 per level, max(|d₃|, |d₂|/4, |d₁|/16). Evaluated on the levels of 156 map points
-//! (a 12 × 12 grid and Table 1) against level 8 (h = D/512 at the foci), at tolerances from
-//! 2e-3 to 1e-4: no actual error above its estimate (at most 0.51 of it); the two-change form
-//! max(|d₃|, |d₂|/4) exceeded its estimate at 3–8 of the points, by up to 2.1 times.
-//! Example 13 repeats the check point by point; `tests/fem/single.rs` checks a Table 1 row
-//! against the report within its mesh spacing and the midplane traction against the applied
-//! force; `tests/fem/hole_agreement.rs` checks R_o against the Hankel route with the hole.
-//!
-//! **Cost.** `cargo bench --bench fem` (`single_plate_r_o`: Table 1's first geometry to
-//! 0.05 %); example 13 (per map point).
-//!
 //! An infinite plate, or one wider than B + 30 D, is meshed to C = B + 30 D. The rim's
 //! influence on the midplane σ_z is exactly an end effect: the Lamé state σ_r = −σ_θ ∝ 1/r²,
 //! σ_z = 0 that a free rim at another radius adds has no σ_z, and the self-equilibrated rest
@@ -44,6 +29,25 @@
 //! R_o and the cut: far below f64 resolution of R_o, so the cut adds nothing to the error.
 //!
 //! Units: any consistent set; R_o in the length unit of A, B, D. Sign: compression negative.
+//!
+//! # Accuracy
+//!
+//! Error estimate ([`level_estimate`]): the level-to-level changes of R_o are irregular (the
+//! crossing moves through the elements; at many points the changes alternate in sign, and at some
+//! the value stalls for two levels before moving on), so the last value is not extrapolated and its
+//! error is estimated as the largest of the last three changes shrunk at rate 2 per level,
+//! max(|d₃|, |d₂|/4, |d₁|/16). Evaluated on the levels of 156 map points (a 12 × 12 grid and
+//! Table 1) against level 8 (h = D/512 at the foci), at tolerances from 2e-3 to 1e-4: no actual error
+//! above its estimate (at most 0.51 of it); the two-change form max(|d₃|, |d₂|/4) exceeded its
+//! estimate at 3–8 of the points, by up to 2.1 times. Example 13 repeats the check point by point;
+//! `tests/fem/single.rs` checks a Table 1 row against the report within its mesh spacing and the
+//! midplane traction against the applied force; `tests/fem/hole_agreement.rs` checks R_o against
+//! the Hankel route with the hole.
+//!
+//! # Cost
+//!
+//! `cargo bench --bench fem` (`single_plate_r_o`: Table 1's first geometry to 0.05 %); example 13
+//! (per map point).
 //!
 //! ```
 //! use boltzone::fem::single::{single_plate_r_o, FaceCondition, SingleParams};
@@ -240,8 +244,7 @@ pub fn level_spacings(
     Ok((radial, axial))
 }
 
-/// Where a wide or infinite single plate is cut, in half-thicknesses D beyond B (module docs).
-pub const FAR_RIM: f64 = 30.0;
+pub use crate::joint::FAR_RIM;
 
 /// A solved half plate: mesh, supports, loads and nodal displacements (global frame).
 #[derive(Debug, Clone)]

@@ -5,9 +5,15 @@
 //! factorization serves any number of right-hand sides ([`Factorization::solve_many`]), e.g. the
 //! unit loads of an interface flexibility matrix.
 //!
-//! **Accuracy.** Relative residuals ‖Kx − b‖/‖b‖ below 1e-10 (example 08 checks every size
-//! it runs and fails otherwise; the test suite runs 2·10³ and 8·10³ equations); parallel and sequential factorizations agree, flexibilities are
-//! symmetric (`tests/fem/system.rs`). **Cost.** `cargo bench --bench fem`, example 08.
+//! # Accuracy
+//!
+//! Relative residuals ‖Kx − b‖/‖b‖ below 1e-10 (example 08 checks every size it runs and fails
+//! otherwise; the test suite runs 2·10³ and 8·10³ equations); parallel and sequential
+//! factorizations agree, flexibilities are symmetric (`tests/fem/system.rs`).
+//!
+//! # Cost
+//!
+//! `cargo bench --bench fem`, example 08.
 //!
 //! ```
 //! use boltzone::fem::*;

@@ -18,7 +18,8 @@
 use super::{value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams};
 use crate::contact::two_plate::{solve, TwoPlateParams};
 use crate::heat::lap::LapJoint;
-use crate::{Joint, Material, OuterRadius};
+use crate::joint::{Joint, OuterRadius};
+use crate::material::Material;
 use std::f64::consts::PI;
 
 /// How much the side view exaggerates the thickness.

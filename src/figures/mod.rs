@@ -21,13 +21,17 @@
 //! from the level estimate), the two plates by [`crate::contact::two_plate`], the slab by
 //! [`crate::hankel::Slab`]; all at [`FiguresParams::tolerance`] relative to R_o.
 //!
-//! **Accuracy.** `tests/figures/main.rs`: every curve's sign change brackets its R_o within
-//! the curve's node spacing and R_o's error bar; the report's markers are at the values of the
-//! `reference/` tables read independently; the two-plate R_o of Figs. 15–17 are within the
-//! report's grid interval (0.015 in) and printed rounding of Table 1.
+//! # Accuracy
 //!
-//! **Cost.** `boltzone figures` prints the time of each figure; the whole set at the default
-//! tolerance 5e-3 takes seconds (the test runs a few with `--only`).
+//! `tests/figures/main.rs`: every curve's sign change brackets its R_o within the curve's node
+//! spacing and R_o's error bar; the report's markers are at the values of the `reference/` tables
+//! read independently; the two-plate R_o of Figs. 15–17 are within the report's grid interval
+//! (0.015 in) and printed rounding of Table 1.
+//!
+//! # Cost
+//!
+//! `boltzone figures` prints the time of each figure; the whole set at the default tolerance 5e-3
+//! takes seconds (the test runs a few with `--only`).
 //!
 //! ```
 //! use boltzone::figures::{compute, FiguresParams};
@@ -68,7 +72,7 @@ pub enum FigureError {
     Unknown(String),
     /// Bad input to a solver.
     #[error(transparent)]
-    Input(#[from] crate::InputError),
+    Input(#[from] crate::error::InputError),
     /// The single-plate FE failed.
     #[error("figure {figure}: {source}")]
     Fem {

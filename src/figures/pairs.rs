@@ -35,8 +35,9 @@ use crate::contact::two_plate::{
     solve, solve_field, EdgeSupport, InterfaceModel, Loading, TwoPlateParams, TwoPlateSolution,
 };
 use crate::fem::single::{midplane_of, solve_with_field, SingleParams};
+use crate::joint::{Joint, SinglePlate};
+use crate::load::{FaceLoad, Peak};
 use crate::reference::{self, Table2Row, TABLE2_HOLE_RADIUS as A};
-use crate::{FaceLoad, Joint, Peak, SinglePlate};
 use rayon::prelude::*;
 use std::f64::consts::PI;
 
@@ -207,9 +208,9 @@ fn single_compression(figure: &str, c: &Case, tolerance: f64) -> Result<FigCurve
     let b = r.two_b / 2.0;
     let plate = SinglePlate::new(
         A,
-        crate::OuterRadius::Finite(reference::TABLE2_OUTER_RADIUS),
+        crate::joint::OuterRadius::Finite(reference::TABLE2_OUTER_RADIUS),
         r.d_table,
-        crate::Material::steel_304_psi(),
+        crate::material::Material::steel_304_psi(),
         load(c, b)?,
     )?;
     let fem = |source| FigureError::Fem {

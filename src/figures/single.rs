@@ -21,8 +21,8 @@ use super::{
 use crate::compare::Geometry;
 use crate::contact::two_plate::{solve, TwoPlateParams};
 use crate::fem::single::{midplane_of, solve_with_field, SingleParams};
+use crate::joint::OuterRadius;
 use crate::reference;
-use crate::OuterRadius;
 use rayon::prelude::*;
 
 /// Figs. 12–17 (`id` = `fig12` … `fig17`).

@@ -20,7 +20,8 @@ use super::{
     CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point, PointSeries, Source,
 };
 use crate::hankel::{MidplaneCurve, SeparationParams, Slab};
-use crate::{FaceLoad, Material};
+use crate::load::FaceLoad;
+use crate::material::Material;
 
 /// The loads' radii B/D of the figure.
 pub const B_OVER_D: [f64; 4] = [0.5, 1.0, 2.0, 4.0];

@@ -14,12 +14,17 @@
 //! Compression negative; stresses in the load's pressure units, displacements in length units
 //! when E is in pressure units.
 //!
-//! **Accuracy.** Every value carries the quadrature's error estimate, never below the actual
-//! error on the closed forms of `tests/hankel/slab.rs` (Boussinesq on the axis of a thick slab,
-//! the wide-load limit σ_z = −p, equilibrium and compatibility by finite differences, the face
-//! conditions from inside, ring loads superposing to the annulus;
-//! `field_error_estimates_cover_the_actual_error`). **Cost.** One partition–extrapolation per
-//! point, growing with (r + B)/(distance to the face): `cargo bench --bench hankel`.
+//! # Accuracy
+//!
+//! Every value carries the quadrature's error estimate, never below the actual error on the closed
+//! forms of `tests/hankel/slab.rs` (Boussinesq on the axis of a thick slab, the wide-load limit σ_z
+//! = −p, equilibrium and compatibility by finite differences, the face conditions from inside, ring
+//! loads superposing to the annulus; `field_error_estimates_cover_the_actual_error`).
+//!
+//! # Cost
+//!
+//! One partition–extrapolation per point, growing with (r + B)/(distance to the face): `cargo bench
+//! --bench hankel`.
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::Slab};

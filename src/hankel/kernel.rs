@@ -37,10 +37,15 @@
 //! s-dependent factors, so many heights at one ξ (and the shear kernels of
 //! [`super::kernel_shear`] at the same point) share them.
 //!
-//! **Accuracy.** The face conditions to 8ε(1 + t) for t from 1e-6 to 440, the midplane
-//! kernel within its bound and equal to the textbook form where that is safe (t < 20), finite
-//! at t = 1e4 (`tests/hankel/slab.rs`, `kernels_meet_the_face_conditions_and_bound`).
-//! **Cost.** A few exponentials per ξ-node, shared by all heights.
+//! # Accuracy
+//!
+//! The face conditions to 8ε(1 + t) for t from 1e-6 to 440, the midplane kernel within its bound
+//! and equal to the textbook form where that is safe (t < 20), finite at t = 1e4
+//! (`tests/hankel/slab.rs`, `kernels_meet_the_face_conditions_and_bound`).
+//!
+//! # Cost
+//!
+//! A few exponentials per ξ-node, shared by all heights.
 //!
 //! ```
 //! use boltzone::hankel::kernel::{midplane, Kernels};

@@ -35,10 +35,16 @@
 //! and an exact-rational solution of the two face conditions (sympy,
 //! `tests/data/shear_kernels.py`).
 //!
-//! **Accuracy.** Against the symbolic derivation (`tests/hankel/shear_kernels.rs`,
+//! # Accuracy
+//!
+//! Against the symbolic derivation (`tests/hankel/shear_kernels.rs`,
 //! `kernels_match_the_symbolic_derivation`), the face remainders and half-space limits, and
-//! equilibrium and Hooke's law by differences. **Cost.** Shares [`super::kernel::KernelNode`]
-//! and [`super::kernel::KernelHeight`] with the pressure kernels: a few products per height.
+//! equilibrium and Hooke's law by differences.
+//!
+//! # Cost
+//!
+//! Shares [`super::kernel::KernelNode`] and [`super::kernel::KernelHeight`] with the pressure
+//! kernels: a few products per height.
 //!
 //! ```
 //! use boltzone::hankel::kernel_shear::ShearKernels;

@@ -18,9 +18,14 @@
 //! coefficients as the error estimate, so a curve of 1000 radii costs a few dozen rule
 //! evaluations per panel.
 //!
-//! **Accuracy.** The shared rule and the curve agree with per-point quadrature within their
-//! estimates (`tests/hankel/slab.rs`, `fast_midplane_rule_and_curve_match_direct_quadrature`).
-//! **Cost.** `cargo bench --bench hankel` (the 1000-radius curve to 1e-10); example 01.
+//! # Accuracy
+//!
+//! The shared rule and the curve agree with per-point quadrature within their estimates
+//! (`tests/hankel/slab.rs`, `fast_midplane_rule_and_curve_match_direct_quadrature`).
+//!
+//! # Cost
+//!
+//! `cargo bench --bench hankel` (the 1000-radius curve to 1e-10); example 01.
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{Slab, MidplaneRule}};

@@ -33,15 +33,19 @@
 //! does not grow with B/D or r/D. R_o ([`Slab::separation_radius`]): a scan and Brent's method
 //! on one [`Midplane`] evaluator.
 //!
-//! **Accuracy.** Every error estimate covers the actual error on closed forms (Boussinesq on
-//! the axis, the wide-load limit, equilibrium, compatibility; `tests/hankel/slab.rs`,
-//! `field_error_estimates_cover_the_actual_error`). The two midplane routes agree to ~1e-15
-//! where both run (`tests/hankel/separation.rs`, `real_space_and_xi_routes_agree`), which keeps
-//! D/A ∈ [1e-3, 1e3], B/A ∈ [1.001, 1e3] and r ≤ 10³B finite and accurate; R_o's achieved error
-//! is below its estimate for tolerances 1e-4 … 1e-12 (example 01).
+//! # Accuracy
 //!
-//! **Cost.** Per field point, grows with (r + B)·(decay length)⁻¹; R_o to 1e-10 and the
-//! 1000-radius midplane curve: `cargo bench --bench hankel`; time against error: example 01.
+//! Every error estimate covers the actual error on closed forms (Boussinesq on the axis, the
+//! wide-load limit, equilibrium, compatibility; `tests/hankel/slab.rs`,
+//! `field_error_estimates_cover_the_actual_error`). The two midplane routes agree to ~1e-15 where
+//! both run (`tests/hankel/separation.rs`, `real_space_and_xi_routes_agree`), which keeps D/A ∈
+//! [1e-3, 1e3], B/A ∈ [1.001, 1e3] and r ≤ 10³B finite and accurate; R_o's achieved error is below
+//! its estimate for tolerances 1e-4 … 1e-12 (example 01).
+//!
+//! # Cost
+//!
+//! Per field point, grows with (r + B)·(decay length)⁻¹; R_o to 1e-10 and the 1000-radius midplane
+//! curve: `cargo bench --bench hankel`; time against error: example 01.
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{Slab, SeparationParams}};

@@ -20,11 +20,15 @@
 //! Gauss–Legendre panels no wider than 1.5D in ρ and in the arc length √(rρ)θ (g is analytic
 //! in a strip of half-width D, so the rule's error is far below the table's).
 //!
-//! **Accuracy.** The point kernel against mpmath (`tests/hankel/separation.rs`,
-//! `point_kernel_matches_mpmath`); the real-space and ξ routes agree to ~1e-15 where both run
-//! (`real_space_and_xi_routes_agree`); thin slabs reach the strip limit
-//! (`thin_slabs_switch_to_real_space_and_reach_the_strip_limit`). **Cost.** Independent of B/D
-//! and r/D (example 01's extremes of the range).
+//! # Accuracy
+//!
+//! The point kernel against mpmath (`tests/hankel/separation.rs`, `point_kernel_matches_mpmath`);
+//! the real-space and ξ routes agree to ~1e-15 where both run (`real_space_and_xi_routes_agree`);
+//! thin slabs reach the strip limit (`thin_slabs_switch_to_real_space_and_reach_the_strip_limit`).
+//!
+//! # Cost
+//!
+//! Independent of B/D and r/D (example 01's extremes of the range).
 //!
 //! ```
 //! use boltzone::hankel::realspace::point_kernel;

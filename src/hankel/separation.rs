@@ -12,10 +12,15 @@
 //! so the error estimate is the final bracket half-width plus the σ_z error divided by the
 //! slope at the root.
 //!
-//! **Accuracy.** R_o is the first upward zero of directly integrated σ_z
-//! (`tests/hankel/separation.rs`, `r_o_is_the_first_upward_zero_of_direct_midplane_stress`);
-//! the achieved error is below the estimate for tolerances 1e-4 … 1e-12 (example 01).
-//! **Cost.** `cargo bench --bench hankel` (R_o to 1e-10); example 01 (time against error).
+//! # Accuracy
+//!
+//! R_o is the first upward zero of directly integrated σ_z (`tests/hankel/separation.rs`,
+//! `r_o_is_the_first_upward_zero_of_direct_midplane_stress`); the achieved error is below the
+//! estimate for tolerances 1e-4 … 1e-12 (example 01).
+//!
+//! # Cost
+//!
+//! `cargo bench --bench hankel` (R_o to 1e-10); example 01 (time against error).
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{Slab, SeparationParams}};

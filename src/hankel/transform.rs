@@ -7,10 +7,15 @@
 //! every p̄(ξ) costs O(1) Bessel calls whatever ξ (small ξ: one Gauss rule on the piece). The transform is built once per slab and
 //! shared by every evaluation point. Units: pressure × length².
 //!
-//! **Accuracy.** Against brute-force Gauss–Legendre over r, which shares none of the closed
-//! forms (`tests/hankel/transform.rs`); bounds and the small-ξ limit in `tests/hankel/slab.rs`
-//! (`load_transform_obeys_its_bounds_and_small_argument_limit`). **Cost.** O(1) Bessel calls
-//! per ξ and load piece.
+//! # Accuracy
+//!
+//! Against brute-force Gauss–Legendre over r, which shares none of the closed forms
+//! (`tests/hankel/transform.rs`); bounds and the small-ξ limit in `tests/hankel/slab.rs`
+//! (`load_transform_obeys_its_bounds_and_small_argument_limit`).
+//!
+//! # Cost
+//!
+//! O(1) Bessel calls per ξ and load piece.
 //!
 //! ```
 //! use boltzone::{FaceLoad, hankel::transform::LoadTransform};

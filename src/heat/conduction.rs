@@ -12,12 +12,16 @@
 //! Method: Q4 (2 × 2 Gauss) or Q9 (3 × 3) shape functions of [`crate::fem::element`], assembled
 //! sparse and factored by [`crate::fem::Factorization`].
 //!
-//! Accuracy: `tests/heat_conduction.rs`: two plates with a uniform h against the
-//! one-dimensional series resistance D₁/k₁ + 1/h + D₂/k₂ (exact: T is linear in z); radial flow
-//! through an annulus against 2πkD/ln(b/a): the heat flow's error falls at the square of the
-//! energy norm's rate, measured 1.99 (Q4, predicted 2) and 3.95 (Q9, predicted 4) from 32 to 64
-//! elements (Q9 error 2.3e-7 at 64).
-//! Cost: one sparse Cholesky of the mesh's nodes.
+//! # Accuracy
+//!
+//! `tests/heat/conduction.rs`: two plates with a uniform h against the one-dimensional series
+//! resistance D₁/k₁ + 1/h + D₂/k₂ (exact: T is linear in z); radial flow through an annulus against
+//! 2πkD/ln(b/a): the heat flow's error falls at the square of the energy norm's rate, measured 1.99
+//! (Q4, predicted 2) and 3.95 (Q9, predicted 4) from 32 to 64 elements (Q9 error 2.3e-7 at 64).
+//!
+//! # Cost
+//!
+//! One sparse Cholesky of the mesh's nodes.
 //!
 //! ```
 //! use boltzone::fem::{ElementKind, Mesh, PlateSpec, Spacing};

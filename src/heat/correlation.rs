@@ -25,11 +25,16 @@
 //! Units: SI values in the [`super::units`] newtypes; the report's units by their named
 //! constructors.
 //!
-//! Accuracy: closed forms evaluated in f64 (a few ulp). `tests/heat_correlation.rs` checks eq.
-//! (1.1) against a value computed by hand, the identities of (1.2)–(1.4), that the four laws
-//! agree where their parameters coincide, and that bad input names its field.
-//! Cost: one `powf` per evaluation; the Chapter V example (`examples/15_lap_joint_heat.rs`)
-//! evaluates it 16 times per contact cell of its networks and prints their times.
+//! # Accuracy
+//!
+//! Closed forms evaluated in f64 (a few ulp). `tests/heat/correlation.rs` checks eq. (1.1) against
+//! a value computed by hand, the identities of (1.2)–(1.4), that the four laws agree where their
+//! parameters coincide, and that bad input names its field.
+//!
+//! # Cost
+//!
+//! One `powf` per evaluation; the Chapter V example (`examples/15_lap_joint_heat.rs`) evaluates it
+//! 16 times per contact cell of its networks and prints their times.
 //!
 //! ```
 //! use boltzone::heat::correlation::{ContactConductance, Correlation, Surfaces};

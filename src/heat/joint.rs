@@ -23,12 +23,17 @@
 //! 2πr k/(g(r) + M) exactly on each interval (a logarithm, with its series near zero slope); its
 //! edge is R_o itself. Radiation is uniform over R_o ≤ r ≤ C.
 //!
-//! Accuracy: `tests/heat_joint.rs` checks G_c = c (m/σ) k F/H for exponent 1 to 1e-9 for the
-//! three load profiles and an unequal pair; over contact mesh levels 2–8 of Chapter V's joint,
-//! eq. (1.1)'s G_c moves by < 2e-6 from level 4 on, and a law with n = 0.5 converges at the
-//! predicted rate 1 + n/2 = 1.25 (measured 1.28); the gas integral matches closed forms to 1e-14;
-//! ring means carry the bolt force to 1 %.
-//! Cost: the contact solve dominates (the example `examples/15_lap_joint_heat.rs` prints both).
+//! # Accuracy
+//!
+//! `tests/heat/joint.rs` checks G_c = c (m/σ) k F/H for exponent 1 to 1e-9 for the three load
+//! profiles and an unequal pair; over contact mesh levels 2–8 of Chapter V's joint, eq. (1.1)'s G_c
+//! moves by < 2e-6 from level 4 on, and a law with n = 0.5 converges at the predicted rate 1 + n/2
+//! = 1.25 (measured 1.28); the gas integral matches closed forms to 1e-14; ring means carry the
+//! bolt force to 1 %.
+//!
+//! # Cost
+//!
+//! The contact solve dominates (the example `examples/15_lap_joint_heat.rs` prints both).
 //!
 //! ```
 //! use boltzone::contact::two_plate::{solve, TwoPlateParams};

@@ -17,17 +17,22 @@
 //! Units: SI inside ([`super::units`]); the joint's temperature drop and heat flow in any unit
 //! via the newtypes.
 //!
-//! Accuracy: with no hole and a uniform h_c over the whole overlap the problem is one-dimensional
-//! with a closed form (two strips coupled along the overlap, resistance
-//! l/(2K) + coth(λl/2)/(Kλ), K = k W t, λ² = 2hW/K); `tests/heat_lap.rs` matches it at the
-//! observed second order (errors 2.7e-3 → 4.2e-5 over 4 → 32 cells, rates 1.99–2.00). The
-//! Chapter V example (`examples/15_lap_joint_heat.rs`) shows the cell size, overlap, margin,
-//! sampling, width, correlation, ν and plate radius each moving its heat flow by < 0.4 %; the
-//! through-thickness term by 4 %: the modelling of the constriction, not the numerics, decides.
-//! The example's step 6 brackets it with the (r, z) conduction FE of [`super::conduction`] on
-//! the contact zone alone: the term overestimates that zone's resistance about as much as
-//! leaving it out underestimates it (0.844 and 0.627 against the FE's 0.737 °F·hr/Btu).
-//! Cost: one sparse Cholesky of 4 n² nodes (n = 150: 90,000 nodes, printed by the example).
+//! # Accuracy
+//!
+//! With no hole and a uniform h_c over the whole overlap the problem is one-dimensional with a
+//! closed form (two strips coupled along the overlap, resistance l/(2K) + coth(λl/2)/(Kλ), K = k W
+//! t, λ² = 2hW/K); `tests/heat/lap.rs` matches it at the observed second order (errors 2.7e-3 →
+//! 4.2e-5 over 4 → 32 cells, rates 1.99–2.00). The Chapter V example
+//! (`examples/15_lap_joint_heat.rs`) shows the cell size, overlap, margin, sampling, width,
+//! correlation, ν and plate radius each moving its heat flow by < 0.4 %; the through-thickness term
+//! by 4 %: the modelling of the constriction, not the numerics, decides. The example's step 6
+//! brackets it with the (r, z) conduction FE of [`super::conduction`] on the contact zone alone:
+//! the term overestimates that zone's resistance about as much as leaving it out underestimates it
+//! (0.844 and 0.627 against the FE's 0.737 °F·hr/Btu).
+//!
+//! # Cost
+//!
+//! One sparse Cholesky of 4 n² nodes (n = 150: 90,000 nodes, printed by the example).
 //!
 //! ```
 //! use boltzone::heat::lap::LapJoint;

@@ -10,13 +10,21 @@
 //! - [`joint`]: ∫ h_c(p(r)) 2πr dr over the contact zone of a two-plate solution, ring by ring as
 //!   the Chapter V table, plus gas and radiation across the open gap;
 //! - [`network`]: the steady conductance-network solver of Appendix D; [`deck`]: its card decks
-//!   (fields per [`fortran`]);
+//!   (fields per [`crate::fortran`]);
 //! - [`lap`]: Chapter V's lap joint as such a network, with the geometry it assumes;
 //! - [`conduction`]: steady axisymmetric conduction on the [`crate::fem`] meshes, plates joined
 //!   by an interface conductance h(r); [`zone`]: a joint's contact-zone resistance by it.
 //!
 //! Sign convention: interface pressure p > 0 in compression (σ_z = −p); heat flows toward a node
 //! are positive.
+//!
+//! # Accuracy
+//!
+//! Each file's Accuracy section; the test crate is `tests/heat/`.
+//!
+//! # Cost
+//!
+//! Each file's Cost section; example 15 (the lap joint).
 //!
 //! ```
 //! use boltzone::heat::units::{Conductance, Resistance};
@@ -28,7 +36,6 @@
 pub mod conduction;
 pub mod correlation;
 pub mod deck;
-pub mod fortran;
 pub mod joint;
 pub mod lap;
 pub mod network;

@@ -15,10 +15,15 @@
 //! steps). The residual is reported as the program printed it: RES_i = |B_i| − |(A T)_i|, with
 //! [`NetworkSolution::residual`] the largest |RES_i|.
 //!
-//! Accuracy: `tests/heat_network.rs` checks the energy balance Σ ground flows + Σ Q = 0 to 1e-10
-//! of the largest flow, a chain of N resistors against the closed form of a series circuit, and
-//! a deck written by hand against the same network built here.
-//! Cost: one sparse factorization, O(N) for a chain; the Chapter V network of
+//! # Accuracy
+//!
+//! `tests/heat/network.rs` checks the energy balance Σ ground flows + Σ Q = 0 to 1e-10 of the
+//! largest flow, a chain of N resistors against the closed form of a series circuit, and a deck
+//! written by hand against the same network built here.
+//!
+//! # Cost
+//!
+//! One sparse factorization, O(N) for a chain; the Chapter V network of
 //! `examples/15_lap_joint_heat.rs` prints its time.
 //!
 //! ```

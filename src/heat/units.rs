@@ -11,8 +11,13 @@
 //! 1 °F = 5/9 K. Derived: 1 psi = 6894.757293168… Pa; 1 Btu/(hr·ft·°F) = 1.730735 W/(m·K)
 //! (SP 811 lists 1.730 735 E+00); 1 Btu/(hr·ft²·°F) = 5.678263 W/(m²·K) (SP 811: 5.678 263 E+00).
 //!
-//! Accuracy: round trips and the SP 811 values are checked in `tests/heat_correlation.rs`.
-//! Cost: one multiplication.
+//! # Accuracy
+//!
+//! Round trips and the SP 811 values are checked in `tests/heat/correlation.rs`.
+//!
+//! # Cost
+//!
+//! One multiplication.
 //!
 //! ```
 //! use boltzone::heat::units::{Conductivity, Length};

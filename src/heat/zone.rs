@@ -11,12 +11,16 @@
 //! flow is the sum of the upper rim's reactions. Units: the solution's lengths (named by
 //! [`super::joint::JointParams::length_unit`]); R in K/W ([`Resistance`]).
 //!
-//! Accuracy: `tests/heat/zone.rs` checks a uniform h against the closed form of thin plates
-//! (the fin equation θ'' + θ'/r = m²θ, m² = 2h/(kt), solved by I₀, K₀): the difference falls
-//! in proportion to the Biot number ht/k, the fin model's own error; and
-//! `examples/18_heat_speed.rs` prints error against time for Chapter V's joint (h_c jumps to 0
-//! at R_o, which limits the rate with `radial`).
-//! Cost: one sparse Cholesky of (2·axial·2 + 1)(2·radial + 1) nodes.
+//! # Accuracy
+//!
+//! `tests/heat/zone.rs` checks a uniform h against the closed form of thin plates (the fin equation
+//! θ'' + θ'/r = m²θ, m² = 2h/(kt), solved by I₀, K₀): the difference falls in proportion to the
+//! Biot number ht/k, the fin model's own error; and `examples/18_heat_speed.rs` prints error
+//! against time for Chapter V's joint (h_c jumps to 0 at R_o, which limits the rate with `radial`).
+//!
+//! # Cost
+//!
+//! One sparse Cholesky of (2·axial·2 + 1)(2·radial + 1) nodes.
 //!
 //! ```
 //! use boltzone::contact::two_plate::{solve, TwoPlateParams};

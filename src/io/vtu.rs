@@ -19,12 +19,16 @@
 //! Numbers are printed with Rust's shortest round-trip format, so a reader gets the f64 values
 //! back bit for bit.
 //!
-//! Accuracy: `tests/io/vtu.rs` reads the file with meshio (independent reader) and compares
-//! points, cell count, displacements and stresses with the library's nodal values.
+//! # Accuracy
 //!
-//! Cost: one pass over the mesh plus the stress recovery, linear in the number of nodes; the
-//! text is about 200 bytes per node (measured: `single --a 0.1 --b 0.31 --d 0.1 --c 1.54 --tol
-//! 1e-2 --field`, 1254 nodes, 258 kB). Exercised by `tests/io/vtu.rs`.
+//! `tests/io/vtu.rs` reads the file with meshio (independent reader) and compares points, cell
+//! count, displacements and stresses with the library's nodal values.
+//!
+//! # Cost
+//!
+//! One pass over the mesh plus the stress recovery, linear in the number of nodes; the text is
+//! about 200 bytes per node (measured: `single --a 0.1 --b 0.31 --d 0.1 --c 1.54 --tol 1e-2
+//! --field`, 1254 nodes, 258 kB). Exercised by `tests/io/vtu.rs`.
 //!
 //! ```
 //! use boltzone::fem::{ElementKind, Mesh, PlateSpec, Spacing};

@@ -10,8 +10,14 @@
 //! - |z| ≥ 20: the Hankel expansion e^(−z) I_ν(z) ≈ Σ_k (−1)^k a_k(ν)/z^k / √(2πz) (DLMF 10.40.1);
 //!   the omitted exponentially small part is ≈ e^(−2 Re z) < 5e-14 for |arg z| ≤ 0.7.
 //!
-//! **Accuracy.** Measured against mpmath at 40 digits (`tests/data/hole_bessel_i.py`,
-//! `tests/numerics/bessel_ik.rs`). **Cost.** O(1): ≲ 60 series terms or ≲ 20 asymptotic terms.
+//! # Accuracy
+//!
+//! Measured against mpmath at 40 digits (`tests/data/hole_bessel_i.py`,
+//! `tests/numerics/bessel_ik.rs`).
+//!
+//! # Cost
+//!
+//! O(1): ≲ 60 series terms or ≲ 20 asymptotic terms.
 //!
 //! ```
 //! use boltzone::numerics::bessel_i::i01_scaled;

@@ -16,11 +16,15 @@
 //!   a_k = a_{k−1}(4ν² − (2k−1)²)/(8k), summed to its smallest term; for |arg z| ≤ π/2 the error is
 //!   below the first omitted term, ≈ e^(−2|z|) < 5e-18.
 //!
-//! **Accuracy.** Measured against mpmath at 40 digits (`tests/data/hole_bessel_k.py`,
+//! # Accuracy
+//!
+//! Measured against mpmath at 40 digits (`tests/data/hole_bessel_k.py`,
 //! `tests/numerics/bessel_ik.rs`) for |z| ∈ [0.05, 1e5], |arg z| ≤ 1.1.
 //!
-//! **Cost.** O(1): at most ~100 trapezoid nodes below |z| = 20, ≲ 20 series terms above; one
-//! pair per mode and point of the hole fit (`cargo bench --bench hole`).
+//! # Cost
+//!
+//! O(1): at most ~100 trapezoid nodes below |z| = 20, ≲ 20 series terms above; one pair per mode
+//! and point of the hole fit (`cargo bench --bench hole`).
 //!
 //! ```
 //! use boltzone::numerics::bessel_k::k01_scaled;

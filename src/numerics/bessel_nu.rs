@@ -20,13 +20,16 @@
 //! shifted by the recurrence Γ(z) = Γ(z + n)/(z(z + 1)…(z + n − 1)) (any non-integer z ≤ 0 too;
 //! the imaginary part is correct modulo 2π, which is all exp needs).
 //!
-//! **Accuracy.** Checked against mpmath's `hyp0f1` and `loggamma` at 40 digits
-//! (`tests/data/hole_bessel_nu.py`, `tests/hankel/hole_corner.rs`,
-//! `normal_bessel_gamma_and_roots_match_mpmath`): relative error below 1e-13 over
-//! x ∈ [0, 1e6] for the orders used.
+//! # Accuracy
 //!
-//! **Cost.** O(x) recurrence steps for 2 < x < x_a, O(1) elsewhere; families of orders ν + j
-//! share one recurrence (the corner fields' share of `cargo bench --bench hole`).
+//! Checked against mpmath's `hyp0f1` and `loggamma` at 40 digits (`tests/data/hole_bessel_nu.py`,
+//! `tests/hankel/hole_corner.rs`, `normal_bessel_gamma_and_roots_match_mpmath`): relative error
+//! below 1e-13 over x ∈ [0, 1e6] for the orders used.
+//!
+//! # Cost
+//!
+//! O(x) recurrence steps for 2 < x < x_a, O(1) elsewhere; families of orders ν + j share one
+//! recurrence (the corner fields' share of `cargo bench --bench hole`).
 //!
 //! ```
 //! use boltzone::numerics::bessel_nu::NormalBessel;

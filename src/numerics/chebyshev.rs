@@ -8,10 +8,16 @@
 //! the interpolation error is at most 2 Σ_{k>M} |c_k| (ch. 4). Used by the hole's slab traction
 //! profile (`hankel::hole::profile`) and the separation search's local midplane interpolant.
 //!
-//! **Accuracy.** Exact on polynomials of degree ≤ M (the example below); the geometric decay of
-//! the coefficients of the slab's traction profile is measured against its predicted ellipse
-//! in `tests/hankel/hole_profile.rs`. **Cost.** O(M²) for the coefficients (a direct cosine
-//! sum with one table of cosines; M = 24–72 for the hole profile), O(M) per evaluation.
+//! # Accuracy
+//!
+//! Exact on polynomials of degree ≤ M (the example below); the geometric decay of the coefficients
+//! of the slab's traction profile is measured against its predicted ellipse in
+//! `tests/hankel/hole_profile.rs`.
+//!
+//! # Cost
+//!
+//! O(M²) for the coefficients (a direct cosine sum with one table of cosines; M = 24–72 for the
+//! hole profile), O(M) per evaluation.
 //!
 //! ```
 //! use boltzone::numerics::chebyshev::{clenshaw, lobatto_coefficients, lobatto_points};

@@ -12,7 +12,13 @@
 //! - [`fitted_rate`]: the rate of a sequence refined by a constant factor, from its changes.
 //! - [`order_between`]: ln(e₁/e₂)/ln(h₁/h₂) from two levels.
 //!
-//! Accuracy: exact on exact power laws (unit tests here); rounding only. Cost: O(n).
+//! # Accuracy
+//!
+//! Exact on exact power laws (unit tests here); rounding only.
+//!
+//! # Cost
+//!
+//! O(n).
 //!
 //! ```
 //! use boltzone::numerics::convergence::{fitted_rate, level_estimate, log_log_slope};

@@ -4,8 +4,13 @@
 //! Method: power series for x ≤ 2, a table of piecewise Chebyshev interpolants for 2 < x < 40,
 //! Hankel's asymptotic expansion for x ≥ 40 (see [`integral_j0`]).
 //!
-//! Accuracy: ~20ε absolute; checked against mpmath (Struve form) in `tests/numerics/`
-//! (module `bessel_j`). Cost: O(1) per call after the table is built once (20 panels).
+//! # Accuracy
+//!
+//! ~20ε absolute; checked against mpmath (Struve form) in `tests/numerics/` (module `bessel_j`).
+//!
+//! # Cost
+//!
+//! O(1) per call after the table is built once (20 panels).
 //!
 //! ```
 //! use boltzone::numerics::integral_j0::integral_j0;

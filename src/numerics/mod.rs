@@ -11,6 +11,15 @@
 //! - [`convergence`]: level estimates, fitted rates and observed orders of refinement sequences;
 //! - [`random`]: a seeded generator (splitmix64) for reproducible studies.
 //!
+//! # Accuracy
+//!
+//! Each file's Accuracy section; the test crate is `tests/numerics/`, against arbitrary-precision
+//! references in `tests/data/`.
+//!
+//! # Cost
+//!
+//! Each file's Cost section; `cargo bench --bench hankel`.
+//!
 //! ```
 //! use boltzone::numerics::root::brent;
 //! let mut f = |x: f64| Ok::<f64, std::convert::Infallible>(x.cos() - x);

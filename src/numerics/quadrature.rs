@@ -20,13 +20,17 @@
 //! the distance to an extrapolation of whole-period sums, plus a rounding floor 50·ε·Σ|w f| (the
 //! sum of absolute values of the terms, QUADPACK's `resabs`).
 //!
-//! **Accuracy.** The estimate is never below the actual error on closed-form Hankel pairs
+//! # Accuracy
+//!
+//! The estimate is never below the actual error on closed-form Hankel pairs
 //! (`tests/numerics/quadrature.rs`: e^(−aξ)J₀, e^(−aξ)J₁ from fast to no decay, the
 //! Weber–Schafheitlin step) and on the slab's fields (`tests/hankel/slab.rs`,
 //! `field_error_estimates_cover_the_actual_error`).
 //!
-//! **Cost.** One n-point rule per half-period panel and O(window) per Wynn update; panels
-//! ∝ (decay length)⁻¹·ω: `cargo bench --bench hankel`.
+//! # Cost
+//!
+//! One n-point rule per half-period panel and O(window) per Wynn update; panels ∝ (decay
+//! length)⁻¹·ω: `cargo bench --bench hankel`.
 //!
 //! ```
 //! use boltzone::numerics::quadrature::{integrate_oscillatory, QuadParams};

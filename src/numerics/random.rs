@@ -7,6 +7,16 @@
 //! here, never changes with a dependency's version — a seed names the same inputs forever.
 //! It is not for cryptography.
 //!
+//! # Accuracy
+//!
+//! Not an accuracy claim: a seeded generator for reproducible fuzz and sampling
+//! (`tests/cli/fuzz.rs`, `tests/io/mutants.rs`, `tests/io/fields.rs`); the same seed gives the same
+//! integer sequence on every platform (wrapping 64-bit arithmetic).
+//!
+//! # Cost
+//!
+//! A few integer operations per number.
+//!
 //! ```
 //! use boltzone::numerics::random::SplitMix64;
 //! let mut a = SplitMix64::new(7);

@@ -4,8 +4,14 @@
 //! ([`first_upward_crossing`], [`first_upward_root`]). Shared by every separation-radius search
 //! of the crate (slab, slab with a hole, receding layer).
 //!
-//! Accuracy: the root to the half-width asked; Brent's superlinear convergence is checked in
-//! `tests/numerics/root.rs`. Cost: one evaluation per scan point and per iteration.
+//! # Accuracy
+//!
+//! The root to the half-width asked; Brent's superlinear convergence is checked in
+//! `tests/numerics/root.rs`.
+//!
+//! # Cost
+//!
+//! One evaluation per scan point and per iteration.
 //!
 //! ```
 //! use boltzone::numerics::root::brent;

@@ -4,14 +4,16 @@
 //! full precision. Used for the log-singular real-space surface integral of
 //! `hankel::transform` and the corner fields' checks.
 //!
-//! **Accuracy.** The error estimate is the change between the last two step halvings plus a
-//! rounding floor. Log singularities: to ~1e-15 (`tests/numerics/tanh_sinh.rs`). Stronger
-//! singularities such as x^(−1/2) are not for this rule: the nodes stop where they would round
-//! onto the end, the value is short by ~1e-8, and the estimate says so (it is then of the
-//! order of the value).
+//! # Accuracy
 //!
-//! **Cost.** At most 7 levels: ~100 evaluations for a log singularity, ~800 when it does not
-//! converge.
+//! The error estimate is the change between the last two step halvings plus a rounding floor. Log
+//! singularities: to ~1e-15 (`tests/numerics/tanh_sinh.rs`). Stronger singularities such as
+//! x^(−1/2) are not for this rule: the nodes stop where they would round onto the end, the value is
+//! short by ~1e-8, and the estimate says so (it is then of the order of the value).
+//!
+//! # Cost
+//!
+//! At most 7 levels: ~100 evaluations for a log singularity, ~800 when it does not converge.
 //!
 //! ```
 //! use boltzone::numerics::tanh_sinh::tanh_sinh;

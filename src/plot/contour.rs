@@ -9,9 +9,15 @@
 //!   squares (linear interpolation along each cell edge; a saddle cell is resolved by the mean of
 //!   its four corners), as straight segments.
 //!
-//! Accuracy: marching squares is exact for data linear in x and y — `tests/io/figure_map.rs`
-//! checks every segment end of z = x + 2y on a non-uniform grid against the line x + 2y = c,
-//! and the ticks against hand-listed round numbers. Cost: one pass over the grid per level.
+//! # Accuracy
+//!
+//! Marching squares is exact for data linear in x and y — `tests/io/figure_map.rs` checks every
+//! segment end of z = x + 2y on a non-uniform grid against the line x + 2y = c, and the ticks
+//! against hand-listed round numbers.
+//!
+//! # Cost
+//!
+//! One pass over the grid per level.
 //!
 //! ```
 //! use boltzone::plot::contour::{log_ticks, nice_ticks};

@@ -5,9 +5,15 @@
 //! blue below, white at 0, red above, symmetric ±max|z|); others on viridis ([`viridis`]). Both
 //! colour maps are readable with the common colour-vision deficiencies.
 //!
-//! Accuracy: `tests/io/figure_map.rs` parses the SVG of `boltzone map` for the tick labels, the
-//! contour lines and the colour bar's symmetric range. Cost: a 40 × 40 map draws in well under
-//! a second (one rectangle per cell and one pass per contour level; `boltzone map`).
+//! # Accuracy
+//!
+//! `tests/io/figure_map.rs` parses the SVG of `boltzone map` for the tick labels, the contour lines
+//! and the colour bar's symmetric range.
+//!
+//! # Cost
+//!
+//! A 40 × 40 map draws in well under a second (one rectangle per cell and one pass per contour
+//! level; `boltzone map`).
 //!
 //! ```
 //! use boltzone::plot::{svg_string, HeatMapFigure, HeatPanel};

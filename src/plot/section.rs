@@ -7,9 +7,14 @@
 //! Method: the chart is laid out once to learn its plotting area in pixels; the shorter data
 //! range is then widened (y about its centre, x to the right) until the pixels per unit agree.
 //!
-//! Accuracy: `tests/io/figure_joint.rs` parses the SVG of the deformed joint: the outlines'
-//! pixel extents give equal scales in x and y, and the R_o marker sits at the computed R_o.
-//! Cost: one polygon per outline; negligible beside the solve.
+//! # Accuracy
+//!
+//! `tests/io/figure_joint.rs` parses the SVG of the deformed joint: the outlines' pixel extents
+//! give equal scales in x and y, and the R_o marker sits at the computed R_o.
+//!
+//! # Cost
+//!
+//! One polygon per outline; negligible beside the solve.
 //!
 //! ```
 //! use boltzone::plot::{write_figure, Outline, SectionFigure};

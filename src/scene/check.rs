@@ -2,6 +2,15 @@
 //! value and the line. Output paths are checked here too, so that nothing is computed for a
 //! file that cannot be written. Tests: `tests/scene/errors.rs`.
 //!
+//! # Accuracy
+//!
+//! Not numerical: each rule's error names the key and line, `tests/scene/errors.rs` and the mutated
+//! scenes of `tests/scene/fuzz.rs`.
+//!
+//! # Cost
+//!
+//! Linear in the scene's keys.
+//!
 //! ```
 //! let text = "[hole]\nradius = 0.1\n[load]\nouter_radius = 0.05\npressure = 1.0\n\
 //!             [[plates]]\nthickness = 0.1\n";
@@ -65,6 +74,20 @@ impl Checker<'_> {
 
 fn k(s: &str) -> Seg {
     Seg::Key(s.into())
+}
+
+impl Scene {
+    /// Parses and checks a scene (errors name the key, the value and the line).
+    pub fn parse(text: &str) -> Result<Self, SceneError> {
+        let scene = Self::parse_unchecked(text)?;
+        check(&scene, text)?;
+        Ok(scene)
+    }
+
+    /// Checks every value (the line of each error is looked up in `text`).
+    pub fn check(&self, text: &str) -> Result<(), SceneError> {
+        check(self, text)
+    }
 }
 
 /// Checks `scene`, looking lines up in `text`.

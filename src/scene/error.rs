@@ -1,14 +1,22 @@
 //! Errors of scenes: bad input located by key and line, and the solvers' own errors.
 //!
+//! # Accuracy
+//!
+//! Not numerical: `tests/scene/errors.rs` (errors located by key and line, exit codes 2 and 3).
+//!
+//! # Cost
+//!
+//! None.
+//!
 //! ```
 //! let e = boltzone::scene::Scene::parse("units = \"furlongs\"\n").unwrap_err();
 //! assert!(e.is_input() && e.line() == Some(1), "{e}");
 //! ```
 
 use crate::contact::ContactError;
+use crate::error::InputError;
 use crate::fem::FemError;
 use crate::hankel::separation::SeparationError;
-use crate::InputError;
 
 /// Why a scene could not be read or answered.
 #[derive(Debug, thiserror::Error)]

@@ -4,19 +4,25 @@
 //! slab by Hankel transforms), in the scene's units; also the grids `boltzone two --field` and
 //! `boltzone single --field` write (one construction for the commands and the scenes).
 //!
-//! Method: the two-plate field is the finest level [`crate::contact::field::solve_field`] keeps
+//! Method: the two-plate field is the finest level [`crate::contact::two_plate::solve_field`] keeps
 //! (the levels that give R_o, nothing solved twice); the single plate's is the finest level of
 //! [`crate::fem::single::solve_with_field`], its upper half and the mirror image; the slab's
 //! midplane is [`crate::hankel::Slab::sigma_z`] at z = 0 on 0 ≤ r ≤ 3 R_o, each value with its
 //! quadrature error estimate. [`Grid`] values are converted by the scene's unit factors
 //! ([`scaled`]): lengths and displacements by the length unit, stresses by the stress unit.
 //!
-//! Accuracy: that of the levels (R_o's error estimate is the field's resolution near the
-//! separation); `tests/scene/field.rs` checks that both midplanes change sign at the R_o of
-//! the separate root search (slab: within 1e-3 R_o, the interpolation over its 121 points;
-//! FE: within twice R_o's error estimate), that a field asked of a scene leaves R_o bit for bit
-//! as without it, and that the VTU's largest radius is C in the scene's length unit to 1e-12. Cost: the field's levels (the FE route instead of
-//! the Hankel root search for a single plate: `examples/17_scene_plan.rs` prints the times).
+//! # Accuracy
+//!
+//! That of the levels (R_o's error estimate is the field's resolution near the separation);
+//! `tests/scene/field.rs` checks that both midplanes change sign at the R_o of the separate root
+//! search (slab: within 1e-3 R_o, the interpolation over its 121 points; FE: within twice R_o's
+//! error estimate), that a field asked of a scene leaves R_o bit for bit as without it, and that
+//! the VTU's largest radius is C in the scene's length unit to 1e-12.
+//!
+//! # Cost
+//!
+//! The field's levels (the FE route instead of the Hankel root search for a single plate:
+//! `examples/17_scene_plan.rs` prints the times).
 //!
 //! ```
 //! let mut g = boltzone::io::vtu::Grid::default();
@@ -32,8 +38,9 @@ use crate::fem::single::HalfPlate;
 use crate::fem::FemError;
 use crate::hankel::Slab;
 use crate::io::vtu::Grid;
+use crate::joint::SinglePlate;
+use crate::material::Material;
 use crate::numerics::quadrature::QuadParams;
-use crate::{Material, SinglePlate};
 
 /// The midplane normal stress σ_z(r) (scene units; compression negative).
 #[derive(Debug, Clone, PartialEq, Default)]

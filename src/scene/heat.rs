@@ -18,15 +18,19 @@
 //! [`UnitSystem::conductance`]); lengths and stresses are the scene's own. `"mikic-elastic"`
 //! takes E′ from the plates' materials ([`crate::heat::correlation::effective_modulus`]).
 //!
-//! Accuracy: that of the contact solve and of the nodal rule of [`crate::heat::joint`];
-//! `tests/scene/heat.rs` checks that a power law of exponent 1 gives c (m/σ) k F/H (F the bolt
-//! force: equilibrium) to 1e-9 for three load profiles and an unequal pair, that the same joint
-//! in three unit systems gives the same conductance to 1e-12, and that the Chapter V scene
-//! equals the library calls (R_o bit for bit, G to 1e-14: the rounding of the Btu factor).
-//! Cost: one pass over the interface nodes after the contact solve (microseconds; `boltzone
-//! solve --explain` prints it; `examples/18_heat_speed.rs` times it with the contact solve);
-//! the Chapter V scene is
-//! `examples/scenes/chapter5_lap.toml`.
+//! # Accuracy
+//!
+//! That of the contact solve and of the nodal rule of [`crate::heat::joint`]; `tests/scene/heat.rs`
+//! checks that a power law of exponent 1 gives c (m/σ) k F/H (F the bolt force: equilibrium) to
+//! 1e-9 for three load profiles and an unequal pair, that the same joint in three unit systems
+//! gives the same conductance to 1e-12, and that the Chapter V scene equals the library calls (R_o
+//! bit for bit, G to 1e-14: the rounding of the Btu factor).
+//!
+//! # Cost
+//!
+//! One pass over the interface nodes after the contact solve (microseconds; `boltzone solve
+//! --explain` prints it; `examples/18_heat_speed.rs` times it with the contact solve); the Chapter
+//! V scene is `examples/scenes/chapter5_lap.toml`.
 //!
 //! ```
 //! let text = "[hole]\nradius = 0.1\n[load]\nouter_radius = 0.13\nforce = 1000.0\n\
@@ -41,13 +45,12 @@
 //! ```
 
 use super::error::SceneError;
-use super::file::Scene;
 use super::units::UnitSystem;
 use crate::contact::two_plate::TwoPlateSolution;
 use crate::heat::correlation::{effective_modulus, ContactConductance, Correlation, Surfaces};
 use crate::heat::joint::{joint_conductance, JointParams};
 use crate::heat::units::{Conductivity, Length, Pressure};
-use crate::Material;
+use crate::material::Material;
 use serde::{Deserialize, Serialize};
 
 /// The names `correlation` accepts.
@@ -152,20 +155,19 @@ impl HeatSpec {
     }
 }
 
-/// The joint conductance of `scene` from its solved two-plate joint `sol` (SI units), in the
-/// scene's conductance unit.
+/// The joint conductance of a scene's `[heat]` table `spec` (None: an error, the table is
+/// needed) from its solved two-plate joint `sol` (SI units), in the conductance unit of `units`.
 pub fn conductance(
-    scene: &Scene,
+    spec: Option<&HeatSpec>,
+    units: UnitSystem,
     sol: &TwoPlateSolution,
     materials: [Material; 2],
 ) -> Result<f64, SceneError> {
-    let spec = scene
-        .heat
-        .as_ref()
-        .ok_or_else(|| invalid("outputs.conductance", "true: needs a [heat] table".into()))?;
-    let mut params = JointParams::new(spec.contact(scene.units, materials)?);
+    let spec =
+        spec.ok_or_else(|| invalid("outputs.conductance", "true: needs a [heat] table".into()))?;
+    let mut params = JointParams::new(spec.contact(units, materials)?);
     params.length_unit = Length::from_si(1.0);
     params.pressure_unit = Pressure::from_si(1.0);
     let g = joint_conductance(sol, &params)?;
-    Ok(g.total.si() / scene.units.conductance())
+    Ok(g.total.si() / units.conductance())
 }

@@ -5,8 +5,16 @@
 //! Sources: the report (Gould & Mikic 1970, Chapter IV: E = 28·10⁶ psi, ν = 0.3 for its 304
 //! steel specimens); otherwise the room-temperature values of the ASM Handbook, Vol. 2
 //! (nonferrous alloys) and Vol. 1 (steels), as tabulated by ASM Aerospace Specification
-//! Metals / MatWeb for the named temper. Accuracy: handbook values, typically within a few
-//! per cent of a given heat; `tests/scene/units.rs` checks 304 steel against the report.
+//! Metals / MatWeb for the named temper.
+//!
+//! # Accuracy
+//!
+//! Handbook values, typically within a few per cent of a given heat; `tests/scene/units.rs`
+//! (`library_steel_304_is_the_reports_constants`) checks 304 steel against the report.
+//!
+//! # Cost
+//!
+//! None (a table).
 //!
 //! ```
 //! let al = boltzone::scene::materials::lookup("aluminum-6061-t6").unwrap();

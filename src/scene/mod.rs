@@ -23,12 +23,16 @@
 //! curve comes from the same levels, nothing is solved twice); [`sweep`] expands `[sweep]`
 //! (or a CSV of geometries, `boltzone solve --geometries`) and solves the points in parallel.
 //!
-//! **Accuracy.** Each route's own (see its module); the wrapper adds only the unit conversion:
-//! `tests/scene/` (`solve_equals_the_library_call`) checks R_o bit for bit against the library
-//! call on every example scene, and `same_joint_in_three_unit_systems` to 1e-12 relative.
+//! # Accuracy
 //!
-//! **Cost.** The route's cost plus parsing (microseconds): `boltzone solve --explain` prints
-//! the time per step; `examples/scenes/` holds the report's cases.
+//! Each route's own (see its module); the wrapper adds only the unit conversion: `tests/scene/`
+//! (`solve_equals_the_library_call`) checks R_o bit for bit against the library call on every
+//! example scene, and `same_joint_in_three_unit_systems` to 1e-12 relative.
+//!
+//! # Cost
+//!
+//! The route's cost plus parsing (microseconds): `boltzone solve --explain` prints the time per
+//! step; `examples/scenes/` holds the report's cases.
 //!
 //! ```
 //! let scene = boltzone::scene::Scene::parse(
@@ -52,14 +56,6 @@ pub mod temperature;
 pub mod units;
 
 pub use error::SceneError;
-pub use file::{Method, Model, Scene};
+pub use file::{read, Method, Model, Scene};
 pub use run::{solve, Solution, Step};
 pub use units::UnitSystem;
-
-/// Reads and parses the scene file at `path`.
-pub fn read(path: &std::path::Path) -> Result<String, SceneError> {
-    std::fs::read_to_string(path).map_err(|source| SceneError::Read {
-        path: path.display().to_string(),
-        source,
-    })
-}

@@ -1,7 +1,14 @@
-//! Answers one scene: builds the library objects in SI units, runs the one route that serves
-//! the outputs asked, and converts the results back to the scene's units. Accuracy: the
-//! route's own; `tests/scene/examples.rs` finds R_o bit for bit equal to the library call on
-//! every example scene. Cost: the route's (`boltzone solve --explain` prints it per step).
+//! Answers one scene: builds the library objects in SI units, runs the one route that serves the
+//! outputs asked, and converts the results back to the scene's units.
+//!
+//! # Accuracy
+//!
+//! The route's own; `tests/scene/examples.rs` finds R_o bit for bit equal to the library call on
+//! every example scene.
+//!
+//! # Cost
+//!
+//! The route's (`boltzone solve --explain` prints it per step).
 //!
 //! ```
 //! let text = "model = \"single-plate\"\n[hole]\nradius = 0.1\n[load]\nouter_radius = 0.31\n\
@@ -22,7 +29,9 @@ use crate::fem::single::{self as fem_single, FaceCondition, SingleParams};
 use crate::hankel::hole::{single_plate_separation, HoleParams};
 use crate::hankel::{SeparationParams, Slab};
 use crate::io::vtu::Grid;
-use crate::{FaceLoad, Joint, Material, OuterRadius, Peak, Plate};
+use crate::joint::{Joint, OuterRadius, Plate};
+use crate::load::{FaceLoad, Peak};
+use crate::material::Material;
 use serde::Serialize;
 use std::f64::consts::PI;
 use std::time::Instant;
@@ -260,7 +269,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                     thermal::solve_with_temperature(&joint, &params, &t.joint_temperature(&joint)?)?
                 }
                 (None, Some(_)) => {
-                    let (s, f) = crate::contact::field::solve_field(&joint, &params)?;
+                    let (s, f) = crate::contact::two_plate::solve_field(&joint, &params)?;
                     let (grid, _) = field::two_plate_grid(&s, &f)?;
                     out.field = Some(field::scaled(grid, l, scene.units.stress()));
                     s
@@ -282,7 +291,12 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                 let t = Instant::now();
                 let last = scene.plates.len().saturating_sub(1);
                 let m = [material(scene, 0)?, material(scene, last)?];
-                out.joint_conductance = Some(super::heat::conductance(scene, &s, m)?);
+                out.joint_conductance = Some(super::heat::conductance(
+                    scene.heat.as_ref(),
+                    scene.units,
+                    &s,
+                    m,
+                )?);
                 out.conductance_unit = Some(scene.units.heat_symbols().1);
                 heat_step = Some(t.elapsed().as_secs_f64());
             }
@@ -405,7 +419,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
 }
 
 /// The single-plate substitute of a symmetric joint.
-fn substitute(joint: &Joint) -> Result<crate::SinglePlate, SceneError> {
+fn substitute(joint: &Joint) -> Result<crate::joint::SinglePlate, SceneError> {
     joint.single_plate_substitute().ok_or(SceneError::Invalid {
         key: "plates".into(),
         line: 1,

@@ -1,9 +1,16 @@
 //! Sweeps: `[sweep]` maps dotted keys (`"load.outer_radius"`, `"plates[1].thickness"`) to
 //! lists; every combination of the lists (their product, the first key varying slowest) is a
-//! scene of its own, checked like the file and solved in parallel (rayon). Tests:
-//! `tests/scene/errors.rs` (`sweep_prints_results_and_csv`), `tests/scene/examples.rs`
-//! (the M8 sweep, point by point against the Hankel route). Cost: the points' divided by the
-//! cores.
+//! scene of its own, checked like the file and solved in parallel (rayon).
+//!
+//! # Accuracy
+//!
+//! Each point equals the single call it stands for: `tests/scene/examples.rs`
+//! (`m8_sweep_points_equal_the_hankel_route`); the output: `tests/scene/errors.rs`
+//! (`sweep_prints_results_and_csv`).
+//!
+//! # Cost
+//!
+//! The points' costs divided by the cores (rayon).
 //!
 //! ```
 //! let text = "model = \"slab\"\n[hole]\nradius = 0.1\n[load]\nouter_radius = 0.31\n\

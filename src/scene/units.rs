@@ -4,8 +4,15 @@
 //!
 //! The factors are the exact definitions: 1 in = 0.0254 m, 1 lbf = 4.4482216152605 N (the
 //! international avoirdupois pound times standard gravity 9.80665 m/s²), 1 psi = 1 lbf/in².
-//! Accuracy: exact factors; `tests/scene/units.rs` solves one joint in all three systems and
-//! finds the same R_o to 1e-12 relative. Cost: a multiplication per number.
+//!
+//! # Accuracy
+//!
+//! Exact factors; `tests/scene/units.rs` solves one joint in all three systems and finds the same
+//! R_o to 1e-12 relative.
+//!
+//! # Cost
+//!
+//! A multiplication per number.
 //!
 //! ```
 //! use boltzone::scene::UnitSystem;

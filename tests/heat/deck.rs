@@ -1,9 +1,9 @@
-//! Appendix D card decks (src/heat/deck.rs, src/heat/fortran.rs): a deck written by hand against
-//! the same network built through the API, FORTRAN field rules, errors that name line and field,
-//! and seeded mutations that must never panic.
+//! Appendix D card decks (src/heat/deck.rs): a deck written by hand against the same network
+//! built through the API, errors that name line and field, and seeded mutations that must never
+//! panic. The FORTRAN field rules are tested in `tests/io/fields.rs`.
 
-use boltzone::heat::deck::{parse_network_decks, NetworkDeckError};
-use boltzone::heat::fortran::{integer, real};
+use boltzone::fortran::DeckError;
+use boltzone::heat::deck::parse_network_decks;
 use boltzone::heat::network::Network;
 
 /// Two decks, punched by hand: the first a chain 1-2-3-4 (conductances 2.5, 1.5, 2.5; node 1 to
@@ -77,33 +77,13 @@ fn hand_written_deck_equals_the_api_network() {
     assert!(text.starts_with("LAP JOINT CHAIN") && text.contains("RESIDUAL"));
 }
 
-#[test]
-fn fortran_fields_read_as_in_1970() {
-    assert_eq!(integer("   "), Ok(0));
-    assert_eq!(integer(" -12"), Ok(-12));
-    assert_eq!(integer("1  "), Ok(100)); // trailing blanks are zeros
-    assert!(integer("1a").unwrap_err().contains("not an integer"));
-    assert_eq!(real("               ", 8), Ok(0.0));
-    assert_eq!(real("      250000000", 8), Ok(2.5));
-    assert_eq!(real("            25.", 8), Ok(25.0));
-    assert_eq!(real("        2.5D-03", 8), Ok(0.0025));
-    assert_eq!(real("         25E+01", 8), Ok(25e-7)); // implied point, then the exponent
-    assert_eq!(real("   -.5e1", 8), Ok(-5.0));
-    assert_eq!(real("1.5            ", 8), Ok(1.5)); // trailing blanks as zero fraction digits
-    let e = real("1.5E2          ", 8).unwrap_err(); // E2000000000: out of range
-    assert!(
-        e.contains("out of range") && e.contains("right-justify"),
-        "{e}"
-    );
-    assert!(real("1.5.2", 8).is_err());
-    assert!(real("+", 8).is_err());
-    assert!(real("E5", 8).is_err());
-}
-
 fn expect_error(deck: &str, line: usize, field: &str) {
     match parse_network_decks(deck) {
-        Err(NetworkDeckError::Field {
-            line: l, field: f, ..
+        Err(DeckError {
+            line: l,
+            columns: Some(_),
+            field: f,
+            ..
         }) => {
             assert_eq!(l, line, "{deck}");
             assert!(f.contains(field), "'{f}' should name '{field}'");
@@ -150,18 +130,19 @@ fn errors_name_line_columns_and_field() {
     );
     let e = parse_network_decks("1T\n      2\n1\n0  1  2            1.0\n").unwrap_err();
     assert_eq!(
-        e,
-        NetworkDeckError::End {
-            line: 5,
-            deck: 1,
-            field: "the conductance cards (I1,3(2I3,E15.8))"
-        }
+        (e.line, e.columns, e.field.as_str()),
+        (5, None, "the conductance cards (I1,3(2I3,E15.8)) of deck 1")
     );
+    assert!(e.reason.contains("ends before"), "{e}");
     // Trailing blank cards make no deck; an unfinished identification does.
     assert_eq!(parse_network_decks("\n\n  \n").unwrap().len(), 0);
     assert!(matches!(
         parse_network_decks("0TITLE\n"),
-        Err(NetworkDeckError::End { line: 2, .. })
+        Err(DeckError {
+            line: 2,
+            columns: None,
+            ..
+        })
     ));
 }
 
@@ -229,10 +210,7 @@ fn fuzz(cases: usize, seed: u64) -> (usize, usize) {
                 errors += 1;
                 let msg = e.to_string();
                 assert!(msg.starts_with("line "), "case {case}: {msg}");
-                match &e {
-                    NetworkDeckError::Field { field, .. } => assert!(!field.is_empty(), "{msg}"),
-                    NetworkDeckError::End { field, .. } => assert!(!field.is_empty(), "{msg}"),
-                }
+                assert!(!e.field.is_empty(), "{msg}");
             }
         }
     }

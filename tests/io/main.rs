@@ -9,6 +9,7 @@ mod common;
 mod csv_out;
 mod curve_hankel;
 mod exact;
+mod fields;
 mod figure_joint;
 mod figure_map;
 mod figure_png;

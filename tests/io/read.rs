@@ -3,58 +3,7 @@
 //! and field. References: the edit-descriptor rules of FORTRAN IV and the report's Appendix B
 //! input instructions; generated coordinates are checked against hand-computed values.
 
-use boltzone::io::deck::field::Card;
 use boltzone::io::deck::{read_decks, read_decks_as, run, Appendix, Code};
-
-#[test]
-fn fortran_fields() {
-    let text = format!(
-        "{:>5}{:>5}{:>10}{:>10}{:>10}{:>10}{:>10}",
-        "12", "-3", "1.5E+03", "1.5D-3", "1.5+3", "1.5-3", "-.001"
-    );
-    let c = Card::new(7, &text);
-    assert_eq!(c.int(1, 5, "N").unwrap(), 12);
-    assert_eq!(c.int(6, 10, "N").unwrap(), -3);
-    assert_eq!(c.real(11, 20, 0, "x").unwrap(), 1500.0);
-    assert_eq!(c.real(21, 30, 0, "x").unwrap(), 1.5e-3);
-    assert_eq!(c.real(31, 40, 0, "x").unwrap(), 1500.0); // exponent without a letter
-    assert_eq!(c.real(41, 50, 0, "x").unwrap(), 1.5e-3);
-    assert_eq!(c.real(51, 60, 0, "x").unwrap(), -0.001);
-    assert_eq!(c.real(70, 79, 0, "x").unwrap(), 0.0); // beyond the line: blank, zero
-                                                      // implied decimal point (Fw.d without a point), and a written point overrides d
-    let c = Card::new(1, "     12345   1.2345");
-    assert_eq!(c.real(1, 10, 3, "x").unwrap(), 12.345);
-    assert_eq!(c.real(11, 19, 3, "x").unwrap(), 1.2345);
-    // left-justified values read as written (leading and trailing blanks ignored)
-    let c = Card::new(1, "1    2.5       ");
-    assert_eq!(c.int(1, 5, "N").unwrap(), 1);
-    assert_eq!(c.real(6, 15, 0, "r").unwrap(), 2.5);
-    for (text, why) in [
-        ("  1 2", "blank inside"),
-        (" 1.0 ", "not an integer"),
-        ("  x  ", "not an integer"),
-        ("   - ", "not an integer"),
-        ("\t  12", "tab"),
-    ] {
-        let e = Card::new(4, text).int(1, 5, "element node K").unwrap_err();
-        let msg = e.to_string();
-        assert!(
-            msg.starts_with("line 4, columns 1-5 (element node K"),
-            "{msg}"
-        );
-        assert!(msg.contains(why), "{text:?}: {msg}");
-    }
-    for bad in ["1.5E", "1.2.3", "abc", "1E999", "E5", ".", "1.5E+3x"] {
-        let e = Card::new(2, &format!("{bad:>10}"))
-            .real(1, 10, 0, "r")
-            .unwrap_err();
-        assert_eq!(
-            (e.line, e.columns, e.field.as_str()),
-            (2, Some((1, 10)), "r"),
-            "{bad}"
-        );
-    }
-}
 
 const B: &str = "\
 GENERATION

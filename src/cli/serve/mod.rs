@@ -10,8 +10,12 @@
 //! ([`CACHE_ENTRIES`], first in first out): a slider moved back and forth asks again.
 //!
 //! Checked by `tests/figures/server.rs` (the contract, bad fields, survival) and
-//! `tests/figures/browser.rs` (the page in chromium). Cost: `tests/figures/load.rs` (ignored;
-//! 2,000 requests over 20 s from 8 clients: latency percentiles, memory before and after).
+//! `tests/figures/browser.rs` (the page in chromium).
+//!
+//! # Cost
+//!
+//! `tests/figures/load.rs` (ignored; 2,000 requests over 20 s from 8 clients: latency percentiles,
+//! memory before and after).
 
 pub mod api;
 

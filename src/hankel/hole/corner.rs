@@ -26,11 +26,16 @@
 //! −q(r)); displacements carry 1/(2G). Values are complex: the real and imaginary parts are the
 //! responses to Re q and Im q (Re s, Im s).
 //!
-//! **Accuracy.** `tests/hankel/hole_corner.rs`: the Williams exponents and Λ_ν against mpmath,
-//! the transforms against brute-force quadrature, the faces carry exactly the loads (Hankel
-//! inversion), the face value at the corner against Weber–Schafheitlin, equilibrium and Hooke's
-//! law by differences, the corner exponent of the traction on the hole, independence of where
-//! the tail starts. **Cost.** 25–35 % of a hole run (`cargo bench --bench hole`).
+//! # Accuracy
+//!
+//! `tests/hankel/hole_corner.rs`: the Williams exponents and Λ_ν against mpmath, the transforms
+//! against brute-force quadrature, the faces carry exactly the loads (Hankel inversion), the face
+//! value at the corner against Weber–Schafheitlin, equilibrium and Hooke's law by differences, the
+//! corner exponent of the traction on the hole, independence of where the tail starts.
+//!
+//! # Cost
+//!
+//! 25–35 % of a hole run (`cargo bench --bench hole`).
 //!
 //! ```
 //! use boltzone::hankel::hole::corner::{corner_exponents, FieldComponent, CornerLoads};

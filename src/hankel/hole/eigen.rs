@@ -33,9 +33,15 @@
 //! Stresses are dimensionless multiples of the mode's (free) amplitude, displacements carry
 //! 1/(2G); compression negative.
 //!
-//! **Accuracy.** `tests/hankel/hole_eigen.rs`: the roots solve the symmetric Fadle equation,
-//! free faces, equilibrium and Hooke's law by differences, each mode self-equilibrated in z,
-//! the midplane bound. **Cost.** One complex K₀, K₁ pair per mode and point.
+//! # Accuracy
+//!
+//! `tests/hankel/hole_eigen.rs`: the roots solve the symmetric Fadle equation, free faces,
+//! equilibrium and Hooke's law by differences, each mode self-equilibrated in z, the midplane
+//! bound.
+//!
+//! # Cost
+//!
+//! One complex K₀, K₁ pair per mode and point.
 //!
 //! ```
 //! use boltzone::hankel::hole::eigen::{symmetric_roots, Mode};

@@ -18,18 +18,23 @@
 //! triangle's singular values give the condition number of the scaled matrix (reported; with
 //! the enrichment up to ~1e9 at N = 32: the singular fields and the modes overlap away from the
 //! corner; the residual is measured, not inferred); past 1e12 by the SVD instead, singular
-//! values below 1e-14 of the largest dropped (QR took 2.6 ms against the SVD's 7.4 ms at
+//! values below 1e-14 of the largest dropped (QR: 2.6 ms, the SVD: 7.4 ms at
 //! 258 × 129).
 //!
 //! **Residual.** The residual traction σ_r, τ_rz of slab + correction (extra columns included)
 //! on the union of collocation and check heights, max and RMS (trapezoid in θ, the Chebyshev
 //! measure), divided by P.
 //!
-//! **Accuracy.** The residual falls at the corner exponent's rate with modes alone and much
-//! faster with the enrichment; the fitted correction is homogeneous; the hole is free and the
-//! faces loaded between the fitted heights (`tests/hankel/hole_correction.rs`). **Cost.** A
-//! Householder QR of (2N + 4·corner terms) columns per N (`cargo bench --bench hole`, fit at
-//! N = 16).
+//! # Accuracy
+//!
+//! The residual falls at the corner exponent's rate with modes alone and much faster with the
+//! enrichment; the fitted correction is homogeneous; the hole is free and the faces loaded between
+//! the fitted heights (`tests/hankel/hole_correction.rs`).
+//!
+//! # Cost
+//!
+//! A Householder QR of (2N + 4·corner terms) columns per N (`cargo bench --bench hole`, fit at N =
+//! 16).
 //!
 //! ```
 //! use boltzone::hankel::hole::fit::heights;

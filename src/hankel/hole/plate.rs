@@ -10,9 +10,14 @@
 //! solution there (faces free for r > A). This is the "face-pressure extension" half of the
 //! correction; the other half is the fitted modes and corner fields of [`super::fit`].
 //!
-//! **Accuracy.** The extended load continues the load into the hole; the midplane carries the
-//! applied force; a rim is freed too and a far rim changes nothing
-//! (`tests/hankel/hole_correction.rs`). **Cost.** `cargo bench --bench hole`.
+//! # Accuracy
+//!
+//! The extended load continues the load into the hole; the midplane carries the applied force; a
+//! rim is freed too and a far rim changes nothing (`tests/hankel/hole_correction.rs`).
+//!
+//! # Cost
+//!
+//! `cargo bench --bench hole`.
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};

@@ -33,10 +33,15 @@
 //!
 //! Units: the load's pressure units; compression negative.
 //!
-//! **Accuracy.** The profile matches direct integrals off its grid; its coefficients fall at
-//! the predicted rate of the nearest load edge; R_o through the profile equals the direct
-//! route (`tests/hankel/hole_profile.rs`). **Cost.** ~30 % of a hole run, 1.1–3.0 ms on Table 1
-//! (`cargo bench --bench hole`, the profile alone).
+//! # Accuracy
+//!
+//! The profile matches direct integrals off its grid; its coefficients fall at the predicted rate
+//! of the nearest load edge; R_o through the profile equals the direct route
+//! (`tests/hankel/hole_profile.rs`).
+//!
+//! # Cost
+//!
+//! ~30 % of a hole run, 1.1–3.0 ms on Table 1 (`cargo bench --bench hole`, the profile alone).
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{QuadParams, Slab}};

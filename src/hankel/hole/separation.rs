@@ -19,9 +19,14 @@
 //! N doubles until R_o's whole error estimate is below `r_o_tolerance`·R_o (see [`super`] for
 //! the hole's share of it). The scan is [`crate::numerics::root::first_upward_crossing`].
 //!
-//! **Accuracy.** The estimate bounds the actual error beyond Table 1
-//! (`tests/hankel/hole_correction.rs`, `r_o_estimate_bounds_the_actual_error_beyond_table_1`)
-//! and on Table 1 (example 14). **Cost.** ~15 % of a hole run (`cargo bench --bench hole`).
+//! # Accuracy
+//!
+//! The estimate bounds the actual error beyond Table 1 (`tests/hankel/hole_correction.rs`,
+//! `r_o_estimate_bounds_the_actual_error_beyond_table_1`) and on Table 1 (example 14).
+//!
+//! # Cost
+//!
+//! ~15 % of a hole run (`cargo bench --bench hole`).
 
 use super::corner::CornerMidplaneRule;
 use super::plate::dot;
@@ -52,7 +57,7 @@ pub fn single_plate_separation(
     // A rim farther than B + 30 D is an end effect decaying like e^(−2.1 (C − r)/D) at the
     // midplane, below f64 resolution of R_o (see `fem::single`): the plate is infinite to
     // every digit, and its rim correction (whose cost grows with C/D) is skipped.
-    let far = crate::fem::single::FAR_RIM * plate.half_thickness() + plate.load().outer();
+    let far = crate::joint::FAR_RIM * plate.half_thickness() + plate.load().outer();
     let infinite;
     let plate = match plate.outer_radius() {
         OuterRadius::Finite(c) if c > far => {

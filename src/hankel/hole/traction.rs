@@ -16,23 +16,24 @@
 //! contributes an exact zero from there on, so its partial sums freeze and Wynn's ε on them
 //! returns at once. A batch runs as long as its nearest-to-face height needs, and until the
 //! others freeze every panel pays Wynn's ε (window 13, twice with the whole-period check) for
-//! each of them — with the Bessel calls, the two dominant costs (a profile of the quadrature
-//! spent ~45 % in Wynn's ε, ~25 % in Bessel functions, before the ε-table was updated
-//! incrementally, [`crate::numerics::quadrature::WynnWindow`], which cut the profile by ~25 %):
-//! so a batch only takes heights within a factor 4 of distance to the face (see
-//! [`hole_tractions`]); that cut the profile's CPU time by 8–17 % against fixed batches of 8. The tolerance applies to the largest value in the
-//! batch.
+//! each of them — with the Bessel calls, the two dominant costs (the ε-table is updated
+//! incrementally, [`crate::numerics::quadrature::WynnWindow`]): so a batch only takes heights
+//! within a factor 4 of distance to the face (see [`hole_tractions`]). The tolerance applies to
+//! the largest value in the batch.
 //! The face height z = D, where the kernels do not decay, is left to `Slab::stress`, which
 //! integrates the half-space limit analytically there.
 //!
-//! Cost (A = 0.1, P = 1, absolute tolerance 1e-8): a height at distance ζ below the face needs
-//! of order 10³–10⁴ ξ-nodes, growing roughly like ζ^(−1/2) (the integrand's tail decays only like
-//! e^(−ξζ) and beats at the frequency B − A): which is why [`super::profile`] samples only a few
-//! Chebyshev heights and interpolates.
+//! # Accuracy
 //!
-//! **Accuracy.** The batched tractions match the slab solver's per-point integrals
+//! The batched tractions match the slab solver's per-point integrals
 //! (`tests/hankel/hole_correction.rs`, `batched_hole_tractions_match_the_slab_solver`).
-//! **Cost.** See [`super::profile`].
+//!
+//! # Cost
+//!
+//! At A = 0.1, P = 1 and an absolute tolerance 1e-8, a height at distance ζ below the face needs
+//! of order 10³–10⁴ ξ-nodes, growing roughly like ζ^(−1/2) (the integrand's tail decays only
+//! like e^(−ξζ) and beats at the frequency B − A): which is why [`super::profile`] samples only
+//! a few Chebyshev heights and interpolates. Timed in `cargo bench --bench hole`.
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, hankel::{QuadParams, Slab}};

@@ -39,15 +39,19 @@
 //! pressure ≥ 0 inside R_o and gap ≥ 0 beyond, sampled (else [`RecedingError::NotUnilateral`]:
 //! the contact zone is then not a disk, as under a wide ring on a thin plate).
 //!
-//! **Accuracy** (`tests/hankel/receding_contact.rs`, `tests/hankel/receding_kernels.rs`,
-//! `tests/contact/receding_vs_fe.rs`): the kernels against a general Love solution and the
-//! Kirchhoff plate; the bilateral limit (contact forced on r ≤ B + 12D) reproduces the midplane
-//! σ_z of the slab of half-thickness D ([`crate::hankel::midplane`]) to 1e-12·p; 2π∫q r dr = F
-//! to 1e-15; q ~ (R_o − r)^(1/2) and g ~ (r − R_o)^(3/2); R_o independent of the load's scale
-//! and of ν; and the FE two-plate solver, which converges to the same R_o as its outer radius C
-//! grows (difference ∝ C⁻², extrapolated agreement ~1e-5·R_o).
+//! # Accuracy
 //!
-//! **Cost.** About 20 Nyström solves per R_o, ~20 ms at B = D (example 06).
+//! (`tests/hankel/receding_contact.rs`, `tests/hankel/receding_kernels.rs`,
+//! `tests/contact/receding_vs_fe.rs`): the kernels against a general Love solution and the
+//! Kirchhoff plate; the bilateral limit (contact forced on r ≤ B + 12D) reproduces the midplane σ_z
+//! of the slab of half-thickness D ([`crate::hankel::midplane`]) to 1e-12·p; 2π∫q r dr = F to
+//! 1e-15; q ~ (R_o − r)^(1/2) and g ~ (r − R_o)^(3/2); R_o independent of the load's scale and of
+//! ν; and the FE two-plate solver, which converges to the same R_o as its outer radius C grows
+//! (difference ∝ C⁻², extrapolated agreement ~1e-5·R_o).
+//!
+//! # Cost
+//!
+//! About 20 Nyström solves per R_o, ~20 ms at B = D (example 06).
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material};

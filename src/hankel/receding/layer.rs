@@ -34,9 +34,14 @@
 //! its power series below (where the difference would cancel). Λ → 1 + 4(1+x)e and
 //! M_p → 2(1 + x)e^(−x) as x → ∞; no exponential grows.
 //!
-//! **Accuracy.** `tests/hankel/receding_kernels.rs`: the general Love solution, the bilateral
-//! limit (the slab's midplane kernel), the Kirchhoff plate, the thick-layer asymptote.
-//! **Cost.** A few exponentials per ξ.
+//! # Accuracy
+//!
+//! `tests/hankel/receding_kernels.rs`: the general Love solution, the bilateral limit (the slab's
+//! midplane kernel), the Kirchhoff plate, the thick-layer asymptote.
+//!
+//! # Cost
+//!
+//! A few exponentials per ξ.
 //!
 //! ```
 //! use boltzone::hankel::receding::layer::{bending, bottom_from_top, symmetric_remainder};

@@ -11,6 +11,17 @@
 //! - [`contact`]: the solver ([`Layer::receding_contact`]) and its results (derivation,
 //!   accuracy and cost there).
 //!
+//! # Accuracy
+//!
+//! `tests/hankel/receding_contact.rs` (force balance, complementarity, geometric convergence in the
+//! basis size, the bilateral limit against the slab) and `tests/hankel/receding_kernels.rs`
+//! (kernels against the general Love solution and its limits); against the finite elements in
+//! `tests/contact/receding_vs_fe.rs`.
+//!
+//! # Cost
+//!
+//! Example 06 times the contact radius against its error.
+//!
 //! ```
 //! use boltzone::{FaceLoad, Material};
 //! use boltzone::hankel::receding::{Layer, RecedingParams};

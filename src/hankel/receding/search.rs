@@ -10,6 +10,16 @@
 //!   passes its cap;
 //! - [`unilateral`]: the contact pressure inside R_o and the gap beyond, sampled and checked
 //!   for sign.
+//!
+//! # Accuracy
+//!
+//! The contact radius is bracketed and refined until the edge condition holds:
+//! `tests/hankel/receding_contact.rs` (`contact_radius_does_not_depend_on_load_scale_or_nu`,
+//! `contact_radius_shortcut_matches_the_layer`).
+//!
+//! # Cost
+//!
+//! A few Nyström solves per bracket step; example 06.
 
 use super::system::XiRule;
 use crate::numerics::root::{brent, first_upward_root, scan_steps};

@@ -12,6 +12,16 @@
 //! cosine and than 1/D ([`XiRule`]); the s-integral by an n-point Gauss–Legendre rule on
 //! [0, c], which converges geometrically because K and f are analytic in a strip of half-width
 //! ≈ D about the real axis.
+//!
+//! # Accuracy
+//!
+//! Geometric convergence in the basis size and complementarity at the edge:
+//! `tests/hankel/receding_contact.rs` (`geometric_convergence_in_the_basis_size`,
+//! `complementarity_and_edge_exponents`, `the_displacement_integral_is_flat_on_the_contact_zone`).
+//!
+//! # Cost
+//!
+//! One dense solve of the Nyström system per radius; example 06.
 
 use super::layer::{bottom_from_top, symmetric_remainder};
 use crate::hankel::transform::LoadTransform;

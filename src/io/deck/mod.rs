@@ -21,8 +21,8 @@
 //! material; pressure cards (2I5,F10.0) I, J, p with the element on the left from I to J.
 //! CODE: 0 free, 1 u_r given (XR), 2 u_z given (XZ), 3 both; a negative angle in [−180, −0.001]
 //! degrees (a real in columns 6–10) is a skew roller, XR the load along s = (cos α, sin α) and XZ
-//! the displacement along n, and displacements are reported in (s, n) there. Field reading in
-//! [`field`]; the rules enforced in `check` (nodes and elements in sequence from 1, the last
+//! the displacement along n, and displacements are reported in (s, n) there. Fields are read by
+//! [`crate::fortran::Card`] under its blank policy; the rules enforced in `check` (nodes and elements in sequence from 1, the last
 //! nodal and element cards present, nodes counter-clockwise with every triangle of positive
 //! area, pressure cards on an element edge, every node in an element or fixed).
 //!
@@ -42,23 +42,28 @@
 //! integrated with boltzone's one-point (centroid) rule, exact for the patch test, where the
 //! listing used a 7-point rule; a skew node's pressure forces are rotated into its own frame (the
 //! listing used node I's angle for node J); principal stresses use τ_rz (see
-//! [`run::principal`]); blanks inside a number are refused ([`field`]).
+//! [`run::principal`]); a blank that FORTRAN 66 read as a zero and that changes the value
+//! (`"1    "` in I5, read as 10000 in 1970) is refused ([`crate::fortran`]).
 //!
 //! **Method.** The deck's topology becomes a [`crate::fem::Mesh::from_elements`] mesh,
 //! assembled by [`crate::fem::assemble()`](fn@crate::fem::assemble) and solved by the sparse
 //! Cholesky of [`crate::fem::Factorization`].
 //!
-//! **Accuracy** (`tests/deck_exact.rs`): a distorted patch through a deck reproduces uniform
-//! stress to rounding; the Lamé cylinder's nodal displacement error falls at the observed rate 2
-//! under refinement; a deck of the Table 1 single plate matches the library's solve on the same
-//! mesh to 1e-10; the thermal decks reproduce the free and held bodies' exact solutions.
-//! `tests/deck_read.rs` and `tests/deck_mutants.rs` check the reader and that ≥ 10⁴ mutated decks
-//! never panic and always name line and field.
+//! # Accuracy
 //!
-//! **Cost**: one sparse factorization per deck. The Table 1 plate as `boltzone deck --emit`
-//! writes it (300 nodes, 540 equations; `tests/deck_exact.rs`, `emitted_table1_deck_is_stable`,
-//! prints the time) solves in about 6 ms; reading is linear in the cards (100 000 mutated decks
-//! read and, where valid, run in 4.3 s, `tests/deck_mutants.rs`).
+//! (`tests/io/exact.rs`): a distorted patch through a deck reproduces uniform stress to rounding;
+//! the Lamé cylinder's nodal displacement error falls at the observed rate 2 under refinement; a
+//! deck of the Table 1 single plate matches the library's solve on the same mesh to 1e-10; the
+//! thermal decks reproduce the free and held bodies' exact solutions. `tests/io/read.rs` and
+//! `tests/io/mutants.rs` check the reader and that ≥ 10⁴ mutated decks never panic and always name
+//! line and field.
+//!
+//! # Cost
+//!
+//! One sparse factorization per deck. The Table 1 plate as `boltzone deck --emit` writes it (300
+//! nodes, 540 equations; `tests/io/exact.rs`, `emitted_table1_deck_is_stable`, prints the time)
+//! solves in about 6 ms; reading is linear in the cards (100 000 mutated decks read and, where
+//! valid, run in 4.3 s, `tests/io/mutants.rs`).
 //!
 //! ```
 //! use boltzone::io::deck::{read_decks, run};
@@ -67,7 +72,7 @@
 //! ring
 //!     4    1    1    0    1
 //!     1        0.        0.
-//!    30.0e6       0.3
+//!     30.0e6       0.3
 //!     1    2       1.0       0.0
 //!     2    2       2.0       0.0
 //!     3    0       2.0       1.0
@@ -85,15 +90,13 @@
 //! ```
 
 mod check;
-mod error;
-pub mod field;
 pub mod model;
 pub mod print;
 pub mod read;
 pub mod run;
 pub mod write;
 
-pub use error::DeckError;
+pub use crate::fortran::DeckError;
 pub use model::{Appendix, Code, Deck, DeckElement, DeckMaterial, DeckNode, PressureCard};
 pub use print::{json_deck, report};
 pub use read::{read_decks, read_decks_as};

@@ -1,5 +1,13 @@
 //! The error of a bad deck: the line, the columns when a field is at fault, the field and the
 //! value, and what is wrong.
+//!
+//! # Accuracy
+//!
+//! Not numerical: the message format is checked by `tests/io/fields.rs` and `tests/io/mutants.rs`.
+//!
+//! # Cost
+//!
+//! None.
 
 use std::fmt;
 

@@ -1,0 +1,246 @@
+//! One comparison ([`compare`]) and many in parallel ([`compare_all`]): the single-plate R_o
+//! (finite elements, optionally Hankel with the hole correction), the two-plate R_o, the
+//! report's discrepancies in R_o and in contact area, and the rules of thumb, each with its
+//! propagated error (the quantities are defined in the [folder's docs](super)).
+//!
+//! # Accuracy
+//!
+//! Every R_o to the tolerance asked by its own estimate (the solvers' tests, examples 13 and
+//! 14); the tables end to end in `tests/compare/tables.rs`.
+//!
+//! # Cost
+//!
+//! `cargo bench --bench contact` (all of Table 1) and example 13 (per map point).
+//!
+//! ```
+//! use boltzone::compare::{percent_difference, show, Value};
+//! let d = percent_difference(Value::exact(1.1), Value::exact(1.0));
+//! assert!((d.value - 10.0).abs() < 1e-12 && d.error == 0.0);
+//! assert_eq!(show(Value::exact(1.5), 2), "1.50 ± 0.0e0");
+//! ```
+
+use super::{single, CompareError, Geometry};
+use crate::contact::two_plate::{solve as solve_two, TwoPlateParams};
+use crate::error::positive;
+use crate::joint::OuterRadius;
+use crate::rules;
+use crate::value::Value;
+use rayon::prelude::*;
+use serde::Serialize;
+use std::time::Instant;
+
+/// Knobs of [`compare`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CompareParams {
+    /// Wanted relative error of each model's R_o (default 5e-4 = 0.05 %).
+    pub tolerance: f64,
+    /// Also compute the single-plate R_o by Hankel transforms with the hole correction for an
+    /// infinite plate, as a second method (default false).
+    pub hankel_check: bool,
+    /// Half-angle of the extra cone rule, degrees (default 30).
+    pub cone_degrees: f64,
+}
+
+impl Default for CompareParams {
+    fn default() -> Self {
+        Self {
+            tolerance: 5e-4,
+            hankel_check: false,
+            cone_degrees: 30.0,
+        }
+    }
+}
+
+/// A rule of thumb's contact radius and its error against the two-plate R_o.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RuleResult {
+    /// "45° (Rötscher)", "VDI 2230" or "30° cone".
+    pub name: &'static str,
+    /// Cone half-angle, degrees.
+    pub half_angle_degrees: f64,
+    /// The rule's contact radius.
+    pub radius: f64,
+    /// Whether the cone reached the rim C (radius = C).
+    pub truncated: bool,
+    /// (R_rule − R_two)/R_two·100, with the two-plate error propagated.
+    pub error_percent: Value,
+}
+
+/// Timings and sizes of one comparison.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CompareInfo {
+    /// Equations of the finest single-plate FE mesh.
+    pub single_dofs: usize,
+    /// FE refinement levels of the single plate.
+    pub single_levels: usize,
+    /// Mesh levels of the two-plate model.
+    pub two_levels: usize,
+    /// Which two-plate model ran.
+    pub two_model: &'static str,
+    /// Seconds: single-plate FE, Hankel check (0 if not run), two-plate, total.
+    pub seconds_single: f64,
+    /// Seconds of the Hankel check.
+    pub seconds_hankel: f64,
+    /// Seconds of the two-plate model.
+    pub seconds_two: f64,
+    /// Total seconds.
+    pub seconds: f64,
+}
+
+/// One geometry's comparison (module docs).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Comparison {
+    /// The geometry.
+    pub geometry: Geometry,
+    /// Single-plate R_o (FE, finite C).
+    pub single: Value,
+    /// Single-plate R_o by Hankel transforms (infinite plate), if asked for.
+    pub single_hankel: Option<Value>,
+    /// Two-plate R_o.
+    pub two: Value,
+    /// (R_single − R_two)/R_two·100.
+    pub discrepancy_percent: Value,
+    /// Contact-area discrepancy (X_single − X_two)/X_two·100, X = R_o² − A².
+    pub area_discrepancy_percent: Value,
+    /// 45°, VDI 2230 and the extra cone, in that order.
+    pub rules: [RuleResult; 3],
+    /// Timings and sizes.
+    pub info: CompareInfo,
+}
+
+impl Comparison {
+    /// R_o/A with its error for a model's value.
+    pub fn over_a(&self, v: Value) -> Value {
+        v.scaled(1.0 / self.geometry.a)
+    }
+
+    /// Whether every R_o of the comparison met its tolerance.
+    pub fn converged(&self) -> bool {
+        self.single.converged
+            && self.two.converged
+            && self.single_hankel.is_none_or(|h| h.converged)
+    }
+}
+
+/// `value ± error` for a table: the value with `decimals` decimals, the error in scientific
+/// notation (so that a small error never prints as 0.0000), and ` NOT converged` where the
+/// error missed the tolerance.
+pub fn show(v: Value, decimals: usize) -> String {
+    format!(
+        "{:.*} ± {:.1e}{}",
+        decimals,
+        v.value,
+        v.error,
+        if v.converged { "" } else { " NOT converged" }
+    )
+}
+
+/// (x − y)/y·100 with first-order error propagation ([`Value::percent_difference`]).
+pub fn percent_difference(x: Value, y: Value) -> Value {
+    x.percent_difference(y)
+}
+
+/// X = R² − A² (contact area / π) with its error 2R·e.
+fn area(r: Value, a: f64) -> Value {
+    Value {
+        value: r.value * r.value - a * a,
+        error: 2.0 * r.value * r.error,
+        converged: r.converged,
+    }
+}
+
+/// Compares the models and rules on one geometry (module docs).
+pub fn compare(g: &Geometry, params: &CompareParams) -> Result<Comparison, CompareError> {
+    let start = Instant::now();
+    let g = Geometry::new(g.a, g.b, g.d, g.c, g.nu)?;
+    positive("comparison tolerance", params.tolerance)?;
+    let label = || g.label();
+    let plate = g.single_plate(OuterRadius::Finite(g.c))?;
+    let (single, fem) =
+        single::single_fem(&plate, params.tolerance).map_err(|source| CompareError::Single {
+            geometry: label(),
+            source,
+        })?;
+    let seconds_single = start.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let single_hankel = if params.hankel_check {
+        let infinite = g.single_plate(OuterRadius::Infinite)?;
+        Some(
+            single::single_hankel(&infinite, params.tolerance).map_err(|source| {
+                CompareError::Hankel {
+                    geometry: label(),
+                    source,
+                }
+            })?,
+        )
+    } else {
+        None
+    };
+    let seconds_hankel = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let two_params = TwoPlateParams {
+        tolerance: params.tolerance,
+        ..Default::default()
+    };
+    let sol = solve_two(&g.joint()?, &two_params).map_err(|source| CompareError::Two {
+        geometry: label(),
+        source,
+    })?;
+    let two = Value {
+        value: sol.r_o,
+        error: sol.r_o_error,
+        converged: sol.converged,
+    };
+    let seconds_two = t.elapsed().as_secs_f64();
+    let rule = |name, cone: rules::ConeRadius| RuleResult {
+        name,
+        half_angle_degrees: cone.half_angle.to_degrees(),
+        radius: cone.radius,
+        truncated: cone.truncated,
+        error_percent: percent_difference(Value::exact(cone.radius), two),
+    };
+    let rules = [
+        rule("45° (Rötscher)", rules::roetscher(g.b, g.d, g.c)?),
+        rule("VDI 2230", rules::vdi2230(g.b, g.d, g.d, g.c)?),
+        rule(
+            "cone",
+            rules::cone_radius(g.b, g.d, params.cone_degrees.to_radians(), g.c)?,
+        ),
+    ];
+    Ok(Comparison {
+        geometry: g,
+        single,
+        single_hankel,
+        two,
+        discrepancy_percent: percent_difference(single, two),
+        area_discrepancy_percent: percent_difference(area(single, g.a), area(two, g.a)),
+        rules,
+        info: CompareInfo {
+            single_dofs: fem.dofs,
+            single_levels: fem.levels,
+            two_levels: sol.info.levels.len(),
+            two_model: sol.info.model,
+            seconds_single,
+            seconds_hankel,
+            seconds_two,
+            seconds: start.elapsed().as_secs_f64(),
+        },
+    })
+}
+
+/// [`compare`] on many geometries in parallel (rayon; each FE factorization runs sequentially).
+/// `tick` is called once per finished geometry (for a progress bar). Results keep the input order.
+pub fn compare_all(
+    geometries: &[Geometry],
+    params: &CompareParams,
+    tick: &(dyn Fn() + Sync),
+) -> Vec<Result<Comparison, CompareError>> {
+    geometries
+        .par_iter()
+        .map(|g| {
+            let r = compare(g, params);
+            tick();
+            r
+        })
+        .collect()
+}

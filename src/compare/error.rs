@@ -1,0 +1,65 @@
+//! The error of a comparison ([`CompareError`]): an input error, or the failure of one of the
+//! three models, naming the geometry it failed on.
+//!
+//! # Accuracy
+//!
+//! Not numerical; `tests/cli/main.rs` checks that input errors exit 2 naming the field.
+//!
+//! # Cost
+//!
+//! None.
+//!
+//! ```
+//! use boltzone::compare::{CompareError, Geometry};
+//! let e: CompareError = Geometry::new(0.1, 0.05, 0.1, 1.0, 0.3).unwrap_err().into();
+//! assert!(e.is_input());
+//! ```
+
+use crate::contact::ContactError;
+use crate::error::InputError;
+use crate::fem::FemError;
+use crate::hankel::separation::SeparationError;
+
+/// Failures of a comparison; each names the geometry it failed on.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CompareError {
+    /// Bad input (names the field and value).
+    #[error(transparent)]
+    Input(#[from] InputError),
+    /// The single-plate FE model failed.
+    #[error("single-plate FE model at {geometry}: {source}")]
+    Single {
+        /// The geometry.
+        geometry: String,
+        /// What failed.
+        source: FemError,
+    },
+    /// The single-plate Hankel model failed.
+    #[error("single-plate Hankel model at {geometry}: {source}")]
+    Hankel {
+        /// The geometry.
+        geometry: String,
+        /// What failed.
+        source: SeparationError,
+    },
+    /// The two-plate contact model failed.
+    #[error("two-plate model at {geometry}: {source}")]
+    Two {
+        /// The geometry.
+        geometry: String,
+        /// What failed.
+        source: ContactError,
+    },
+}
+
+impl CompareError {
+    /// Whether the failure is bad input (the caller's to fix) rather than a solver failure.
+    pub fn is_input(&self) -> bool {
+        match self {
+            Self::Input(_) => true,
+            Self::Single { source, .. } => source.is_input(),
+            Self::Hankel { source, .. } => source.is_input(),
+            Self::Two { source, .. } => source.is_input(),
+        }
+    }
+}
