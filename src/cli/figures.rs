@@ -120,7 +120,7 @@ fn summary(fig: &FigureData) -> serde_json::Value {
 /// A column name for the CSV header: the axis label up to its parenthesis, in ASCII.
 fn column(label: &str) -> String {
     let name = label.split(" (").next().unwrap_or(label);
-    name.replace("σ_z", "sigma_z")
+    name.replace("σz", "sigma_z")
         .replace('µ', "u")
         .replace(',', ";")
 }

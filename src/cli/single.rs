@@ -356,8 +356,8 @@ fn write_finest(
         let g = &args.geom;
         let curve = super::figure::RadiusCurve {
             title: "Single plate 2D thick: midplane normal stress (FE, finest level)".into(),
-            y_label: "σ_z [psi] (P = 1 psi)",
-            label: "σ_z(r), finest mesh",
+            y_label: "σz [psi] (P = 1 psi)",
+            label: "σz(r), finest mesh",
             r: &m.r,
             y: &m.sigma_z,
             r_o: (s.r_o, s.r_o_error),

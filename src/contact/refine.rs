@@ -34,6 +34,7 @@ use super::friction_level;
 use super::level::{solve_level_mu, LevelSetup, LevelSolution, Model};
 use super::params::{EdgeSupport, Loading, TwoPlateParams};
 use super::thermal::ScaledTemperature;
+use crate::fem::spacing::level_grading;
 use crate::fem::{Component, ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
 use crate::joint::Joint;
 
@@ -67,30 +68,6 @@ pub(crate) struct PreviousLevel {
 /// thousands) made the stiffness matrix numerically indefinite for C/D ≳ 10⁴.
 const H_MAX_OVER_D: f64 = 50.0;
 
-/// Element size, in thicknesses of the thinner plate, below which the growth ratios shrink
-/// ([`growth_ratios`]): level 4 of the default study (coarse size D/4), the finest level a
-/// Table 1 joint needs at the default tolerance, whose meshes therefore do not change.
-const GRADING_FIXED_DOWN_TO: f64 = 1.0 / 64.0;
-
-/// Radial and axial growth ratios of the element sizes away from the foci for focus size `h`
-/// in a joint whose thinner plate is `d_min` thick: 1.25 and 1.5 (axially the fields vary
-/// more slowly near R_o) down to h = D/64, then shrinking towards 1, the radial ratio's excess
-/// like √h and the axial one's like h^¼ (cheaper: 0.5–1.2 s instead of 0.6–1.9 s at 1e-5, and
-/// `table2 --tol 1e-320` 8.8 s instead of 15 s, at the same honesty), so that every part of the
-/// mesh is refined from level to level and the level-to-level estimate sees its error.
-///
-/// With fixed ratios the parts of the mesh away from the foci were the same on every level:
-/// their error (up to 2e-5 of R_o) was a floor that the level-to-level changes could not show,
-/// and at `tolerance` 1e-5 and 1e-6 the FE was high by 1.2e-5 to 2.0e-5 on four Table 1 rows,
-/// 1.3–2.5× its estimate, against the semi-analytic route with the hole
-/// ([`crate::hankel::receding::holed`]). With the ratios shrinking, the six rows checked
-/// (A/D 0.5–1, B/A 1.3–3.1) stay within 0.97 of the estimate at 1e-5 and 1e-6 (the lead's
-/// note on issue 17; `tests/hankel/two_plate_hole.rs`, `table1_against_the_fe`, ignored).
-fn growth_ratios(h: f64, d_min: f64) -> (f64, f64) {
-    let shrink = (h / (GRADING_FIXED_DOWN_TO * d_min)).min(1.0).sqrt();
-    (1.0 + 0.25 * shrink, 1.0 + 0.5 * shrink.sqrt())
-}
-
 /// The mesh of one level: radial grading at A, B and the estimate of R_o, axial grading at the
 /// interface and the outer faces; materials by plate.
 pub(crate) fn mesh(
@@ -100,7 +77,9 @@ pub(crate) fn mesh(
     h: f64,
     r_est: Option<f64>,
 ) -> Result<Model, ContactError> {
-    let (q, q_axial) = growth_ratios(h, g.d[0].min(g.d[1]));
+    // growth ratios 1.25 radially, 1.5 axially (the fields vary more slowly across the
+    // plates near R_o), shrinking on the finest levels ([`level_grading`])
+    let (q, q_axial, _) = level_grading(h, g.d[0].min(g.d[1]), 1.25, 1.5);
     let mut foci = vec![g.a, g.b];
     let c_spacing = g.inner_cut.unwrap_or(g.c);
     foci.extend(r_est.filter(|&r| r > g.a && r < c_spacing));

@@ -73,7 +73,7 @@ use super::mesh::{Mesh, PlateSpec};
 use super::ordering::nested_dissection;
 use super::recover::{line_traction, reactions};
 use super::solve::{Factorization, SolveParams};
-use super::spacing::Spacing;
+use super::spacing::{level_grading, Spacing};
 use crate::error::InputError;
 use crate::joint::{OuterRadius, SinglePlate};
 pub use crate::numerics::convergence::level_estimate;
@@ -232,11 +232,20 @@ pub fn level_spacings(
     let h = params.coarse_size * d / 2f64.powi(level as i32);
     let mut foci = vec![a, plate.load().inner(), b];
     foci.extend(r_focus.filter(|&r| r > a && r < c));
-    let radial = Spacing::graded(a, c, plate.load().knots(), &foci, h, params.growth, 4.0 * d)?;
+    // the growth ratios, and the largest axial size, shrink on the finest levels
+    // ([`level_grading`]) so that every part of the mesh is refined
+    let (growth, axial_growth, shrink) = level_grading(h, d, params.growth, params.axial_growth);
+    let radial = Spacing::graded(a, c, plate.load().knots(), &foci, h, growth, 4.0 * d)?;
     let axial = match refinement {
-        Refinement::Graded | Refinement::Auto => {
-            Spacing::graded(0.0, d, &[], &[0.0, d], h, params.axial_growth, 0.5 * d)?
-        }
+        Refinement::Graded | Refinement::Auto => Spacing::graded(
+            0.0,
+            d,
+            &[],
+            &[0.0, d],
+            h,
+            axial_growth,
+            (0.5 * d * shrink).max(h),
+        )?,
         Refinement::Uniform => {
             Spacing::uniform(0.0, d, (1.0 / params.coarse_size).ceil() as usize)?
         }

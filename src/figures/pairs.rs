@@ -225,7 +225,7 @@ fn single_compression(figure: &str, c: &Case, tolerance: f64) -> Result<FigCurve
     let m = midplane_of(&plate, &h).map_err(fem)?;
     let compression = m.sigma_z.iter().map(|s| -s).collect();
     Ok(FigCurve::with_r_o(
-        "single plate 2D thick, −σ_z",
+        "single plate 2D thick, −σz",
         CurveKind::Pressure,
         (m.r, compression),
         b,

@@ -90,10 +90,10 @@ pub fn table1_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Fig
     } else {
         (
             format!(
-                "Fig. {}: single plate analysis, midplane σ_z stress distribution (D = {d:.4} in)",
+                "Fig. {}: single plate analysis, midplane σz stress distribution (D = {d:.4} in)",
                 12 + number
             ),
-            "σ_z [psi] (P = 1 psi)",
+            "σz [psi] (P = 1 psi)",
         )
     };
     Ok(FigureData {
@@ -106,7 +106,7 @@ pub fn table1_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Fig
             if two {
                 "two plates D thick in frictionless contact, finite elements (boltzone::contact)"
             } else {
-                "one plate 2D thick, midplane σ_z by finite elements (boltzone::fem::single)"
+                "one plate 2D thick, midplane σz by finite elements (boltzone::fem::single)"
             }
         ),
         x_label: "r [in]".into(),

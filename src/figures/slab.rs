@@ -69,7 +69,7 @@ pub fn slab_figure(params: &FiguresParams) -> Result<FigureData, FigureError> {
     Ok(FigureData {
         id: "slab".into(),
         title:
-            "The no-hole slab 2D thick: midplane σ_z (Sneddon 1946, Greenwood 1964, Lardner 1965)"
+            "The no-hole slab 2D thick: midplane σz (Sneddon 1946, Greenwood 1964, Lardner 1965)"
                 .into(),
         note: "An infinite slab 2D thick (D = 1 in: radii in inches are r/D), both faces pressed by P over r ≤ B, no hole; midplane \
                σ_z/P against r/D by Hankel transforms (boltzone::hankel); points: the first \
@@ -78,7 +78,7 @@ pub fn slab_figure(params: &FiguresParams) -> Result<FigureData, FigureError> {
                zeros are not separations."
             .into(),
         x_label: "r/D".into(),
-        y_label: "σ_z/P".into(),
+        y_label: "σz/P".into(),
         curves,
         points: vec![PointSeries {
             label: "computed R_o (first upward zero)".into(),

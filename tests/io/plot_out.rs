@@ -15,7 +15,7 @@ fn plots_mark_r_o_and_the_rules() {
     let dir = temp_dir("plot");
     let (b, d) = (0.31f64, 0.1f64);
     // the two-plate interface pressure and the single plate's midplane σ_z
-    for (cmd, y_label) in [("two", "p [psi]"), ("single", "σ_z [psi]")] {
+    for (cmd, y_label) in [("two", "p [psi]"), ("single", "σz [psi]")] {
         let (svg, png) = (
             dir.join(format!("{cmd}.svg")),
             dir.join(format!("{cmd}.png")),
