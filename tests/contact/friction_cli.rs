@@ -158,3 +158,68 @@ fn scene_friction_keys_reach_the_model() {
         assert!(e.to_string().contains(key), "{joint}: {e}");
     }
 }
+
+/// Steel on aluminium with friction: the pressure ends like √(R_o − r) (a smooth receding
+/// contact edge, Johnson, *Contact Mechanics*, §5.8), with no spike, and |τ| = μp where slipping.
+/// The welded model of the same pair spiked at R_o (issue 17 item 11).
+#[test]
+fn dissimilar_plates_end_in_a_square_root_edge_without_spikes() {
+    let curve = std::env::temp_dir().join(format!("boltzone-fr-edge-{}.csv", std::process::id()));
+    let mut args = PAIR.to_vec();
+    args.extend([
+        "1100",
+        "--interface",
+        "friction",
+        "--mu",
+        "0.3",
+        "--json",
+        "--curve",
+    ]);
+    args.push(curve.to_str().unwrap());
+    let out = boltzone(&args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let r_o = v["r_o"].as_f64().unwrap();
+    let text = std::fs::read_to_string(&curve).unwrap();
+    std::fs::remove_file(&curve).ok();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    let p_max = rows.iter().map(|r| r[1]).fold(0.0, f64::max);
+    // the last nodes in contact within 0.01 in of R_o (about 2.5 D/100): p/√(R_o − r) constant
+    let edge: Vec<f64> = rows
+        .iter()
+        .filter(|r| r[0] < r_o && r_o - r[0] < 0.01 && r[1] > 0.0)
+        .map(|r| r[1] / (r_o - r[0]).sqrt())
+        .collect();
+    assert!(edge.len() >= 4, "{} nodes near the edge", edge.len());
+    let (lo, hi) = edge
+        .iter()
+        .fold((f64::MAX, 0.0f64), |(a, b), &x| (a.min(x), b.max(x)));
+    assert!(hi / lo < 1.15, "p/√(R_o − r) from {lo:.4e} to {hi:.4e}");
+    for r in &rows {
+        // no spike: nothing near the edge above the pressure at the hole side of the zone
+        if r_o - r[0] < 0.05 * r_o {
+            assert!(
+                r[1] < 0.2 * p_max,
+                "r = {}: p = {} of max {p_max}",
+                r[0],
+                r[1]
+            );
+        }
+        if r[5] == 2.0 {
+            assert!(
+                (r[3].abs() - 0.3 * r[1]).abs() <= 1e-9 * p_max,
+                "slip at r = {}",
+                r[0]
+            );
+        }
+    }
+}
