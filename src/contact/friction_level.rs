@@ -29,7 +29,7 @@
 use super::error::ContactError;
 use super::friction::{solve_friction, FrictionProblem, FrictionZones, PointState};
 use super::lcp::LcpSolution;
-use super::level::{LevelSetup, LevelSolution, Model};
+use super::level_types::{LevelSetup, LevelSolution, Model};
 use crate::fem::Loads;
 use nalgebra::{DMatrix, DVector};
 

@@ -33,25 +33,9 @@
 
 use super::error::SceneError;
 use super::file::{line_of, path_name, Model, Scene, Seg};
+pub use super::temperature_spec::TemperatureSpec;
 use crate::contact::thermal::{JointTemperature, PlateTemperature};
 use crate::joint::Joint;
-use serde::{Deserialize, Serialize};
-
-/// The `[temperature]` table (module docs).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct TemperatureSpec {
-    /// Stress-free temperature.
-    pub reference: f64,
-    /// Uniform temperature per plate (upper, lower; one entry: both).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub plates: Option<Vec<f64>>,
-    /// [contact face, loaded face] temperatures per plate, linear between (one entry: both).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub gradient: Option<Vec<[f64; 2]>>,
-    /// Expansion coefficient α per plate, per degree (one entry: both).
-    pub alpha: Vec<f64>,
-}
 
 fn fail(text: &str, key: &str, value: impl std::fmt::Display, reason: &str) -> SceneError {
     let path = [Seg::Key("temperature".into()), Seg::Key(key.into())];

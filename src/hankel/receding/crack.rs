@@ -5,27 +5,12 @@
 
 use super::contact::RecedingError;
 use super::holed::{Crack, HoledParams, Setup};
-use super::system::{cos_m1, Nystrom, XiRule};
+use super::system::{cos_m1, panels, Nystrom, XiRule};
 use crate::hankel::hole::fit::{fit, Boundary, Fit, HoleData};
 use crate::hankel::transform::LoadTransform;
 use crate::load::FaceLoad;
 use crate::numerics::quadrature::gauss_legendre;
 use std::f64::consts::{FRAC_2_PI, PI};
-
-/// Gauss–Legendre panels (20 points) on [a, b] no wider than `width`: (x, w).
-pub(super) fn panels(a: f64, b: f64, width: f64) -> Vec<(f64, f64)> {
-    let rule = gauss_legendre(20);
-    let k = ((b - a) / width).ceil().max(1.0) as usize;
-    let h = (b - a) / k as f64;
-    (0..k)
-        .flat_map(|j| {
-            let mid = a + (j as f64 + 0.5) * h;
-            rule.iter()
-                .map(move |&(x, w)| (mid + 0.5 * h * x, 0.5 * h * w))
-                .collect::<Vec<_>>()
-        })
-        .collect()
-}
 
 /// J₀(x) − 1 without cancellation at small x.
 fn j0_m1(x: f64) -> f64 {

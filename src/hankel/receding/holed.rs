@@ -69,9 +69,9 @@
 //! ```
 
 use super::contact::RecedingError;
-use super::crack::panels;
 use super::layer_field::bottom_kernels;
 use super::search::{root, Scan};
+use super::system::panels;
 use crate::error::InputError;
 use crate::hankel::hole::corner::CornerLoads;
 use crate::hankel::hole::eigen::{symmetric_roots, Mode};
