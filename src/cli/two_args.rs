@@ -1,6 +1,15 @@
 //! Arguments of `boltzone two` and their value types, apart from the command so that both of
 //! its routes ([`super::two`] for the finite elements, [`super::two_hankel`] for the
 //! semi-analytic one) read them without importing each other.
+//!
+//! # Accuracy
+//!
+//! No numerics: the values are checked by `two` before any work; `tests/contact/cli.rs`
+//! (`bad_input_is_reported_not_panicked`).
+//!
+//! # Cost
+//!
+//! Argument parsing only; the solves are timed by `cargo bench --bench contact`.
 
 use super::args::{Element, Geometry, OutputFiles};
 use clap::ValueEnum;

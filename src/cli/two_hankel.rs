@@ -1,6 +1,16 @@
 //! `boltzone two --method hankel|auto`: the two-plate model with the hole by the semi-analytic
 //! route ([`boltzone::hankel::receding::holed`]): equal plates, frictionless (exact for equal
 //! plates), infinite, pressed by a pressure profile; R_o with its error estimate.
+//!
+//! # Accuracy
+//!
+//! That of [`boltzone::hankel::receding::holed`] (`tests/hankel/two_plate_hole.rs`); the flags it
+//! refuses: `two_method_hankel_refuses_what_it_cannot_do` in the same file.
+//!
+//! # Cost
+//!
+//! The holed route's: 0.5–3 minutes per geometry, timed by the ignored study `table1_rows_record`
+//! (tests/hankel/two_plate_hole.rs).
 
 use super::exit::{sig, Status};
 use super::two_args::Args;

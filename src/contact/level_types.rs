@@ -3,6 +3,15 @@
 //! after the solve. They live apart from the solver so that the friction step
 //! ([`super::friction_level`]) reads them without importing the solver that calls it. Public
 //! paths stay `boltzone::contact::level::{Model, LevelSetup, LevelSolution}`.
+//!
+//! # Accuracy
+//!
+//! Types only: the level that fills them is measured by `tests/contact/two_plate.rs`
+//! (`equilibrium_and_complementarity_symmetric`).
+//!
+//! # Cost
+//!
+//! None of their own; the level: `cargo bench --bench contact`.
 
 use super::friction::PointState;
 use super::lcp::{LcpInfo, LcpParams};

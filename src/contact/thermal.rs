@@ -18,12 +18,18 @@
 //! by E/P: what matters is E α ΔT against the bearing pressure. Unlike the isothermal joint,
 //! R_o then depends on the load's magnitude.
 //!
-//! **Accuracy.** `tests/contact/thermal.rs`: a uniform temperature (any, the same α) leaves R_o
+//! # Accuracy
+//!
+//! `tests/contact/thermal.rs`: a uniform temperature (any, the same α) leaves R_o
 //! and p(r) of the frictionless joint unchanged to rounding (the plates expand freely), ΔT = 0
 //! reproduces the isothermal solution bit for bit; the same gradient through both plates changes
 //! nothing; a field from [`crate::heat::conduction`] gives the joint of the linear temperatures
 //! it reproduces; mirrored gradients move R_o the way the rims bend. The level study's error
-//! estimate is the isothermal one's (it does not include the temperatures' own error). **Cost.** Two plates meshed (about twice the symmetric model); example 20.
+//! estimate is the isothermal one's (it does not include the temperatures' own error).
+//!
+//! # Cost
+//!
+//! Two plates meshed (about twice the symmetric model); example 20.
 //!
 //! ```
 //! use boltzone::contact::thermal::{solve_with_temperature, JointTemperature, PlateTemperature};

@@ -17,8 +17,16 @@
 //!
 //! Exactly one of `plates` and `gradient`; one entry stands for both plates. Only the two-plate
 //! model takes temperatures. Each error names the key, the value and the line.
-//! **Accuracy** and **Cost**: those of [`crate::contact::thermal`] (`tests/contact/thermal.rs`,
-//! example 20); the scene test is `tests/scene/temperature.rs`.
+//!
+//! # Accuracy
+//!
+//! Those of [`crate::contact::thermal`] (`tests/contact/thermal.rs`); the table itself:
+//! `tests/scene/temperature.rs` (`scene_gradient_equals_the_library_call`: the scene equals the
+//! library call; `bad_temperature_tables_name_key_and_line`).
+//!
+//! # Cost
+//!
+//! Parsing and checks only; the thermal joint is timed by example 20.
 //!
 //! ```
 //! let scene = boltzone::scene::Scene::parse(

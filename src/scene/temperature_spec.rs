@@ -2,6 +2,15 @@
 //! its conversion ([`super::temperature`]) so that the scene file ([`super::file`]) holds it
 //! without importing the code that reads the file. Public path:
 //! `boltzone::scene::temperature::TemperatureSpec`.
+//!
+//! # Accuracy
+//!
+//! Types only: `tests/scene/temperature.rs` (`scene_gradient_equals_the_library_call`,
+//! `bad_temperature_tables_name_key_and_line`).
+//!
+//! # Cost
+//!
+//! Parsing only; the thermal joint is timed by example 20.
 
 use serde::{Deserialize, Serialize};
 
