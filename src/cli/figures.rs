@@ -6,6 +6,16 @@
 //! its error, the points) and a gallery `DIR/index.html`. The directory is created and checked
 //! before any work starts; every file is written whole or not at all. Exit 3 when some R_o
 //! missed `--tol`.
+//!
+//! # Accuracy
+//!
+//! That of [`boltzone::figures`]; `tests/figures/gallery.rs` checks the files, manifest and gallery
+//! (`files_and_gallery_are_complete`) and the exit codes (`bad_flags_exit_2`).
+//!
+//! # Cost
+//!
+//! The figures' solves; `boltzone figures` prints each figure's time; the whole set is timed by the
+//! ignored test `all_figures_separate_at_their_r_o` (tests/figures/gallery.rs, about 8 s).
 
 use super::exit::{usage, Status};
 use boltzone::figures::{self, draw, FigureData, FiguresParams};

@@ -1,6 +1,15 @@
 //! What `boltzone two --interface friction` adds to its outputs: the stick and slip zones as
 //! radius intervals (text and JSON), and the slip s(r) and node state as two more columns of
 //! the one curve layout ([`super::output`]).
+//!
+//! # Accuracy
+//!
+//! No numerics of its own: `tests/contact/friction_cli.rs` (`zones_curve_and_json_agree`: the zones
+//! printed, in the JSON and in the curve's state column agree).
+//!
+//! # Cost
+//!
+//! Formatting only; the frictional solve it reports is timed by `examples/21_friction.rs`.
 
 use boltzone::contact::friction::{FrictionZones, PointState};
 use boltzone::contact::two_plate::TwoPlateSolution;

@@ -2,9 +2,17 @@
 //! `two` writes FILE-gap (the gap g(r) between the plates, zero in contact and opening beyond
 //! R_o) and both commands FILE-deformed (the joint's cross-section, displacements exaggerated,
 //! over the dashed undeformed outline; a symmetric joint or the single plate's computed upper
-//! half shown with its mirror image), same extension. Drawn by [`boltzone::plot`]; checked by
+//! half shown with its mirror image), same extension. Drawn by [`boltzone::plot`].
+//!
+//! # Accuracy
+//!
 //! `tests/io/figure_joint.rs` (the gap against the CSV of the same run, the deformed drawing's
 //! R_o marker and exaggeration against the JSON and the VTU's displacements).
+//!
+//! # Cost
+//!
+//! Two drawings per run, beside the solve they draw (`cargo bench --bench contact`); timed by
+//! nothing separately.
 
 use boltzone::fem::Mesh;
 use boltzone::plot::{

@@ -11,115 +11,18 @@
 //!
 //! That of the two-plate solve (`cargo bench --bench contact`).
 
-use super::args::{Element, Geometry, OutputFiles};
 use super::check;
 use super::exit::{sig, usage, Status};
 use super::joint_figs::JointFigure;
-use super::two_hankel::Method;
+use super::two_args::Method;
+pub use super::two_args::{Args, Interface, Shape};
 use boltzone::contact::two_plate::{
     solve, solve_field, EdgeSupport, InterfaceModel, Loading, TwoPlateField, TwoPlateParams,
     TwoPlateSolution,
 };
 use boltzone::fem::ElementKind;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Peak, Plate};
-use clap::ValueEnum;
 use std::f64::consts::PI;
-use std::path::PathBuf;
-
-/// Interface model between unequal or dissimilar plates.
-#[derive(Debug, Clone, Copy, ValueEnum, serde::Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Interface {
-    /// u and w tied inside the contact zone (the report's model).
-    Welded,
-    /// Only w tied, unilaterally; no shear.
-    Frictionless,
-    /// Unilateral contact with Coulomb friction of coefficient --mu.
-    Friction,
-}
-
-/// Shape of the bearing pressure under head and nut.
-#[derive(Debug, Clone, Copy, ValueEnum, serde::Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Shape {
-    /// Uniform pressure on A..B.
-    Uniform,
-    /// Triangular, peak at A (report Fig. 20(a)).
-    PeakA,
-    /// Triangular, peak at B (report Fig. 20(b)).
-    PeakB,
-}
-
-/// Arguments of `boltzone two`.
-#[derive(Debug, clap::Args, serde::Serialize)]
-#[command(allow_negative_numbers = true)]
-pub struct Args {
-    /// A, B, D (the upper plate's thickness; the lower plate's too unless --d2 is given), ν.
-    #[command(flatten)]
-    #[serde(flatten)]
-    pub(super) geom: Geometry,
-    /// Thickness of the lower plate (in).
-    #[arg(long)]
-    pub(super) d2: Option<f64>,
-    /// Outer radius C of the plates (in); infinite if omitted.
-    #[arg(long)]
-    pub(super) c: Option<f64>,
-    /// Young's modulus E (psi; 304 steel by default).
-    #[arg(long, default_value_t = 28.0e6)]
-    pub(super) e: f64,
-    /// Poisson's ratio of the lower plate (default: --nu).
-    #[arg(long)]
-    pub(super) nu2: Option<f64>,
-    /// Young's modulus of the lower plate (default: --e).
-    #[arg(long)]
-    pub(super) e2: Option<f64>,
-    /// Mean bearing pressure P (psi).
-    #[arg(long, default_value_t = 1.0, conflicts_with = "force")]
-    p: f64,
-    /// Bolt force (lb): sets P = force / (π(B² − A²)).
-    #[arg(long)]
-    force: Option<f64>,
-    /// Pressure profile under head and nut.
-    #[arg(long, value_enum, default_value_t = Shape::Uniform)]
-    load: Shape,
-    /// Instead of a pressure, a uniform displacement (in) of each face under the nut (Fig. 21).
-    #[arg(long)]
-    pub(super) nut_displacement: Option<f64>,
-    /// Fix the outer edge r = C (Fig. 20(c)).
-    #[arg(long)]
-    pub(super) fixed_edge: bool,
-    /// Interface model for unequal or dissimilar plates (equal plates are exact either way);
-    /// frictionless by default, as the library (welded: the report's model, ill-posed for
-    /// dissimilar materials).
-    #[arg(long, value_enum, default_value_t = Interface::Frictionless)]
-    interface: Interface,
-    /// Coulomb friction coefficient μ ≥ 0 (with --interface friction only).
-    #[arg(long)]
-    mu: Option<f64>,
-    /// Element type (q9: the only one whose R_o error estimate is reliable; the linear ones are
-    /// cheaper but can miss the tolerance by a factor of three).
-    #[arg(long, value_enum, default_value_t = Element::Q9)]
-    element: Element,
-    /// Wanted relative error of R_o.
-    #[arg(long, default_value_t = 5e-4)]
-    pub(super) tol: f64,
-    /// Solver: fem, hankel (equal infinite plates with a hole, R_o only; seconds, not
-    /// milliseconds) or auto (hankel where it applies and --tol is below 1e-5).
-    #[arg(long, value_enum, default_value_t = Method::Fem)]
-    method: Method,
-    /// Curve, field and figure files.
-    #[command(flatten)]
-    #[serde(flatten)]
-    pub(super) out: OutputFiles,
-    /// Write a calculation report (inputs, units, version, method, results, rules of thumb,
-    /// figures) to this file: Markdown linking the --plot files, or with the extension .html a
-    /// self-contained page with the figures inlined as SVG.
-    #[arg(long)]
-    pub(super) report: Option<PathBuf>,
-    /// Print the result as JSON.
-    #[arg(long)]
-    pub(super) json: bool,
-}
 
 /// `--method auto` takes the Hankel route only below this tolerance: above it the FE is 10–100×
 /// faster and its estimate held on all of Table 1 at 1e-4 (tests/hankel/two_plate_hole.rs,

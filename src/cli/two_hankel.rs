@@ -1,25 +1,21 @@
 //! `boltzone two --method hankel|auto`: the two-plate model with the hole by the semi-analytic
 //! route ([`boltzone::hankel::receding::holed`]): equal plates, frictionless (exact for equal
 //! plates), infinite, pressed by a pressure profile; R_o with its error estimate.
+//!
+//! # Accuracy
+//!
+//! That of [`boltzone::hankel::receding::holed`] (`tests/hankel/two_plate_hole.rs`); the flags it
+//! refuses: `two_method_hankel_refuses_what_it_cannot_do` in the same file.
+//!
+//! # Cost
+//!
+//! The holed route's: 0.5–3 minutes per geometry, timed by the ignored study `table1_rows_record`
+//! (tests/hankel/two_plate_hole.rs).
 
 use super::exit::{sig, Status};
-use super::two::Args;
+use super::two_args::Args;
 use boltzone::hankel::receding::holed::{two_plate_hole, HoledParams};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
-
-/// Which solver computes R_o.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Method {
-    /// Axisymmetric finite elements with unilateral contact.
-    Fem,
-    /// Hankel transforms: bilateral holed plate + crack field + hole correction.
-    Hankel,
-    /// Hankel where it applies (equal infinite plates with a hole, pressure load, no outputs
-    /// but R_o) and the tolerance is below 1e-5 (where the FE's estimate is not trusted), else
-    /// fem.
-    Auto,
-}
 
 /// Why the Hankel route does not apply to these arguments: (flag, value, reason).
 pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> {

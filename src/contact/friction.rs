@@ -38,10 +38,15 @@
 //! violated point only; a repeat then, or [`LcpParams::max_iterations`], ends with
 //! [`ContactError::NotConverged`].
 //!
-//! **Accuracy.** Against enumeration of every open/stick/slip state of small problems
+//! # Accuracy
+//!
+//! Against enumeration of every open/stick/slip state of small problems
 //! (`tests/contact/friction.rs`, `agrees_with_enumeration_of_all_states`); on the two-plate
 //! model μ = 0 gives the frictionless model and μ = 10³ the welded one (same file).
-//! **Cost.** One LU of the closed points' size per iteration; `examples/21_friction.rs` prints
+//!
+//! # Cost
+//!
+//! One LU of the closed points' size per iteration; `examples/21_friction.rs` prints
 //! the two-plate time against the frictionless model.
 //!
 //! ```

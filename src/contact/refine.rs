@@ -33,7 +33,7 @@ use super::error::ContactError;
 use super::friction_level;
 use super::level::{solve_level_mu, LevelSetup, LevelSolution, Model};
 use super::params::{EdgeSupport, Loading, TwoPlateParams};
-use super::thermal::ScaledTemperature;
+use super::temperature::ScaledTemperature;
 use crate::fem::spacing::level_grading;
 use crate::fem::{Component, ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
 use crate::joint::Joint;

@@ -58,7 +58,7 @@ use super::level::{LevelSolution, Model};
 pub use super::params::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use super::refine::{mesh, solve_adaptive, MeshLayout, PreviousLevel};
 use super::separation::{estimate, NodalInterface, SeparationEstimate};
-use super::thermal::{JointTemperature, ScaledTemperature};
+use super::temperature::{JointTemperature, ScaledTemperature};
 use crate::error::InputError;
 use crate::joint::{Joint, OuterRadius, Plate};
 use crate::numerics::convergence::{fitted_rate, level_estimate};

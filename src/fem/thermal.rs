@@ -15,12 +15,18 @@
 //! ([`Thermal::apply`]); the thermal strain is taken per Gauss point
 //! ([`super::element::thermal`]; the report's element per element, as the listing).
 //!
-//! **Accuracy.** `tests/fem/thermal.rs`: a free body under a uniform temperature has zero
+//! # Accuracy
+//!
+//! `tests/fem/thermal.rs`: a free body under a uniform temperature has zero
 //! stress and u = α ΔT r on every element (to round-off); under a temperature linear through the
 //! thickness the free plate bends to the curvature α ΔT/D (Q9 exact, Q4 and the report's
 //! element at their observed order); a body held axially and radially has
 //! σ = −E α ΔT/(1 − ν) in the held directions; the Appendix C deck runner gives the same
-//! answer on the same mesh to 1e-10. **Cost.** One pass over the elements (as an assembly);
+//! answer on the same mesh to 1e-10.
+//!
+//! # Cost
+//!
+//! One pass over the elements (as an assembly);
 //! the two-plate model with a temperature: example 20.
 //!
 //! ```

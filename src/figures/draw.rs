@@ -5,6 +5,18 @@
 //! Axes are padded around the data, with room above for the legend; [`FigureData`]s whose
 //! curves are outlines in inches (Fig. 29) are drawn with equal scales on both axes.
 //!
+//! # Accuracy
+//!
+//! No numerics: the R_o ticks and bars are the [`FigureData`]'s own values.
+//! `tests/figures/gallery.rs` (`files_and_gallery_are_complete`) checks that every figure is
+//! written as SVG and PNG; the doc example below draws one.
+//!
+//! # Cost
+//!
+//! Drawing only, timed with the figures: `boltzone figures` prints each figure's time; the whole
+//! set is timed by the ignored test `all_figures_separate_at_their_r_o` (tests/figures/gallery.rs,
+//! about 8 s).
+//!
 //! ```
 //! use boltzone::figures::{compute, draw::SIZE, FiguresParams};
 //! use boltzone::plot::write_figure;

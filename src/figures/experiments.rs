@@ -1,7 +1,17 @@
 //! Fig. 28: our two-plate 2R_o of Table 2's seven joints (welded interface, the specimens'
 //! thicknesses, as `boltzone table2`) against the report's computed 2R_o and the rubbing and
 //! autoradiographic tests' ranges (average, bars min–max), with the line measured = computed.
-//! Accuracy and cost: the module docs of [`super`].
+//!
+//! # Accuracy
+//!
+//! The seven R_o are those of `boltzone table2`: `tests/compare/tables.rs` (`table2_end_to_end`);
+//! the drawing is checked by `tests/figures/gallery.rs` (`files_and_gallery_are_complete`).
+//!
+//! # Cost
+//!
+//! Seven two-plate solves (`cargo bench --bench contact`; example 04 times Table 2); `boltzone
+//! figures` prints each figure's time; the whole set is timed by the ignored test
+//! `all_figures_separate_at_their_r_o` (tests/figures/gallery.rs, about 8 s).
 //!
 //! ```no_run
 //! use boltzone::figures::{experiments::fig28, FiguresParams};

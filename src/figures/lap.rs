@@ -8,6 +8,18 @@
 //! Drawn as outlines (curves of kind [`CurveKind::Other`]) in inches; the contact zone's
 //! radius is the figure's one computed value, with its error bar.
 //!
+//! # Accuracy
+//!
+//! The one computed value, R_o, is the two-plate model's (`tests/contact/two_plate.rs`); the lap
+//! joint's geometry is `tests/heat/lap.rs` (`chapter5_lap_and_bad_geometry`); the figure is written
+//! by `tests/figures/gallery.rs` (`files_and_gallery_are_complete`).
+//!
+//! # Cost
+//!
+//! One two-plate solve (`cargo bench --bench contact`; example 15 builds on the same joint);
+//! `boltzone figures` prints each figure's time; the whole set is timed by the ignored test
+//! `all_figures_separate_at_their_r_o` (tests/figures/gallery.rs, about 8 s).
+//!
 //! ```no_run
 //! use boltzone::figures::{lap::fig29, FiguresParams};
 //! let fig = fig29(&FiguresParams::default())?; // one two-plate solve (about a second)

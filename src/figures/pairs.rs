@@ -16,7 +16,19 @@
 //!
 //! Points: the report's computed R_o (Table 2's 2R_o / 2), the rubbing and autoradiographic
 //! ranges (2R_o / 2, min…max around the average), the Chapter IV text's r/A = 2.73–2.93 for the
-//! load variants and 3.5 for the single plate. Accuracy and cost: the module docs of [`super`].
+//! load variants and 3.5 for the single plate.
+//!
+//! # Accuracy
+//!
+//! `tests/figures/gallery.rs`: `fig24_points_are_table2_case2` (the report's values against
+//! `reference/`), `fig20_profiles_carry_the_bolt_force` (each bearing-pressure profile integrates
+//! to 1100 lb) and `every_curve_separates_at_its_r_o`.
+//!
+//! # Cost
+//!
+//! One two-plate solve per curve (`cargo bench --bench contact`); `boltzone figures` prints each
+//! figure's time; the whole set is timed by the ignored test `all_figures_separate_at_their_r_o`
+//! (tests/figures/gallery.rs, about 8 s).
 //!
 //! ```
 //! use boltzone::figures::pairs::{bearing_pressure, FORCE};

@@ -5,7 +5,21 @@
 //! σ_z(r) (compression negative) from the finest level of [`crate::fem::single`]'s study, with
 //! its R_o; the report's single-plate R_o of Table 1 as points. Figs. 15–17: the two-plate
 //! interface pressure p(r) of [`crate::contact::two_plate`] for the same joints, with the
-//! report's two-plate R_o of Table 1. Accuracy and cost: the module docs of [`super`].
+//! report's two-plate R_o of Table 1.
+//!
+//! # Accuracy
+//!
+//! `tests/figures/gallery.rs`: `fig12_points_are_table1` (the report's markers against `reference/`
+//! read independently), `fig12_single_plate_r_o_match_the_hankel_route` (the single plate's R_o
+//! against the semi-analytic route) and `every_curve_separates_at_its_r_o` (each curve changes sign
+//! at its R_o within node spacing and error bar).
+//!
+//! # Cost
+//!
+//! The single-plate level study (`cargo bench --bench fem`, `Q9/levels…`) and the two-plate solve
+//! (`cargo bench --bench contact`) per joint; `boltzone figures` prints each figure's time; the
+//! whole set is timed by the ignored test `all_figures_separate_at_their_r_o`
+//! (tests/figures/gallery.rs, about 8 s).
 //!
 //! ```
 //! use boltzone::figures::{single::table1_figure, FigureError, FiguresParams};

@@ -5,7 +5,20 @@
 //!
 //! Method: [`crate::hankel::Slab`] (Hankel transforms), the curve by its Chebyshev interpolant
 //! [`crate::hankel::MidplaneCurve`] to 1e-9 P, R_o by [`crate::hankel::Slab::separation_radius`]
-//! at the figures' tolerance. Accuracy and cost: the module docs of [`super`].
+//! at the figures' tolerance.
+//!
+//! # Accuracy
+//!
+//! The slab and its R_o: `tests/hankel/slab.rs`
+//! (`fast_midplane_rule_and_curve_match_direct_quadrature`,
+//! `wide_uniform_load_compresses_the_midplane_by_p`); the drawn curves: `tests/figures/gallery.rs`
+//! (`every_curve_separates_at_its_r_o`).
+//!
+//! # Cost
+//!
+//! `cargo bench --bench hankel` (`separation_radius 1e-10`, `midplane curve 1000 radii 1e-10`);
+//! `boltzone figures` prints each figure's time; the whole set is timed by the ignored test
+//! `all_figures_separate_at_their_r_o` (tests/figures/gallery.rs, about 8 s).
 //!
 //! ```
 //! use boltzone::figures::{slab::slab_figure, FiguresParams};

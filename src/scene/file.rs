@@ -239,7 +239,7 @@ pub struct Scene {
     pub heat: Option<super::heat::HeatSpec>,
     /// Plate temperatures (two-plate model with thermal strains; [`super::temperature`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub temperature: Option<super::temperature::TemperatureSpec>,
+    pub temperature: Option<super::temperature_spec::TemperatureSpec>,
     /// Dotted keys mapped to lists of values; the product of the lists is solved.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub sweep: BTreeMap<String, Vec<toml::Value>>,

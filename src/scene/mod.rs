@@ -53,6 +53,7 @@ pub mod materials;
 pub mod run;
 pub mod sweep;
 pub mod temperature;
+mod temperature_spec;
 pub mod units;
 
 pub use error::SceneError;

@@ -17,8 +17,16 @@
 //!
 //! Exactly one of `plates` and `gradient`; one entry stands for both plates. Only the two-plate
 //! model takes temperatures. Each error names the key, the value and the line.
-//! **Accuracy** and **Cost**: those of [`crate::contact::thermal`] (`tests/contact/thermal.rs`,
-//! example 20); the scene test is `tests/scene/temperature.rs`.
+//!
+//! # Accuracy
+//!
+//! Those of [`crate::contact::thermal`] (`tests/contact/thermal.rs`); the table itself:
+//! `tests/scene/temperature.rs` (`scene_gradient_equals_the_library_call`: the scene equals the
+//! library call; `bad_temperature_tables_name_key_and_line`).
+//!
+//! # Cost
+//!
+//! Parsing and checks only; the thermal joint is timed by example 20.
 //!
 //! ```
 //! let scene = boltzone::scene::Scene::parse(
@@ -33,25 +41,9 @@
 
 use super::error::SceneError;
 use super::file::{line_of, path_name, Model, Scene, Seg};
+pub use super::temperature_spec::TemperatureSpec;
 use crate::contact::thermal::{JointTemperature, PlateTemperature};
 use crate::joint::Joint;
-use serde::{Deserialize, Serialize};
-
-/// The `[temperature]` table (module docs).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct TemperatureSpec {
-    /// Stress-free temperature.
-    pub reference: f64,
-    /// Uniform temperature per plate (upper, lower; one entry: both).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub plates: Option<Vec<f64>>,
-    /// [contact face, loaded face] temperatures per plate, linear between (one entry: both).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub gradient: Option<Vec<[f64; 2]>>,
-    /// Expansion coefficient α per plate, per degree (one entry: both).
-    pub alpha: Vec<f64>,
-}
 
 fn fail(text: &str, key: &str, value: impl std::fmt::Display, reason: &str) -> SceneError {
     let path = [Seg::Key("temperature".into()), Seg::Key(key.into())];

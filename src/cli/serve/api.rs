@@ -11,6 +11,18 @@
 //! pressure `{"r", "p"}` and the single plate's midplane σ_z `{"r", "sigma_z"}` (P = 1 psi,
 //! compression negative), both out to 1.6 times the largest radius of interest. Lengths in
 //! inches, stresses in psi. Query errors name the field (HTTP 400).
+//!
+//! # Accuracy
+//!
+//! `tests/figures/server.rs`: `api_gives_the_cli_numbers` (the answer against `boltzone two --json`
+//! and `boltzone single --json` for the same joint) and
+//! `bad_queries_get_400_naming_the_field_and_the_server_survives`.
+//!
+//! # Cost
+//!
+//! One two-plate solve and one single-plate study per new joint (`cargo bench --bench contact`,
+//! `cargo bench --bench fem`); under load: `tests/figures/load.rs`
+//! (`api_load_2000_requests_8_concurrent`, ignored).
 
 use crate::cli::check;
 use boltzone::contact::two_plate::{solve, TwoPlateParams};

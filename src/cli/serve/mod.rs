@@ -9,13 +9,15 @@
 //! 500: the server survives every request. Successful answers are kept by joint
 //! ([`CACHE_ENTRIES`], first in first out): a slider moved back and forth asks again.
 //!
-//! Checked by `tests/figures/server.rs` (the contract, bad fields, survival) and
-//! `tests/figures/browser.rs` (the page in chromium).
+//! # Accuracy
+//!
+//! `tests/figures/server.rs` (`api_gives_the_cli_numbers`: the contract against the CLI; bad
+//! fields; survival) and `tests/figures/browser.rs` (the page in chromium).
 //!
 //! # Cost
 //!
-//! `tests/figures/load.rs` (ignored; 2,000 requests over 20 s from 8 clients: latency percentiles,
-//! memory before and after).
+//! `tests/figures/load.rs` (`api_load_2000_requests_8_concurrent`, ignored; 2,000 requests over
+//! 20 s from 8 clients: latency percentiles, memory before and after).
 
 pub mod api;
 

@@ -16,8 +16,17 @@
 //! Because the same quadrature forms K u and f, a displacement that makes B u = ε_th at every
 //! point is the discrete solution to round-off: a free body under a uniform temperature on every
 //! element, and under a temperature linear in z on Q9 (w has an r² term; Q4 and Cst4 converge
-//! to it). **Accuracy**: `tests/fem/thermal.rs`. **Cost**: one element's quadrature, as its
-//! stiffness.
+//! to it).
+//!
+//! # Accuracy
+//!
+//! `tests/fem/thermal.rs`: `free_body_at_uniform_temperature_expands_without_stress` (every
+//! element, to round-off) and `free_plate_under_a_gradient_bends_to_alpha_dt_over_d_exactly_on_q9`.
+//!
+//! # Cost
+//!
+//! One element's quadrature, as its stiffness; the two-plate model with a temperature is timed
+//! by example 20.
 //!
 //! ```
 //! use boltzone::fem::element::{thermal::ElementThermal, ElementKind};

@@ -33,7 +33,9 @@
 //! (b) the change from a run with half the hole modes (the bilateral plate and Z), (c) the root
 //! tolerance; the residual traction on the hole is measured on the fit's check heights.
 //!
-//! **Accuracy** (`tests/hankel/two_plate_hole.rs`). The layer kernels: face conditions and the
+//! # Accuracy
+//!
+//! `tests/hankel/two_plate_hole.rs`. The layer kernels: face conditions and the
 //! bilateral limit (the slab's own kernels, to 1e-9). R_o against the FE two-plate model, which
 //! shares no code, on all twelve Table 1 geometries (C = ∞, ν = 0.3; study
 //! `table1_against_the_fe`, 25 minutes): this route's estimates are 4e-11 to 1.3e-6 R_o on eleven
@@ -52,7 +54,9 @@
 //! at A = 0.2D, 0.1D, 0.05D — the predicted A² (observed rates 2.07, 1.99). Not yet measured: the
 //! contact force (no pressure curve yet).
 //!
-//! **Cost.** 0.5–3 minutes per geometry (wall, on the shared 2-core machine; about a quarter
+//! # Cost
+//!
+//! 0.5–3 minutes per geometry (wall, on the shared 2-core machine; about a quarter
 //! of that in CPU) with the error estimate's two extra searches: about 24 contact radii, each a
 //! few thousand ξ-nodes × a thousand t- and s-nodes of brute-force transforms, iterated 4 times.
 //! Far from the issue's 10 ms: the transforms of l and of q at the hole are the cost to attack
@@ -69,9 +73,9 @@
 //! ```
 
 use super::contact::RecedingError;
-use super::crack::panels;
 use super::layer_field::bottom_kernels;
 use super::search::{root, Scan};
+use super::system::panels;
 use crate::error::InputError;
 use crate::hankel::hole::corner::CornerLoads;
 use crate::hankel::hole::eigen::{symmetric_roots, Mode};

@@ -27,10 +27,16 @@
 //! For t > 20 the hyperbolic ratios are replaced by their exponential forms (relative error
 //! e^(−2t) < 5e-18), so nothing overflows; for 2t < 1 sinh 2t − 2t is summed as a series.
 //!
-//! **Accuracy.** `tests/hankel/two_plate_hole.rs`: the face conditions, and the bilateral
+//! # Accuracy
+//!
+//! `tests/hankel/two_plate_hole.rs`: the face conditions, and the bilateral
 //! limit — a top pressure p with the bottom pressure of the slab of half-thickness D
 //! ([`crate::hankel::kernel::midplane`]) reproduces the slab's interior stresses
-//! ([`crate::hankel::field::stress_for_transform`]). **Cost.** A few exponentials per ξ.
+//! ([`crate::hankel::field::stress_for_transform`]).
+//!
+//! # Cost
+//!
+//! A few exponentials per ξ.
 //!
 //! ```
 //! use boltzone::hankel::receding::layer_field::bottom_kernels;

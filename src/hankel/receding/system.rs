@@ -278,6 +278,21 @@ impl Nystrom {
     }
 }
 
+/// Gauss–Legendre panels (20 points) on [a, b] no wider than `width`: (x, w).
+pub(super) fn panels(a: f64, b: f64, width: f64) -> Vec<(f64, f64)> {
+    let rule = gauss_legendre(20);
+    let k = ((b - a) / width).ceil().max(1.0) as usize;
+    let h = (b - a) / k as f64;
+    (0..k)
+        .flat_map(|j| {
+            let mid = a + (j as f64 + 0.5) * h;
+            rule.iter()
+                .map(move |&(x, w)| (mid + 0.5 * h * x, 0.5 * h * w))
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
 /// ∫ₐᵇ f by 20-point Gauss–Legendre panels no wider than `max_width`.
 pub(crate) fn integrate<F: Fn(f64) -> f64>(a: f64, b: f64, max_width: f64, f: F) -> f64 {
     if b <= a {

@@ -1,0 +1,31 @@
+//! The scene's `[temperature]` table as read ([`TemperatureSpec`]), apart from its checks and
+//! its conversion ([`super::temperature`]) so that the scene file ([`super::file`]) holds it
+//! without importing the code that reads the file. Public path:
+//! `boltzone::scene::temperature::TemperatureSpec`.
+//!
+//! # Accuracy
+//!
+//! Types only: `tests/scene/temperature.rs` (`scene_gradient_equals_the_library_call`,
+//! `bad_temperature_tables_name_key_and_line`).
+//!
+//! # Cost
+//!
+//! Parsing only; the thermal joint is timed by example 20.
+
+use serde::{Deserialize, Serialize};
+
+/// The `[temperature]` table (keys in [`super::temperature`]'s docs).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TemperatureSpec {
+    /// Stress-free temperature.
+    pub reference: f64,
+    /// Uniform temperature per plate (upper, lower; one entry: both).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plates: Option<Vec<f64>>,
+    /// [contact face, loaded face] temperatures per plate, linear between (one entry: both).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gradient: Option<Vec<[f64; 2]>>,
+    /// Expansion coefficient α per plate, per degree (one entry: both).
+    pub alpha: Vec<f64>,
+}
