@@ -132,3 +132,33 @@ pub struct Units {
         |s: &str| s.parse::<boltzone::scene::UnitSystem>()))]
     pub units: boltzone::scene::UnitSystem,
 }
+
+impl Units {
+    /// The length symbol (`in`, `mm`, `m`).
+    pub fn length(&self) -> &'static str {
+        self.units.symbols().0
+    }
+
+    /// The stress symbol (`psi`, `MPa`, `Pa`).
+    pub fn stress(&self) -> &'static str {
+        self.units.symbols().1
+    }
+
+    /// A stress of `psi` pounds per square inch in these units (the one conversion,
+    /// [`boltzone::scene::UnitSystem::stress`]).
+    pub fn from_psi(&self, psi: f64) -> f64 {
+        psi * (boltzone::scene::UnitSystem::InPsiLbf.stress() / self.units.stress())
+    }
+
+    /// Rejects `flag` (a file whose labels are in in-psi-lbf only) in any other system.
+    pub fn only_default(&self, flag: &str, given: bool) -> anyhow::Result<()> {
+        if given && self.units != boltzone::scene::UnitSystem::InPsiLbf {
+            return super::exit::usage(
+                "--units",
+                self.units.name(),
+                &format!("{flag} is written in in-psi-lbf only (so far); leave out --units"),
+            );
+        }
+        Ok(())
+    }
+}

@@ -11,7 +11,7 @@
 //!
 //! That of the two-plate solve (`cargo bench --bench contact`).
 
-use super::args::{Element, Geometry, OutputFiles};
+use super::args::{Element, Geometry, OutputFiles, Units};
 use super::check;
 use super::exit::{sig, usage, Status};
 use super::joint_figs::JointFigure;
@@ -58,31 +58,35 @@ pub struct Args {
     #[command(flatten)]
     #[serde(flatten)]
     pub(super) geom: Geometry,
-    /// Thickness of the lower plate (in).
+    /// Lengths, stresses, moduli and forces in (every flag and every printed number).
+    #[command(flatten)]
+    #[serde(flatten)]
+    pub(super) units: Units,
+    /// Thickness of the lower plate (in, or the --units length).
     #[arg(long)]
     pub(super) d2: Option<f64>,
-    /// Outer radius C of the plates (in); infinite if omitted.
+    /// Outer radius C of the plates (in, or the --units length); infinite if omitted.
     #[arg(long)]
     pub(super) c: Option<f64>,
-    /// Young's modulus E (psi; 304 steel by default).
-    #[arg(long, default_value_t = 28.0e6)]
-    pub(super) e: f64,
+    /// Young's modulus E (psi, or the --units stress; default 28e6 psi, 304 steel, converted).
+    #[arg(long)]
+    e: Option<f64>,
     /// Poisson's ratio of the lower plate (default: --nu).
     #[arg(long)]
     pub(super) nu2: Option<f64>,
     /// Young's modulus of the lower plate (default: --e).
     #[arg(long)]
     pub(super) e2: Option<f64>,
-    /// Mean bearing pressure P (psi).
+    /// Mean bearing pressure P (psi, or the --units stress).
     #[arg(long, default_value_t = 1.0, conflicts_with = "force")]
     p: f64,
-    /// Bolt force (lb): sets P = force / (π(B² − A²)).
+    /// Bolt force (lbf, or the --units force): sets P = force / (π(B² − A²)).
     #[arg(long)]
     force: Option<f64>,
     /// Pressure profile under head and nut.
     #[arg(long, value_enum, default_value_t = Shape::Uniform)]
     load: Shape,
-    /// Instead of a pressure, a uniform displacement (in) of each face under the nut (Fig. 21).
+    /// Instead of a pressure, a uniform displacement (in, or the --units length) of each face under the nut (Fig. 21).
     #[arg(long)]
     pub(super) nut_displacement: Option<f64>,
     /// Fix the outer edge r = C (Fig. 20(c)).
@@ -127,6 +131,21 @@ pub struct Args {
 /// estimate, on four of the twelve rows.
 const AUTO_HANKEL_BELOW: f64 = 1e-5;
 
+impl Args {
+    /// Young's modulus E of the upper plate in the --units stress (--e, or 304 steel's 28e6 psi
+    /// converted).
+    pub(super) fn e(&self) -> f64 {
+        self.e.unwrap_or_else(|| self.units.from_psi(28.0e6))
+    }
+
+    /// The parsed arguments as JSON with the default E filled in.
+    pub(super) fn inputs(&self) -> anyhow::Result<serde_json::Value> {
+        let mut v = serde_json::to_value(self)?;
+        v["e"] = self.e().into();
+        Ok(v)
+    }
+}
+
 /// Whether a report file is HTML (by its extension, .html or .htm).
 fn is_html(path: &std::path::Path) -> bool {
     path.extension()
@@ -145,7 +164,7 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     if let Some(c) = args.c {
         check::outer_radius("--c", c, g.b)?;
     }
-    check::positive("--e", "Young's modulus E", args.e)?;
+    check::positive("--e", "Young's modulus E", args.e())?;
     if let Some(e2) = args.e2 {
         check::positive("--e2", "lower plate's Young's modulus E2", e2)?;
     }
@@ -191,7 +210,7 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
         check::ratio("--d2", d2, g.d, 1e3, "thickness")?;
     }
     if let Some(e2) = args.e2 {
-        check::ratio("--e2", e2, args.e, 1e6, "Young's modulus")?;
+        check::ratio("--e2", e2, args.e(), 1e6, "Young's modulus")?;
     }
     if args.method == Method::Hankel {
         if let Some((flag, value, why)) = super::two_hankel::unsupported(args) {
@@ -202,6 +221,14 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     if let Some(path) = &args.report {
         check::output_path("--report", path)?;
     }
+    let u = &args.units;
+    u.only_default("--field", args.out.field.is_some())?;
+    u.only_default("--plot", args.out.plot.is_some())?;
+    u.only_default("--report", args.report.is_some())?;
+    u.only_default(
+        "the friction summary (--interface friction)",
+        args.mu.is_some(),
+    )?;
     Ok(())
 }
 
@@ -209,8 +236,11 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
 pub fn run(args: Args) -> anyhow::Result<Status> {
     let start = std::time::Instant::now();
     check_args(&args)?;
-    let upper_mat = Material::new(args.e, args.geom.nu)?;
-    let lower_mat = Material::new(args.e2.unwrap_or(args.e), args.nu2.unwrap_or(args.geom.nu))?;
+    let upper_mat = Material::new(args.e(), args.geom.nu)?;
+    let lower_mat = Material::new(
+        args.e2.unwrap_or(args.e()),
+        args.nu2.unwrap_or(args.geom.nu),
+    )?;
     let p = match args.force {
         Some(f) => f / (PI * (args.geom.b * args.geom.b - args.geom.a * args.geom.a)),
         None => args.p,
@@ -268,7 +298,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         super::write_output(path, &field_vtu(&s, field)?)?;
     }
     if let Some(path) = &args.out.curve {
-        super::write_output(path, &curve_csv(&s, p))?;
+        super::write_output(path, &curve_csv(&s, p, args.units))?;
     }
     let html = args.report.as_ref().is_some_and(|p| is_html(p));
     let figs = match &field {
@@ -292,7 +322,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     if let Some(path) = &args.report {
         let g = &args.geom;
         let inputs = super::report::ReportInputs {
-            inputs: serde_json::to_value(&args)?,
+            inputs: args.inputs()?,
             geometry: (g.a, g.b, g.d, args.d2.unwrap_or(g.d), args.c),
             pressure: p,
             tolerance: args.tol,
@@ -331,6 +361,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             "rate": s.info.rate,
             "nut_deflection": s.nut_deflection,
             "seconds": s.info.seconds,
+            "units": args.units.units.name(),
         });
         if let Some(q) = r_o_over_a {
             out["r_o_over_a"] = q.into();
@@ -339,12 +370,13 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             super::friction_out::json(&mut out, &s, f)?;
         }
         out["bearing_pressure"] = p.into();
-        super::output::stamp(&mut out, &args, start)?;
+        super::output::stamp(&mut out, &args.inputs()?, start)?;
         super::print_json(&out)?;
     } else {
+        let l = args.units.length();
         let over_a = r_o_over_a.map_or(String::new(), |q| format!("R_o/A = {}, ", sig(q, 6)));
         println!(
-            "R_o = {} ± {:.1e} in   ({over_a}2R_o = {} in){}",
+            "R_o = {} ± {:.1e} {l}   ({over_a}2R_o = {} {l}){}",
             sig(s.r_o, 7),
             s.r_o_error,
             sig(2.0 * s.r_o, 6),
@@ -369,7 +401,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
                  oscillatory edge singularity){}; the welded model is ill-posed here: use \
                  --interface frictionless or --interface friction --mu M",
                 if s.overlap > 0.0 {
-                    format!(", the plates overlap by {:.2e} in", s.overlap)
+                    format!(", the plates overlap by {:.2e} {l}", s.overlap)
                 } else {
                     String::new()
                 }
@@ -381,7 +413,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         if let Some(f) = &s.friction {
             println!("{}", super::friction_out::summary(&s, f));
         }
-        println!("deflection under the nut: {:.4e} in", s.nut_deflection);
+        println!("deflection under the nut: {:.4e} {l}", s.nut_deflection);
     }
     Ok(Status::from_converged(s.converged))
 }
@@ -449,8 +481,9 @@ fn figures(
     ]
 }
 
-/// r, p, g, τ of the finest mesh in the one curve layout ([`super::output`]).
-fn curve_csv(s: &TwoPlateSolution, p: f64) -> String {
+/// r, p, g, τ of the finest mesh in the one curve layout ([`super::output`]), in `units`.
+fn curve_csv(s: &TwoPlateSolution, p: f64, units: Units) -> String {
+    let (l, st) = (units.length(), units.stress());
     let notes = [
         format!(
             "method: two-plate FE contact (boltzone::contact::two_plate), interface of the finest \
@@ -460,9 +493,9 @@ fn curve_csv(s: &TwoPlateSolution, p: f64) -> String {
         format!(
             "p = interface pressure (compression > 0), g = gap between the plates, tau = \
              interface shear on the upper plate (welded and friction models, 0 otherwise); bearing pressure P = \
-             {p:e} psi"
+             {p:e} {st}"
         ),
-        super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
+        super::output::r_o_note_in(l, s.r_o, s.r_o_error, s.converged),
     ];
     if let Some(f) = &s.friction {
         return super::friction_out::curve_csv(s, f, &notes);
@@ -470,7 +503,14 @@ fn curve_csv(s: &TwoPlateSolution, p: f64) -> String {
     let rows: Vec<Vec<f64>> = (0..s.radius.len())
         .map(|i| vec![s.radius[i], s.pressure[i], s.gap[i], s.shear[i]])
         .collect();
-    super::output::curve_csv(&["r [in]", "p [psi]", "g [in]", "tau [psi]"], &notes, &rows)
+    let cols = [
+        format!("r [{l}]"),
+        format!("p [{st}]"),
+        format!("g [{l}]"),
+        format!("tau [{st}]"),
+    ];
+    let cols: Vec<&str> = cols.iter().map(String::as_str).collect();
+    super::output::curve_csv_in(units.units, &cols, &notes, &rows)
 }
 
 /// The finest mesh's field as VTU ([`boltzone::io::vtu`]): plate 0 the lower plate, plate 1
