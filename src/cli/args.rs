@@ -14,7 +14,8 @@
 use boltzone::fem::ElementKind;
 use std::path::PathBuf;
 
-/// Hole radius A, load radius B, plate thickness D and Poisson's ratio ν (lengths in inches).
+/// Hole radius A, load radius B, plate thickness D and Poisson's ratio ν (lengths in inches,
+/// or the length of the command's `--units`).
 #[derive(Debug, Clone, clap::Args, serde::Serialize)]
 pub struct Geometry {
     /// Hole radius A, the inner radius of the bearing annulus (in).
@@ -146,7 +147,7 @@ impl Units {
 
     /// A stress of `psi` pounds per square inch in these units (the one conversion,
     /// [`boltzone::scene::UnitSystem::stress`]).
-    pub fn from_psi(&self, psi: f64) -> f64 {
+    pub fn psi_in(&self, psi: f64) -> f64 {
         psi * (boltzone::scene::UnitSystem::InPsiLbf.stress() / self.units.stress())
     }
 

@@ -6,6 +6,11 @@
 //! [`boltzone::hankel::hole::single_plate_separation`] (infinite slab + hole correction, and a
 //! rim correction when `--c` is given).
 //!
+//! `--units` (in-psi-lbf, mm-MPa-N, m-Pa-N) sets the length of every flag and every printed
+//! length, and the stress of the curve (P = 1 in that stress); `--field` and `--plot` are in
+//! in-psi-lbf only (other systems refused, exit 2). Checked by `tests/scene/joint_units.rs`
+//! (the same R_o to 1e-12 in the three systems by both methods).
+//!
 //! # Accuracy
 //!
 //! No numerics of its own: `tests/fem/cli.rs` and `tests/hankel/hole_cli.rs` check the JSON against

@@ -2,6 +2,11 @@
 //! [`boltzone::contact::two_plate`]: separation radius R_o with its error, and on request the
 //! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV.
 //!
+//! `--units` (in-psi-lbf, mm-MPa-N, m-Pa-N) sets the units of every flag and of the text, the
+//! JSON (`units` key) and the curve; the solver works in any consistent units. The VTU, the
+//! figures, the report and the friction summary are in in-psi-lbf only (other systems refused,
+//! exit 2). Checked by `tests/scene/joint_units.rs`.
+//!
 //! # Accuracy
 //!
 //! No numerics of its own (`boltzone::contact::two_plate`): `tests/contact/cli.rs`
@@ -135,7 +140,7 @@ impl Args {
     /// Young's modulus E of the upper plate in the --units stress (--e, or 304 steel's 28e6 psi
     /// converted).
     pub(super) fn e(&self) -> f64 {
-        self.e.unwrap_or_else(|| self.units.from_psi(28.0e6))
+        self.e.unwrap_or_else(|| self.units.psi_in(28.0e6))
     }
 
     /// The parsed arguments as JSON with the default E filled in.
