@@ -4,7 +4,7 @@
 //!
 //! `--units` (in-psi-lbf, mm-MPa-N, m-Pa-N) sets the units of every flag and of the text, the
 //! JSON (`units` key) and the curve; the solver works in any consistent units. The VTU, the
-//! figures, the report and the friction summary are in in-psi-lbf only (other systems refused,
+//! figures and the report are in in-psi-lbf only (other systems refused,
 //! exit 2). Checked by `tests/scene/joint_units.rs`.
 //!
 //! # Accuracy
@@ -230,10 +230,6 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     u.only_default("--field", args.out.field.is_some())?;
     u.only_default("--plot", args.out.plot.is_some())?;
     u.only_default("--report", args.report.is_some())?;
-    u.only_default(
-        "the friction summary (--interface friction)",
-        args.mu.is_some(),
-    )?;
     Ok(())
 }
 
@@ -416,7 +412,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             println!("full contact: the plates touch out to the rim, R_o = C");
         }
         if let Some(f) = &s.friction {
-            println!("{}", super::friction_out::summary(&s, f));
+            println!("{}", super::friction_out::summary(&s, f, l));
         }
         println!("deflection under the nut: {:.4e} {l}", s.nut_deflection);
     }
@@ -502,18 +498,18 @@ fn curve_csv(s: &TwoPlateSolution, p: f64, units: Units) -> String {
         ),
         super::output::r_o_note_in(l, s.r_o, s.r_o_error, s.converged),
     ];
-    if let Some(f) = &s.friction {
-        return super::friction_out::curve_csv(s, f, &notes);
-    }
-    let rows: Vec<Vec<f64>> = (0..s.radius.len())
-        .map(|i| vec![s.radius[i], s.pressure[i], s.gap[i], s.shear[i]])
-        .collect();
     let cols = [
         format!("r [{l}]"),
         format!("p [{st}]"),
         format!("g [{l}]"),
         format!("tau [{st}]"),
     ];
+    if let Some(f) = &s.friction {
+        return super::friction_out::curve_csv(s, f, &notes, (units, &cols));
+    }
+    let rows: Vec<Vec<f64>> = (0..s.radius.len())
+        .map(|i| vec![s.radius[i], s.pressure[i], s.gap[i], s.shear[i]])
+        .collect();
     let cols: Vec<&str> = cols.iter().map(String::as_str).collect();
     super::output::curve_csv_in(units.units, &cols, &notes, &rows)
 }

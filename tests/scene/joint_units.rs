@@ -179,6 +179,35 @@ fn curves_and_text_name_the_units() {
             "{csv}"
         );
     }
+    // friction: the slip column and the zones in the text
+    let friction = [
+        "--d2",
+        "5.08",
+        "--e2",
+        "70000",
+        "--interface",
+        "friction",
+        "--mu",
+        "0.3",
+    ];
+    let flags = [friction.map(String::from).to_vec(), curve("f.csv")].concat();
+    let out = run(
+        "two",
+        mm,
+        &[flags, vec!["--tol".into(), "5e-3".into()]].concat(),
+        &dir,
+    );
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains(" mm; slip r = ") && text.contains("largest slip "),
+        "{text}"
+    );
+    let csv = std::fs::read_to_string(dir.join("f.csv")).unwrap();
+    assert!(
+        csv.starts_with("r [mm],p [MPa],g [mm],tau [MPa],s [mm],state [-]\n"),
+        "{csv}"
+    );
     // files still labelled in in-psi-lbf only are refused before any work, naming --units
     for (cmd, flag) in [
         ("two", "--field"),
