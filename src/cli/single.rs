@@ -7,7 +7,7 @@
 //! rim correction when `--c` is given).
 //!
 //! `--units` (in-psi-lbf, mm-MPa-N, m-Pa-N) sets the length of every flag and every printed
-//! length, and the stress of the curve (P = 1 in that stress); `--field` and `--plot` are in
+//! length, and the stress of the curve and the VTU (P = 1 in that stress); `--plot` is in
 //! in-psi-lbf only (other systems refused, exit 2). Checked by `tests/scene/joint_units.rs`
 //! (the same R_o to 1e-12 in the three systems by both methods).
 //!
@@ -141,8 +141,6 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
         );
     }
     args.out.check()?;
-    args.units
-        .only_default("--field", args.out.field.is_some())?;
     args.units.only_default("--plot", args.out.plot.is_some())?;
     Ok(())
 }
@@ -412,9 +410,10 @@ fn write_finest(
     if let Some(path) = &args.out.field {
         let grid = boltzone::scene::field::single_plate_grid(plate.material(), h)?;
         let note = format!(
-            "{method}; plate 0 = upper half z >= 0 (computed), plate 1 = its mirror image; {}; \
-             command: {}",
-            super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
+            "{method}; units {}: coordinates and displacements [{l}], stresses [{st}]; plate 0 = \
+             upper half z >= 0 (computed), plate 1 = its mirror image; {}; command: {}",
+            args.units.units.name(),
+            super::output::r_o_note_in(l, s.r_o, s.r_o_error, s.converged),
             super::output::command_line()
         );
         super::write_output(path, &grid.to_vtu(&note))?;

@@ -3,7 +3,7 @@
 //! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV.
 //!
 //! `--units` (in-psi-lbf, mm-MPa-N, m-Pa-N) sets the units of every flag and of the text, the
-//! JSON (`units` key) and the curve; the solver works in any consistent units. The VTU, the
+//! JSON (`units` key), the curve and the VTU; the solver works in any consistent units. The
 //! figures and the report are in in-psi-lbf only (other systems refused,
 //! exit 2). Checked by `tests/scene/joint_units.rs`.
 //!
@@ -227,7 +227,6 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
         check::output_path("--report", path)?;
     }
     let u = &args.units;
-    u.only_default("--field", args.out.field.is_some())?;
     u.only_default("--plot", args.out.plot.is_some())?;
     u.only_default("--report", args.report.is_some())?;
     Ok(())
@@ -296,7 +295,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         (solve(&joint, &params)?, None)
     };
     if let (Some(path), Some(field)) = (&args.out.field, &field) {
-        super::write_output(path, &field_vtu(&s, field)?)?;
+        super::write_output(path, &field_vtu(&s, field, args.units)?)?;
     }
     if let Some(path) = &args.out.curve {
         super::write_output(path, &curve_csv(&s, p, args.units))?;
@@ -517,14 +516,17 @@ fn curve_csv(s: &TwoPlateSolution, p: f64, units: Units) -> String {
 /// The finest mesh's field as VTU ([`boltzone::io::vtu`]): plate 0 the lower plate, plate 1
 /// the upper one; interface nodes of both carry the contact pressure, the gap and the status
 /// (1 closed, 0 open), every other node 0.
-fn field_vtu(s: &TwoPlateSolution, field: &TwoPlateField) -> anyhow::Result<String> {
+fn field_vtu(s: &TwoPlateSolution, field: &TwoPlateField, units: Units) -> anyhow::Result<String> {
+    let (l, st) = (units.length(), units.stress());
     let (grid, layout) = boltzone::scene::field::two_plate_grid(s, field)?;
     let note = format!(
-        "method: two-plate FE contact, finest mesh, {} model; {layout}; interface nodes carry \
-         contact_pressure [psi] (compression > 0), gap [in] (between the plates) and \
-         contact_status (1 closed, 0 open); {}; command: {}",
+        "method: two-plate FE contact, finest mesh, {} model; {layout}; units {}: coordinates \
+         and displacements [{l}], stresses [{st}]; interface nodes carry contact_pressure [{st}] \
+         (compression > 0), gap [{l}] (between the plates) and contact_status (1 closed, 0 \
+         open); {}; command: {}",
         s.info.model,
-        super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
+        units.units.name(),
+        super::output::r_o_note_in(l, s.r_o, s.r_o_error, s.converged),
         super::output::command_line()
     );
     Ok(grid.to_vtu(&note))

@@ -208,13 +208,17 @@ fn curves_and_text_name_the_units() {
         csv.starts_with("r [mm],p [MPa],g [mm],tau [MPa],s [mm],state [-]\n"),
         "{csv}"
     );
+    // the VTU says its units
+    for (cmd, tol) in [("two", "2e-3"), ("single", "5e-4")] {
+        let flags = ["--field", "f.vtu", "--tol", tol].map(String::from);
+        assert_eq!(run(cmd, mm, &flags, &dir).status.code(), Some(0));
+        let vtu = std::fs::read_to_string(dir.join("f.vtu")).unwrap();
+        assert!(vtu.contains("units mm-MPa-N: coordinates and displacements [mm], stresses [MPa]"));
+        assert!(!vtu.contains("[in]") && !vtu.contains(" in +-") && !vtu.contains("psi"));
+    }
     // files still labelled in in-psi-lbf only are refused before any work, naming --units
-    for (cmd, flag) in [
-        ("two", "--field"),
-        ("two", "--report"),
-        ("single", "--plot"),
-    ] {
-        let file = if flag == "--plot" { "x.svg" } else { "x.vtu" };
+    for (cmd, flag) in [("two", "--plot"), ("two", "--report"), ("single", "--plot")] {
+        let file = if flag == "--plot" { "x.svg" } else { "x.md" };
         let out = run(cmd, mm, &[flag.to_string(), file.to_string()], &dir);
         assert_eq!(out.status.code(), Some(2), "{cmd} {flag}");
         assert!(String::from_utf8_lossy(&out.stderr).contains("--units = mm-MPa-N"));
