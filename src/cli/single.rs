@@ -7,8 +7,7 @@
 //! rim correction when `--c` is given).
 //!
 //! `--units` (in-psi-lbf, mm-MPa-N, m-Pa-N) sets the length of every flag and every printed
-//! length, and the stress of the curve and the VTU (P = 1 in that stress); `--plot` is in
-//! in-psi-lbf only (other systems refused, exit 2). Checked by `tests/scene/joint_units.rs`
+//! length, and the stress of the curve, the VTU and the figures (P = 1 in that stress). Checked by `tests/scene/joint_units.rs`
 //! (the same R_o to 1e-12 in the three systems by both methods).
 //!
 //! # Accuracy
@@ -141,7 +140,6 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
         );
     }
     args.out.check()?;
-    args.units.only_default("--plot", args.out.plot.is_some())?;
     Ok(())
 }
 
@@ -368,17 +366,20 @@ fn write_finest(
     let m = midplane_of(plate, h)?;
     if let Some(path) = &args.out.plot {
         let g = &args.geom;
+        let y_label = format!("σz [{st}] (P = 1 {st})");
+        let what = format!("single plate 2D thick (E = P = 1 {st})");
         let curve = super::figure::RadiusCurve {
             title: "Single plate 2D thick: midplane normal stress (FE, finest level)".into(),
-            y_label: "σz [psi] (P = 1 psi)",
+            y_label: &y_label,
             label: "σz(r), finest mesh",
             r: &m.r,
             y: &m.sigma_z,
             r_o: (s.r_o, s.r_o_error),
+            length: l,
         };
         let x_end = super::figure::radius_plot(path, &curve, (g.b, g.d, g.d, args.c))?;
         let d = super::joint_figs::Deformed {
-            what: "single plate 2D thick (E = P = 1 psi)",
+            what: &what,
             mesh: &h.mesh,
             u: &h.u,
             mirror: true,
@@ -389,6 +390,7 @@ fn write_finest(
             b: g.b,
             r_o: (s.r_o, s.r_o_error),
             x_end,
+            length: l,
         };
         let deformed = super::joint_figs::sibling(path, "deformed");
         super::joint_figs::deformed_plot(&deformed, &d)?;

@@ -3,8 +3,8 @@
 //! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV.
 //!
 //! `--units` (in-psi-lbf, mm-MPa-N, m-Pa-N) sets the units of every flag and of the text, the
-//! JSON (`units` key), the curve and the VTU; the solver works in any consistent units. The
-//! figures and the report are in in-psi-lbf only (other systems refused,
+//! JSON (`units` key), the curve, the VTU and the figures; the solver works in any consistent
+//! units. The report is in in-psi-lbf only (other systems refused,
 //! exit 2). Checked by `tests/scene/joint_units.rs`.
 //!
 //! # Accuracy
@@ -227,7 +227,6 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
         check::output_path("--report", path)?;
     }
     let u = &args.units;
-    u.only_default("--plot", args.out.plot.is_some())?;
     u.only_default("--report", args.report.is_some())?;
     Ok(())
 }
@@ -304,7 +303,12 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let figs = match &field {
         Some(field) if args.out.plot.is_some() || html => {
             let g = &args.geom;
-            figures(&s, field, (g.b, g.d, args.d2.unwrap_or(g.d), args.c))
+            figures(
+                &s,
+                field,
+                (g.b, g.d, args.d2.unwrap_or(g.d), args.c),
+                args.units,
+            )
         }
         _ => Vec::new(),
     };
@@ -425,8 +429,11 @@ fn figures(
     s: &TwoPlateSolution,
     field: &TwoPlateField,
     geom: (f64, f64, f64, Option<f64>),
+    units: Units,
 ) -> Vec<(&'static str, &'static str, JointFigure)> {
     use super::figure::{radius_figure, RadiusCurve};
+    let (l, st) = (units.length(), units.stress());
+    let (p_label, g_label) = (format!("p [{st}]"), format!("g [{l}]"));
     let model = format!("model: {}", s.info.model);
     let curve = |title: &str, y_label, label, y| RadiusCurve {
         title: format!("{title}; {model}"),
@@ -435,17 +442,18 @@ fn figures(
         r: &s.radius,
         y,
         r_o: (s.r_o, s.r_o_error),
+        length: l,
     };
     let p = curve(
         "Interface pressure",
-        "p [psi]",
+        &p_label,
         "p(r), finest mesh",
         &s.pressure,
     );
     let (p, x_end) = radius_figure(&p, geom);
     let g = curve(
         "Gap between the plates",
-        "g [in]",
+        &g_label,
         "g(r), finest mesh",
         &s.gap,
     );
@@ -465,6 +473,7 @@ fn figures(
         b: geom.0,
         r_o: (s.r_o, s.r_o_error),
         x_end,
+        length: l,
     };
     vec![
         ("", "interface pressure against r", JointFigure::Curve(p)),

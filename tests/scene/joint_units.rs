@@ -216,12 +216,22 @@ fn curves_and_text_name_the_units() {
         assert!(vtu.contains("units mm-MPa-N: coordinates and displacements [mm], stresses [MPa]"));
         assert!(!vtu.contains("[in]") && !vtu.contains(" in +-") && !vtu.contains("psi"));
     }
-    // files still labelled in in-psi-lbf only are refused before any work, naming --units
-    for (cmd, flag) in [("two", "--plot"), ("two", "--report"), ("single", "--plot")] {
-        let file = if flag == "--plot" { "x.svg" } else { "x.md" };
-        let out = run(cmd, mm, &[flag.to_string(), file.to_string()], &dir);
-        assert_eq!(out.status.code(), Some(2), "{cmd} {flag}");
-        assert!(String::from_utf8_lossy(&out.stderr).contains("--units = mm-MPa-N"));
-        assert!(!dir.join(file).exists());
+    // the figures' axes and markers
+    for cmd in ["two", "single"] {
+        let flags = ["--plot", "f.svg", "--tol", "2e-3"].map(String::from);
+        assert_eq!(run(cmd, mm, &flags, &dir).status.code(), Some(0));
+        for file in ["f.svg", "f-deformed.svg"] {
+            let svg = std::fs::read_to_string(dir.join(file)).unwrap();
+            assert!(
+                svg.contains("r [mm]") && svg.contains(" mm (computed)"),
+                "{cmd} {file}"
+            );
+            assert!(!svg.contains("[in]") && !svg.contains(" in ") && !svg.contains("psi"));
+        }
     }
+    // the report, still labelled in in-psi-lbf only, is refused before any work, naming --units
+    let out = run("two", mm, &["--report".into(), "x.md".into()], &dir);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--units = mm-MPa-N"));
+    assert!(!dir.join("x.md").exists());
 }
