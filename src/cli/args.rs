@@ -150,16 +150,4 @@ impl Units {
     pub fn psi_in(&self, psi: f64) -> f64 {
         psi * (boltzone::scene::UnitSystem::InPsiLbf.stress() / self.units.stress())
     }
-
-    /// Rejects `flag` (a file whose labels are in in-psi-lbf only) in any other system.
-    pub fn only_default(&self, flag: &str, given: bool) -> anyhow::Result<()> {
-        if given && self.units != boltzone::scene::UnitSystem::InPsiLbf {
-            return super::exit::usage(
-                "--units",
-                self.units.name(),
-                &format!("{flag} is written in in-psi-lbf only (so far); leave out --units"),
-            );
-        }
-        Ok(())
-    }
 }

@@ -3,9 +3,8 @@
 //! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV.
 //!
 //! `--units` (in-psi-lbf, mm-MPa-N, m-Pa-N) sets the units of every flag and of the text, the
-//! JSON (`units` key), the curve, the VTU and the figures; the solver works in any consistent
-//! units. The report is in in-psi-lbf only (other systems refused,
-//! exit 2). Checked by `tests/scene/joint_units.rs`.
+//! JSON (`units` key), the curve, the VTU, the figures and the report; the solver works in any
+//! consistent units. Checked by `tests/scene/joint_units.rs`.
 //!
 //! # Accuracy
 //!
@@ -226,8 +225,6 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     if let Some(path) = &args.report {
         check::output_path("--report", path)?;
     }
-    let u = &args.units;
-    u.only_default("--report", args.report.is_some())?;
     Ok(())
 }
 
@@ -330,6 +327,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             geometry: (g.a, g.b, g.d, args.d2.unwrap_or(g.d), args.c),
             pressure: p,
             tolerance: args.tol,
+            units: args.units,
         };
         let mut shown = Vec::new();
         for (suffix, caption, fig) in &figs {

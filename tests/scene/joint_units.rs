@@ -229,9 +229,24 @@ fn curves_and_text_name_the_units() {
             assert!(!svg.contains("[in]") && !svg.contains(" in ") && !svg.contains("psi"));
         }
     }
-    // the report, still labelled in in-psi-lbf only, is refused before any work, naming --units
-    let out = run("two", mm, &["--report".into(), "x.md".into()], &dir);
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("--units = mm-MPa-N"));
-    assert!(!dir.join("x.md").exists());
+    // the report: its units line, the inputs' and results' units
+    let flags = ["--report", "x.md", "--tol", "2e-3", "--force", "1000"].map(String::from);
+    assert_eq!(run("two", mm, &flags, &dir).status.code(), Some(0));
+    let md = std::fs::read_to_string(dir.join("x.md")).unwrap();
+    assert!(
+        md.contains("units mm-MPa-N (lengths mm, stresses MPa, forces N)"),
+        "{md}"
+    );
+    assert!(
+        md.contains("| force | 1000 | N |") || md.contains("| force | 1000.0 | N |"),
+        "{md}"
+    );
+    assert!(
+        md.contains("R [mm]") && md.contains(" MPa |") && md.contains(" mm |"),
+        "{md}"
+    );
+    assert!(
+        !md.contains("[in]") && !md.contains(" in ") && !md.contains("psi"),
+        "{md}"
+    );
 }
