@@ -28,6 +28,7 @@ mod solve;
 mod table1;
 mod table2;
 mod two;
+mod two_files;
 mod two_hankel;
 
 use boltzone::compare::{compare, show, CompareParams, Geometry, Value};
