@@ -173,7 +173,7 @@ pub fn run(max_terms: usize, rows: usize) -> anyhow::Result<()> {
             row.a_over_d,
             row.b_over_a,
             r,
-            s.error / 0.1,
+            s.r_o_error / 0.1,
             info.terms,
             info.residual_max,
             no_hole,

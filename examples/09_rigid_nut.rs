@@ -58,7 +58,7 @@ pub fn run(levels: usize) -> anyhow::Result<()> {
         let (hankel, _) =
             single_plate_separation(&plate, &SeparationParams::default(), &HoleParams::default())?;
         let gap = (res[0].0 - hankel.r_o / a).abs();
-        if gap > res[0].1 + hankel.error / a {
+        if gap > res[0].1 + hankel.r_o_error / a {
             anyhow::bail!(
                 "B/A {}: FE R_o/A {} and Hankel {} differ by {gap:e}, more than their estimates",
                 row.b_over_a,

@@ -76,7 +76,7 @@ pub fn run(rows: usize) -> anyhow::Result<()> {
         let (hankel, _) =
             single_plate_separation(&plate, &SeparationParams::default(), &HoleParams::default())?;
         let gap = (converged - hankel.r_o).abs();
-        if gap > info.error_estimate + hankel.error {
+        if gap > info.error_estimate + hankel.r_o_error {
             anyhow::bail!(
                 "A/D {} B/A {}: FE R_o {converged} and Hankel {} differ by {gap:e}, more than their estimates",
                 row.a_over_d,

@@ -131,7 +131,7 @@ pub fn run(rows: usize, n_ref: usize, reps: usize) -> anyhow::Result<()> {
             row.b_over_a,
             r_ref / a,
             ref_unc / a,
-            profile.sep.error / a,
+            profile.sep.r_o_error / a,
             actual / a,
             profile.hole.terms,
             profile.hole.slab_evaluations,
@@ -143,11 +143,11 @@ pub fn run(rows: usize, n_ref: usize, reps: usize) -> anyhow::Result<()> {
             direct.min / profile.min
         );
         anyhow::ensure!(
-            actual <= profile.sep.error + ref_unc,
+            actual <= profile.sep.r_o_error + ref_unc,
             "A/D {} B/A {}: actual error {actual:e} beyond estimate {:e} + reference {ref_unc:e}",
             row.a_over_d,
             row.b_over_a,
-            profile.sep.error
+            profile.sep.r_o_error
         );
         // The two routes differ only in the slab data: their R_o agree within the data errors.
         let data = (profile.hole.slab_error + direct.hole.slab_error) / profile.sep.slope.abs();

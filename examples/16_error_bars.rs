@@ -75,7 +75,10 @@ fn slab(k: &Case) -> anyhow::Result<Outcome> {
         })
     };
     let (w, r) = (at(1e-6)?, at(1e-12)?);
-    Ok(Some(((w.r_o, w.error, w.converged), (r.r_o, r.error))))
+    Ok(Some((
+        (w.r_o, w.r_o_error, w.converged),
+        (r.r_o, r.r_o_error),
+    )))
 }
 
 fn hankel(plate: &SinglePlate, tol: f64) -> anyhow::Result<(f64, f64, bool)> {
@@ -88,7 +91,7 @@ fn hankel(plate: &SinglePlate, tol: f64) -> anyhow::Result<(f64, f64, bool)> {
         ..Default::default()
     };
     let (s, _) = single_plate_separation(plate, &sep, &hole)?;
-    Ok((s.r_o, s.error, s.converged))
+    Ok((s.r_o, s.r_o_error, s.converged))
 }
 
 fn single_plate(k: &Case) -> anyhow::Result<SinglePlate> {

@@ -280,7 +280,7 @@ fn run_hankel(
             format!(
                 "sigma_z error bound: {worst:.2e} {st} (slab quadrature + hole residual traction)"
             ),
-            super::output::r_o_note_in(l, sep.r_o, sep.error, sep.converged),
+            super::output::r_o_note_in(l, sep.r_o, sep.r_o_error, sep.converged),
         ];
         let rows: Vec<Vec<f64>> = r.iter().zip(&values).map(|(r, v)| vec![*r, v[0]]).collect();
         super::write_output(path, &sigma_curve(args.units, &notes, &rows))?;
@@ -291,7 +291,7 @@ fn run_hankel(
         let mut v = serde_json::json!({
             "method": "hankel",
             "r_o": sep.r_o,
-            "r_o_error": sep.error,
+            "r_o_error": sep.r_o_error,
             "converged": sep.converged,
             "tolerance": tolerance(args),
             "outer_radius": args.c,
@@ -324,7 +324,7 @@ fn run_hankel(
         println!(
             "R_o      = {} ± {:.2e} {l}{}",
             sig(sep.r_o, 9),
-            sep.error,
+            sep.r_o_error,
             not_converged(sep.converged)
         );
         if let Some(q) = r_o_over_a {

@@ -69,7 +69,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         ..Default::default()
     };
     let sep = slab.separation_radius(&params)?;
-    super::exit::finite("R_o error estimate", sep.error)?;
+    super::exit::finite("R_o error estimate", sep.r_o_error)?;
     let u = args.units.units;
     let l = u.symbols().0;
     if let Some(path) = &args.curve {
@@ -80,7 +80,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             "a": args.geom.a, "b": args.geom.b, "d": args.geom.d, "nu": args.geom.nu,
             "r_o": sep.r_o,
             "r_o_over_a": sep.r_o / args.geom.a,
-            "r_o_error": sep.error,
+            "r_o_error": sep.r_o_error,
             "converged": sep.converged,
             "tolerance": args.tol,
             "evaluations": sep.evaluations,
@@ -100,7 +100,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         println!(
             "R_o   = {} {l}  ± {:.1e} {l}{}",
             sig(sep.r_o, 13),
-            sep.error,
+            sep.r_o_error,
             if sep.converged {
                 ""
             } else {
@@ -110,7 +110,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         println!(
             "R_o/A = {:.12}  ± {:.1e}",
             sep.r_o / args.geom.a,
-            sep.error / args.geom.a
+            sep.r_o_error / args.geom.a
         );
         println!(
             "({} midplane evaluations, {:.2} ms)",
@@ -150,7 +150,7 @@ fn curve_csv(
         ),
         format!(
             "R_o = {:e} {l} +- {:.2e} {l}, converged: {}",
-            sep.r_o, sep.error, sep.converged
+            sep.r_o, sep.r_o_error, sep.converged
         ),
     ];
     let n = 1000;

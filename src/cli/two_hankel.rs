@@ -69,13 +69,13 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
     let out = two_plate_hole(&plate, &HoledParams::default()).map_err(|e| {
         anyhow::anyhow!("the Hankel route cannot treat this joint ({e}); try --method fem")
     })?;
-    let converged = out.info.error <= args.tol * out.r_o;
+    let converged = out.info.r_o_error <= args.tol * out.r_o;
     if args.json {
         let mut v = serde_json::json!({
             "method": "hankel",
             "r_o": out.r_o,
             "r_o_over_a": out.r_o / g.a,
-            "r_o_error": out.info.error,
+            "r_o_error": out.info.r_o_error,
             "converged": converged,
             "tolerance": args.tol,
             "interface": "symmetric (one plate on a rigid frictionless plane)",
@@ -90,7 +90,7 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
         println!(
             "R_o = {} ± {:.1e} {l}   (R_o/A = {}, 2R_o = {} {l}){}",
             sig(out.r_o, 10),
-            out.info.error,
+            out.info.r_o_error,
             sig(out.r_o / g.a, 10),
             sig(2.0 * out.r_o, 10),
             if converged {

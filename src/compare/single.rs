@@ -88,5 +88,5 @@ pub fn single_hankel(plate: &SinglePlate, tolerance: f64) -> Result<Value, Separ
         ..Default::default()
     };
     let (s, _) = single_plate_separation(plate, &sep, &hole)?;
-    Ok(Value::with_tolerance(s.r_o, s.error, tolerance))
+    Ok(Value::with_tolerance(s.r_o, s.r_o_error, tolerance))
 }

@@ -54,7 +54,7 @@ pub fn slab_figure(params: &FiguresParams) -> Result<FigureData, FigureError> {
         zeros.push(Point {
             x: sep.r_o,
             y: 0.0,
-            x_bar: (sep.r_o - sep.error, sep.r_o + sep.error),
+            x_bar: (sep.r_o - sep.r_o_error, sep.r_o + sep.r_o_error),
             y_bar: (0.0, 0.0),
         });
         curves.push(FigCurve::with_r_o(
@@ -62,7 +62,7 @@ pub fn slab_figure(params: &FiguresParams) -> Result<FigureData, FigureError> {
             CurveKind::SigmaZ,
             (x, y),
             b,
-            (sep.r_o, sep.error),
+            (sep.r_o, sep.r_o_error),
             params.tolerance,
         ));
     }

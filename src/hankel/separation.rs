@@ -68,7 +68,7 @@ pub struct SeparationInfo {
     /// The separation radius R_o.
     pub r_o: f64,
     /// Estimated absolute error of R_o.
-    pub error: f64,
+    pub r_o_error: f64,
     /// Whether `error` met the relative tolerance asked (the slab's `rel_tol`, the hole
     /// route's `r_o_tolerance`).
     pub converged: bool,
@@ -163,7 +163,7 @@ impl Slab {
         let error = root.half_width + rule.eval(root.x).error / slope.abs();
         Ok(SeparationInfo {
             r_o: root.x,
-            error,
+            r_o_error: error,
             converged: crate::value::meets(root.x, error, params.rel_tol),
             evaluations,
             slope,

@@ -314,7 +314,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                 ..SeparationParams::default()
             };
             let s = slab.separation_radius(&params)?;
-            (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.error / l, s.converged);
+            (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
             if scene.outputs.midplane.is_some() {
                 let m = field::slab_midplane(&slab, s.r_o, scene.tolerance);
                 out.midplane = Some(field::midplane_scaled(m, l, scene.units.stress()));
@@ -351,7 +351,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         (Model::SinglePlate, _) => {
             let (search, hole) = hankel_params(scene.tolerance);
             let (s, _) = single_plate_separation(&substitute(&joint)?, &search, &hole)?;
-            (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.error / l, s.converged);
+            (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
             Some("finite elements (not needed for R_o alone)")
         }
     };

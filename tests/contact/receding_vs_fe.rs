@@ -70,7 +70,7 @@ impl Comparison {
         println!(
             "Hankel {:.9} ± {:.1e}; FE (tol {tol:e}) {:?}; extrapolated {:.9} ({:+.1e}), budget {:.1e}",
             r,
-            c.hankel.info.error,
+            c.hankel.info.r_o_error,
             c.fe,
             c.extrapolated(),
             c.extrapolated() - r,
@@ -91,7 +91,7 @@ impl Comparison {
 
     /// Both error estimates, the FE's propagated through the extrapolation.
     fn budget(&self) -> f64 {
-        self.hankel.info.error + (4.0 * self.fe[2].1 + self.fe[1].1) / 3.0
+        self.hankel.info.r_o_error + (4.0 * self.fe[2].1 + self.fe[1].1) / 3.0
     }
 
     fn check_target(&self) {

@@ -88,11 +88,11 @@ fn separation_radius_agrees_with_the_hankel_slab() {
     // 1.5e-4), and inside the 0.05 % target
     let diff = (r_fe - sep.r_o).abs();
     assert!(
-        diff <= info.error_estimate + sep.error,
+        diff <= info.error_estimate + sep.r_o_error,
         "{r_fe} ± {} vs {} ± {}",
         info.error_estimate,
         sep.r_o,
-        sep.error
+        sep.r_o_error
     );
     assert!(diff < 5e-4 * sep.r_o, "{r_fe} vs {}", sep.r_o);
 }

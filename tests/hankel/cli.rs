@@ -27,7 +27,7 @@ fn json_has_the_keys_and_the_library_value() {
     .unwrap()
     .separation_radius(&SeparationParams::default())
     .unwrap();
-    assert!((r_o - lib.r_o).abs() <= lib.error);
+    assert!((r_o - lib.r_o).abs() <= lib.r_o_error);
 }
 
 #[test]

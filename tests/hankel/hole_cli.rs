@@ -84,7 +84,7 @@ fn corner_terms_flag_reaches_the_solver_and_bad_values_name_the_field() {
     let e = common::json_of(&common::boltzone(&args("3")));
     assert_eq!(e["hole_corner_terms"].as_u64(), Some(3));
     let diff = (e["r_o"].as_f64().unwrap() - sep.r_o).abs();
-    assert!(diff > 0.0 && diff <= e["r_o_error"].as_f64().unwrap() + sep.error);
+    assert!(diff > 0.0 && diff <= e["r_o_error"].as_f64().unwrap() + sep.r_o_error);
     let bad = common::boltzone(&args("7"));
     assert!(!bad.status.success());
     let msg = String::from_utf8_lossy(&bad.stderr);

@@ -465,14 +465,14 @@ fn r_o_estimate_bounds_the_actual_error_beyond_table_1() {
         println!(
             "A/D {a_over_d}, B/A {b_over_a}: N {}, estimate {:.1e}, actual {:.1e} (÷R_o)",
             h.terms,
-            s.error / s.r_o,
+            s.r_o_error / s.r_o,
             actual / s.r_o
         );
-        assert!(s.error <= 1e-6 * s.r_o && h.terms < 64);
+        assert!(s.r_o_error <= 1e-6 * s.r_o && h.terms < 64);
         assert!(
-            actual <= s.error + (r64 - r32).abs(),
+            actual <= s.r_o_error + (r64 - r32).abs(),
             "{actual:e} vs {:e}",
-            s.error
+            s.r_o_error
         );
     }
 }

@@ -209,7 +209,7 @@ pub fn single_plate_separation(
         if hole.terms.is_some() || converged || !holed.refine() {
             let sep_info = SeparationInfo {
                 r_o,
-                error,
+                r_o_error: error,
                 converged,
                 evaluations: evaluations + scan_cache.len() + 1,
                 slope,

@@ -115,7 +115,7 @@ impl Default for RecedingParams {
 pub struct RecedingInfo {
     /// Estimated absolute error of R_o (change from the ⌈3n/4⌉-point run, plus the root
     /// tolerance).
-    pub error: f64,
+    pub r_o_error: f64,
     /// R_o of the ⌈3n/4⌉-point run.
     pub r_o_coarse: f64,
     /// Nyström points n.
@@ -394,7 +394,7 @@ impl Layer {
         let info = RecedingInfo {
             min_pressure,
             min_gap,
-            error: (r_o - coarse).abs() + params.rel_tol * self.d,
+            r_o_error: (r_o - coarse).abs() + params.rel_tol * self.d,
             r_o_coarse: coarse,
             nodes: n,
             xi_nodes: solution.xi_nodes(),

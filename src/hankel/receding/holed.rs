@@ -138,7 +138,7 @@ impl Default for HoledParams {
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
 pub struct HoledInfo {
     /// Estimated absolute error of R_o (see the module docs).
-    pub error: f64,
+    pub r_o_error: f64,
     /// R_o with ⌈3n/4⌉ Nyström points (NaN when not estimated).
     pub r_o_fewer_nodes: f64,
     /// R_o with half the hole modes and 2/3 of the Chebyshev heights (NaN when not estimated).
@@ -408,7 +408,7 @@ pub fn two_plate_hole(
     let b = plate.load().outer();
     let (r_o, last, mut solves) = setup.search(b, params.nodes, params, None)?;
     let mut info = HoledInfo {
-        error: params.rel_tol * setup.d,
+        r_o_error: params.rel_tol * setup.d,
         r_o_fewer_nodes: f64::NAN,
         r_o_half_terms: f64::NAN,
         residual_max: last.residual,
@@ -434,7 +434,7 @@ pub fn two_plate_hole(
         solves += s1 + s2;
         info.r_o_fewer_nodes = r1;
         info.r_o_half_terms = r2;
-        info.error += (r1 - r_o).abs() + (r2 - r_o).abs();
+        info.r_o_error += (r1 - r_o).abs() + (r2 - r_o).abs();
     }
     info.solves = solves;
     info.seconds = start.elapsed().as_secs_f64();
