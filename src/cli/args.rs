@@ -14,7 +14,8 @@
 use boltzone::fem::ElementKind;
 use std::path::PathBuf;
 
-/// Hole radius A, load radius B, plate thickness D and Poisson's ratio ν (lengths in inches).
+/// Hole radius A, load radius B, plate thickness D and Poisson's ratio ν (lengths in inches,
+/// or the length of the command's `--units`).
 #[derive(Debug, Clone, clap::Args, serde::Serialize)]
 pub struct Geometry {
     /// Hole radius A, the inner radius of the bearing annulus (in).
@@ -131,4 +132,22 @@ pub struct Units {
     #[arg(long, default_value = "in-psi-lbf", value_parser = clap::builder::ValueParser::new(
         |s: &str| s.parse::<boltzone::scene::UnitSystem>()))]
     pub units: boltzone::scene::UnitSystem,
+}
+
+impl Units {
+    /// The length symbol (`in`, `mm`, `m`).
+    pub fn length(&self) -> &'static str {
+        self.units.symbols().0
+    }
+
+    /// The stress symbol (`psi`, `MPa`, `Pa`).
+    pub fn stress(&self) -> &'static str {
+        self.units.symbols().1
+    }
+
+    /// A stress of `psi` pounds per square inch in these units (the one conversion,
+    /// [`boltzone::scene::UnitSystem::stress`]).
+    pub fn psi_in(&self, psi: f64) -> f64 {
+        psi * (boltzone::scene::UnitSystem::InPsiLbf.stress() / self.units.stress())
+    }
 }

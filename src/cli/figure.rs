@@ -60,8 +60,10 @@ pub struct RadiusCurve<'a> {
     pub r: &'a [f64],
     /// Values at the radii.
     pub y: &'a [f64],
-    /// Computed separation radius and its error estimate (in).
+    /// Computed separation radius and its error estimate (in `length`).
     pub r_o: (f64, f64),
+    /// Symbol of the length unit of r, B, R_o (`in`, `mm`, `m`).
+    pub length: &'a str,
 }
 
 /// Draws `curve` against r with B, R_o and the rules' radii marked to `path` ([`radius_figure`]).
@@ -85,14 +87,15 @@ pub fn radius_figure(
     (b, d, d2, c): (f64, f64, f64, Option<f64>),
 ) -> (CurveFigure, f64) {
     let (r_o, r_o_error) = curve.r_o;
+    let l = curve.length;
     let mut markers = vec![
         Marker {
-            label: format!("B = {b:.4} in"),
+            label: format!("B = {b:.4} {l}"),
             x: b,
             color: PALETTE[1],
         },
         Marker {
-            label: format!("Rₒ = {r_o:.4} ± {r_o_error:.1e} in (computed)"),
+            label: format!("Rₒ = {r_o:.4} ± {r_o_error:.1e} {l} (computed)"),
             x: r_o,
             color: PALETTE[6],
         },
@@ -101,7 +104,7 @@ pub fn radius_figure(
     let colors = [PALETTE[5], PALETTE[3], PALETTE[7]];
     for ((name, radius), color) in rule_radii((b, d, d2, c)).into_iter().zip(colors) {
         markers.push(Marker {
-            label: format!("{name}: R = {radius:.4} in"),
+            label: format!("{name}: R = {radius:.4} {l}"),
             x: radius,
             color,
         });
@@ -121,7 +124,7 @@ pub fn radius_figure(
     let pad = 0.1 * (y_max - y_min).max(f64::MIN_POSITIVE);
     let fig = CurveFigure {
         title: curve.title.clone(),
-        x_label: "r [in]".into(),
+        x_label: format!("r [{l}]"),
         y_label: curve.y_label.into(),
         curves: vec![Curve {
             label: curve.label.into(),

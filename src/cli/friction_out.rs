@@ -41,8 +41,8 @@ fn largest_slip(f: &FrictionZones, s: &TwoPlateSolution) -> f64 {
         .fold(0.0, |m, i| m.max(f.slip[i].abs()))
 }
 
-/// Adds `mu`, `stick_zones` and `slip_zones` ([r₁, r₂] in inches, node to node) and
-/// `max_slip` (in, inside the contact zone) to the JSON object `out`.
+/// Adds `mu`, `stick_zones` and `slip_zones` ([r₁, r₂] in the --units length, node to node)
+/// and `max_slip` (same length, inside the contact zone) to the JSON object `out`.
 pub fn json(
     out: &mut serde_json::Value,
     s: &TwoPlateSolution,
@@ -55,8 +55,8 @@ pub fn json(
     Ok(())
 }
 
-/// One line for the text output: μ, the zones in inches, the largest slip.
-pub fn summary(s: &TwoPlateSolution, f: &FrictionZones) -> String {
+/// One line for the text output: μ, the zones and the largest slip in the length `l`.
+pub fn summary(s: &TwoPlateSolution, f: &FrictionZones, l: &str) -> String {
     let show = |z: Vec<[f64; 2]>| {
         if z.is_empty() {
             "none".to_string()
@@ -68,7 +68,7 @@ pub fn summary(s: &TwoPlateSolution, f: &FrictionZones) -> String {
         }
     };
     format!(
-        "friction mu = {}: stick r = {} in; slip r = {} in; largest slip {:.3e} in",
+        "friction mu = {}: stick r = {} {l}; slip r = {} {l}; largest slip {:.3e} {l}",
         f.mu,
         show(zones(s, f, false)),
         show(zones(s, f, true)),
@@ -76,9 +76,14 @@ pub fn summary(s: &TwoPlateSolution, f: &FrictionZones) -> String {
     )
 }
 
-/// The curve with the friction columns: r, p, g, τ, the slip s = u_upper − u_lower and the
-/// node state (0 open, 1 stick, 2 slip).
-pub fn curve_csv(s: &TwoPlateSolution, f: &FrictionZones, notes: &[String]) -> String {
+/// The curve with the friction columns: r, p, g, τ (headed `columns`, in `units`), the slip
+/// s = u_upper − u_lower and the node state (0 open, 1 stick, 2 slip).
+pub fn curve_csv(
+    s: &TwoPlateSolution,
+    f: &FrictionZones,
+    notes: &[String],
+    (units, columns): (super::args::Units, &[String]),
+) -> String {
     let mut notes = notes.to_vec();
     notes.push(format!(
         "friction mu = {}: s = slip u_upper - u_lower (outward > 0), state 0 open, 1 stick, 2 slip",
@@ -97,16 +102,8 @@ pub fn curve_csv(s: &TwoPlateSolution, f: &FrictionZones, notes: &[String]) -> S
             ]
         })
         .collect();
-    super::output::curve_csv(
-        &[
-            "r [in]",
-            "p [psi]",
-            "g [in]",
-            "tau [psi]",
-            "s [in]",
-            "state [-]",
-        ],
-        &notes,
-        &rows,
-    )
+    let slip = format!("s [{}]", units.length());
+    let mut cols: Vec<&str> = columns.iter().map(String::as_str).collect();
+    cols.extend([slip.as_str(), "state [-]"]);
+    super::output::curve_csv_in(units.units, &cols, &notes, &rows)
 }

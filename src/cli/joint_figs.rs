@@ -77,6 +77,8 @@ pub struct Deformed<'a> {
     pub r_o: (f64, f64),
     /// Draw out to this radius (the curve figure's right end).
     pub x_end: f64,
+    /// Symbol of the length unit (`in`, `mm`, `m`).
+    pub length: &'a str,
 }
 
 /// Draws `d` to `path` ([`deformed_figure`]).
@@ -139,14 +141,15 @@ pub fn deformed_figure(d: &Deformed<'_>) -> SectionFigure {
     if let Some(o) = outlines.first_mut() {
         o.label = "undeformed".into();
     }
+    let l = d.length;
     let markers = vec![
         Marker {
-            label: format!("B = {:.4} in", d.b),
+            label: format!("B = {:.4} {l}", d.b),
             x: d.b,
             color: PALETTE[1],
         },
         Marker {
-            label: format!("Rₒ = {:.4} ± {:.1e} in (computed)", d.r_o.0, d.r_o.1),
+            label: format!("Rₒ = {:.4} ± {:.1e} {l} (computed)", d.r_o.0, d.r_o.1),
             x: d.r_o.0,
             color: PALETTE[6],
         },
@@ -154,11 +157,11 @@ pub fn deformed_figure(d: &Deformed<'_>) -> SectionFigure {
     let h = z1 - z0;
     SectionFigure {
         title: format!(
-            "Deformed {}, displacements × {k}, cut at r = {:.4} in",
+            "Deformed {}, displacements × {k}, cut at r = {:.4} {l}",
             d.what, r[cut]
         ),
-        x_label: "r [in]".into(),
-        y_label: "z [in]".into(),
+        x_label: format!("r [{l}]"),
+        y_label: format!("z [{l}]"),
         outlines,
         markers,
         x_range: (0.0, r[cut] * 1.02),

@@ -29,6 +29,7 @@ mod table1;
 mod table2;
 mod two;
 mod two_args;
+mod two_files;
 mod two_hankel;
 
 use boltzone::compare::{compare, show, CompareParams, Geometry, Value};

@@ -107,5 +107,10 @@ pub fn curve_csv_in(
 
 /// The provenance line of an R_o: value ± error, and whether it met the tolerance.
 pub fn r_o_note(r_o: f64, error: f64, converged: bool) -> String {
-    format!("R_o = {r_o:e} in +- {error:.2e} in, converged: {converged}")
+    r_o_note_in("in", r_o, error, converged)
+}
+
+/// [`r_o_note`] with the length symbol `l`.
+pub fn r_o_note_in(l: &str, r_o: f64, error: f64, converged: bool) -> String {
+    format!("R_o = {r_o:e} {l} +- {error:.2e} {l}, converged: {converged}")
 }

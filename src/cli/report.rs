@@ -22,16 +22,18 @@ use boltzone::contact::two_plate::TwoPlateSolution;
 use std::fmt::Write;
 
 /// What the report shows besides the solution: the parsed arguments, the joint's A, B, D, D₂,
-/// C (None: infinite), the bearing pressure P (psi) and the tolerance.
+/// C (None: infinite), the bearing pressure P, the tolerance and the unit system of them all.
 pub struct ReportInputs {
     /// The arguments as understood (serialized).
     pub inputs: serde_json::Value,
     /// A, B, D, D₂, C.
     pub geometry: (f64, f64, f64, f64, Option<f64>),
-    /// Mean bearing pressure P (psi).
+    /// Mean bearing pressure P.
     pub pressure: f64,
     /// Wanted relative error of R_o.
     pub tolerance: f64,
+    /// Unit system of every input and result (`--units`).
+    pub units: super::args::Units,
 }
 
 /// A piece of a report.
@@ -53,6 +55,7 @@ pub fn two_report(
     figures: Vec<(String, Option<String>, String)>,
 ) -> Vec<Block> {
     let (a, b, d, d2, c) = r.geometry;
+    let (l, st, f) = r.units.units.symbols();
     let row = |cells: &[&str]| cells.iter().map(|c| c.to_string()).collect::<Vec<_>>();
     let head = |cells: &[&str]| row(cells);
     let mut v = vec![
@@ -61,9 +64,9 @@ pub fn two_report(
             "Calculation report: bolted joint, two-plate model".into(),
         ),
         Block::Para(format!(
-            "boltzone {}; units {} (lengths in, stresses psi, forces lbf).",
+            "boltzone {}; units {} (lengths {l}, stresses {st}, forces {f}).",
             env!("CARGO_PKG_VERSION"),
-            super::output::UNITS
+            r.units.units.name()
         )),
         Block::Para(format!("Command: `{}`", super::output::command_line())),
         Block::Heading(2, "Inputs".into()),
@@ -75,7 +78,7 @@ pub fn two_report(
                 serde_json::Value::String(t) => t.clone(),
                 v => v.to_string(),
             };
-            inputs.push(row(&[k, &shown, unit_of(k)]));
+            inputs.push(row(&[k, &shown, unit_of(k, r.units)]));
         }
     }
     v.push(Block::Table(head(&["input", "value", "unit"]), inputs));
@@ -97,22 +100,22 @@ pub fn two_report(
     let yes = |x: bool| if x { "yes" } else { "no" };
     let mut results = vec![row(&[
         "separation radius R_o",
-        &format!("{:.6} ± {:.1e} in", s.r_o, s.r_o_error),
+        &format!("{:.6} ± {:.1e} {l}", s.r_o, s.r_o_error),
     ])];
     if a > 0.0 {
         results.push(row(&["R_o / A", &format!("{:.5}", s.r_o / a)]));
     }
     results.extend([
-        row(&["contact diameter 2R_o", &format!("{:.6} in", 2.0 * s.r_o)]),
+        row(&["contact diameter 2R_o", &format!("{:.6} {l}", 2.0 * s.r_o)]),
         row(&["converged to the tolerance", yes(s.converged)]),
         row(&["full contact (R_o = C)", yes(s.full_contact)]),
         row(&[
             "mean bearing pressure P",
-            &format!("{:.6e} psi", r.pressure),
+            &format!("{:.6e} {st}", r.pressure),
         ]),
         row(&[
             "deflection under the nut",
-            &format!("{:.4e} in", s.nut_deflection),
+            &format!("{:.4e} {l}", s.nut_deflection),
         ]),
     ]);
     v.push(Block::Heading(2, "Results".into()));
@@ -132,7 +135,7 @@ pub fn two_report(
         })
         .collect();
     v.push(Block::Table(
-        head(&["rule", "R [in]", "(R − R_o)/R_o"]),
+        head(&["rule", &format!("R [{l}]"), "(R − R_o)/R_o"]),
         rules,
     ));
     if !figures.is_empty() {
@@ -238,12 +241,13 @@ pub fn html(blocks: &[Block]) -> String {
     h + "</body>\n</html>\n"
 }
 
-/// The unit of a `two` flag's value ("" for counts, names, switches and ratios).
-fn unit_of(flag: &str) -> &'static str {
+/// The unit of a `two` flag's value in `units` ("" for counts, names, switches and ratios).
+fn unit_of(flag: &str, units: super::args::Units) -> &'static str {
+    let (l, st, f) = units.units.symbols();
     match flag {
-        "a" | "b" | "c" | "d" | "d2" | "nut_displacement" => "in",
-        "e" | "e2" | "p" => "psi",
-        "force" => "lbf",
+        "a" | "b" | "c" | "d" | "d2" | "nut_displacement" => l,
+        "e" | "e2" | "p" => st,
+        "force" => f,
         _ => "",
     }
 }

@@ -6,6 +6,10 @@
 //! [`boltzone::hankel::hole::single_plate_separation`] (infinite slab + hole correction, and a
 //! rim correction when `--c` is given).
 //!
+//! `--units` (in-psi-lbf, mm-MPa-N, m-Pa-N) sets the length of every flag and every printed
+//! length, and the stress of the curve, the VTU and the figures (P = 1 in that stress). Checked by `tests/scene/joint_units.rs`
+//! (the same R_o to 1e-12 in the three systems by both methods).
+//!
 //! # Accuracy
 //!
 //! No numerics of its own: `tests/fem/cli.rs` and `tests/hankel/hole_cli.rs` check the JSON against
@@ -15,7 +19,7 @@
 //!
 //! That of the method run (`cargo bench --bench fem`, `cargo bench --bench hole`).
 
-use super::args::{Element, Geometry, OutputFiles};
+use super::args::{Element, Geometry, OutputFiles, Units};
 use super::check;
 use super::exit::{num, sig, Status};
 use boltzone::fem::single::{
@@ -53,6 +57,11 @@ pub struct Args {
     #[command(flatten)]
     #[serde(flatten)]
     geom: Geometry,
+    /// Lengths in (A, B, D, C and every printed length) and the stress of the curve (P = 1 in
+    /// the stress unit).
+    #[command(flatten)]
+    #[serde(flatten)]
+    units: Units,
     /// Plate outer radius C (default: infinite, truncated at B + 30 D).
     #[arg(long)]
     c: Option<f64>,
@@ -171,6 +180,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     };
     let info = &s.info;
     let r_o_over_a = (args.geom.a > 0.0).then(|| s.r_o / args.geom.a);
+    let l = args.units.length();
     if args.json {
         let mut v = serde_json::json!({
             "method": "fem",
@@ -185,6 +195,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             "nodes": info.nodes,
             "dofs": info.dofs,
             "seconds": info.seconds,
+            "units": args.units.units.name(),
         });
         if let Some(q) = r_o_over_a {
             v["r_o_over_a"] = q.into();
@@ -194,15 +205,15 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         super::print_json(&v)?;
     } else {
         println!(
-            "single plate 2D thick, FE ({kind:?}), A = {} in, B = {} in, D = {} in, C = {}, nu = {}",
+            "single plate 2D thick, FE ({kind:?}), A = {} {l}, B = {} {l}, D = {} {l}, C = {}, nu = {}",
             num(args.geom.a),
             num(args.geom.b),
             num(args.geom.d),
-            args.c.map_or("infinite".into(), |c| format!("{} in", num(c))),
+            args.c.map_or("infinite".into(), |c| format!("{} {l}", num(c))),
             args.geom.nu
         );
         println!(
-            "R_o      = {} ± {:.2e} in{}",
+            "R_o      = {} ± {:.2e} {l}{}",
             sig(s.r_o, 7),
             s.r_o_error,
             not_converged(s.converged)
@@ -211,7 +222,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             println!("R_o / A  = {q:.5}");
         }
         println!(
-            "levels   = {:?} in\norder    = {}\nmesh     = {} nodes, {} dofs (finest), {:.2} s",
+            "levels   = {:?} {l}\norder    = {}\nmesh     = {} nodes, {} dofs (finest), {:.2} s",
             info.levels,
             info.observed_order
                 .map_or("-".into(), |p| format!("{p:.2}")),
@@ -255,28 +266,27 @@ fn run_hankel(
         anyhow::anyhow!("the Hankel route cannot treat this plate ({e}); try --method fem")
     })?;
     if let Some(path) = &args.out.curve {
+        let (l, st) = (args.units.length(), args.units.stress());
         let r = super::hankel_curve::radii(plate, 200);
         let (values, worst) = super::hankel_curve::midplane_curve(plate, &params, &hole, &r)?;
         let notes = [
             format!(
                 "method: single plate 2D thick with a traction-free hole, semi-analytic (Hankel \
                  transform of the slab + hole correction with {} modes, \
-                 boltzone::hankel::hole); P = 1 psi: stresses scale with P",
+                 boltzone::hankel::hole); P = 1 {st}: stresses scale with P",
                 hole.terms
             ),
             "sigma_z = midplane normal stress, compression negative".to_string(),
             format!(
-                "sigma_z error bound: {worst:.2e} psi (slab quadrature + hole residual traction)"
+                "sigma_z error bound: {worst:.2e} {st} (slab quadrature + hole residual traction)"
             ),
-            super::output::r_o_note(sep.r_o, sep.r_o_error, sep.converged),
+            super::output::r_o_note_in(l, sep.r_o, sep.r_o_error, sep.converged),
         ];
         let rows: Vec<Vec<f64>> = r.iter().zip(&values).map(|(r, v)| vec![*r, v[0]]).collect();
-        super::write_output(
-            path,
-            &super::output::curve_csv(&["r [in]", "sigma_z [psi]"], &notes, &rows),
-        )?;
+        super::write_output(path, &sigma_curve(args.units, &notes, &rows))?;
     }
     let r_o_over_a = (args.geom.a > 0.0).then(|| sep.r_o / args.geom.a);
+    let l = args.units.length();
     if args.json {
         let mut v = serde_json::json!({
             "method": "hankel",
@@ -294,6 +304,7 @@ fn run_hankel(
             "hole_history": hole.history,
             "evaluations": sep.evaluations + hole.slab_evaluations,
             "seconds": sep.seconds,
+            "units": args.units.units.name(),
         });
         if let Some(q) = r_o_over_a {
             v["r_o_over_a"] = q.into();
@@ -303,15 +314,15 @@ fn run_hankel(
         super::print_json(&v)?;
     } else {
         println!(
-            "single plate 2D thick with a hole, Hankel route, A = {} in, B = {} in, D = {} in, C = {}, nu = {}",
+            "single plate 2D thick with a hole, Hankel route, A = {} {l}, B = {} {l}, D = {} {l}, C = {}, nu = {}",
             num(args.geom.a),
             num(args.geom.b),
             num(args.geom.d),
-            args.c.map_or("infinite".into(), |c| format!("{} in", num(c))),
+            args.c.map_or("infinite".into(), |c| format!("{} {l}", num(c))),
             args.geom.nu
         );
         println!(
-            "R_o      = {} ± {:.2e} in{}",
+            "R_o      = {} ± {:.2e} {l}{}",
             sig(sep.r_o, 9),
             sep.r_o_error,
             not_converged(sep.converged)
@@ -343,9 +354,10 @@ fn write_finest(
     s: &SingleSolution,
     h: &HalfPlate,
 ) -> anyhow::Result<()> {
+    let (l, st) = (args.units.length(), args.units.stress());
     let method = format!(
         "method: single plate 2D thick (Fernlund's substitution), axisymmetric FE {:?}, finest of \
-         {} levels ({} nodes in the upper half); E = 1 psi, P = 1 psi: stresses scale with P, \
+         {} levels ({} nodes in the upper half); E = 1 {st}, P = 1 {st}: stresses scale with P, \
          displacements with P/E",
         params.kind,
         s.info.levels.len(),
@@ -354,17 +366,20 @@ fn write_finest(
     let m = midplane_of(plate, h)?;
     if let Some(path) = &args.out.plot {
         let g = &args.geom;
+        let y_label = format!("σz [{st}] (P = 1 {st})");
+        let what = format!("single plate 2D thick (E = P = 1 {st})");
         let curve = super::figure::RadiusCurve {
             title: "Single plate 2D thick: midplane normal stress (FE, finest level)".into(),
-            y_label: "σz [psi] (P = 1 psi)",
+            y_label: &y_label,
             label: "σz(r), finest mesh",
             r: &m.r,
             y: &m.sigma_z,
             r_o: (s.r_o, s.r_o_error),
+            length: l,
         };
         let x_end = super::figure::radius_plot(path, &curve, (g.b, g.d, g.d, args.c))?;
         let d = super::joint_figs::Deformed {
-            what: "single plate 2D thick (E = P = 1 psi)",
+            what: &what,
             mesh: &h.mesh,
             u: &h.u,
             mirror: true,
@@ -375,6 +390,7 @@ fn write_finest(
             b: g.b,
             r_o: (s.r_o, s.r_o_error),
             x_end,
+            length: l,
         };
         let deformed = super::joint_figs::sibling(path, "deformed");
         super::joint_figs::deformed_plot(&deformed, &d)?;
@@ -384,27 +400,34 @@ fn write_finest(
             method.clone(),
             "sigma_z = midplane normal stress from the roller reactions, compression negative"
                 .to_string(),
-            super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
+            super::output::r_o_note_in(l, s.r_o, s.r_o_error, s.converged),
         ];
         let rows: Vec<Vec<f64>> =
             m.r.iter()
                 .zip(&m.sigma_z)
                 .map(|(r, z)| vec![*r, *z])
                 .collect();
-        super::write_output(
-            path,
-            &super::output::curve_csv(&["r [in]", "sigma_z [psi]"], &notes, &rows),
-        )?;
+        super::write_output(path, &sigma_curve(args.units, &notes, &rows))?;
     }
     if let Some(path) = &args.out.field {
         let grid = boltzone::scene::field::single_plate_grid(plate.material(), h)?;
         let note = format!(
-            "{method}; plate 0 = upper half z >= 0 (computed), plate 1 = its mirror image; {}; \
-             command: {}",
-            super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
+            "{method}; units {}: coordinates and displacements [{l}], stresses [{st}]; plate 0 = \
+             upper half z >= 0 (computed), plate 1 = its mirror image; {}; command: {}",
+            args.units.units.name(),
+            super::output::r_o_note_in(l, s.r_o, s.r_o_error, s.converged),
             super::output::command_line()
         );
         super::write_output(path, &grid.to_vtu(&note))?;
     }
     Ok(())
+}
+
+/// The midplane σ_z curve (r, σ_z) in the one curve layout, headed in the units of `units`.
+fn sigma_curve(units: Units, notes: &[String], rows: &[Vec<f64>]) -> String {
+    let cols = [
+        format!("r [{}]", units.length()),
+        format!("sigma_z [{}]", units.stress()),
+    ];
+    super::output::curve_csv_in(units.units, &[&cols[0], &cols[1]], notes, rows)
 }

@@ -2,6 +2,10 @@
 //! [`boltzone::contact::two_plate`]: separation radius R_o with its error, and on request the
 //! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV.
 //!
+//! `--units` (in-psi-lbf, mm-MPa-N, m-Pa-N) sets the units of every flag and of the text, the
+//! JSON (`units` key), the curve, the VTU, the figures and the report; the solver works in any
+//! consistent units. Checked by `tests/scene/joint_units.rs`.
+//!
 //! # Accuracy
 //!
 //! No numerics of its own (`boltzone::contact::two_plate`): `tests/contact/cli.rs`
@@ -11,6 +15,7 @@
 //!
 //! That of the two-plate solve (`cargo bench --bench contact`).
 
+use super::args::Units;
 use super::check;
 use super::exit::{sig, usage, Status};
 use super::joint_figs::JointFigure;
@@ -30,6 +35,21 @@ use std::f64::consts::PI;
 /// estimate, on four of the twelve rows.
 const AUTO_HANKEL_BELOW: f64 = 1e-5;
 
+impl Args {
+    /// Young's modulus E of the upper plate in the --units stress (--e, or 304 steel's 28e6 psi
+    /// converted).
+    pub(super) fn e(&self) -> f64 {
+        self.e.unwrap_or_else(|| self.units.psi_in(28.0e6))
+    }
+
+    /// The parsed arguments as JSON with the default E filled in.
+    pub(super) fn inputs(&self) -> anyhow::Result<serde_json::Value> {
+        let mut v = serde_json::to_value(self)?;
+        v["e"] = self.e().into();
+        Ok(v)
+    }
+}
+
 /// Whether a report file is HTML (by its extension, .html or .htm).
 fn is_html(path: &std::path::Path) -> bool {
     path.extension()
@@ -48,7 +68,7 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     if let Some(c) = args.c {
         check::outer_radius("--c", c, g.b)?;
     }
-    check::positive("--e", "Young's modulus E", args.e)?;
+    check::positive("--e", "Young's modulus E", args.e())?;
     if let Some(e2) = args.e2 {
         check::positive("--e2", "lower plate's Young's modulus E2", e2)?;
     }
@@ -94,7 +114,7 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
         check::ratio("--d2", d2, g.d, 1e3, "thickness")?;
     }
     if let Some(e2) = args.e2 {
-        check::ratio("--e2", e2, args.e, 1e6, "Young's modulus")?;
+        check::ratio("--e2", e2, args.e(), 1e6, "Young's modulus")?;
     }
     if args.method == Method::Hankel {
         if let Some((flag, value, why)) = super::two_hankel::unsupported(args) {
@@ -112,8 +132,11 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
 pub fn run(args: Args) -> anyhow::Result<Status> {
     let start = std::time::Instant::now();
     check_args(&args)?;
-    let upper_mat = Material::new(args.e, args.geom.nu)?;
-    let lower_mat = Material::new(args.e2.unwrap_or(args.e), args.nu2.unwrap_or(args.geom.nu))?;
+    let upper_mat = Material::new(args.e(), args.geom.nu)?;
+    let lower_mat = Material::new(
+        args.e2.unwrap_or(args.e()),
+        args.nu2.unwrap_or(args.geom.nu),
+    )?;
     let p = match args.force {
         Some(f) => f / (PI * (args.geom.b * args.geom.b - args.geom.a * args.geom.a)),
         None => args.p,
@@ -168,16 +191,21 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         (solve(&joint, &params)?, None)
     };
     if let (Some(path), Some(field)) = (&args.out.field, &field) {
-        super::write_output(path, &field_vtu(&s, field)?)?;
+        super::write_output(path, &super::two_files::field_vtu(&s, field, args.units)?)?;
     }
     if let Some(path) = &args.out.curve {
-        super::write_output(path, &curve_csv(&s, p))?;
+        super::write_output(path, &super::two_files::curve_csv(&s, p, args.units))?;
     }
     let html = args.report.as_ref().is_some_and(|p| is_html(p));
     let figs = match &field {
         Some(field) if args.out.plot.is_some() || html => {
             let g = &args.geom;
-            figures(&s, field, (g.b, g.d, args.d2.unwrap_or(g.d), args.c))
+            figures(
+                &s,
+                field,
+                (g.b, g.d, args.d2.unwrap_or(g.d), args.c),
+                args.units,
+            )
         }
         _ => Vec::new(),
     };
@@ -195,10 +223,11 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     if let Some(path) = &args.report {
         let g = &args.geom;
         let inputs = super::report::ReportInputs {
-            inputs: serde_json::to_value(&args)?,
+            inputs: args.inputs()?,
             geometry: (g.a, g.b, g.d, args.d2.unwrap_or(g.d), args.c),
             pressure: p,
             tolerance: args.tol,
+            units: args.units,
         };
         let mut shown = Vec::new();
         for (suffix, caption, fig) in &figs {
@@ -234,6 +263,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             "rate": s.info.rate,
             "nut_deflection": s.nut_deflection,
             "seconds": s.info.seconds,
+            "units": args.units.units.name(),
         });
         if let Some(q) = r_o_over_a {
             out["r_o_over_a"] = q.into();
@@ -242,12 +272,13 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             super::friction_out::json(&mut out, &s, f)?;
         }
         out["bearing_pressure"] = p.into();
-        super::output::stamp(&mut out, &args, start)?;
+        super::output::stamp(&mut out, &args.inputs()?, start)?;
         super::print_json(&out)?;
     } else {
+        let l = args.units.length();
         let over_a = r_o_over_a.map_or(String::new(), |q| format!("R_o/A = {}, ", sig(q, 6)));
         println!(
-            "R_o = {} ± {:.1e} in   ({over_a}2R_o = {} in){}",
+            "R_o = {} ± {:.1e} {l}   ({over_a}2R_o = {} {l}){}",
             sig(s.r_o, 7),
             s.r_o_error,
             sig(2.0 * s.r_o, 6),
@@ -272,7 +303,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
                  oscillatory edge singularity){}; the welded model is ill-posed here: use \
                  --interface frictionless or --interface friction --mu M",
                 if s.overlap > 0.0 {
-                    format!(", the plates overlap by {:.2e} in", s.overlap)
+                    format!(", the plates overlap by {:.2e} {l}", s.overlap)
                 } else {
                     String::new()
                 }
@@ -282,9 +313,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             println!("full contact: the plates touch out to the rim, R_o = C");
         }
         if let Some(f) = &s.friction {
-            println!("{}", super::friction_out::summary(&s, f));
+            println!("{}", super::friction_out::summary(&s, f, l));
         }
-        println!("deflection under the nut: {:.4e} in", s.nut_deflection);
+        println!("deflection under the nut: {:.4e} {l}", s.nut_deflection);
     }
     Ok(Status::from_converged(s.converged))
 }
@@ -296,8 +327,11 @@ fn figures(
     s: &TwoPlateSolution,
     field: &TwoPlateField,
     geom: (f64, f64, f64, Option<f64>),
+    units: Units,
 ) -> Vec<(&'static str, &'static str, JointFigure)> {
     use super::figure::{radius_figure, RadiusCurve};
+    let (l, st) = (units.length(), units.stress());
+    let (p_label, g_label) = (format!("p [{st}]"), format!("g [{l}]"));
     let model = format!("model: {}", s.info.model);
     let curve = |title: &str, y_label, label, y| RadiusCurve {
         title: format!("{title}; {model}"),
@@ -306,17 +340,18 @@ fn figures(
         r: &s.radius,
         y,
         r_o: (s.r_o, s.r_o_error),
+        length: l,
     };
     let p = curve(
         "Interface pressure",
-        "p [psi]",
+        &p_label,
         "p(r), finest mesh",
         &s.pressure,
     );
     let (p, x_end) = radius_figure(&p, geom);
     let g = curve(
         "Gap between the plates",
-        "g [in]",
+        &g_label,
         "g(r), finest mesh",
         &s.gap,
     );
@@ -336,6 +371,7 @@ fn figures(
         b: geom.0,
         r_o: (s.r_o, s.r_o_error),
         x_end,
+        length: l,
     };
     vec![
         ("", "interface pressure against r", JointFigure::Curve(p)),
@@ -350,44 +386,4 @@ fn figures(
             JointFigure::Section(super::joint_figs::deformed_figure(&d)),
         ),
     ]
-}
-
-/// r, p, g, τ of the finest mesh in the one curve layout ([`super::output`]).
-fn curve_csv(s: &TwoPlateSolution, p: f64) -> String {
-    let notes = [
-        format!(
-            "method: two-plate FE contact (boltzone::contact::two_plate), interface of the finest \
-             mesh; model: {}",
-            s.info.model
-        ),
-        format!(
-            "p = interface pressure (compression > 0), g = gap between the plates, tau = \
-             interface shear on the upper plate (welded and friction models, 0 otherwise); bearing pressure P = \
-             {p:e} psi"
-        ),
-        super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
-    ];
-    if let Some(f) = &s.friction {
-        return super::friction_out::curve_csv(s, f, &notes);
-    }
-    let rows: Vec<Vec<f64>> = (0..s.radius.len())
-        .map(|i| vec![s.radius[i], s.pressure[i], s.gap[i], s.shear[i]])
-        .collect();
-    super::output::curve_csv(&["r [in]", "p [psi]", "g [in]", "tau [psi]"], &notes, &rows)
-}
-
-/// The finest mesh's field as VTU ([`boltzone::io::vtu`]): plate 0 the lower plate, plate 1
-/// the upper one; interface nodes of both carry the contact pressure, the gap and the status
-/// (1 closed, 0 open), every other node 0.
-fn field_vtu(s: &TwoPlateSolution, field: &TwoPlateField) -> anyhow::Result<String> {
-    let (grid, layout) = boltzone::scene::field::two_plate_grid(s, field)?;
-    let note = format!(
-        "method: two-plate FE contact, finest mesh, {} model; {layout}; interface nodes carry \
-         contact_pressure [psi] (compression > 0), gap [in] (between the plates) and \
-         contact_status (1 closed, 0 open); {}; command: {}",
-        s.info.model,
-        super::output::r_o_note(s.r_o, s.r_o_error, s.converged),
-        super::output::command_line()
-    );
-    Ok(grid.to_vtu(&note))
 }

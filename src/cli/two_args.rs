@@ -11,7 +11,7 @@
 //!
 //! Argument parsing only; the solves are timed by `cargo bench --bench contact`.
 
-use super::args::{Element, Geometry, OutputFiles};
+use super::args::{Element, Geometry, OutputFiles, Units};
 use clap::ValueEnum;
 use std::path::PathBuf;
 
@@ -61,31 +61,35 @@ pub struct Args {
     #[command(flatten)]
     #[serde(flatten)]
     pub(super) geom: Geometry,
-    /// Thickness of the lower plate (in).
+    /// Lengths, stresses, moduli and forces in (every flag and every printed number).
+    #[command(flatten)]
+    #[serde(flatten)]
+    pub(super) units: Units,
+    /// Thickness of the lower plate (in, or the --units length).
     #[arg(long)]
     pub(super) d2: Option<f64>,
-    /// Outer radius C of the plates (in); infinite if omitted.
+    /// Outer radius C of the plates (in, or the --units length); infinite if omitted.
     #[arg(long)]
     pub(super) c: Option<f64>,
-    /// Young's modulus E (psi; 304 steel by default).
-    #[arg(long, default_value_t = 28.0e6)]
-    pub(super) e: f64,
+    /// Young's modulus E (psi, or the --units stress; default 28e6 psi, 304 steel, converted).
+    #[arg(long)]
+    pub(super) e: Option<f64>,
     /// Poisson's ratio of the lower plate (default: --nu).
     #[arg(long)]
     pub(super) nu2: Option<f64>,
     /// Young's modulus of the lower plate (default: --e).
     #[arg(long)]
     pub(super) e2: Option<f64>,
-    /// Mean bearing pressure P (psi).
+    /// Mean bearing pressure P (psi, or the --units stress).
     #[arg(long, default_value_t = 1.0, conflicts_with = "force")]
     pub(super) p: f64,
-    /// Bolt force (lb): sets P = force / (π(B² − A²)).
+    /// Bolt force (lbf, or the --units force): sets P = force / (π(B² − A²)).
     #[arg(long)]
     pub(super) force: Option<f64>,
     /// Pressure profile under head and nut.
     #[arg(long, value_enum, default_value_t = Shape::Uniform)]
     pub(super) load: Shape,
-    /// Instead of a pressure, a uniform displacement (in) of each face under the nut (Fig. 21).
+    /// Instead of a pressure, a uniform displacement (in, or the --units length) of each face under the nut (Fig. 21).
     #[arg(long)]
     pub(super) nut_displacement: Option<f64>,
     /// Fix the outer edge r = C (Fig. 20(c)).

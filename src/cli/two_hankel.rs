@@ -29,7 +29,7 @@ pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> 
     if differs(args.d2, g.d) {
         return Some(("--d2", format!("{:?}", args.d2), why));
     }
-    if differs(args.e2, args.e) {
+    if differs(args.e2, args.e()) {
         return Some(("--e2", format!("{:?}", args.e2), why));
     }
     if differs(args.nu2, g.nu) {
@@ -57,7 +57,7 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
         g.a,
         OuterRadius::Infinite,
         g.d,
-        Material::new(args.e, g.nu)?,
+        Material::new(args.e(), g.nu)?,
         load,
     )?;
     // every flag was checked: what the route rejects now is a geometry beyond its reach, a
@@ -77,12 +77,14 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
             "interface": "symmetric (one plate on a rigid frictionless plane)",
             "hankel": out.info,
             "seconds": out.info.seconds,
+            "units": args.units.units.name(),
         });
-        super::output::stamp(&mut v, args, start)?;
+        super::output::stamp(&mut v, &args.inputs()?, start)?;
         super::print_json(&v)?;
     } else {
+        let l = args.units.length();
         println!(
-            "R_o = {} ± {:.1e} in   (R_o/A = {}, 2R_o = {} in){}",
+            "R_o = {} ± {:.1e} {l}   (R_o/A = {}, 2R_o = {} {l}){}",
             sig(out.r_o, 10),
             out.info.r_o_error,
             sig(out.r_o / g.a, 10),

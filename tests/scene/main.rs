@@ -10,6 +10,7 @@ mod examples;
 mod field;
 mod fuzz;
 mod heat;
+mod joint_units;
 mod temperature;
 mod units;
 
