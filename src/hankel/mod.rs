@@ -51,7 +51,7 @@
 //! use boltzone::{FaceLoad, Material, hankel::{Slab, SeparationParams}};
 //! let slab = Slab::new(0.1, Material::unit(0.3)?, FaceLoad::uniform(0.1, 0.31, 1.0)?)?;
 //! let sep = slab.separation_radius(&SeparationParams::default())?;
-//! assert!(sep.r_o > 0.31 && sep.error < 1e-9);
+//! assert!(sep.r_o > 0.31 && sep.r_o_error < 1e-9);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 

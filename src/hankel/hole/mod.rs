@@ -81,7 +81,7 @@
 //! // R_o's error (max residual·P/slope) is 1.08e-6 R_o: one doubling more, after which the
 //! // change of R_o bounds it and R_o's whole estimate is below 1e-6 R_o
 //! assert!(hole.residual_max < 1e-6 && hole.terms == 8 && hole.corner_terms == 3);
-//! assert!(sep.error < 1e-6 * sep.r_o);
+//! assert!(sep.r_o_error < 1e-6 * sep.r_o);
 //! assert!((sep.r_o / 0.1 - 4.03183).abs() < 1e-5);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```

@@ -68,7 +68,7 @@
 //! let load = FaceLoad::uniform(0.1, 0.31, 1.0)?;
 //! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3)?, load)?;
 //! let out = two_plate_hole(&plate, &HoledParams::default())?;
-//! assert!(out.r_o > 0.31 && out.info.error < 1e-5 * out.r_o);
+//! assert!(out.r_o > 0.31 && out.info.r_o_error < 1e-5 * out.r_o);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 

@@ -27,7 +27,7 @@
 //! use boltzone::hankel::receding::{Layer, RecedingParams};
 //! let layer = Layer::new(1.0, Material::unit(0.3)?, FaceLoad::uniform(0.0, 1.0, 1.0)?)?;
 //! let contact = layer.receding_contact(&RecedingParams::default())?;
-//! assert!(contact.r_o > 1.0 && contact.info.error < 1e-8);
+//! assert!(contact.r_o > 1.0 && contact.info.r_o_error < 1e-8);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
