@@ -73,7 +73,12 @@ pub fn two_report(
     ];
     let mut inputs = Vec::new();
     if let serde_json::Value::Object(map) = &r.inputs {
-        for (k, v) in map.iter().filter(|(_, v)| !v.is_null()) {
+        // a force given sets P = F/(π(B² − A²)): the unused default p is not an input
+        let has_force = map.get("force").is_some_and(|f| !f.is_null());
+        for (k, v) in map
+            .iter()
+            .filter(|(k, v)| !v.is_null() && !(has_force && k.as_str() == "p"))
+        {
             let shown = match v {
                 serde_json::Value::String(t) => t.clone(),
                 v => v.to_string(),
@@ -87,7 +92,7 @@ pub fn two_report(
     v.push(Block::Para(format!(
         "The two-plate model of Gould & Mikic (1970), Chapter II.B: axisymmetric finite \
          elements, unilateral contact at the interface ({} model). The mesh is refined at A, B \
-         and R_o level by level until the error estimate of R_o (max(|d₃|, |d₂|/4, |d₁|/16) of \
+         and Rₒ level by level until the error estimate of Rₒ (max(|d₃|, |d₂|/4, |d₁|/16) of \
          the last level changes, plus the error of cutting a wide plate) meets the relative \
          tolerance {}: {} levels, finest mesh {} nodes / {} unknowns, {:.2} s.",
         s.info.model,
@@ -99,16 +104,16 @@ pub fn two_report(
     )));
     let yes = |x: bool| if x { "yes" } else { "no" };
     let mut results = vec![row(&[
-        "separation radius R_o",
+        "separation radius Rₒ",
         &format!("{:.6} ± {:.1e} {l}", s.r_o, s.r_o_error),
     ])];
     if a > 0.0 {
-        results.push(row(&["R_o / A", &format!("{:.5}", s.r_o / a)]));
+        results.push(row(&["Rₒ / A", &format!("{:.5}", s.r_o / a)]));
     }
     results.extend([
-        row(&["contact diameter 2R_o", &format!("{:.6} {l}", 2.0 * s.r_o)]),
+        row(&["contact diameter 2Rₒ", &format!("{:.6} {l}", 2.0 * s.r_o)]),
         row(&["converged to the tolerance", yes(s.converged)]),
-        row(&["full contact (R_o = C)", yes(s.full_contact)]),
+        row(&["full contact (Rₒ = C)", yes(s.full_contact)]),
         row(&[
             "mean bearing pressure P",
             &format!("{:.6e} {st}", r.pressure),
@@ -122,7 +127,7 @@ pub fn two_report(
     v.push(Block::Table(head(&["quantity", "value"]), results));
     v.push(Block::Heading(2, "Rules of thumb".into()));
     v.push(Block::Para(
-        "Contact radius R of each rule and its error against the computed R_o.".into(),
+        "Contact radius R of each rule and its error against the computed Rₒ.".into(),
     ));
     let rules = rule_radii((b, d, d2, c))
         .into_iter()
@@ -135,7 +140,7 @@ pub fn two_report(
         })
         .collect();
     v.push(Block::Table(
-        head(&["rule", &format!("R [{l}]"), "(R − R_o)/R_o"]),
+        head(&["rule", &format!("R [{l}]"), "(R − Rₒ)/Rₒ"]),
         rules,
     ));
     if !figures.is_empty() {

@@ -119,7 +119,7 @@ fn gap_and_deformed_figures_mark_the_computed_radii() {
     let cone = 100.0 * (b + d - r_o) / r_o;
     for want in [
         format!(
-            "<td>separation radius R_o</td><td>{r_o:.6} ± {:.1e} in</td>",
+            "<td>separation radius Rₒ</td><td>{r_o:.6} ± {:.1e} in</td>",
             v["r_o_error"].as_f64().unwrap()
         ),
         format!(

@@ -82,7 +82,7 @@ fn calculation_report_records_inputs_results_and_rules() {
         "| e | 28000000.0 | psi |".to_string(),
         "| tol | 0.001 |".to_string(),
         format!(
-            "| separation radius R_o | {r_o:.6} ± {:.1e} in |",
+            "| separation radius Rₒ | {r_o:.6} ± {:.1e} in |",
             v["r_o_error"].as_f64().unwrap()
         ),
         format!(
