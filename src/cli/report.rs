@@ -77,7 +77,7 @@ pub fn two_report(
         let has_force = map.get("force").is_some_and(|f| !f.is_null());
         for (k, v) in map
             .iter()
-            .filter(|(k, v)| !v.is_null() && !(has_force && k.as_str() == "p"))
+            .filter(|(k, v)| !(v.is_null() || (has_force && k.as_str() == "p")))
         {
             let shown = match v {
                 serde_json::Value::String(t) => t.clone(),
