@@ -159,39 +159,37 @@ fn scene_friction_keys_reach_the_model() {
     }
 }
 
-/// Steel on aluminium with friction: the pressure ends like √(R_o − r) (a smooth receding
-/// contact edge, Johnson, *Contact Mechanics*, §5.8), with no spike, and |τ| = μp where slipping.
-/// The welded model of the same pair spiked at R_o (issue 17 item 11).
-#[test]
-fn dissimilar_plates_end_in_a_square_root_edge_without_spikes() {
+/// Runs the aluminium pair with friction and `extra` flags; returns the JSON and the curve's rows.
+fn friction_curve(extra: &[&str]) -> (serde_json::Value, Vec<Vec<f64>>) {
     let curve = std::env::temp_dir().join(format!("boltzone-fr-edge-{}.csv", std::process::id()));
     let mut args = PAIR.to_vec();
-    args.extend([
-        "1100",
-        "--interface",
-        "friction",
-        "--mu",
-        "0.3",
-        "--json",
-        "--curve",
-    ]);
+    args.extend(["1100", "--interface", "friction", "--json", "--curve"]);
     args.push(curve.to_str().unwrap());
+    args.extend(extra);
     let out = boltzone(&args);
     assert!(
         out.status.success(),
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let r_o = v["r_o"].as_f64().unwrap();
     let text = std::fs::read_to_string(&curve).unwrap();
     std::fs::remove_file(&curve).ok();
-    let rows: Vec<Vec<f64>> = text
+    let rows = text
         .lines()
         .skip(1)
         .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
         .collect();
+    (serde_json::from_slice(&out.stdout).unwrap(), rows)
+}
+
+/// Steel on aluminium with friction: the pressure ends like √(R_o − r) (a smooth receding
+/// contact edge, Johnson, *Contact Mechanics*, §5.8), with no spike, and |τ| = μp where slipping.
+/// The welded model of the same pair spiked at R_o (issue 17 item 11).
+#[test]
+fn dissimilar_plates_end_in_a_square_root_edge_without_spikes() {
+    let (v, rows) = friction_curve(&["--mu", "0.3"]);
+    let r_o = v["r_o"].as_f64().unwrap();
     let p_max = rows.iter().map(|r| r[1]).fold(0.0, f64::max);
     // the last nodes in contact within 0.01 in of R_o (about 2.5 D/100): p/√(R_o − r) constant
     let edge: Vec<f64> = rows
