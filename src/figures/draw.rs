@@ -29,7 +29,7 @@
 //! ```
 
 use super::{FigureData, Source, PALETTE};
-use crate::plot::{typeset, Figure, PlotError};
+use crate::plot::{draw_legend, pe, rgb, typeset, Figure, PlotError};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -38,14 +38,6 @@ pub const SIZE: (u32, u32) = (1000, 660);
 
 /// Colours of successive point series.
 const POINT_COLOURS: [(u8, u8, u8); 4] = [(150, 0, 0), (0, 120, 120), (120, 80, 0), (90, 0, 150)];
-
-fn err<E: std::fmt::Display>(e: E) -> PlotError {
-    PlotError::Draw(e.to_string())
-}
-
-fn colour((r, g, b): (u8, u8, u8)) -> RGBColor {
-    RGBColor(r, g, b)
-}
 
 /// The data's extent: (x_min, x_max, y_min, y_max) over curves and points (bars included).
 fn extent(fig: &FigureData) -> (f64, f64, f64, f64) {
@@ -80,7 +72,7 @@ fn is_drawing(fig: &FigureData) -> bool {
 
 impl Figure for FigureData {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), PlotError> {
-        root.fill(&WHITE).map_err(err)?;
+        root.fill(&WHITE).map_err(pe)?;
         let (x0, x1, y0, y1) = extent(self);
         let (w, h) = root.dim_in_pixel();
         let entries = self.curves.len() + self.points.len();
@@ -108,28 +100,28 @@ impl Figure for FigureData {
             .x_label_area_size(45)
             .y_label_area_size(70)
             .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
-            .map_err(err)?;
+            .map_err(pe)?;
         chart
             .configure_mesh()
             .x_desc(typeset(&self.x_label))
             .y_desc(typeset(&self.y_label))
             .label_style(("sans-serif", 14))
             .draw()
-            .map_err(err)?;
+            .map_err(pe)?;
         if yr.0 < 0.0 && yr.1 > 0.0 {
             chart
                 .draw_series(LineSeries::new([(xr.0, 0.0), (xr.1, 0.0)], BLACK.mix(0.6)))
-                .map_err(err)?;
+                .map_err(pe)?;
         }
         let tick = 0.04 * (yr.1 - yr.0);
         for (i, c) in self.curves.iter().enumerate() {
-            let col = colour(PALETTE[i % PALETTE.len()]);
+            let col = rgb(PALETTE[i % PALETTE.len()]);
             chart
                 .draw_series(LineSeries::new(
                     c.x.iter().copied().zip(c.y.iter().copied()),
                     col.stroke_width(2),
                 ))
-                .map_err(err)?
+                .map_err(pe)?
                 .label(typeset(&c.label))
                 .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], col.stroke_width(2)));
             if let (Some(v), false) = (c.r_o, is_drawing(self)) {
@@ -141,17 +133,17 @@ impl Figure for FigureData {
                         3,
                         col.stroke_width(2),
                     ))
-                    .map_err(err)?;
+                    .map_err(pe)?;
                 chart
                     .draw_series(std::iter::once(PathElement::new(
                         [(v.value - v.error, 0.0), (v.value + v.error, 0.0)],
                         col.stroke_width(3),
                     )))
-                    .map_err(err)?;
+                    .map_err(pe)?;
             }
         }
         for (k, s) in self.points.iter().enumerate() {
-            let col = colour(POINT_COLOURS[k % POINT_COLOURS.len()]);
+            let col = rgb(POINT_COLOURS[k % POINT_COLOURS.len()]);
             let style = col.stroke_width(2);
             let bars = s.points.iter().flat_map(|p| {
                 [
@@ -159,7 +151,7 @@ impl Figure for FigureData {
                     PathElement::new([(p.x, p.y_bar.0), (p.x, p.y_bar.1)], style),
                 ]
             });
-            chart.draw_series(bars).map_err(err)?;
+            chart.draw_series(bars).map_err(pe)?;
             macro_rules! series {
                 ($make:expr) => {{
                     let make = $make;
@@ -169,7 +161,7 @@ impl Figure for FigureData {
                                 .iter()
                                 .map(|p| EmptyElement::at((p.x, p.y)) + make()),
                         )
-                        .map_err(err)?
+                        .map_err(pe)?
                         .label(typeset(&s.label))
                         .legend(move |(x, y)| EmptyElement::at((x + 10, y)) + make());
                 }};
@@ -180,13 +172,6 @@ impl Figure for FigureData {
                 Source::Computed => series!(move || Circle::new((0, 0), 4, col.filled())),
             }
         }
-        chart
-            .configure_series_labels()
-            .label_font(("sans-serif", 14))
-            .background_style(WHITE.mix(0.9))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(err)
+        draw_legend(&mut chart)
     }
 }
