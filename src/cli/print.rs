@@ -1,0 +1,81 @@
+//! How results leave the program: JSON without nulls (an absent quantity is left out, a
+//! non-finite number is an error), progress bars on stderr, files written whole through a
+//! temporary file.
+//!
+//! # Accuracy
+//!
+//! No numerics: `tests/io/json_out.rs` (no null where a number is due) and `tests/cli/` (files whole or not at all).
+//!
+//! # Cost
+//!
+//! Linear in the output.
+
+use indicatif::{ProgressBar, ProgressStyle};
+use std::path::Path;
+
+/// A progress bar on stderr (indicatif draws nothing when stderr is not a terminal).
+pub fn progress(len: u64, what: &str) -> ProgressBar {
+    let bar = ProgressBar::new(len);
+    if let Ok(style) =
+        ProgressStyle::with_template("{msg} {bar:40} {pos}/{len} [{elapsed} < {eta}]")
+    {
+        bar.set_style(style);
+    }
+    bar.set_message(what.to_string());
+    bar
+}
+
+/// Keys whose value may be absent (printed as nothing rather than null).
+const OPTIONAL_KEYS: [&str; 9] = [
+    "rate",
+    "cut",
+    "observed_order",
+    "r_o_over_a",
+    "single_hankel",
+    "autoradiographic",
+    "discrepancy_autoradiographic_percent",
+    "outer_radius",
+    "hole_history",
+];
+
+/// Prints `value` as pretty JSON without its null entries: an absent quantity (no observed rate,
+/// no hole) is left out rather than printed as null. serde_json prints a non-finite number as
+/// null too: a null under any other key is therefore an error (exit 1), never a silent null.
+pub fn print_json<T: serde::Serialize>(value: &T) -> anyhow::Result<()> {
+    fn strip(v: &mut serde_json::Value, path: &str) -> anyhow::Result<()> {
+        match v {
+            serde_json::Value::Object(m) => {
+                for (k, x) in m.iter() {
+                    if x.is_null() && !OPTIONAL_KEYS.contains(&k.as_str()) {
+                        anyhow::bail!("{path}.{k} is not a finite number (NaN or infinite)");
+                    }
+                }
+                m.retain(|_, x| !x.is_null());
+                for (k, x) in m.iter_mut() {
+                    strip(x, &format!("{path}.{k}"))?;
+                }
+            }
+            serde_json::Value::Array(a) => {
+                for (i, x) in a.iter_mut().enumerate() {
+                    if x.is_null() {
+                        anyhow::bail!("{path}[{i}] is not a finite number (NaN or infinite)");
+                    }
+                    strip(x, &format!("{path}[{i}]"))?;
+                }
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+    let mut v = serde_json::to_value(value)?;
+    strip(&mut v, "result")?;
+    println!("{}", serde_json::to_string_pretty(&v)?);
+    Ok(())
+}
+
+/// Writes `text` to `path` through a temporary file renamed into place.
+pub fn write_output(path: &Path, text: &str) -> anyhow::Result<()> {
+    boltzone::plot::write_atomic(path, text.as_bytes())?;
+    eprintln!("wrote {}", path.display());
+    Ok(())
+}
