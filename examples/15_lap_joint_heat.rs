@@ -1,5 +1,8 @@
 //! Example 15: heat through Chapter V's aluminium lap joint, ours beside the report's.
 //!
+//! Builds on: example 04 (the two-plate model's interface pressure) and the heat module's
+//! correlation, network and conduction solver.
+//!
 //! The report (Chapter V): plates 0.1 in thick, hole 2A = 0.2 in, bearing face 2B = 0.26 in,
 //! 1000 lb (46,500 psi), H = 150,000 psi, k = 100 Btu/hr·ft·°F, σ₁ = σ₂ = 50 µin, tan θ = 0.1,
 //! 20 °F to 0 °F over 7 in. Its table gives the interface rings 0.10–0.13–0.16–0.175 in at
