@@ -74,7 +74,7 @@ pub struct NetworkDeck {
 
 /// A solved deck; serializes as `{"title": …, "nodes": [{"n": 1, "t": …, …}], "residual": …}`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct DeckSolution {
+pub struct NetworkDeckSolution {
     /// The deck's title.
     pub title: String,
     /// Nodes and residual.
@@ -84,15 +84,15 @@ pub struct DeckSolution {
 
 impl NetworkDeck {
     /// Solves the deck's network.
-    pub fn solve(&self) -> Result<DeckSolution, NetworkError> {
-        Ok(DeckSolution {
+    pub fn solve(&self) -> Result<NetworkDeckSolution, NetworkError> {
+        Ok(NetworkDeckSolution {
             title: self.title.clone(),
             solution: self.network.solve()?,
         })
     }
 }
 
-impl fmt::Display for DeckSolution {
+impl fmt::Display for NetworkDeckSolution {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(f, "{}", self.title)?;
         write!(f, "{}", self.solution)

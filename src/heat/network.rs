@@ -103,7 +103,7 @@ pub struct Network {
 
 /// One node of a solution (the program's printout per node).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct NodeResult {
+pub struct NodeTemperature {
     /// Node number (from 1).
     pub n: usize,
     /// Temperature.
@@ -128,7 +128,7 @@ pub struct NodeResult {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct NetworkSolution {
     /// Per node, in order.
-    pub nodes: Vec<NodeResult>,
+    pub nodes: Vec<NodeTemperature>,
     /// The largest |RES_i| (module docs).
     pub residual: f64,
 }
@@ -221,8 +221,8 @@ impl Network {
             gt[a] -= g * t[b];
             gt[b] -= g * t[a];
         }
-        let nodes: Vec<NodeResult> = (0..n)
-            .map(|i| NodeResult {
+        let nodes: Vec<NodeTemperature> = (0..n)
+            .map(|i| NodeTemperature {
                 n: i + 1,
                 t: t[i],
                 power: self.power[i],
