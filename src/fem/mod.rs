@@ -79,7 +79,8 @@ pub use loads::Loads;
 pub use mesh::{Mesh, PlateSpec};
 pub use ordering::nested_dissection;
 pub use recover::{
-    centre_stresses, gauss_stresses, internal_forces, line_traction, nodal_stresses, reactions,
+    centre_stresses, gauss_stresses, internal_forces, line_traction, nodal_mean, nodal_stresses,
+    reactions,
 };
 pub use solve::{Factorization, SolveParams};
 pub use spacing::Spacing;

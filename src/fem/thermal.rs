@@ -51,11 +51,11 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::element::{thermal::ElementThermal, ElementKind, ElementPoint};
+use super::element::{thermal::ElementThermal, ElementKind, ElementPoint, Stress};
 use super::error::FemError;
 use super::loads::Loads;
 use super::mesh::Mesh;
-use super::recover::{element_u, material};
+use super::recover::{element_u, material, nodal_mean};
 use crate::error::InputError;
 use crate::material::Material;
 
@@ -269,6 +269,21 @@ impl Thermal {
             k.thermal_quadrature_points(x, m, ue, th)
         })?;
         Ok(per.into_iter().flatten().collect())
+    }
+
+    /// Nodal stresses σ = D (B u − ε_th), each element's value at the node (its own
+    /// temperature there; the report's element: its mean strain) averaged over the elements
+    /// sharing it, as [`super::recover::nodal_stresses`] averages.
+    pub fn nodal_stresses(
+        &self,
+        mesh: &Mesh,
+        materials: &[Material],
+        u: &[[f64; 2]],
+    ) -> Result<Vec<Stress>, FemError> {
+        let per = self.each_element(mesh, materials, u, |k, x, m, ue, th| {
+            k.thermal_nodal_stresses(x, m, ue, th)
+        })?;
+        nodal_mean(mesh, |e| Ok(per[e].clone()))
     }
 
     /// Stress σ = D (B u − ε_th) at each element's centre.

@@ -54,7 +54,8 @@ pub struct Midplane {
 }
 
 /// `grid` with lengths (points, displacements, `gap`) divided by `length` and stresses
-/// (`sigma_*`, `tau_rz`, `von_mises`, `contact_pressure`) by `stress`.
+/// (`sigma_*`, `tau_rz`, `von_mises`, `contact_pressure`) by `stress`; `contact_status` and
+/// `temperature` kept.
 pub fn scaled(mut grid: Grid, length: f64, stress: f64) -> Grid {
     let l = |p: &mut [f64; 2]| p.iter_mut().for_each(|x| *x /= length);
     grid.points.iter_mut().for_each(l);
@@ -62,7 +63,7 @@ pub fn scaled(mut grid: Grid, length: f64, stress: f64) -> Grid {
     for (name, v) in &mut grid.scalars {
         let f = match name.as_str() {
             "gap" => length,
-            "contact_status" => 1.0,
+            "contact_status" | "temperature" => 1.0,
             _ => stress,
         };
         v.iter_mut().for_each(|x| *x /= f);
@@ -107,8 +108,18 @@ pub fn two_plate_grid(
 }
 
 /// The single plate's field: the solved upper half (plate 0) and its mirror image (plate 1).
+/// With temperatures ([`HalfPlate::thermal`]) the stresses are σ = D (ε − ε_th) and the grid
+/// carries the nodal `temperature` (in the degrees it was given in).
 pub fn single_plate_grid(material: Material, h: &HalfPlate) -> Result<Grid, FemError> {
-    let mut grid = Grid::plate(&h.mesh, &[material], &h.u, 0)?;
+    let mut grid = match &h.thermal {
+        Some(th) => {
+            let s = th.nodal_stresses(&h.mesh, &h.materials, &h.u)?;
+            let mut g = Grid::with_stresses(&h.mesh, &s, &h.u, 0);
+            g.add_scalar("temperature", th.temperature().to_vec());
+            g
+        }
+        None => Grid::plate(&h.mesh, &[material], &h.u, 0)?,
+    };
     let lower = grid.mirrored(1);
     grid.append(&lower);
     Ok(grid)

@@ -207,6 +207,10 @@ pub fn pick(scene: &Scene) -> (Method, &'static str) {
         (Model::Slab, _) => (Method::Hankel, "Hankel transforms: the slab's exact route"),
         (Model::SinglePlate, Method::Fem) => (Method::Fem, "finite elements (asked)"),
         (Model::SinglePlate, Method::Hankel) => (Method::Hankel, "Hankel + hole correction (asked)"),
+        (Model::SinglePlate, Method::Auto) if scene.temperature.is_some() => (
+            Method::Fem,
+            "finite elements: the thermal strains of [temperature] are in the FE model only",
+        ),
         (Model::SinglePlate, Method::Auto)
             if scene.outputs.field.is_some() || scene.outputs.midplane.is_some() =>
         {
@@ -330,8 +334,16 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                 ..SingleParams::default()
             };
             let plate = substitute(&joint)?;
-            let s = if scene.outputs.field.is_some() || scene.outputs.midplane.is_some() {
-                let (s, h) = fem_single::solve_with_field(&plate, &params)?;
+            let keep = scene.outputs.field.is_some() || scene.outputs.midplane.is_some();
+            let (s, h) = match &scene.temperature {
+                Some(t) => super::temperature::solve_single(&plate, &params, t, keep)?,
+                None if keep => {
+                    let (s, h) = fem_single::solve_with_field(&plate, &params)?;
+                    (s, Some(h))
+                }
+                None => (fem_single::solve(&plate, &params)?, None),
+            };
+            if let Some(h) = h {
                 let st = scene.units.stress();
                 if scene.outputs.field.is_some() {
                     let grid = field::single_plate_grid(plate.material(), &h)?;
@@ -341,10 +353,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                     let m = field::single_plate_midplane(&plate, &h)?;
                     out.midplane = Some(field::midplane_scaled(m, l, st));
                 }
-                s
-            } else {
-                fem_single::solve(&plate, &params)?
-            };
+            }
             (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
             Some("Hankel + hole correction")
         }
