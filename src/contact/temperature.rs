@@ -113,3 +113,39 @@ impl<'a> ScaledTemperature<'a> {
         Ok(th.loads(&model.mesh, &model.materials)?)
     }
 }
+
+/// The temperature field of `t` on the finest level's mesh of a two-plate field in the joint's
+/// units ([`super::field::TwoPlateField`], both plates meshed): each element's table is its
+/// plate's (the upper plate above z = 0, the lower below), each node's temperature its plate's
+/// at (r, |z|). Its stresses σ = D (ε − ε_th) are those the contact solve balanced.
+pub fn thermal_field(
+    t: &JointTemperature,
+    field: &super::field::TwoPlateField,
+) -> Result<Thermal, ContactError> {
+    let mesh = &field.model.mesh;
+    let z = |n: usize| mesh.nodes()[n][1];
+    let (top, bottom) = mesh
+        .nodes()
+        .iter()
+        .fold((0.0f64, 0.0f64), |(t, b), x| (t.max(x[1]), b.min(x[1])));
+    let thickness = [top, -bottom];
+    let mut temperature = vec![t.reference; mesh.n_nodes()];
+    let mut tables = Vec::with_capacity(mesh.n_elements());
+    for e in 0..mesh.n_elements() {
+        let nodes = mesh.element_nodes(e);
+        let zc = nodes.iter().map(|&n| z(n)).sum::<f64>() / nodes.len() as f64;
+        let k = usize::from(zc < 0.0);
+        for &n in nodes {
+            let r = mesh.nodes()[n][0];
+            temperature[n] = t.plates[k].at(r, z(n).abs(), thickness[k]);
+        }
+        tables.push((mesh.element_material(e), t.materials[k].clone()));
+    }
+    // the mesh's material index of each element → its table
+    let count = tables.iter().map(|(m, _)| m + 1).max().unwrap_or(0);
+    let mut by_index = vec![t.materials[0].clone(); count];
+    for (m, table) in tables {
+        by_index[m] = table;
+    }
+    Ok(Thermal::new(mesh, by_index, temperature, t.reference)?)
+}

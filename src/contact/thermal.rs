@@ -46,8 +46,10 @@
 //! ```
 
 use super::error::ContactError;
-pub use super::temperature::{JointTemperature, PlateTemperature, TemperatureGrid};
+use super::field::TwoPlateField;
+pub use super::temperature::{thermal_field, JointTemperature, PlateTemperature, TemperatureGrid};
 use super::two_plate::{solve_keeping_with, TwoPlateParams, TwoPlateSolution};
+use crate::fem::thermal::Thermal;
 use crate::joint::Joint;
 
 /// Solves the two-plate joint with the temperature field `t` (module docs); the isothermal
@@ -58,4 +60,17 @@ pub fn solve_with_temperature(
     t: &JointTemperature,
 ) -> Result<TwoPlateSolution, ContactError> {
     solve_keeping_with(joint, params, Some(t)).map(|(s, _)| s)
+}
+
+/// As [`solve_with_temperature`], keeping the finest level's field in the joint's units and its
+/// temperature field ([`thermal_field`]) for a VTU with the thermal stresses.
+pub fn solve_field_with_temperature(
+    joint: &Joint,
+    params: &TwoPlateParams,
+    t: &JointTemperature,
+) -> Result<(TwoPlateSolution, TwoPlateField, Thermal), ContactError> {
+    let (s, f) = solve_keeping_with(joint, params, Some(t))?;
+    let f = f.rescaled()?;
+    let th = thermal_field(t, &f)?;
+    Ok((s, f, th))
 }

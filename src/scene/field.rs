@@ -35,6 +35,7 @@
 use crate::contact::field::TwoPlateField;
 use crate::contact::two_plate::TwoPlateSolution;
 use crate::fem::single::HalfPlate;
+use crate::fem::thermal::Thermal;
 use crate::fem::FemError;
 use crate::hankel::Slab;
 use crate::io::vtu::Grid;
@@ -79,9 +80,28 @@ pub fn two_plate_grid(
     s: &TwoPlateSolution,
     field: &TwoPlateField,
 ) -> Result<(Grid, &'static str), FemError> {
+    two_plate_grid_with(s, field, None)
+}
+
+/// [`two_plate_grid`] of a joint with temperatures `thermal`
+/// ([`crate::contact::thermal::solve_field_with_temperature`]): stresses σ = D (ε − ε_th) and
+/// the nodal `temperature` (in the degrees it was given in).
+pub fn two_plate_grid_with(
+    s: &TwoPlateSolution,
+    field: &TwoPlateField,
+    thermal: Option<&Thermal>,
+) -> Result<(Grid, &'static str), FemError> {
     let model = &field.model;
     let mesh = &model.mesh;
-    let mut grid = Grid::plate(mesh, &model.materials, &field.u, 0)?;
+    let mut grid = match thermal {
+        Some(th) => {
+            let st = th.nodal_stresses(mesh, &model.materials, &field.u)?;
+            let mut g = Grid::with_stresses(mesh, &st, &field.u, 0);
+            g.add_scalar("temperature", th.temperature().to_vec());
+            g
+        }
+        None => Grid::plate(mesh, &model.materials, &field.u, 0)?,
+    };
     let n = mesh.n_nodes();
     let (mut p, mut g, mut st) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let mut faces = vec![mesh.bottom(model.upper)];

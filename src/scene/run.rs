@@ -269,7 +269,14 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         (Model::TwoPlate, _) => {
             let params = two_plate_params(scene, nut);
             let s = match (&scene.temperature, &scene.outputs.field) {
-                (Some(t), _) => {
+                (Some(t), Some(_)) => super::temperature::two_plate_field(
+                    &joint,
+                    &params,
+                    t,
+                    (l, scene.units.stress()),
+                    &mut out.field,
+                )?,
+                (Some(t), None) => {
                     thermal::solve_with_temperature(&joint, &params, &t.joint_temperature(&joint)?)?
                 }
                 (None, Some(_)) => {

@@ -20,7 +20,7 @@
 //! the single-plate models take temperatures; the single-plate substitute mirrors one plate
 //! about the midplane, so it takes one entry of each key (or two equal ones), a face pressure
 //! (no nut displacement) and the FE route (`auto` picks it). With `[outputs] field` (single
-//! plate) the VTU's stresses are σ = D (ε − ε_th) and it carries the nodal `temperature`.
+//! plate or two-plate) the VTU's stresses are σ = D (ε − ε_th) and it carries the nodal `temperature`.
 //! Each error names the key, the value and the line.
 //!
 //! # Accuracy
@@ -50,8 +50,10 @@ use super::error::SceneError;
 use super::file::{line_of, path_name, Method, Model, Scene, Seg};
 pub use super::temperature_spec::TemperatureSpec;
 use crate::contact::thermal::{JointTemperature, PlateTemperature};
+use crate::contact::two_plate::{TwoPlateParams, TwoPlateSolution};
 use crate::fem::single::{HalfPlate, SingleParams, SingleSolution};
 use crate::fem::single_thermal::{self, SingleTemperature};
+use crate::io::vtu::Grid;
 use crate::joint::{Joint, SinglePlate};
 
 fn fail(text: &str, key: &str, value: impl std::fmt::Display, reason: &str) -> SceneError {
@@ -93,14 +95,6 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
         }
         Model::SinglePlate => check_single(scene, t, text)?,
         Model::TwoPlate => {}
-    }
-    if scene.outputs.field.is_some() && scene.model == Model::TwoPlate {
-        return Err(fail(
-            text,
-            "reference",
-            t.reference,
-            "the VTU field has no thermal strains yet: drop [outputs] field or [temperature]",
-        ));
     }
     if !t.reference.is_finite() {
         return Err(fail(
@@ -246,4 +240,20 @@ pub fn solve_single(
             None,
         )
     })
+}
+
+/// The two-plate joint with the scene's temperatures, its finest level's field (thermal
+/// stresses, nodal temperature) written to `field` in the scene's units `(length, stress)`.
+pub fn two_plate_field(
+    joint: &Joint,
+    params: &TwoPlateParams,
+    t: &TemperatureSpec,
+    (length, stress): (f64, f64),
+    field: &mut Option<Grid>,
+) -> Result<TwoPlateSolution, SceneError> {
+    let jt = t.joint_temperature(joint)?;
+    let (s, f, th) = crate::contact::thermal::solve_field_with_temperature(joint, params, &jt)?;
+    let (grid, _) = super::field::two_plate_grid_with(&s, &f, Some(&th))?;
+    *field = Some(super::field::scaled(grid, length, stress));
+    Ok(s)
 }
