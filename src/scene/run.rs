@@ -277,7 +277,8 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                     &mut out.field,
                 )?,
                 (Some(t), None) => {
-                    thermal::solve_with_temperature(&joint, &params, &t.joint_temperature(&joint)?)?
+                    let jt = t.joint_temperature(&joint, scene.units.stress())?;
+                    thermal::solve_with_temperature(&joint, &params, &jt)?
                 }
                 (None, Some(_)) => {
                     let (s, f) = crate::contact::two_plate::solve_field(&joint, &params)?;
@@ -343,7 +344,13 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
             let plate = substitute(&joint)?;
             let keep = scene.outputs.field.is_some() || scene.outputs.midplane.is_some();
             let (s, h) = match &scene.temperature {
-                Some(t) => super::temperature::solve_single(&plate, &params, t, keep)?,
+                Some(t) => super::temperature::solve_single(
+                    &plate,
+                    &params,
+                    t,
+                    scene.units.stress(),
+                    keep,
+                )?,
                 None if keep => {
                     let (s, h) = fem_single::solve_with_field(&plate, &params)?;
                     (s, Some(h))

@@ -49,6 +49,7 @@
 use super::error::SceneError;
 use super::file::{line_of, path_name, Method, Model, Scene, Seg};
 pub use super::temperature_spec::TemperatureSpec;
+use super::temperature_table::materials;
 use crate::contact::thermal::{JointTemperature, PlateTemperature};
 use crate::contact::two_plate::{TwoPlateParams, TwoPlateSolution};
 use crate::fem::single::{HalfPlate, SingleParams, SingleSolution};
@@ -56,7 +57,12 @@ use crate::fem::single_thermal::{self, SingleTemperature};
 use crate::io::vtu::Grid;
 use crate::joint::{Joint, SinglePlate};
 
-fn fail(text: &str, key: &str, value: impl std::fmt::Display, reason: &str) -> SceneError {
+pub(super) fn fail(
+    text: &str,
+    key: &str,
+    value: impl std::fmt::Display,
+    reason: &str,
+) -> SceneError {
     let path = [Seg::Key("temperature".into()), Seg::Key(key.into())];
     SceneError::Invalid {
         key: path_name(&path),
@@ -66,7 +72,11 @@ fn fail(text: &str, key: &str, value: impl std::fmt::Display, reason: &str) -> S
 }
 
 /// One or two entries → (upper, lower).
-fn pair<T: Clone + std::fmt::Debug>(text: &str, key: &str, v: &[T]) -> Result<[T; 2], SceneError> {
+pub(super) fn pair<T: Clone + std::fmt::Debug>(
+    text: &str,
+    key: &str,
+    v: &[T],
+) -> Result<[T; 2], SceneError> {
     match v {
         [a] => Ok([a.clone(), a.clone()]),
         [a, b] => Ok([a.clone(), b.clone()]),
@@ -104,11 +114,6 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
             "must be a finite number",
         ));
     }
-    for a in pair(text, "alpha", &t.alpha)? {
-        if !a.is_finite() {
-            return Err(fail(text, "alpha", a, "must be a finite number"));
-        }
-    }
     match (&t.plates, &t.gradient) {
         (Some(p), None) => {
             for v in pair(text, "plates", p)? {
@@ -141,7 +146,7 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
             ))
         }
     }
-    Ok(())
+    super::temperature_table::check(t, text)
 }
 
 /// The single-plate substitute's own rules: finite elements, a face pressure, and the same
@@ -190,15 +195,19 @@ fn check_single(scene: &Scene, t: &TemperatureSpec, text: &str) -> Result<(), Sc
 impl TemperatureSpec {
     /// The single plate's temperatures (a checked spec of a single-plate scene; `plate` the
     /// substitute): the upper plate's entry, by depth below the midplane.
-    pub fn single_temperature(&self, plate: &SinglePlate) -> Result<SingleTemperature, SceneError> {
+    /// `stress` is the scene's stress unit in the plate's units (for a `table`'s E).
+    pub fn single_temperature(
+        &self,
+        plate: &SinglePlate,
+        stress: f64,
+    ) -> Result<SingleTemperature, SceneError> {
         let [upper, _] = self.joint_temperature_plates()?;
-        let [alpha, _] = pair("", "alpha", &self.alpha)?;
-        Ok(SingleTemperature::constant(
-            plate,
-            self.reference,
-            upper,
-            alpha,
-        )?)
+        let [material, _] = materials(self, stress, [plate.material(); 2])?;
+        Ok(SingleTemperature {
+            reference: self.reference,
+            plate: upper,
+            material,
+        })
     }
 
     fn joint_temperature_plates(&self) -> Result<[PlateTemperature; 2], SceneError> {
@@ -210,27 +219,32 @@ impl TemperatureSpec {
         })
     }
 
-    /// The joint's temperatures (a checked spec; `joint` the scene's joint, any units).
-    pub fn joint_temperature(&self, joint: &Joint) -> Result<JointTemperature, SceneError> {
-        let plates = self.joint_temperature_plates()?;
-        let alpha = pair("", "alpha", &self.alpha)?;
-        Ok(JointTemperature::constant(
-            joint,
-            self.reference,
-            plates,
-            alpha,
-        )?)
+    /// The joint's temperatures (a checked spec; `joint` the scene's joint, `stress` the
+    /// scene's stress unit in the joint's units, for a `table`'s E).
+    pub fn joint_temperature(
+        &self,
+        joint: &Joint,
+        stress: f64,
+    ) -> Result<JointTemperature, SceneError> {
+        let own = [joint.upper().material(), joint.lower().material()];
+        Ok(JointTemperature {
+            reference: self.reference,
+            plates: self.joint_temperature_plates()?,
+            materials: materials(self, stress, own)?,
+        })
     }
 }
 
-/// The single plate with the scene's temperatures, keeping the finest level when `keep`.
+/// The single plate with the scene's temperatures (`stress` the scene's stress unit in the
+/// plate's units), keeping the finest level when `keep`.
 pub fn solve_single(
     plate: &SinglePlate,
     params: &SingleParams,
     t: &TemperatureSpec,
+    stress: f64,
     keep: bool,
 ) -> Result<(SingleSolution, Option<HalfPlate>), SceneError> {
-    let t = t.single_temperature(plate)?;
+    let t = t.single_temperature(plate, stress)?;
     Ok(if keep {
         let (s, h) = single_thermal::solve_with_temperature_field(plate, params, &t)?;
         (s, Some(h))
@@ -251,7 +265,7 @@ pub fn two_plate_field(
     (length, stress): (f64, f64),
     field: &mut Option<Grid>,
 ) -> Result<TwoPlateSolution, SceneError> {
-    let jt = t.joint_temperature(joint)?;
+    let jt = t.joint_temperature(joint, stress)?;
     let (s, f, th) = crate::contact::thermal::solve_field_with_temperature(joint, params, &jt)?;
     let (grid, _) = super::field::two_plate_grid_with(&s, &f, Some(&th))?;
     *field = Some(super::field::scaled(grid, length, stress));

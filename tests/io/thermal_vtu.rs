@@ -5,8 +5,9 @@
 //! (σ = D(ε − ε_th) must cancel the free expansion exactly) and u = α ΔT r, w = α ΔT z + w₀ (w₀
 //! a rigid translation: 0 for the single plate on its midplane rollers; the two plates of a
 //! frictionless joint each expand freely, which changes neither gap nor pressure); every node
-//! carries the temperature. Without `BOLTZONE_PYTHON` only the Rust-side checks (the same
-//! comparison on the library's grids) run.
+//! carries the temperature. A material given as a table (T, E, ν, α) at a temperature between
+//! two rows: the same superposition against the plate of the interpolated constants. Without
+//! `BOLTZONE_PYTHON` only the Rust-side checks (the same comparison on the library's grids) run.
 
 use super::py::{run, temp_dir};
 use boltzone::io::vtu::Grid;
@@ -18,21 +19,25 @@ const DT: f64 = 100.0;
 const C: f64 = 1.54;
 
 fn scene(model: &str, t: f64, field: &str) -> String {
+    let temperature = format!("reference = 70.0\nplates = [{t:?}]\nalpha = [{ALPHA:e}]\n");
+    scene_with(model, "E = 1e7, nu = 0.3", &temperature, field)
+}
+
+/// The joint of the module docs with the plates' `material` and `[temperature]` keys.
+fn scene_with(model: &str, material: &str, temperature: &str, field: &str) -> String {
     format!(
         "model = \"{model}\"\nmethod = \"fem\"\ntolerance = 2e-3\n[hole]\nradius = 0.1\n\
          [load]\nouter_radius = 0.31\npressure = 1000.0\n[[plates]]\nthickness = 0.1\n\
-         material = {{ E = 1e7, nu = 0.3 }}\n[joint]\nouter_radius = {C}\n[outputs]\n\
-         field = \"{field}\"\n[temperature]\nreference = 70.0\nplates = [{t:?}]\n\
-         alpha = [{ALPHA:e}]\n"
+         material = {{ {material} }}\n[joint]\nouter_radius = {C}\n[outputs]\n\
+         field = \"{field}\"\n[temperature]\n{temperature}"
     )
 }
 
 const STRESSES: [&str; 4] = ["sigma_r", "sigma_z", "sigma_theta", "tau_rz"];
 
-/// (max |Δu − α ΔT r|, spread of Δw − α ΔT z, its mean w₀, max |Δσ| / max |σ|) of two grids
-/// of the same mesh.
-fn differences(cold: &Grid, hot: &Grid) -> [f64; 4] {
-    let k = ALPHA * DT;
+/// (max |Δu − k r|, spread of Δw − k z, its mean w₀, max |Δσ| / max |σ|) of two grids of the
+/// same mesh (k = α ΔT).
+fn differences(cold: &Grid, hot: &Grid, k: f64) -> [f64; 4] {
     let (mut du, mut lo, mut hi) = (0.0f64, f64::INFINITY, f64::NEG_INFINITY);
     for ((x, a), b) in hot
         .points
@@ -73,7 +78,7 @@ fn check(model: &str) {
     };
     let (cold, hot) = (grid(70.0), grid(70.0 + DT));
     assert_eq!(cold.points.len(), hot.points.len());
-    let [du, spread, w0, ds] = differences(&cold, &hot);
+    let [du, spread, w0, ds] = differences(&cold, &hot, ALPHA * DT);
     println!("{model}, library grids: |Δu − α ΔT r| ≤ {du:e} in, Δw − α ΔT z = {w0:e} in ± {spread:e}, |Δσ|/max|σ| ≤ {ds:e}");
     // the displacement bound adds the stresses' relative round-off of the bolt-load
     // displacements (the two plates' w carries the contact solve's rounding)
@@ -150,4 +155,52 @@ fn single_plate_uniform_temperature_adds_the_free_expansion_and_no_stress() {
 #[test]
 fn two_plate_uniform_temperature_adds_the_free_expansion_and_no_stress() {
     check("two-plate");
+}
+
+#[test]
+fn table_rows_are_read_between_as_the_listing_does() {
+    // rows at 100 and 200 °F; at 150 °F: E = 1.5e7 psi, ν = 0.25, α = 1.5e-5 per °F (linear
+    // between rows, Appendix C). The table's plate at 150 °F minus the constant plate
+    // (1.5e7, 0.25) at its stress-free 70 °F: the free expansion α(150) · 80 · (r, z) exactly,
+    // no stress difference — which holds only if E, ν and α were all read at 150 °F
+    let table = "reference = 70.0\nplates = [150.0]\n\
+                 table = [[100.0, 2.0e7, 0.3, 1.0e-5], [200.0, 1.0e7, 0.2, 2.0e-5]]\n";
+    let plain = "reference = 70.0\nplates = [70.0]\nalpha = [1.5e-5]\n";
+    let run = |material: &str, t: &str| {
+        let text = scene_with("single-plate", material, t, "f.vtu");
+        boltzone::solve(&Scene::parse(&text).unwrap()).unwrap()
+    };
+    let hot = run("E = 1e7, nu = 0.3", table); // the table, not this material, is used
+    let cold = run("E = 1.5e7, nu = 0.25", plain);
+    let (h, c) = (hot.field.unwrap(), cold.field.unwrap());
+    let k = 1.5e-5 * 80.0;
+    let [du, spread, w0, ds] = differences(&c, &h, k);
+    println!(
+        "table at 150: R_o {} vs {} in; |Δu − α ΔT r| {du:e}, w spread {spread:e}, w₀ {w0:e}, \
+         |Δσ|/max|σ| {ds:e}",
+        hot.r_o, cold.r_o
+    );
+    assert!((hot.r_o - cold.r_o).abs() < 1e-9 * cold.r_o);
+    // the single plate's bounds (module docs): round-off relative to the expansion k C
+    let bound = 1e-10 * k * C;
+    assert!(du < bound && spread < bound && w0.abs() < bound && ds < DS);
+    // the scene's material (ν = 0.3 instead of the table's 0.25 at 150 °F) would change the
+    // stresses by far more than the bound: the check above sees which ν was used
+    let other = run("E = 1.5e7, nu = 0.3", plain).field.unwrap();
+    let [.., ds_nu] = differences(&other, &h, k);
+    println!("with ν = 0.3: |Δσ|/max|σ| {ds_nu:e}");
+    assert!(ds_nu > 1e3 * DS, "{ds_nu:e}");
+    // a temperature off the table is refused naming the key
+    let off = table.replace("[150.0]", "[250.0]");
+    let e = Scene::parse(&scene_with(
+        "single-plate",
+        "E = 1e7, nu = 0.3",
+        &off,
+        "f.vtu",
+    ));
+    let e = e.unwrap_err();
+    assert!(
+        e.to_string().contains("temperature.plates") && e.line() == Some(18),
+        "{e}"
+    );
 }

@@ -1,6 +1,6 @@
 //! The scene's `[temperature]` table on the single-plate model (issue 12 item 5): the example
-//! scene equals, bit for bit, the library call it wraps (`fem::single_thermal`, built here by
-//! hand in SI from the file's numbers), `auto` picks the finite elements; what the substitute
+//! scene (a material table read between rows) equals, bit for bit, the library call it wraps
+//! (`fem::single_thermal`, built here by hand in SI from the file's numbers), `auto` picks the finite elements; what the substitute
 //! cannot represent is refused naming the key and the line (the slab:
 //! `tests/scene/temperature.rs`).
 
@@ -8,6 +8,7 @@ use crate::example;
 use boltzone::fem::plate_temperature::PlateTemperature;
 use boltzone::fem::single::SingleParams;
 use boltzone::fem::single_thermal::{solve_with_temperature, SingleTemperature};
+use boltzone::fem::thermal::ThermalMaterial;
 use boltzone::scene::{Method, Scene};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
@@ -27,7 +28,13 @@ fn example_scene_equals_the_library_call() {
         interface: 120.0,
         outer: 70.0,
     };
-    let t = SingleTemperature::constant(&plate, 70.0, t, 9.6e-6).unwrap();
+    let rows = [[70.0, 28.3e6, 0.29, 9.2e-6], [200.0, 27.6e6, 0.29, 9.5e-6]];
+    let si = rows.map(|r| [r[0], r[1] * PSI, r[2], r[3]]);
+    let t = SingleTemperature {
+        reference: 70.0,
+        plate: t,
+        material: ThermalMaterial::table(si.to_vec()).unwrap(),
+    };
     let params = SingleParams {
         tolerance: 1e-3,
         ..SingleParams::default()
@@ -48,27 +55,35 @@ fn what_the_substitute_cannot_take_is_refused_naming_key_and_line() {
             "gradient = [[120.0, 70.0]]",
             "gradient = [[120.0, 70.0], [110.0, 70.0]]",
             "temperature.gradient",
-            28,
+            31,
         ),
+        // alpha beside a table that holds it
         (
-            "alpha = [9.6e-6]",
-            "alpha = [9.6e-6, 1e-5]",
+            "reference = 70.0",
+            "reference = 70.0\nalpha = [1e-5]",
             "temperature.alpha",
-            29,
+            31,
+        ),
+        // a face temperature off the table
+        (
+            "[[120.0, 70.0]]",
+            "[[220.0, 70.0]]",
+            "temperature.gradient",
+            31,
         ),
         // the Hankel route has no thermal strains
         (
             "method = \"auto\"",
             "method = \"hankel\"",
             "temperature.reference",
-            27,
+            30,
         ),
         // a rigid nut has no stress scale to set the thermal stresses against
         (
             "pressure = 1000.0",
             "nut_displacement = 1e-4",
             "temperature.reference",
-            27,
+            30,
         ),
     ] {
         let text = base.replace(from, to);
