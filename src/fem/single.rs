@@ -284,20 +284,25 @@ pub fn solve_half_plate(
     axial: &Spacing,
     solve: &SolveParams,
 ) -> Result<HalfPlate, FemError> {
-    solve_half_plate_with(plate, loading, kind, radial, axial, solve, None)
+    let params = SingleParams {
+        loading,
+        kind,
+        solve: *solve,
+        ..SingleParams::default()
+    };
+    solve_half_plate_with(plate, &params, radial, axial, None)
 }
 
-/// As [`solve_half_plate`], with the thermal strains of `temperature` when given
-/// ([`super::single_thermal`]).
+/// As [`solve_half_plate`] with the loading, element and solver of `params`, and the thermal
+/// strains of `temperature` when given ([`super::single_thermal`]).
 pub fn solve_half_plate_with(
     plate: &SinglePlate,
-    loading: FaceCondition,
-    kind: ElementKind,
+    params: &SingleParams,
     radial: &Spacing,
     axial: &Spacing,
-    solve: &SolveParams,
     temperature: Option<&SingleTemperature>,
 ) -> Result<HalfPlate, FemError> {
+    let (loading, kind, solve) = (params.loading, params.kind, &params.solve);
     let mut mesh = Mesh::structured(
         kind,
         radial,
@@ -501,8 +506,7 @@ impl Iterator for CrossingLevels<'_> {
         let solved = level_spacings(self.plate, p, self.level, self.previous)
             .map_err(FemError::from)
             .and_then(|(radial, axial)| {
-                let t = self.temperature;
-                solve_half_plate_with(self.plate, p.loading, p.kind, &radial, &axial, &p.solve, t)
+                solve_half_plate_with(self.plate, p, &radial, &axial, self.temperature)
             })
             .and_then(|h| {
                 let m = midplane_of(self.plate, &h);

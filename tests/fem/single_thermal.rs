@@ -14,7 +14,7 @@ use boltzone::fem::plate_temperature::PlateTemperature;
 use boltzone::fem::single::{level_spacings, solve, solve_half_plate_with, FaceCondition};
 use boltzone::fem::single::{HalfPlate, SingleParams};
 use boltzone::fem::single_thermal::{solve_with_temperature, SingleTemperature};
-use boltzone::fem::{internal_forces, ElementKind, SolveParams, Spacing};
+use boltzone::fem::{internal_forces, Spacing};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
 const ALPHA: f64 = 13e-6;
@@ -46,10 +46,7 @@ fn pair_on(
     z: &Spacing,
     t: &SingleTemperature,
 ) -> (HalfPlate, HalfPlate) {
-    let run = |t| {
-        let (k, s) = (ElementKind::Q9, SolveParams::default());
-        solve_half_plate_with(p, FaceCondition::Pressure, k, r, z, &s, t).unwrap()
-    };
+    let run = |t| solve_half_plate_with(p, &SingleParams::default(), r, z, t).unwrap();
     (run(None), run(Some(t)))
 }
 
