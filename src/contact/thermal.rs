@@ -26,6 +26,9 @@
 //! nothing; a field from [`crate::heat::conduction`] gives the joint of the linear temperatures
 //! it reproduces; mirrored gradients move R_o the way the rims bend. The level study's error
 //! estimate is the isothermal one's (it does not include the temperatures' own error).
+//! The field ([`solve_field_with_temperature`]: the finest level with its temperature field,
+//! stresses σ = D (ε − ε_th)): `tests/io/thermal_vtu.rs` reads its VTU with meshio — a uniform
+//! ΔT adds exactly the free expansion α ΔT (r, z) and no stress.
 //!
 //! # Cost
 //!

@@ -8,8 +8,10 @@
 //! (the levels that give R_o, nothing solved twice); the single plate's is the finest level of
 //! [`crate::fem::single::solve_with_field`], its upper half and the mirror image; the slab's
 //! midplane is [`crate::hankel::Slab::sigma_z`] at z = 0 on 0 ≤ r ≤ 3 R_o, each value with its
-//! quadrature error estimate. [`Grid`] values are converted by the scene's unit factors
-//! ([`scaled`]): lengths and displacements by the length unit, stresses by the stress unit.
+//! quadrature error estimate. With `[temperature]` the grids carry σ = D (ε − ε_th) and the
+//! nodal `temperature` ([`single_plate_grid`], [`two_plate_grid_with`]). [`Grid`] values are
+//! converted by the scene's unit factors ([`scaled`]): lengths and displacements by the length
+//! unit, stresses by the stress unit, temperatures kept.
 //!
 //! # Accuracy
 //!
