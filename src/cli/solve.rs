@@ -265,14 +265,20 @@ fn write_fields(
         s.r_o, s.r_o_error, s.converged
     );
     if let (Some(path), Some(grid)) = (field, &s.field) {
+        let hot = grid.scalars.iter().any(|(n, _)| n == "temperature");
         let note = format!(
             "boltzone solve {}: finest mesh of the {} route ({:?} model); units {}: coordinates, \
              displacements and gap in {l}, stresses and contact_pressure in {st} (compression \
-             negative; contact_pressure > 0 in compression); {r_o}; command: {}",
+             negative; contact_pressure > 0 in compression){}; {r_o}; command: {}",
             file.display(),
             serde_json::to_value(s.method)?.as_str().unwrap_or(""),
             s.model,
             s.units.name(),
+            if hot {
+                "; temperature in the degrees of [temperature], stresses sigma = D (eps - eps_th)"
+            } else {
+                ""
+            },
             super::output::command_line()
         );
         super::write_output(path, &grid.to_vtu(&note))?;

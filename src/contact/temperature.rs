@@ -3,8 +3,9 @@
 //! scaling into the contact solver's units. The solver with temperatures is
 //! [`super::thermal`]; these types live apart from it so that the mesh levels
 //! ([`super::refine`], [`super::two_plate`]) read them without importing the solver that calls
-//! them. Public paths stay `boltzone::contact::thermal::{JointTemperature, PlateTemperature,
-//! TemperatureGrid}`.
+//! them. A plate's own temperature ([`PlateTemperature`], [`TemperatureGrid`]) lives in
+//! [`crate::fem::plate_temperature`], shared with the single plate; public paths stay
+//! `boltzone::contact::thermal::{JointTemperature, PlateTemperature, TemperatureGrid}`.
 //!
 //! # Accuracy
 //!
@@ -20,136 +21,10 @@
 use super::error::ContactError;
 use super::level_types::Model;
 use crate::error::InputError;
+pub use crate::fem::plate_temperature::{PlateTemperature, TemperatureGrid};
 use crate::fem::thermal::{Thermal, ThermalMaterial};
-use crate::fem::{Loads, Mesh};
+use crate::fem::Loads;
 use crate::joint::Joint;
-
-/// A temperature field T(r, s) on a tensor grid of radii `r` and depths `s` below the interface,
-/// bilinear between grid points and held at the edge values outside the grid.
-#[derive(Debug, Clone, PartialEq)]
-pub struct TemperatureGrid {
-    r: Vec<f64>,
-    s: Vec<f64>,
-    /// Row-major: t[i·s.len() + j] at (r[i], s[j]).
-    t: Vec<f64>,
-}
-
-impl TemperatureGrid {
-    /// A grid of `r` (increasing) × `s` (increasing) with values `t[i·s.len() + j]`.
-    pub fn new(r: Vec<f64>, s: Vec<f64>, t: Vec<f64>) -> Result<Self, InputError> {
-        let bad = |field, value: f64, reason| InputError::Parameter {
-            field,
-            value,
-            reason,
-        };
-        for (field, v) in [("grid radii r", &r), ("grid depths s", &s)] {
-            if v.is_empty()
-                || v.windows(2)
-                    .any(|w| w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater))
-            {
-                return Err(bad(
-                    field,
-                    v.len() as f64,
-                    "must be non-empty and increasing",
-                ));
-            }
-        }
-        if t.len() != r.len() * s.len() {
-            return Err(bad(
-                "grid temperatures",
-                t.len() as f64,
-                "need one per (r, s) grid point",
-            ));
-        }
-        for &v in t.iter().chain(&r).chain(&s) {
-            crate::error::finite("temperature grid value", v)?;
-        }
-        Ok(Self { r, s, t })
-    }
-
-    /// Plate `plate`'s nodal temperatures of a structured `mesh` (e.g. from
-    /// [`crate::heat::conduction::solve_conduction`]), depth measured from the plate's top face
-    /// (`interface_on_top`) or its bottom face.
-    pub fn from_mesh(
-        mesh: &Mesh,
-        plate: usize,
-        temperature: &[f64],
-        interface_on_top: bool,
-    ) -> Result<Self, InputError> {
-        let z = mesh.plate_z(plate);
-        let (z0, z1) = (z[0], z[z.len() - 1]);
-        let mut rows: Vec<usize> = (0..z.len()).collect();
-        if interface_on_top {
-            rows.reverse();
-        }
-        let s = rows
-            .iter()
-            .map(|&j| {
-                if interface_on_top {
-                    z1 - z[j]
-                } else {
-                    z[j] - z0
-                }
-            })
-            .collect();
-        let mut t = Vec::new();
-        for i in 0..mesh.radial_nodes().len() {
-            for &j in &rows {
-                let n = mesh.node_at(plate, i, j);
-                t.push(*temperature.get(n).ok_or(InputError::Parameter {
-                    field: "number of nodal temperatures",
-                    value: temperature.len() as f64,
-                    reason: "must cover every node of the mesh",
-                })?);
-            }
-        }
-        Self::new(mesh.radial_nodes().to_vec(), s, t)
-    }
-
-    /// T at (r, s), bilinear.
-    pub fn at(&self, r: f64, s: f64) -> f64 {
-        let cell = |x: &[f64], v: f64| -> (usize, f64) {
-            if x.len() == 1 {
-                return (0, 0.0);
-            }
-            let i = x.partition_point(|&a| a <= v).clamp(1, x.len() - 1) - 1;
-            (i, ((v - x[i]) / (x[i + 1] - x[i])).clamp(0.0, 1.0))
-        };
-        let ((i, a), (j, b)) = (cell(&self.r, r), cell(&self.s, s));
-        let ns = self.s.len();
-        let v = |i: usize, j: usize| self.t[i.min(self.r.len() - 1) * ns + j.min(ns - 1)];
-        (1.0 - a) * ((1.0 - b) * v(i, j) + b * v(i, j + 1))
-            + a * ((1.0 - b) * v(i + 1, j) + b * v(i + 1, j + 1))
-    }
-}
-
-/// One plate's temperature.
-#[derive(Debug, Clone, PartialEq)]
-pub enum PlateTemperature {
-    /// The same temperature throughout.
-    Uniform(f64),
-    /// Linear through the thickness, from `interface` on the contact face to `outer` on the
-    /// loaded face (a steady heat flow through the plate).
-    Linear {
-        /// Temperature on the contact face.
-        interface: f64,
-        /// Temperature on the loaded (outer) face.
-        outer: f64,
-    },
-    /// A field T(r, s) (s the depth below the interface).
-    Field(TemperatureGrid),
-}
-
-impl PlateTemperature {
-    /// T at radius `r`, depth `s` below the interface of a plate `thickness` thick.
-    pub fn at(&self, r: f64, s: f64, thickness: f64) -> f64 {
-        match self {
-            Self::Uniform(t) => *t,
-            Self::Linear { interface, outer } => interface + (outer - interface) * s / thickness,
-            Self::Field(g) => g.at(r, s),
-        }
-    }
-}
 
 /// The temperatures and thermal tables of a joint's two plates.
 #[derive(Debug, Clone, PartialEq)]
@@ -237,4 +112,40 @@ impl<'a> ScaledTemperature<'a> {
         model.materials = th.apply(&mut model.mesh)?;
         Ok(th.loads(&model.mesh, &model.materials)?)
     }
+}
+
+/// The temperature field of `t` on the finest level's mesh of a two-plate field in the joint's
+/// units ([`super::field::TwoPlateField`], both plates meshed): each element's table is its
+/// plate's (the upper plate above z = 0, the lower below), each node's temperature its plate's
+/// at (r, |z|). Its stresses σ = D (ε − ε_th) are those the contact solve balanced.
+pub fn thermal_field(
+    t: &JointTemperature,
+    field: &super::field::TwoPlateField,
+) -> Result<Thermal, ContactError> {
+    let mesh = &field.model.mesh;
+    let z = |n: usize| mesh.nodes()[n][1];
+    let (top, bottom) = mesh
+        .nodes()
+        .iter()
+        .fold((0.0f64, 0.0f64), |(t, b), x| (t.max(x[1]), b.min(x[1])));
+    let thickness = [top, -bottom];
+    let mut temperature = vec![t.reference; mesh.n_nodes()];
+    let mut tables = Vec::with_capacity(mesh.n_elements());
+    for e in 0..mesh.n_elements() {
+        let nodes = mesh.element_nodes(e);
+        let zc = nodes.iter().map(|&n| z(n)).sum::<f64>() / nodes.len() as f64;
+        let k = usize::from(zc < 0.0);
+        for &n in nodes {
+            let r = mesh.nodes()[n][0];
+            temperature[n] = t.plates[k].at(r, z(n).abs(), thickness[k]);
+        }
+        tables.push((mesh.element_material(e), t.materials[k].clone()));
+    }
+    // the mesh's material index of each element → its table
+    let count = tables.iter().map(|(m, _)| m + 1).max().unwrap_or(0);
+    let mut by_index = vec![t.materials[0].clone(); count];
+    for (m, table) in tables {
+        by_index[m] = table;
+    }
+    Ok(Thermal::new(mesh, by_index, temperature, t.reference)?)
 }

@@ -26,6 +26,9 @@
 //! nothing; a field from [`crate::heat::conduction`] gives the joint of the linear temperatures
 //! it reproduces; mirrored gradients move R_o the way the rims bend. The level study's error
 //! estimate is the isothermal one's (it does not include the temperatures' own error).
+//! The field ([`solve_field_with_temperature`]: the finest level with its temperature field,
+//! stresses σ = D (ε − ε_th)): `tests/io/thermal_vtu.rs` reads its VTU with meshio — a uniform
+//! ΔT adds exactly the free expansion α ΔT (r, z) and no stress.
 //!
 //! # Cost
 //!
@@ -46,8 +49,10 @@
 //! ```
 
 use super::error::ContactError;
-pub use super::temperature::{JointTemperature, PlateTemperature, TemperatureGrid};
+use super::field::TwoPlateField;
+pub use super::temperature::{thermal_field, JointTemperature, PlateTemperature, TemperatureGrid};
 use super::two_plate::{solve_keeping_with, TwoPlateParams, TwoPlateSolution};
+use crate::fem::thermal::Thermal;
 use crate::joint::Joint;
 
 /// Solves the two-plate joint with the temperature field `t` (module docs); the isothermal
@@ -58,4 +63,17 @@ pub fn solve_with_temperature(
     t: &JointTemperature,
 ) -> Result<TwoPlateSolution, ContactError> {
     solve_keeping_with(joint, params, Some(t)).map(|(s, _)| s)
+}
+
+/// As [`solve_with_temperature`], keeping the finest level's field in the joint's units and its
+/// temperature field ([`thermal_field`]) for a VTU with the thermal stresses.
+pub fn solve_field_with_temperature(
+    joint: &Joint,
+    params: &TwoPlateParams,
+    t: &JointTemperature,
+) -> Result<(TwoPlateSolution, TwoPlateField, Thermal), ContactError> {
+    let (s, f) = solve_keeping_with(joint, params, Some(t))?;
+    let f = f.rescaled()?;
+    let th = thermal_field(t, &f)?;
+    Ok((s, f, th))
 }

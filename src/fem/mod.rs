@@ -63,8 +63,10 @@ pub mod lame;
 pub mod loads;
 pub mod mesh;
 pub mod ordering;
+pub mod plate_temperature;
 pub mod recover;
 pub mod single;
+pub mod single_thermal;
 pub mod solve;
 pub mod spacing;
 pub mod thermal;
@@ -77,7 +79,8 @@ pub use loads::Loads;
 pub use mesh::{Mesh, PlateSpec};
 pub use ordering::nested_dissection;
 pub use recover::{
-    centre_stresses, gauss_stresses, internal_forces, line_traction, nodal_stresses, reactions,
+    centre_stresses, gauss_stresses, internal_forces, line_traction, nodal_mean, nodal_stresses,
+    reactions,
 };
 pub use solve::{Factorization, SolveParams};
 pub use spacing::Spacing;

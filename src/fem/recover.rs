@@ -150,13 +150,23 @@ pub fn nodal_stresses(
     materials: &[Material],
     u: &[[f64; 2]],
 ) -> Result<Vec<Stress>, FemError> {
+    nodal_mean(mesh, |e| {
+        let m = material(mesh, materials, e)?;
+        Ok(mesh
+            .kind()
+            .nodal_stresses(&mesh.element_coords(e), m, &element_u(mesh, u, e)))
+    })
+}
+
+/// The mean over the elements sharing each node of `at_nodes(e)`, element e's stresses at its
+/// nodes (in its node order): the averaging of [`nodal_stresses`], for any recovery.
+pub fn nodal_mean(
+    mesh: &Mesh,
+    at_nodes: impl Fn(usize) -> Result<Vec<Stress>, FemError>,
+) -> Result<Vec<Stress>, FemError> {
     let mut acc = vec![([0.0; 4], 0usize); mesh.n_nodes()];
     for e in 0..mesh.n_elements() {
-        let m = material(mesh, materials, e)?;
-        let s = mesh
-            .kind()
-            .nodal_stresses(&mesh.element_coords(e), m, &element_u(mesh, u, e));
-        for (&n, se) in mesh.element_nodes(e).iter().zip(s) {
+        for (&n, se) in mesh.element_nodes(e).iter().zip(at_nodes(e)?) {
             for (a, b) in acc[n].0.iter_mut().zip(se.to_array()) {
                 *a += b;
             }

@@ -72,10 +72,13 @@ use super::loads::Loads;
 use super::mesh::{Mesh, PlateSpec};
 use super::ordering::nested_dissection;
 use super::recover::{line_traction, reactions};
+use super::single_thermal::SingleTemperature;
 use super::solve::{Factorization, SolveParams};
 use super::spacing::{level_grading, Spacing};
+use super::thermal::Thermal;
 use crate::error::InputError;
 use crate::joint::{OuterRadius, SinglePlate};
+use crate::material::Material;
 pub use crate::numerics::convergence::level_estimate;
 use crate::value::meets;
 use std::time::Instant;
@@ -266,6 +269,10 @@ pub struct HalfPlate {
     pub loads: Loads,
     /// Nodal displacements (u, w).
     pub u: Vec<[f64; 2]>,
+    /// Element materials: the plate's one material, or one per element at its temperature.
+    pub materials: Vec<Material>,
+    /// The temperature field and its tables (None: isothermal; [`super::single_thermal`]).
+    pub thermal: Option<Thermal>,
 }
 
 /// Solves the upper half plate on the mesh `radial` × `axial` (0 ≤ z ≤ D).
@@ -277,7 +284,26 @@ pub fn solve_half_plate(
     axial: &Spacing,
     solve: &SolveParams,
 ) -> Result<HalfPlate, FemError> {
-    let mesh = Mesh::structured(
+    let params = SingleParams {
+        loading,
+        kind,
+        solve: *solve,
+        ..SingleParams::default()
+    };
+    solve_half_plate_with(plate, &params, radial, axial, None)
+}
+
+/// As [`solve_half_plate`] with the loading, element and solver of `params`, and the thermal
+/// strains of `temperature` when given ([`super::single_thermal`]).
+pub fn solve_half_plate_with(
+    plate: &SinglePlate,
+    params: &SingleParams,
+    radial: &Spacing,
+    axial: &Spacing,
+    temperature: Option<&SingleTemperature>,
+) -> Result<HalfPlate, FemError> {
+    let (loading, kind, solve) = (params.loading, params.kind, &params.solve);
+    let mut mesh = Mesh::structured(
         kind,
         radial,
         &[PlateSpec {
@@ -311,13 +337,15 @@ pub fn solve_half_plate(
             }
         }
     }
+    let (materials, thermal) = match temperature {
+        Some(t) => {
+            let (m, th) = t.apply(&mut mesh, plate.half_thickness(), loading, &mut loads)?;
+            (m, Some(th))
+        }
+        None => (vec![plate.material()], None),
+    };
     let dofs = DofMap::new(&s);
-    let k = assemble(
-        &mesh,
-        &[plate.material()],
-        &dofs,
-        &Pattern::new(&mesh, &dofs),
-    )?;
+    let k = assemble(&mesh, &materials, &dofs, &Pattern::new(&mesh, &dofs))?;
     let mut rhs = dofs.gather(loads.forces());
     for (a, b) in rhs.iter_mut().zip(&k.prescribed_load) {
         *a += b;
@@ -330,6 +358,8 @@ pub fn solve_half_plate(
         dofs,
         loads,
         u,
+        materials,
+        thermal,
     })
 }
 
@@ -361,10 +391,10 @@ pub fn solve_midplane_on(
 }
 
 /// The midplane σ_z of a solved half plate, recovered from the roller reactions.
-pub fn midplane_of(plate: &SinglePlate, h: &HalfPlate) -> Result<MidplaneNodes, FemError> {
+pub fn midplane_of(_plate: &SinglePlate, h: &HalfPlate) -> Result<MidplaneNodes, FemError> {
     let kind = h.mesh.kind();
     let mid = h.mesh.bottom(0);
-    let reac = reactions(&h.mesh, &[plate.material()], &h.u, &h.loads)?;
+    let reac = reactions(&h.mesh, &h.materials, &h.u, &h.loads)?;
     let rz: Vec<f64> = mid.iter().map(|&n| reac[n][1]).collect();
     let t = line_traction(&h.mesh, &mid, &rz)?;
     Ok(MidplaneNodes {
@@ -448,6 +478,7 @@ pub struct CrossingLevels<'a> {
     /// Keep each level's solved half plate (for a field or curve output).
     keep: bool,
     last: Option<HalfPlate>,
+    temperature: Option<&'a SingleTemperature>,
 }
 
 /// Refinement levels of the single-plate model (see [`CrossingLevels`]).
@@ -463,6 +494,7 @@ pub fn crossing_levels<'a>(
         level: 0,
         keep: false,
         last: None,
+        temperature: None,
     })
 }
 
@@ -474,7 +506,7 @@ impl Iterator for CrossingLevels<'_> {
         let solved = level_spacings(self.plate, p, self.level, self.previous)
             .map_err(FemError::from)
             .and_then(|(radial, axial)| {
-                solve_half_plate(self.plate, p.loading, p.kind, &radial, &axial, &p.solve)
+                solve_half_plate_with(self.plate, p, &radial, &axial, self.temperature)
             })
             .and_then(|h| {
                 let m = midplane_of(self.plate, &h);
@@ -519,10 +551,10 @@ pub struct SingleSolution {
 /// `params.levels` levels (3..=12); when the last level misses it, `converged` is false.
 pub fn solve(plate: &SinglePlate, params: &SingleParams) -> Result<SingleSolution, FemError> {
     check_tolerance(params.tolerance)?;
-    Ok(study(plate, params, Some(params.tolerance), false)?.0)
+    Ok(study(plate, params, Some(params.tolerance), false, None)?.0)
 }
 
-fn check_tolerance(tolerance: f64) -> Result<(), FemError> {
+pub(crate) fn check_tolerance(tolerance: f64) -> Result<(), FemError> {
     if !(tolerance > 0.0 && tolerance < 1.0) {
         return Err(InputError::Parameter {
             field: "single-plate tolerance",
@@ -534,12 +566,14 @@ fn check_tolerance(tolerance: f64) -> Result<(), FemError> {
     Ok(())
 }
 
-/// The levels of `params` (all of them, or until the estimate meets `tolerance`).
-fn study(
+/// The levels of `params` (all of them, or until the estimate meets `tolerance`), with the
+/// thermal strains of `temperature` when given.
+pub(crate) fn study(
     plate: &SinglePlate,
     params: &SingleParams,
     tolerance: Option<f64>,
     keep: bool,
+    temperature: Option<&SingleTemperature>,
 ) -> Result<(SingleSolution, Option<HalfPlate>), FemError> {
     check_levels(params.levels)?;
     let t0 = Instant::now();
@@ -547,6 +581,7 @@ fn study(
     let (mut nodes, mut dofs) = (0, 0);
     let mut levels = crossing_levels(plate, params)?;
     levels.keep = keep;
+    levels.temperature = temperature;
     for level in levels.by_ref().take(params.levels) {
         let level = level?;
         values.push(level.r_o);
@@ -605,7 +640,7 @@ pub fn solve_with_field(
     params: &SingleParams,
 ) -> Result<(SingleSolution, HalfPlate), FemError> {
     check_tolerance(params.tolerance)?;
-    let (s, h) = study(plate, params, Some(params.tolerance), true)?;
+    let (s, h) = study(plate, params, Some(params.tolerance), true, None)?;
     let h = h.ok_or(FemError::Solver("no refinement level was solved".into()))?;
     Ok((s, h))
 }
@@ -616,7 +651,7 @@ pub fn single_plate_r_o(
     plate: &SinglePlate,
     params: &SingleParams,
 ) -> Result<(f64, SingleInfo), FemError> {
-    let (s, _) = study(plate, params, None, false)?;
+    let (s, _) = study(plate, params, None, false, None)?;
     Ok((s.r_o, s.info))
 }
 

@@ -43,7 +43,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use crate::fem::{nodal_stresses, ElementKind, FemError, Mesh};
+use crate::fem::{nodal_stresses, ElementKind, FemError, Mesh, Stress};
 use crate::material::Material;
 use std::fmt::Write;
 
@@ -74,12 +74,22 @@ impl Grid {
         u: &[[f64; 2]],
         plate_offset: i32,
     ) -> Result<Self, FemError> {
-        let s = nodal_stresses(mesh, materials, u)?;
+        Ok(Self::with_stresses(
+            mesh,
+            &nodal_stresses(mesh, materials, u)?,
+            u,
+            plate_offset,
+        ))
+    }
+
+    /// As [`Grid::plate`] with the nodal stresses `s` given (e.g. the thermal stresses of
+    /// [`crate::fem::thermal::Thermal::nodal_stresses`]).
+    pub fn with_stresses(mesh: &Mesh, s: &[Stress], u: &[[f64; 2]], plate_offset: i32) -> Self {
         let mut scalars: Vec<(String, Vec<f64>)> = STRESS_NAMES
             .iter()
             .map(|n| (n.to_string(), Vec::with_capacity(s.len())))
             .collect();
-        for st in &s {
+        for st in s {
             let vm = (0.5
                 * ((st.r - st.z).powi(2) + (st.z - st.theta).powi(2) + (st.theta - st.r).powi(2))
                 + 3.0 * st.rz * st.rz)
@@ -110,7 +120,7 @@ impl Grid {
                 plate_offset + id
             })
             .collect();
-        Ok(Self {
+        Self {
             points: mesh.nodes().to_vec(),
             cells: (0..mesh.n_elements())
                 .map(|e| mesh.element_nodes(e).to_vec())
@@ -118,7 +128,7 @@ impl Grid {
             plate,
             displacement: u.to_vec(),
             scalars,
-        })
+        }
     }
 
     /// The reflection of the grid in y = 0: y, w and τ_rz change sign, the plate ids are

@@ -8,8 +8,10 @@
 //! (the levels that give R_o, nothing solved twice); the single plate's is the finest level of
 //! [`crate::fem::single::solve_with_field`], its upper half and the mirror image; the slab's
 //! midplane is [`crate::hankel::Slab::sigma_z`] at z = 0 on 0 ≤ r ≤ 3 R_o, each value with its
-//! quadrature error estimate. [`Grid`] values are converted by the scene's unit factors
-//! ([`scaled`]): lengths and displacements by the length unit, stresses by the stress unit.
+//! quadrature error estimate. With `[temperature]` the grids carry σ = D (ε − ε_th) and the
+//! nodal `temperature` ([`single_plate_grid`], [`two_plate_grid_with`]). [`Grid`] values are
+//! converted by the scene's unit factors ([`scaled`]): lengths and displacements by the length
+//! unit, stresses by the stress unit, temperatures kept.
 //!
 //! # Accuracy
 //!
@@ -35,6 +37,7 @@
 use crate::contact::field::TwoPlateField;
 use crate::contact::two_plate::TwoPlateSolution;
 use crate::fem::single::HalfPlate;
+use crate::fem::thermal::Thermal;
 use crate::fem::FemError;
 use crate::hankel::Slab;
 use crate::io::vtu::Grid;
@@ -54,7 +57,8 @@ pub struct Midplane {
 }
 
 /// `grid` with lengths (points, displacements, `gap`) divided by `length` and stresses
-/// (`sigma_*`, `tau_rz`, `von_mises`, `contact_pressure`) by `stress`.
+/// (`sigma_*`, `tau_rz`, `von_mises`, `contact_pressure`) by `stress`; `contact_status` and
+/// `temperature` kept.
 pub fn scaled(mut grid: Grid, length: f64, stress: f64) -> Grid {
     let l = |p: &mut [f64; 2]| p.iter_mut().for_each(|x| *x /= length);
     grid.points.iter_mut().for_each(l);
@@ -62,7 +66,7 @@ pub fn scaled(mut grid: Grid, length: f64, stress: f64) -> Grid {
     for (name, v) in &mut grid.scalars {
         let f = match name.as_str() {
             "gap" => length,
-            "contact_status" => 1.0,
+            "contact_status" | "temperature" => 1.0,
             _ => stress,
         };
         v.iter_mut().for_each(|x| *x /= f);
@@ -78,9 +82,28 @@ pub fn two_plate_grid(
     s: &TwoPlateSolution,
     field: &TwoPlateField,
 ) -> Result<(Grid, &'static str), FemError> {
+    two_plate_grid_with(s, field, None)
+}
+
+/// [`two_plate_grid`] of a joint with temperatures `thermal`
+/// ([`crate::contact::thermal::solve_field_with_temperature`]): stresses σ = D (ε − ε_th) and
+/// the nodal `temperature` (in the degrees it was given in).
+pub fn two_plate_grid_with(
+    s: &TwoPlateSolution,
+    field: &TwoPlateField,
+    thermal: Option<&Thermal>,
+) -> Result<(Grid, &'static str), FemError> {
     let model = &field.model;
     let mesh = &model.mesh;
-    let mut grid = Grid::plate(mesh, &model.materials, &field.u, 0)?;
+    let mut grid = match thermal {
+        Some(th) => {
+            let st = th.nodal_stresses(mesh, &model.materials, &field.u)?;
+            let mut g = Grid::with_stresses(mesh, &st, &field.u, 0);
+            g.add_scalar("temperature", th.temperature().to_vec());
+            g
+        }
+        None => Grid::plate(mesh, &model.materials, &field.u, 0)?,
+    };
     let n = mesh.n_nodes();
     let (mut p, mut g, mut st) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let mut faces = vec![mesh.bottom(model.upper)];
@@ -107,8 +130,18 @@ pub fn two_plate_grid(
 }
 
 /// The single plate's field: the solved upper half (plate 0) and its mirror image (plate 1).
+/// With temperatures ([`HalfPlate::thermal`]) the stresses are σ = D (ε − ε_th) and the grid
+/// carries the nodal `temperature` (in the degrees it was given in).
 pub fn single_plate_grid(material: Material, h: &HalfPlate) -> Result<Grid, FemError> {
-    let mut grid = Grid::plate(&h.mesh, &[material], &h.u, 0)?;
+    let mut grid = match &h.thermal {
+        Some(th) => {
+            let s = th.nodal_stresses(&h.mesh, &h.materials, &h.u)?;
+            let mut g = Grid::with_stresses(&h.mesh, &s, &h.u, 0);
+            g.add_scalar("temperature", th.temperature().to_vec());
+            g
+        }
+        None => Grid::plate(&h.mesh, &[material], &h.u, 0)?,
+    };
     let lower = grid.mirrored(1);
     grid.append(&lower);
     Ok(grid)

@@ -54,6 +54,7 @@ pub mod run;
 pub mod sweep;
 pub mod temperature;
 mod temperature_spec;
+pub mod temperature_table;
 pub mod units;
 
 pub use error::SceneError;

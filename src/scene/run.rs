@@ -207,6 +207,10 @@ pub fn pick(scene: &Scene) -> (Method, &'static str) {
         (Model::Slab, _) => (Method::Hankel, "Hankel transforms: the slab's exact route"),
         (Model::SinglePlate, Method::Fem) => (Method::Fem, "finite elements (asked)"),
         (Model::SinglePlate, Method::Hankel) => (Method::Hankel, "Hankel + hole correction (asked)"),
+        (Model::SinglePlate, Method::Auto) if scene.temperature.is_some() => (
+            Method::Fem,
+            "finite elements: the thermal strains of [temperature] are in the FE model only",
+        ),
         (Model::SinglePlate, Method::Auto)
             if scene.outputs.field.is_some() || scene.outputs.midplane.is_some() =>
         {
@@ -265,8 +269,16 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         (Model::TwoPlate, _) => {
             let params = two_plate_params(scene, nut);
             let s = match (&scene.temperature, &scene.outputs.field) {
-                (Some(t), _) => {
-                    thermal::solve_with_temperature(&joint, &params, &t.joint_temperature(&joint)?)?
+                (Some(t), Some(_)) => super::temperature::two_plate_field(
+                    &joint,
+                    &params,
+                    t,
+                    (l, scene.units.stress()),
+                    &mut out.field,
+                )?,
+                (Some(t), None) => {
+                    let jt = t.joint_temperature(&joint, scene.units.stress())?;
+                    thermal::solve_with_temperature(&joint, &params, &jt)?
                 }
                 (None, Some(_)) => {
                     let (s, f) = crate::contact::two_plate::solve_field(&joint, &params)?;
@@ -330,8 +342,22 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                 ..SingleParams::default()
             };
             let plate = substitute(&joint)?;
-            let s = if scene.outputs.field.is_some() || scene.outputs.midplane.is_some() {
-                let (s, h) = fem_single::solve_with_field(&plate, &params)?;
+            let keep = scene.outputs.field.is_some() || scene.outputs.midplane.is_some();
+            let (s, h) = match &scene.temperature {
+                Some(t) => super::temperature::solve_single(
+                    &plate,
+                    &params,
+                    t,
+                    scene.units.stress(),
+                    keep,
+                )?,
+                None if keep => {
+                    let (s, h) = fem_single::solve_with_field(&plate, &params)?;
+                    (s, Some(h))
+                }
+                None => (fem_single::solve(&plate, &params)?, None),
+            };
+            if let Some(h) = h {
                 let st = scene.units.stress();
                 if scene.outputs.field.is_some() {
                     let grid = field::single_plate_grid(plate.material(), &h)?;
@@ -341,10 +367,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                     let m = field::single_plate_midplane(&plate, &h)?;
                     out.midplane = Some(field::midplane_scaled(m, l, st));
                 }
-                s
-            } else {
-                fem_single::solve(&plate, &params)?
-            };
+            }
             (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
             Some("Hankel + hole correction")
         }

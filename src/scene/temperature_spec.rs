@@ -26,6 +26,11 @@ pub struct TemperatureSpec {
     /// [contact face, loaded face] temperatures per plate, linear between (one entry: both).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gradient: Option<Vec<[f64; 2]>>,
-    /// Expansion coefficient α per plate, per degree (one entry: both).
+    /// Expansion coefficient α per plate, per degree (one entry: both); empty with `table`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub alpha: Vec<f64>,
+    /// Rows (T, E, ν, α) for both plates, read linearly between rows
+    /// ([`super::temperature_table`]); E in the scene's stress unit.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub table: Option<Vec<[f64; 4]>>,
 }

@@ -9,5 +9,6 @@ mod hankel_agreement;
 mod hole_agreement;
 mod lame;
 mod single;
+mod single_thermal;
 mod system;
 mod thermal;

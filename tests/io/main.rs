@@ -20,4 +20,5 @@ mod py;
 mod read;
 mod report_cases;
 mod svg_util;
+mod thermal_vtu;
 mod vtu;

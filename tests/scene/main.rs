@@ -12,6 +12,7 @@ mod fuzz;
 mod heat;
 mod joint_units;
 mod temperature;
+mod thermal_single;
 mod units;
 
 use std::path::PathBuf;

@@ -96,9 +96,10 @@ fn bad_temperature_tables_name_key_and_line() {
             "{table}: {e}"
         );
     }
-    let single = format!(
-        "model = \"single-plate\"\n{BASE}[temperature]\nreference = 1.0\nplates = [2.0]\nalpha = [1e-5]\n"
+    let slab = format!(
+        "model = \"slab\"\n{}[temperature]\nreference = 1.0\nplates = [2.0]\nalpha = [1e-5]\n",
+        BASE.replace("[joint]\nouter_radius = 1.0\n", "")
     );
-    let e = Scene::parse(&single).unwrap_err();
+    let e = Scene::parse(&slab).unwrap_err();
     assert!(e.to_string().contains("two-plate"), "{e}");
 }
