@@ -39,6 +39,7 @@ pub const TABLE2_OUTER_RADIUS: f64 = 2.0;
 const TABLE1_CSV: &str = include_str!("../reference/table1_separation_radius.csv");
 const TABLE2_CSV: &str = include_str!("../reference/table2_experiments.csv");
 const CHAPTER5_CSV: &str = include_str!("../reference/chapter5_interface.csv");
+const TEXT_CSV: &str = include_str!("../reference/text_values.csv");
 
 /// One row of Table 1.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -118,6 +119,29 @@ pub struct InterfaceRow {
     pub h_c: f64,
     /// Quarter-annulus area times h_c, Btu/hr-°F.
     pub area_h_c: f64,
+}
+
+/// A number the report's text prints about its figures (`reference/text_values.csv`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TextValue {
+    /// Key, e.g. `single_r_over_a`.
+    pub key: String,
+    /// The value as printed.
+    pub value: f64,
+    /// Its unit as the file names it (`r/A`, `in`, `uin`).
+    pub unit: String,
+    /// The radius it is printed at, in (None where none).
+    pub r: Option<f64>,
+}
+
+/// The text's value `key` (None if the file has no such key).
+pub fn text_value(key: &str) -> Option<TextValue> {
+    rows(TEXT_CSV).find(|f| f[0] == key).map(|f| TextValue {
+        key: f[0].to_string(),
+        value: num(f[2]),
+        unit: f[3].to_string(),
+        r: opt(f[4]),
+    })
 }
 
 /// Data rows of a CSV with `#` comments and one header line, split into fields.

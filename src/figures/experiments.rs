@@ -108,6 +108,9 @@ pub fn fig28(params: &FiguresParams) -> Result<FigureData, FigureError> {
             .iter()
             .map(|s| value(2.0 * s.r_o, 2.0 * s.r_o_error, params.tolerance))
             .collect(),
+        report_values: "Table 2 (reference/table2_experiments.csv): the report's computed 2R_o \
+                        and the rubbing and autoradiographic tests' 2R_o (average, min–max)."
+            .into(),
         seconds: 0.0,
     })
 }

@@ -27,11 +27,14 @@
 //! # Ok::<(), boltzone::figures::FigureError>(())
 //! ```
 
-use super::{value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams};
+use super::{
+    value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point, PointSeries, Source,
+};
 use crate::contact::two_plate::{solve, TwoPlateParams};
 use crate::heat::lap::LapJoint;
 use crate::joint::{Joint, OuterRadius};
 use crate::material::Material;
+use crate::reference;
 use std::f64::consts::PI;
 
 /// How much the side view exaggerates the thickness.
@@ -151,8 +154,19 @@ pub fn fig29(params: &FiguresParams) -> Result<FigureData, FigureError> {
                 (side - 1.5 * EXAGGERATION * d, side + 1.5 * EXAGGERATION * d),
             ),
         ],
-        points: vec![],
+        points: vec![PointSeries {
+            label: "report (Ch. V): outer radii of the contact rings".into(),
+            source: Source::Report,
+            points: reference::chapter5_interface()
+                .iter()
+                .map(|r| Point::at(r.r_outer, 0.0))
+                .collect(),
+        }],
         values: vec![],
+        report_values: "Chapter V's table of the contact zone's annular increments (reference/\
+                        chapter5_interface.csv): their outer radii on the x axis; the last, \
+                        0.175 in, is the report's edge of the contact zone."
+            .into(),
         seconds: 0.0,
     })
 }

@@ -132,6 +132,10 @@ pub fn table1_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Fig
             points: rows.iter().map(|(_, r)| report(r)).collect(),
         }],
         values: vec![],
+        report_values: format!(
+            "Table 1 (reference/table1_separation_radius.csv): the {which} R_o/A of the rows \
+             A/D = {a_over_d}, times A = 0.1 in."
+        ),
         seconds: 0.0,
     })
 }

@@ -99,6 +99,11 @@ pub fn slab_figure(params: &FiguresParams) -> Result<FigureData, FigureError> {
             points: zeros,
         }],
         values: vec![],
+        report_values: format!(
+            "{}: the slab is not one of the report's figures (the single-plate literature's \
+             curve it cites).",
+            super::NO_REPORT_VALUES
+        ),
         seconds: 0.0,
     })
 }
