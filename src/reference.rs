@@ -1,5 +1,6 @@
 //! The report's tables as data: Table 1 (single- vs two-plate R_o/A), Table 2 (experiments and the
-//! report's computed 2R_o) and the Chapter V interface table. The CSV files live in `reference/`
+//! report's computed 2R_o), the Chapter V interface table and the numbers the text prints about
+//! its figures ([`text_value`]). The CSV files live in `reference/`
 //! with their provenance in the header comment; they are compiled into the library so the
 //! command-line tool needs no data path.
 //!
@@ -9,7 +10,8 @@
 //!
 //! The stored values against the report's own arithmetic: `tests/compare/reference.rs`
 //! (`table1_discrepancies_follow_from_the_radii`, `table2_discrepancies_follow_from_the_diameters`,
-//! `chapter5_conductances_follow_from_the_areas`).
+//! `chapter5_conductances_follow_from_the_areas`); the text's numbers as printed:
+//! `tests/figures/markers.rs`.
 //!
 //! # Cost
 //!

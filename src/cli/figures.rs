@@ -18,7 +18,8 @@
 //! # Cost
 //!
 //! The figures' solves; `boltzone figures` prints each figure's time; the whole set is timed by the
-//! ignored test `all_figures_separate_at_their_r_o` (tests/figures/gallery.rs, about 8 s).
+//! ignored test `every_curve_separates_at_its_r_o` (tests/figures/gallery.rs, which runs the whole
+//! set once, about 6 s).
 
 use super::exit::{usage, Status};
 use boltzone::figures::{self, draw, FigureData, FiguresParams};
@@ -113,7 +114,10 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         &args.out.join("figures.json"),
         &serde_json::to_string_pretty(&manifest)?,
     )?;
-    super::write_output(&args.out.join("index.html"), &gallery(&figs))?;
+    super::write_output(
+        &args.out.join("index.html"),
+        &gallery(&figs, args.units.units),
+    )?;
     Ok(Status::from_converged(
         figs.iter().all(FigureData::converged),
     ))
@@ -211,26 +215,30 @@ fn esc(s: &str) -> String {
 }
 
 /// The gallery page: every figure with its caption, note, computed R_o and files.
-fn gallery(figs: &[FigureData]) -> String {
-    let mut h = String::from(
+fn gallery(figs: &[FigureData], units: UnitSystem) -> String {
+    let (l, s, _) = units.symbols();
+    let mut h = format!(
         "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\
          <title>boltzone: the figures of Gould &amp; Mikic (1970), recomputed</title>\
-         <style>body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}\
-         figure{margin:2em 0;border-top:1px solid #ccc;padding-top:1em}\
-         img{width:100%;height:auto}figcaption{font-size:0.95em}</style></head><body>\n\
+         <style>body{{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}}\
+         figure{{margin:2em 0;border-top:1px solid #ccc;padding-top:1em}}\
+         img{{width:100%;height:auto}}figcaption{{font-size:0.95em}}</style></head><body>\n\
          <h1>The figures of Gould &amp; Mikic (1970), recomputed</h1>\n<p>Each figure's drawing \
          was lost from the report's text; its caption survives. The curves are computed by \
          boltzone from the captions' cases; triangles mark the report's printed values, open \
-         circles the measurements of Table 2 (bars: min–max). Lengths in inches, stresses in psi, \
-         compression negative for σ<sub>z</sub>.</p>\n",
+         circles the measurements of Table 2 (bars: min–max). Lengths in {l}, stresses in {s} \
+         ({}), compression negative for σ<sub>z</sub>.</p>\n",
+        units.name()
     );
     for f in figs {
         let _ = write!(
             h,
-            "<figure id=\"{id}\"><img src=\"{id}.svg\" alt=\"{t}\"><figcaption><b>{t}</b><br>{n}<ul>",
+            "<figure id=\"{id}\"><img src=\"{id}.svg\" alt=\"{t}\"><figcaption><b>{t}</b><br>{n}\
+             <br><i>The report's values:</i> {r}<ul>",
             id = f.id,
             t = esc(&typeset(&f.title)),
-            n = esc(&typeset(&f.note))
+            n = esc(&typeset(&f.note)),
+            r = esc(&typeset(&f.report_values))
         );
         for c in &f.curves {
             let _ = write!(h, "<li>{}</li>", esc(&typeset(&c.label)));

@@ -14,8 +14,8 @@
 //! # Cost
 //!
 //! Drawing only, timed with the figures: `boltzone figures` prints each figure's time; the whole
-//! set is timed by the ignored test `all_figures_separate_at_their_r_o` (tests/figures/gallery.rs,
-//! about 8 s).
+//! set is timed by `every_curve_separates_at_its_r_o` (tests/figures/gallery.rs, which runs the
+//! whole set once, about 6 s).
 //!
 //! ```
 //! use boltzone::figures::{compute, draw::SIZE, FiguresParams};

@@ -1,5 +1,6 @@
 //! Fig. 29: the aluminium lap joint of Chapter V as [`crate::heat::lap::LapJoint::chapter5`]
-//! assumes it (the report's node layout is lost with its figures), in plan view (and a side view below it, thickness exaggerated): the two strips
+//! assumes it (the report's node layout is lost with its figures), in plan view (and a side view
+//! below it, thickness exaggerated): the two strips
 //! W wide, hot edge at x = −L/2 and cold edge at x = +L/2, overlapping over l_o around the bolt;
 //! the two-dimensional cell grids (overlap and a margin on each side), the hole A, the bearing
 //! face B (2B = 0.26 in) and the contact zone A ≤ r ≤ R_o through which the heat crosses, R_o
@@ -18,7 +19,8 @@
 //!
 //! One two-plate solve (`cargo bench --bench contact`; example 15 builds on the same joint);
 //! `boltzone figures` prints each figure's time; the whole set is timed by the ignored test
-//! `all_figures_separate_at_their_r_o` (tests/figures/gallery.rs, about 8 s).
+//! `every_curve_separates_at_its_r_o` (tests/figures/gallery.rs, which runs the whole set once,
+//! about 6 s).
 //!
 //! ```no_run
 //! use boltzone::figures::{lap::fig29, FiguresParams};

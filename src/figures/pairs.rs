@@ -11,24 +11,29 @@
 //! | 21 | 4 | p(r) under a uniform displacement of 50 µin of each face under the nut |
 //! | 22 | 4 | the loaded face's axial displacement w(r) under the nut, each loading |
 //! | 23, 24, 26 | 3, 2, 1 | p(r); Fig. 24 with the outer edge free and fixed (Fig. 20(c)) |
-//! | 25 | 2 | the gap g(r) between the plates, outer edge free and fixed |
+//! | 25 | 2 (and 4) | the gap g(r) between the plates, outer edge free and fixed; the 1/4 in pair's (Ch. VI's values) |
 //! | 27 | 5 (1/8 on 1/4 in) | p(r) |
 //!
-//! Points: the report's computed R_o (Table 2's 2R_o / 2), the rubbing and autoradiographic
-//! ranges (2R_o / 2, min…max around the average), the Chapter IV text's r/A = 2.73–2.93 for the
-//! load variants and 3.5 for the single plate.
+//! Points (each figure's [`FigureData::report_values`] says which): the report's computed R_o
+//! (Table 2's 2R_o / 2), the rubbing and autoradiographic ranges (2R_o / 2, min…max around the
+//! average); the Chapter IV text's r/A = 2.73–2.93 for the load variants and 3.5 for the single
+//! plate (Figs. 18, 19, 21); the prescribed 50 µin under the nut (Fig. 22); Chapter VI's gap of
+//! the 1/4 in pair (Fig. 25: the report prints none for the 1/8 in pair), all from
+//! `reference/text_values.csv`.
 //!
 //! # Accuracy
 //!
-//! `tests/figures/gallery.rs`: `fig24_points_are_table2_case2` (the report's values against
+//! `tests/figures/markers.rs`: `pair_figures_are_table2`, `load_variants_are_the_chapter4_text`,
+//! `fig22_marker_is_the_nut_displacement`, `fig25_markers_are_chapter6_gaps` (the report's values
+//! against
 //! `reference/`), `fig20_profiles_carry_the_bolt_force` (each bearing-pressure profile integrates
 //! to 1100 lb) and `every_curve_separates_at_its_r_o`.
 //!
 //! # Cost
 //!
 //! One two-plate solve per curve (`cargo bench --bench contact`); `boltzone figures` prints each
-//! figure's time; the whole set is timed by the ignored test `all_figures_separate_at_their_r_o`
-//! (tests/figures/gallery.rs, about 8 s).
+//! figure's time; the whole set is timed by `every_curve_separates_at_its_r_o`
+//! (tests/figures/gallery.rs, which runs the whole set once, about 6 s).
 //!
 //! ```
 //! use boltzone::figures::pairs::{bearing_pressure, FORCE};

@@ -18,7 +18,8 @@
 //!
 //! `cargo bench --bench hankel` (`separation_radius 1e-10`, `midplane curve 1000 radii 1e-10`);
 //! `boltzone figures` prints each figure's time; the whole set is timed by the ignored test
-//! `all_figures_separate_at_their_r_o` (tests/figures/gallery.rs, about 8 s).
+//! `every_curve_separates_at_its_r_o` (tests/figures/gallery.rs, which runs the whole set once,
+//! about 6 s).
 //!
 //! ```
 //! use boltzone::figures::{slab::slab_figure, FiguresParams};
