@@ -71,21 +71,24 @@ pub fn slab_figure(params: &FiguresParams) -> Result<FigureData, FigureError> {
             x_bar: (sep.r_o - sep.r_o_error, sep.r_o + sep.r_o_error),
             y_bar: (0.0, 0.0),
         });
-        curves.push(FigCurve::with_r_o(
-            &format!("B/D = {b}"),
+        let mut c = FigCurve::with_r_o(
+            "",
             CurveKind::SigmaZ,
             (x, y),
             b,
             (sep.r_o, sep.r_o_error),
             params.tolerance,
-        ));
+        );
+        // D = 1: radii are r/D, no unit
+        c.label = format!("B/D = {b}: R_o/D = {:.4} ± {:.1e}", sep.r_o, sep.r_o_error);
+        curves.push(c);
     }
     Ok(FigureData {
         id: "slab".into(),
         title:
             "The no-hole slab 2D thick: midplane σz (Sneddon 1946, Greenwood 1964, Lardner 1965)"
                 .into(),
-        note: "An infinite slab 2D thick (D = 1 in: radii in inches are r/D), both faces pressed by P over r ≤ B, no hole; midplane \
+        note: "An infinite slab 2D thick (computed with D = 1: every radius is r/D), both faces pressed by P over r ≤ B, no hole; midplane \
                σ_z/P against r/D by Hankel transforms (boltzone::hankel); points: the first \
                upward zero R_o (the single-plate separation radius), with its error bar. Beyond \
                R_o the stress oscillates with amplitude falling ≈ e⁻⁶ per half-wave: those later \

@@ -5,8 +5,10 @@
 //!
 //! An axis's quantity is read from its label's bracket: `[in]` a length (× in/length unit),
 //! `[psi]` a stress (× psi/stress unit), `[µin]` a small length (µin → µm in the metric
-//! systems, × 0.0254). In text, a number followed by `in`, `µin`, `psi` or `lb` (and the `x ±
-//! e unit` of an R_o) is converted; other numbers (ratios, r/A) are left as they are.
+//! systems, × 0.0254); B, R_o and the computed values are abscissae and follow the x axis. In
+//! text, a number (decimal or fraction) followed by `in`, `µin`, `psi` or `lb` (and the first
+//! number of `x ± e unit` and `x and y unit`) is converted; other numbers (ratios, r/A) are left
+//! as they are.
 //!
 //! # Accuracy
 //!
@@ -71,6 +73,15 @@ pub fn number(x: f64) -> String {
     }
 }
 
+/// The number a word writes: a decimal or a fraction `p/q` (the nominal "1/4 in").
+fn value(word: &str) -> Option<f64> {
+    if let Ok(x) = word.parse::<f64>() {
+        return Some(x);
+    }
+    let (p, q) = word.split_once('/')?;
+    Some(p.parse::<f64>().ok()? / q.parse::<f64>().ok()?)
+}
+
 /// `text` with every "number unit" (and "number ± number unit") in `units`.
 pub fn text_in(text: &str, units: UnitSystem) -> String {
     let mut words: Vec<String> = text.split(' ').map(str::to_string).collect();
@@ -80,12 +91,13 @@ pub fn text_in(text: &str, units: UnitSystem) -> String {
         let Some((factor, symbol)) = unit(core, units) else {
             continue;
         };
-        let Ok(x) = words[j - 1].parse::<f64>() else {
+        let Some(x) = value(&words[j - 1]) else {
             continue;
         };
         words[j - 1] = number(x * factor);
-        if j >= 3 && words[j - 2] == "±" {
-            if let Ok(v) = words[j - 3].parse::<f64>() {
+        // "x ± e unit" and "x and y unit": the first number has the same unit
+        if j >= 3 && (words[j - 2] == "±" || words[j - 2] == "and") {
+            if let Some(v) = value(&words[j - 3]) {
                 words[j - 3] = number(v * factor);
             }
         }
@@ -120,7 +132,6 @@ pub fn in_units(fig: &FigureData, units: UnitSystem) -> FigureData {
     }
     let (fx, x_label) = axis(&fig.x_label, units);
     let (fy, y_label) = axis(&fig.y_label, units);
-    let length = INCH / units.length();
     out.x_label = x_label;
     out.y_label = y_label;
     out.title = text_in(&fig.title, units);
@@ -129,12 +140,23 @@ pub fn in_units(fig: &FigureData, units: UnitSystem) -> FigureData {
     for c in &mut out.curves {
         c.x.iter_mut().for_each(|x| *x *= fx);
         c.y.iter_mut().for_each(|y| *y *= fy);
-        c.b *= length;
+        // B and R_o are abscissae (r/D on the slab's axis: no unit, unchanged)
+        c.b *= fx;
         if let Some(v) = &mut c.r_o {
-            v.value *= length;
-            v.error *= length;
+            v.value *= fx;
+            v.error *= fx;
         }
-        c.label = text_in(&c.label, units);
+        // "what: R_o = x ± e in" rebuilt from the converted value (not the label's rounding)
+        c.label = match (c.r_o, c.label.split_once(": R_o = ")) {
+            (Some(v), Some((what, rest))) if rest.ends_with(" in") => format!(
+                "{}: R_o = {} ± {:.1e} {}",
+                text_in(what, units),
+                number(v.value),
+                v.error,
+                units.symbols().0
+            ),
+            _ => text_in(&c.label, units),
+        };
     }
     for s in &mut out.points {
         s.label = text_in(&s.label, units);
@@ -146,8 +168,8 @@ pub fn in_units(fig: &FigureData, units: UnitSystem) -> FigureData {
         }
     }
     for v in &mut out.values {
-        v.value *= length;
-        v.error *= length;
+        v.value *= fx;
+        v.error *= fx;
     }
     out
 }
