@@ -1,5 +1,6 @@
 //! The report's tables as data: Table 1 (single- vs two-plate R_o/A), Table 2 (experiments and the
-//! report's computed 2R_o) and the Chapter V interface table. The CSV files live in `reference/`
+//! report's computed 2R_o), the Chapter V interface table and the numbers the text prints about
+//! its figures ([`text_value`]). The CSV files live in `reference/`
 //! with their provenance in the header comment; they are compiled into the library so the
 //! command-line tool needs no data path.
 //!
@@ -9,7 +10,8 @@
 //!
 //! The stored values against the report's own arithmetic: `tests/compare/reference.rs`
 //! (`table1_discrepancies_follow_from_the_radii`, `table2_discrepancies_follow_from_the_diameters`,
-//! `chapter5_conductances_follow_from_the_areas`).
+//! `chapter5_conductances_follow_from_the_areas`); the text's numbers as printed:
+//! `tests/figures/markers.rs`.
 //!
 //! # Cost
 //!
@@ -39,6 +41,7 @@ pub const TABLE2_OUTER_RADIUS: f64 = 2.0;
 const TABLE1_CSV: &str = include_str!("../reference/table1_separation_radius.csv");
 const TABLE2_CSV: &str = include_str!("../reference/table2_experiments.csv");
 const CHAPTER5_CSV: &str = include_str!("../reference/chapter5_interface.csv");
+const TEXT_CSV: &str = include_str!("../reference/text_values.csv");
 
 /// One row of Table 1.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -118,6 +121,29 @@ pub struct InterfaceRow {
     pub h_c: f64,
     /// Quarter-annulus area times h_c, Btu/hr-°F.
     pub area_h_c: f64,
+}
+
+/// A number the report's text prints about its figures (`reference/text_values.csv`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TextValue {
+    /// Key, e.g. `single_r_over_a`.
+    pub key: String,
+    /// The value as printed.
+    pub value: f64,
+    /// Its unit as the file names it (`r/A`, `in`, `uin`).
+    pub unit: String,
+    /// The radius it is printed at, in (None where none).
+    pub r: Option<f64>,
+}
+
+/// The text's value `key` (None if the file has no such key).
+pub fn text_value(key: &str) -> Option<TextValue> {
+    rows(TEXT_CSV).find(|f| f[0] == key).map(|f| TextValue {
+        key: f[0].to_string(),
+        value: num(f[2]),
+        unit: f[3].to_string(),
+        r: opt(f[4]),
+    })
 }
 
 /// Data rows of a CSV with `#` comments and one header line, split into fields.

@@ -71,14 +71,10 @@ pub fn stamp_run(v: &mut Value, start: Instant) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// A curve as CSV in the one layout of the module docs: `columns` (names with units, the first
-/// is `r [in]`), provenance `notes` (one `#` line each, after the standard lines: version,
-/// command, units) and `rows` of equal length.
-pub fn curve_csv(columns: &[&str], notes: &[String], rows: &[Vec<f64>]) -> String {
-    curve_csv_in(boltzone::scene::UnitSystem::InPsiLbf, columns, notes, rows)
-}
-
-/// [`curve_csv`] in the unit system `units` (its units line says which).
+/// A curve as CSV in the one layout of the module docs, in the unit system `units` (its units
+/// line says which): `columns` (names with units, the first is `r [in]` or its length),
+/// provenance `notes` (one `#` line each, after the standard lines: version, command, units)
+/// and `rows` of equal length.
 pub fn curve_csv_in(
     units: boltzone::scene::UnitSystem,
     columns: &[&str],
@@ -105,12 +101,8 @@ pub fn curve_csv_in(
     out
 }
 
-/// The provenance line of an R_o: value ± error, and whether it met the tolerance.
-pub fn r_o_note(r_o: f64, error: f64, converged: bool) -> String {
-    r_o_note_in("in", r_o, error, converged)
-}
-
-/// [`r_o_note`] with the length symbol `l`.
+/// The provenance line of an R_o with the length symbol `l`: value ± error, and whether it met
+/// the tolerance.
 pub fn r_o_note_in(l: &str, r_o: f64, error: f64, converged: bool) -> String {
     format!("R_o = {r_o:e} {l} +- {error:.2e} {l}, converged: {converged}")
 }

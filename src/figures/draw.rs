@@ -14,8 +14,8 @@
 //! # Cost
 //!
 //! Drawing only, timed with the figures: `boltzone figures` prints each figure's time; the whole
-//! set is timed by the ignored test `all_figures_separate_at_their_r_o` (tests/figures/gallery.rs,
-//! about 8 s).
+//! set is timed by `every_curve_separates_at_its_r_o` (tests/figures/gallery.rs, which runs the
+//! whole set once, about 6 s).
 //!
 //! ```
 //! use boltzone::figures::{compute, draw::SIZE, FiguresParams};
@@ -37,7 +37,14 @@ use plotters::prelude::*;
 pub const SIZE: (u32, u32) = (1000, 660);
 
 /// Colours of successive point series.
-const POINT_COLOURS: [(u8, u8, u8); 4] = [(150, 0, 0), (0, 120, 120), (120, 80, 0), (90, 0, 150)];
+const POINT_COLOURS: [(u8, u8, u8); 6] = [
+    (150, 0, 0),
+    (0, 120, 120),
+    (120, 80, 0),
+    (90, 0, 150),
+    (200, 0, 130),
+    (60, 110, 0),
+];
 
 /// The data's extent: (x_min, x_max, y_min, y_max) over curves and points (bars included).
 fn extent(fig: &FigureData) -> (f64, f64, f64, f64) {
@@ -67,7 +74,7 @@ fn extent(fig: &FigureData) -> (f64, f64, f64, f64) {
 
 /// Whether the figure is a drawing in inches on both axes (equal scales).
 fn is_drawing(fig: &FigureData) -> bool {
-    fig.x_label.starts_with("x [in]") && fig.y_label.starts_with("y [in]")
+    fig.x_label.starts_with("x [") && fig.y_label.starts_with("y [")
 }
 
 impl Figure for FigureData {
@@ -77,13 +84,18 @@ impl Figure for FigureData {
         let (w, h) = root.dim_in_pixel();
         let entries = self.curves.len() + self.points.len();
         let (xr, yr) = if is_drawing(self) {
-            // equal scales: the plotting area is about (w − 110) × (h − 120) pixels
-            let span = (x1 - x0) * 1.04;
-            let per_px = span / (w as f64 - 110.0);
-            let legend = 24.0 * entries as f64 * per_px;
+            // equal scales: the plotting area is about (w − 110) × (h − 120) pixels, the legend
+            // (24 px per entry) above the drawing, never over it
+            let legend_px = 24.0 * entries as f64 + 30.0;
+            let per_px = f64::max(
+                (x1 - x0) * 1.04 / (w as f64 - 110.0),
+                (y1 - y0) * 1.04 / (h as f64 - 120.0 - legend_px).max(50.0),
+            );
+            let span = per_px * (w as f64 - 110.0);
             let tall = (h as f64 - 120.0) * per_px;
             let cx = 0.5 * (x0 + x1);
-            let bottom = y0 - 0.5 * (tall - (y1 - y0) - legend).max(0.04 * tall);
+            let spare = tall - (y1 - y0) - legend_px * per_px;
+            let bottom = y0 - 0.5 * spare.max(0.04 * tall);
             ((cx - span / 2.0, cx + span / 2.0), (bottom, bottom + tall))
         } else {
             let dy = (y1 - y0).max(f64::MIN_POSITIVE);
@@ -106,6 +118,8 @@ impl Figure for FigureData {
             .x_desc(typeset(&self.x_label))
             .y_desc(typeset(&self.y_label))
             .label_style(("sans-serif", 14))
+            .x_label_formatter(&|x| super::units::number(*x))
+            .y_label_formatter(&|y| super::units::number(*y))
             .draw()
             .map_err(pe)?;
         if yr.0 < 0.0 && yr.1 > 0.0 {

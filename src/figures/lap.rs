@@ -1,5 +1,6 @@
 //! Fig. 29: the aluminium lap joint of Chapter V as [`crate::heat::lap::LapJoint::chapter5`]
-//! assumes it (the report's node layout is lost with its figures), in plan view (and a side view below it, thickness exaggerated): the two strips
+//! assumes it (the report's node layout is lost with its figures), in plan view (and a side view
+//! below it, thickness exaggerated): the two strips
 //! W wide, hot edge at x = −L/2 and cold edge at x = +L/2, overlapping over l_o around the bolt;
 //! the two-dimensional cell grids (overlap and a margin on each side), the hole A, the bearing
 //! face B (2B = 0.26 in) and the contact zone A ≤ r ≤ R_o through which the heat crosses, R_o
@@ -18,7 +19,8 @@
 //!
 //! One two-plate solve (`cargo bench --bench contact`; example 15 builds on the same joint);
 //! `boltzone figures` prints each figure's time; the whole set is timed by the ignored test
-//! `all_figures_separate_at_their_r_o` (tests/figures/gallery.rs, about 8 s).
+//! `every_curve_separates_at_its_r_o` (tests/figures/gallery.rs, which runs the whole set once,
+//! about 6 s).
 //!
 //! ```no_run
 //! use boltzone::figures::{lap::fig29, FiguresParams};
@@ -27,11 +29,14 @@
 //! # Ok::<(), boltzone::figures::FigureError>(())
 //! ```
 
-use super::{value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams};
+use super::{
+    value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point, PointSeries, Source,
+};
 use crate::contact::two_plate::{solve, TwoPlateParams};
 use crate::heat::lap::LapJoint;
 use crate::joint::{Joint, OuterRadius};
 use crate::material::Material;
+use crate::reference;
 use std::f64::consts::PI;
 
 /// How much the side view exaggerates the thickness.
@@ -151,8 +156,19 @@ pub fn fig29(params: &FiguresParams) -> Result<FigureData, FigureError> {
                 (side - 1.5 * EXAGGERATION * d, side + 1.5 * EXAGGERATION * d),
             ),
         ],
-        points: vec![],
+        points: vec![PointSeries {
+            label: "report (Ch. V): outer radii of the contact rings".into(),
+            source: Source::Report,
+            points: reference::chapter5_interface()
+                .iter()
+                .map(|r| Point::at(r.r_outer, 0.0))
+                .collect(),
+        }],
         values: vec![],
+        report_values: "Chapter V's table of the contact zone's annular increments (reference/\
+                        chapter5_interface.csv): their outer radii on the x axis; the last, \
+                        0.175 in, is the report's edge of the contact zone."
+            .into(),
         seconds: 0.0,
     })
 }

@@ -24,9 +24,9 @@
 //! # Accuracy
 //!
 //! `tests/figures/main.rs`: every curve's sign change brackets its R_o within the curve's node
-//! spacing and R_o's error bar; the report's markers are at the values of the `reference/` tables
-//! read independently; the two-plate R_o of Figs. 15–17 are within the report's grid interval
-//! (0.015 in) and printed rounding of Table 1.
+//! spacing and R_o's error bar (all 42 curves, `gallery.rs`); every marker is at the value of
+//! the `reference/` files read independently (`markers.rs`); Fig. 22's nut curve is flat at the
+//! prescribed −50 µin and its shape converged (`deflection.rs`); the units (`units.rs`).
 //!
 //! # Cost
 //!
@@ -46,6 +46,7 @@ pub mod lap;
 pub mod pairs;
 pub mod single;
 pub mod slab;
+pub mod units;
 
 use crate::value::Value;
 use serde::Serialize;
@@ -229,6 +230,9 @@ pub struct FigureData {
     pub points: Vec<PointSeries>,
     /// Computed values shown as points rather than curves (Fig. 28's 2R_o), with their errors.
     pub values: Vec<Value>,
+    /// What the report prints for this figure (the source of its markers), or, starting with
+    /// [`NO_REPORT_VALUES`], that it prints none and why.
+    pub report_values: String,
     /// Seconds spent computing.
     pub seconds: f64,
 }
@@ -242,6 +246,9 @@ impl FigureData {
             && self.values.iter().all(|v| v.converged)
     }
 }
+
+/// How [`FigureData::report_values`] starts for a figure the report prints no value for.
+pub const NO_REPORT_VALUES: &str = "The report prints no value for this figure";
 
 /// Every figure's id, in the gallery's order.
 pub const IDS: [&str; 19] = [

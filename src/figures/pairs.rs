@@ -11,24 +11,29 @@
 //! | 21 | 4 | p(r) under a uniform displacement of 50 µin of each face under the nut |
 //! | 22 | 4 | the loaded face's axial displacement w(r) under the nut, each loading |
 //! | 23, 24, 26 | 3, 2, 1 | p(r); Fig. 24 with the outer edge free and fixed (Fig. 20(c)) |
-//! | 25 | 2 | the gap g(r) between the plates, outer edge free and fixed |
+//! | 25 | 2 (and 4) | the gap g(r) between the plates, outer edge free and fixed; the 1/4 in pair's (Ch. VI's values) |
 //! | 27 | 5 (1/8 on 1/4 in) | p(r) |
 //!
-//! Points: the report's computed R_o (Table 2's 2R_o / 2), the rubbing and autoradiographic
-//! ranges (2R_o / 2, min…max around the average), the Chapter IV text's r/A = 2.73–2.93 for the
-//! load variants and 3.5 for the single plate.
+//! Points (each figure's [`FigureData::report_values`] says which): the report's computed R_o
+//! (Table 2's 2R_o / 2), the rubbing and autoradiographic ranges (2R_o / 2, min…max around the
+//! average); the Chapter IV text's r/A = 2.73–2.93 for the load variants and 3.5 for the single
+//! plate (Figs. 18, 19, 21); the prescribed 50 µin under the nut (Fig. 22); Chapter VI's gap of
+//! the 1/4 in pair (Fig. 25: the report prints none for the 1/8 in pair), all from
+//! `reference/text_values.csv`.
 //!
 //! # Accuracy
 //!
-//! `tests/figures/gallery.rs`: `fig24_points_are_table2_case2` (the report's values against
+//! `tests/figures/markers.rs`: `pair_figures_are_table2`, `load_variants_are_the_chapter4_text`,
+//! `fig22_marker_is_the_nut_displacement`, `fig25_markers_are_chapter6_gaps` (the report's values
+//! against
 //! `reference/`), `fig20_profiles_carry_the_bolt_force` (each bearing-pressure profile integrates
 //! to 1100 lb) and `every_curve_separates_at_its_r_o`.
 //!
 //! # Cost
 //!
 //! One two-plate solve per curve (`cargo bench --bench contact`); `boltzone figures` prints each
-//! figure's time; the whole set is timed by the ignored test `all_figures_separate_at_their_r_o`
-//! (tests/figures/gallery.rs, about 8 s).
+//! figure's time; the whole set is timed by `every_curve_separates_at_its_r_o`
+//! (tests/figures/gallery.rs, which runs the whole set once, about 6 s).
 //!
 //! ```
 //! use boltzone::figures::pairs::{bearing_pressure, FORCE};
@@ -272,20 +277,70 @@ fn table2_points(r: &Table2Row) -> Vec<PointSeries> {
     out
 }
 
-/// The Chapter IV text on the 1/4 in pair's load variants: two-plate r/A 2.73–2.93, single 3.5.
-fn variant_points() -> Vec<PointSeries> {
-    vec![
+/// The report's text value `key` (`reference/text_values.csv`).
+fn text(key: &str) -> Result<f64, FigureError> {
+    reference::text_value(key)
+        .map(|t| t.value)
+        .ok_or_else(|| FigureError::Unknown(format!("reference/text_values.csv key {key}")))
+}
+
+/// The Chapter IV text on the 1/4 in pair's load variants (Figs. 18, 19, 21): two-plate r/A
+/// 2.73–2.93, single plate 3.5.
+fn variant_points() -> Result<Vec<PointSeries>, FigureError> {
+    let (lo, hi) = (
+        text("variants_two_r_over_a_min")?,
+        text("variants_two_r_over_a_max")?,
+    );
+    let single = text("single_r_over_a")?;
+    Ok(vec![
         PointSeries {
-            label: "report (Ch. IV): two-plate variants, r/A = 2.73–2.93".into(),
+            label: format!("report (Ch. IV): two-plate variants, r/A = {lo}–{hi}"),
             source: Source::Report,
-            points: vec![Point::range(2.83 * A, 2.73 * A, 2.93 * A)],
+            points: vec![Point::range((lo + hi) / 2.0 * A, lo * A, hi * A)],
         },
         PointSeries {
-            label: "report (Ch. IV): single plate, r/A = 3.5".into(),
+            label: format!("report (Ch. IV): single plate, r/A = {single}"),
             source: Source::Report,
-            points: vec![Point::at(3.5 * A, 0.0)],
+            points: vec![Point::at(single * A, 0.0)],
         },
-    ]
+    ])
+}
+
+/// Fig. 22: the report's 50 µin under each nut (Fig. 21's loading), as a bar A..B at −50 µin.
+fn nut_points(b: f64) -> Result<Vec<PointSeries>, FigureError> {
+    let w = -text("nut_displacement")?;
+    Ok(vec![PointSeries {
+        label: format!("report (Ch. IV): {} µin under each nut (A ≤ r ≤ B)", -w),
+        source: Source::Report,
+        points: vec![Point {
+            x: (A + b) / 2.0,
+            y: w,
+            x_bar: (A, b),
+            y_bar: (w, w),
+        }],
+    }])
+}
+
+/// Fig. 25: Chapter VI's gap of the 1/4 in pair (98.6 µin at r = 2 in, 3 µin 1/32 in beyond
+/// its R_o = 0.35 in).
+fn gap_points() -> Result<Vec<PointSeries>, FigureError> {
+    let at = |key: &str| -> Result<Point, FigureError> {
+        let t = reference::text_value(key)
+            .ok_or_else(|| FigureError::Unknown(format!("reference/text_values.csv key {key}")))?;
+        Ok(Point::at(t.r.unwrap_or(0.0), t.value))
+    };
+    Ok(vec![
+        PointSeries {
+            label: "report (Ch. VI): gap of the 1/4 in pair".into(),
+            source: Source::Report,
+            points: vec![at("gap_near_separation")?, at("gap_outer_radius")?],
+        },
+        PointSeries {
+            label: "report (Ch. VI): R_o of the 1/4 in pair".into(),
+            source: Source::Report,
+            points: vec![Point::at(text("separation_radius_quarter")?, 0.0)],
+        },
+    ])
 }
 
 /// Figs. 18–27 (`id` = `fig18` … `fig27`).
@@ -350,7 +405,7 @@ pub fn pair_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Figur
         "fig25" => (
             "Fig. 25: gap deformation for free and fixed edges, 1/8 inch plate pair",
             2,
-            vec![(case(2), gap), (fixed(2), gap)],
+            vec![(case(2), gap), (fixed(2), gap), (case(4), gap)],
             "g [µin] (gap between the plates)",
         ),
         "fig26" => (
@@ -372,14 +427,18 @@ pub fn pair_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Figur
         .par_iter()
         .map(|(c, f)| f(id, c, tol))
         .collect::<Result<Vec<_>, _>>()?;
+    let mut curves = curves;
+    if let (Some(c), "fig25") = (curves.get_mut(2), id) {
+        c.label = format!("1/4 in pair (case 4): {}", c.label);
+    }
     let reach = curves
         .iter()
         .filter_map(|c| c.r_o.map(|v| v.value))
         .fold(r.computed / 2.0, f64::max);
-    let x_max = if id == "fig22" {
-        2.0 * r.two_b / 2.0
-    } else {
-        1.4 * reach
+    let x_max = match id {
+        "fig22" => 2.0 * r.two_b / 2.0,
+        "fig25" => reference::TABLE2_OUTER_RADIUS,
+        _ => 1.4 * reach,
     };
     let curves: Vec<FigCurve> = curves
         .into_iter()
@@ -388,23 +447,34 @@ pub fn pair_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Figur
             c
         })
         .collect();
+    let note = if id == "fig22" {
+        " The curves are piecewise linear through the finite-element nodes: within about 1.2 B \
+         the kink at the nut's edge is drawn to a few per cent of the curve's scale only \
+         (tests/figures/deflection.rs)."
+    } else {
+        ""
+    };
     let mut points = match id {
-        "fig19" | "fig21" => variant_points(),
-        "fig22" => vec![],
+        "fig18" => [table2_points(&r), variant_points()?].concat(),
+        "fig19" | "fig21" => variant_points()?,
+        "fig22" => nut_points(r.two_b / 2.0)?,
+        "fig25" => gap_points()?,
         _ => table2_points(&r),
     };
     let scale = curves
         .iter()
         .flat_map(|c: &FigCurve| c.y.iter())
         .fold(0.0, |m: f64, y| m.max(y.abs()));
-    stagger(&mut points, scale);
+    if id != "fig22" {
+        stagger(&mut points, scale);
+    }
     Ok(FigureData {
         id: id.to_string(),
         title: title.to_string(),
         note: format!(
             "Table 2 case {n}: plates {} and {} in thick (304 steel, E = 28e6 psi, ν = 0.3), \
              A = {A} in, B = {} in, C = 2 in, bolt force {FORCE} lb; two plates by finite \
-             elements with the report's welded interface (as `boltzone table2`).",
+             elements with the report's welded interface (as `boltzone table2`).{note}",
             r.d1,
             r.d2,
             r.two_b / 2.0
@@ -414,8 +484,31 @@ pub fn pair_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Figur
         curves,
         points,
         values: vec![],
+        report_values: report_values(id, n),
         seconds: 0.0,
     })
+}
+
+/// What the report prints for pair figure `id` (Table 2 case `n`).
+fn report_values(id: &str, n: u32) -> String {
+    let table2 = format!(
+        "Table 2 case {n} (reference/table2_experiments.csv): the report's computed 2R_o and \
+         the tests' 2R_o ranges, halved to R_o"
+    );
+    let text = "the Chapter IV.B text (reference/text_values.csv): the two-plate separation of \
+                the 1/4 in pair's load variants at r/A = 2.73–2.93 and the single plate's at 3.5";
+    match id {
+        "fig18" => format!("{table2}; {text}."),
+        "fig19" | "fig21" => format!("From {text}; the report prints no pressure value."),
+        "fig22" => "The Chapter IV.B text (reference/text_values.csv): the prescribed 50 µin \
+                    under each nut of Fig. 21's loading; the report prints no other deflection."
+            .into(),
+        "fig25" => "The report prints no gap for Fig. 25's 1/8 in pair; Chapter VI \
+                    (reference/text_values.csv) prints the 1/4 in pair's: 98.6 µin at r = 2 in \
+                    and 3 µin 1/32 in beyond its R_o = 0.35 in, drawn with that pair's gap."
+            .into(),
+        _ => format!("{table2}."),
+    }
 }
 
 /// Fig. 20: the bearing-pressure profiles of the load variants (equal force).
@@ -460,6 +553,11 @@ fn fig20() -> FigureData {
         curves,
         points: vec![],
         values: vec![],
+        report_values: format!(
+            "{}: the report draws the load variants (Fig. 20) without numbers; the profiles \
+             carry Chapter III's bolt force of about 1100 lb.",
+            super::NO_REPORT_VALUES
+        ),
         seconds: 0.0,
     }
 }

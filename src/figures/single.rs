@@ -9,8 +9,9 @@
 //!
 //! # Accuracy
 //!
-//! `tests/figures/gallery.rs`: `fig12_points_are_table1` (the report's markers against `reference/`
-//! read independently), `fig12_single_plate_r_o_match_the_hankel_route` (the single plate's R_o
+//! `tests/figures/markers.rs`: `figs12_to_17_are_table1` (the report's markers against `reference/`
+//! read independently); `tests/figures/gallery.rs`: `fig12_single_plate_r_o_match_the_hankel_route`
+//! (the single plate's R_o
 //! against the semi-analytic route) and `every_curve_separates_at_its_r_o` (each curve changes sign
 //! at its R_o within node spacing and error bar).
 //!
@@ -18,8 +19,8 @@
 //!
 //! The single-plate level study (`cargo bench --bench fem`, `Q9/levels…`) and the two-plate solve
 //! (`cargo bench --bench contact`) per joint; `boltzone figures` prints each figure's time; the
-//! whole set is timed by the ignored test `all_figures_separate_at_their_r_o`
-//! (tests/figures/gallery.rs, about 8 s).
+//! whole set is timed by `every_curve_separates_at_its_r_o` (tests/figures/gallery.rs, which runs
+//! the whole set once, about 6 s).
 //!
 //! ```
 //! use boltzone::figures::{single::table1_figure, FigureError, FiguresParams};
@@ -132,6 +133,10 @@ pub fn table1_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Fig
             points: rows.iter().map(|(_, r)| report(r)).collect(),
         }],
         values: vec![],
+        report_values: format!(
+            "Table 1 (reference/table1_separation_radius.csv): the {which} R_o/A of the rows \
+             A/D = {a_over_d}, times A = 0.1 in."
+        ),
         seconds: 0.0,
     })
 }

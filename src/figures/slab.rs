@@ -18,7 +18,8 @@
 //!
 //! `cargo bench --bench hankel` (`separation_radius 1e-10`, `midplane curve 1000 radii 1e-10`);
 //! `boltzone figures` prints each figure's time; the whole set is timed by the ignored test
-//! `all_figures_separate_at_their_r_o` (tests/figures/gallery.rs, about 8 s).
+//! `every_curve_separates_at_its_r_o` (tests/figures/gallery.rs, which runs the whole set once,
+//! about 6 s).
 //!
 //! ```
 //! use boltzone::figures::{slab::slab_figure, FiguresParams};
@@ -70,21 +71,24 @@ pub fn slab_figure(params: &FiguresParams) -> Result<FigureData, FigureError> {
             x_bar: (sep.r_o - sep.r_o_error, sep.r_o + sep.r_o_error),
             y_bar: (0.0, 0.0),
         });
-        curves.push(FigCurve::with_r_o(
-            &format!("B/D = {b}"),
+        let mut c = FigCurve::with_r_o(
+            "",
             CurveKind::SigmaZ,
             (x, y),
             b,
             (sep.r_o, sep.r_o_error),
             params.tolerance,
-        ));
+        );
+        // D = 1: radii are r/D, no unit
+        c.label = format!("B/D = {b}: R_o/D = {:.4} ± {:.1e}", sep.r_o, sep.r_o_error);
+        curves.push(c);
     }
     Ok(FigureData {
         id: "slab".into(),
         title:
             "The no-hole slab 2D thick: midplane σz (Sneddon 1946, Greenwood 1964, Lardner 1965)"
                 .into(),
-        note: "An infinite slab 2D thick (D = 1 in: radii in inches are r/D), both faces pressed by P over r ≤ B, no hole; midplane \
+        note: "An infinite slab 2D thick (computed with D = 1: every radius is r/D), both faces pressed by P over r ≤ B, no hole; midplane \
                σ_z/P against r/D by Hankel transforms (boltzone::hankel); points: the first \
                upward zero R_o (the single-plate separation radius), with its error bar. Beyond \
                R_o the stress oscillates with amplitude falling ≈ e⁻⁶ per half-wave: those later \
@@ -99,6 +103,11 @@ pub fn slab_figure(params: &FiguresParams) -> Result<FigureData, FigureError> {
             points: zeros,
         }],
         values: vec![],
+        report_values: format!(
+            "{}: the slab is not one of the report's figures (the single-plate literature's \
+             curve it cites).",
+            super::NO_REPORT_VALUES
+        ),
         seconds: 0.0,
     })
 }

@@ -15,6 +15,9 @@
 mod common;
 
 mod browser;
+mod deflection;
 mod gallery;
 mod load;
+mod markers;
 mod server;
+mod units;
