@@ -1,10 +1,10 @@
 //! Rows of cos ξs, cos ξs − 1 and J₀(ξs) over the nodes of equal Gauss–Legendre panels, for
-//! the holed two-plate model's transforms ([`super::crack`]): the tables it rebuilds for every
+//! the holed two-plate model's transforms (module `crack`): the tables it rebuilds for every
 //! trial contact radius, at a few flops per entry instead of a library call.
 //!
 //! **What is computed.** For nodes s = m_p + δ_j (panel midpoints m_p = a + (p + ½)h, offsets
 //! δ_j = ½h·x_j of the 20-point rule, the same floating-point nodes as
-//! [`super::system::panels`]) and one ξ: cos ξs and sin ξs by the addition theorem from
+//! `system::panels`) and one ξ: cos ξs and sin ξs by the addition theorem from
 //! the per-panel and per-offset values; cos ξs − 1 = A + B + AB − sin ξm_p sin ξδ_j with
 //! A = cos ξm_p − 1, B = cos ξδ_j − 1 (each without cancellation; the sum loses at most a factor
 //! (m_p/s)² ≤ 16 of relative accuracy, since nodes with |s| < |m_p|/4 are computed directly);
