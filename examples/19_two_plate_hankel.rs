@@ -21,8 +21,12 @@
 //! within its own estimate on 11 rows ((1, 1.3): 1.4× its estimate). Level by level the FE's
 //! error against this route falls at rates 2–3 over the first levels and about 1 over the
 //! last (row 1: 1.5e-2, 1.7e-3, 4.0e-4, 1.8e-4, 9.2e-5 at h = D/4 … D/64), erratically on the
-//! narrow loads (B/A 1.6 and 1.3 on A/D = 1). Times are wall-clock (state the load beside
-//! them).
+//! narrow loads (B/A 1.6 and 1.3 on A/D = 1). At --tol 1e-6 (rows 1–2, 6–7 s wall each) the
+//! error stalls over the last three levels (h = D/256 … D/1024) at 4.5, 4.1, 2.9e-6 (row 1) and
+//! 6.7, 5.6, 4.7e-6 (row 2), below this route, about the FE's own estimate of its cut of the
+//! infinite plate (at 20.4 and 16.8 in: 3.0e-6 and 4.2e-6 of R_o): the FE's floor there is its
+//! outer cut, not its mesh; |FE − H| (2.9e-6, 4.7e-6) is within its estimate (4.3e-6, 5.1e-6).
+//! Times are wall-clock (state the load beside them).
 //!
 //! Run: `cargo run --release --example 19_two_plate_hankel [rows] [tight]` (rows: how many of
 //! Table 1's, default 12; tight = 1 adds the FE at --tol 1e-6, minutes per row).
@@ -163,7 +167,13 @@ pub fn run(rows: usize, tight: bool) -> anyhow::Result<Vec<Row>> {
             .iter()
             .map(|l| (l.r_o - row.hankel.r_o).abs() / row.hankel.r_o)
             .collect();
-        let mut line = format!("{ad:>5} {ba:>5}:");
+        let mut line = format!(
+            "{ad:>5} {ba:>5} (outer cut {}, its estimated share {:.1e}):",
+            fe.info
+                .cut
+                .map_or_else(|| "none".to_string(), |c| format!("{:.3} in", c)),
+            fe.info.truncation_error / row.hankel.r_o
+        );
         for (k, (l, e)) in fe.info.levels.iter().zip(&errors).enumerate() {
             let rate = if k > 0 && *e > 0.0 {
                 format!(" (rate {:.2})", (errors[k - 1] / e).log2())
