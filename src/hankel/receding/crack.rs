@@ -1,7 +1,8 @@
-//! One trial contact radius of the holed two-plate model ([`super::holed`]): the crack field's
-//! Fredholm equation with a bottom load, its traction on the hole at Chebyshev heights, the hole
-//! correction's fit, and the iteration l ← s₀ + σ_z^Z (derivation in [`super::holed`]), with the
-//! quadrature helpers they share.
+//! One trial contact radius of the holed two-plate model ([`super::holed`]), and the search for
+//! R_o over them: the crack field's Fredholm equation with a bottom load, its traction on the
+//! hole at Chebyshev heights, the hole correction's fit, the iteration l ← s₀ + σ_z^Z
+//! (derivation in [`super::holed`]) and the contact pressure, with the quadrature helpers they
+//! share.
 //!
 //! # Accuracy
 //!
@@ -18,6 +19,7 @@
 use super::contact::RecedingError;
 use super::grid::PanelGrid;
 use super::holed::{Crack, HoledParams, Setup};
+use super::search::{root, Scan};
 use super::system::{cos_m1, panels, Nystrom, XiRule};
 use crate::hankel::hole::fit::{fit, Boundary, Fit, HoleData};
 use crate::hankel::transform::LoadTransform;
@@ -446,5 +448,38 @@ impl Setup {
                 extra: &extra,
             }],
         )
+    }
+}
+
+impl Setup {
+    /// R_o with `n` Nyström points (bracketing `near` first): (R_o, last solve, solves).
+    pub(super) fn search(
+        &self,
+        b: f64,
+        n: usize,
+        params: &HoledParams,
+        near: Option<f64>,
+        at: &[f64],
+    ) -> Result<(f64, Crack, usize), RecedingError> {
+        let mut solves = 0;
+        let mut edge = |c: f64| {
+            solves += 1;
+            self.crack(c, n, params, &[]).map(|k| k.edge)
+        };
+        let scan = Scan {
+            b,
+            d: self.d,
+            step: params.step * self.d,
+            end: b + params.reach * self.d,
+            tol: params.rel_tol * self.d,
+            max_iterations: 100,
+        };
+        let r_o = root(&mut edge, &scan, near)?.ok_or(RecedingError::NotFound {
+            from: b,
+            to: scan.end,
+        })?;
+        let radii: Vec<f64> = at.iter().map(|x| self.a + x * (r_o - self.a)).collect();
+        let last = self.crack(r_o, n, params, &radii)?;
+        Ok((r_o, last, solves + 1))
     }
 }

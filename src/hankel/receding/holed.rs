@@ -32,10 +32,9 @@
 //! **Error control.** R_o's estimate adds (a) the change from a run with ⌈3n/4⌉ Nyström points,
 //! (b) the change from a run with half the hole modes (the bilateral plate and Z), (c) the root
 //! tolerance; the residual traction on the hole is measured on the fit's check heights. Each
-//! variant's R_o is one Newton step from R_o with the edge coefficient's slope there (a secant
-//! over 1e-3 D): the changes are ≤ 1e-6 D, so the step's own error, of the order of the change
-//! squared over the root's scale, is far below them (same estimates as full searches to 2e-12 D
-//! on Table 1 row 1); a change beyond 0.01 D gets the full search.
+//! variant's R_o is one Newton step from R_o (slope: a secant over 1e-3 D), its error ∝ the
+//! change squared (≤ 1e-6 D: negligible; as full searches to 2e-12 D on Table 1 row 1); a
+//! change beyond 0.01 D gets the full search.
 //!
 //! # Accuracy
 //!
@@ -56,15 +55,10 @@
 //! `agrees_with_the_fe_on_table1_first_row` checks one row with coarse settings. A → 0 (study `small_holes_approach_the_receding_solution`, B = 3D):
 //! R_o minus the no-hole receding solver's under the disk load is −8.3e-8, −2.0e-8, −5.0e-9 (in, D = 0.1 in)
 //! at A = 0.2D, 0.1D, 0.05D — the predicted A² (observed rates 2.07, 1.99). The interface
-//! pressure ([`two_plate_hole_pressure`]: q = the crack field's contact pressure, its smooth
-//! part from the Nyström series and its half-space part H_l in closed form, minus the plane
-//! stress of the bilateral plate and the correction) balances the load as far as the hole's
-//! residual shear lets it (`tests/hankel/two_plate_hole_pressure.rs`): on Table 1 row 1 the
-//! force's error is −7.8e-9 with the residual 2.5e-8 P (defaults) and −1.3e-10 with 4e-10 P
-//! (ξ_l = 70/D), the bound residual·2πAD being 5.7e-9 and 9.4e-11 of the load; q ends like
-//! √(R_o − r). (A/D 1, B/A 2.2), where the FE sits 4–6e-6 below: R_o/A = 2.623523384608 moves by
-//! at most 1.1e-8 under 36 Nyström points, 26 heights, ξ_l = 70, tail 20D, N = 32 modes,
-//! doubled corner terms, or iteration and root tolerances 1e-15 and 1e-13 (one at a time).
+//! pressure ([`two_plate_hole_pressure`]) balances the load within the hole's residual shear
+//! (`tests/hankel/two_plate_hole_pressure.rs`: −7.8e-9, −1.3e-10 at ξ_l = 40, 70/D). On
+//! (1, 2.2) R_o/A = 2.623523384608 moves ≤ 1.1e-8 under each knob doubled; the FE at 1e-6 stalls
+//! 4.7e-6 below, about its own outer-cut estimate (example 19).
 //!
 //! # Cost
 //!
@@ -89,7 +83,6 @@
 
 use super::contact::RecedingError;
 use super::layer_field::bottom_kernels;
-use super::search::{root, Scan};
 use super::system::panels;
 use crate::error::InputError;
 use crate::hankel::hole::corner::CornerLoads;
@@ -384,39 +377,6 @@ impl Setup {
     /// The bilateral plate's midplane σ_z.
     pub(super) fn s0(&self, r: f64) -> f64 {
         self.slab_mid.eval(r).value + self.bilateral.correction_midplane(r)
-    }
-}
-
-impl Setup {
-    /// R_o with `n` Nyström points (bracketing `near` first): (R_o, last solve, solves).
-    fn search(
-        &self,
-        b: f64,
-        n: usize,
-        params: &HoledParams,
-        near: Option<f64>,
-        at: &[f64],
-    ) -> Result<(f64, Crack, usize), RecedingError> {
-        let mut solves = 0;
-        let mut edge = |c: f64| {
-            solves += 1;
-            self.crack(c, n, params, &[]).map(|k| k.edge)
-        };
-        let scan = Scan {
-            b,
-            d: self.d,
-            step: params.step * self.d,
-            end: b + params.reach * self.d,
-            tol: params.rel_tol * self.d,
-            max_iterations: 100,
-        };
-        let r_o = root(&mut edge, &scan, near)?.ok_or(RecedingError::NotFound {
-            from: b,
-            to: scan.end,
-        })?;
-        let radii: Vec<f64> = at.iter().map(|x| self.a + x * (r_o - self.a)).collect();
-        let last = self.crack(r_o, n, params, &radii)?;
-        Ok((r_o, last, solves + 1))
     }
 }
 
