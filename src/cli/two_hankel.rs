@@ -1,6 +1,7 @@
 //! `boltzone two --method hankel|auto`: the two-plate model with the hole by the semi-analytic
 //! route ([`boltzone::hankel::receding::holed`]): equal plates, frictionless (exact for equal
-//! plates), infinite, pressed by a pressure profile; R_o with its error estimate.
+//! plates), infinite, pressed by a pressure profile; R_o with its error estimate, and with
+//! `--curve` the interface pressure on A ≤ r ≤ R_o in the FE's CSV layout.
 //!
 //! # Accuracy
 //!
@@ -9,12 +10,11 @@
 //!
 //! # Cost
 //!
-//! The holed route's: 0.5–3 minutes per geometry, timed by the ignored study `table1_rows_record`
-//! (tests/hankel/two_plate_hole.rs).
+//! The holed route's: about 2.4 s of CPU per geometry (Table 1 row 1), timed by example 19.
 
 use super::exit::{sig, Status};
 use super::two_args::Args;
-use boltzone::hankel::receding::holed::{two_plate_hole, HoledParams};
+use boltzone::hankel::receding::holed::{two_plate_hole_pressure, HoledContact, HoledParams};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
 /// Why the Hankel route does not apply to these arguments: (flag, value, reason).
@@ -44,10 +44,37 @@ pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> 
     if args.fixed_edge {
         return Some(("--fixed-edge", "given".into(), why));
     }
-    if args.out.any() || args.report.is_some() {
-        return Some(("--curve/--field/--plot/--report", "given".into(), why));
+    if args.out.field.is_some() || args.out.plot.is_some() || args.report.is_some() {
+        return Some(("--field/--plot/--report", "given".into(), why));
     }
     None
+}
+
+/// Points of the `--curve` (plus one).
+const CURVE_POINTS: usize = 100;
+
+/// The interface curve in the FE's layout (r, p, g, τ): on A ≤ r ≤ R_o the gap is 0 and, the
+/// interface being frictionless, so is τ.
+fn curve_csv(curve: &[(f64, f64)], out: &HoledContact, converged: bool, args: &Args) -> String {
+    let (l, st) = (args.units.length(), args.units.stress());
+    let notes = [
+        "method: Hankel route with the hole (boltzone::hankel::receding::holed), interface \
+         A <= r <= R_o"
+            .to_string(),
+        "p = interface pressure (compression > 0), g = gap between the plates (0 on the \
+         contact zone), tau = interface shear (0: frictionless)"
+            .to_string(),
+        super::output::r_o_note_in(l, out.r_o, out.info.r_o_error, converged),
+    ];
+    let cols = [
+        format!("r [{l}]"),
+        format!("p [{st}]"),
+        format!("g [{l}]"),
+        format!("tau [{st}]"),
+    ];
+    let cols: Vec<&str> = cols.iter().map(String::as_str).collect();
+    let rows: Vec<Vec<f64>> = curve.iter().map(|&(r, q)| vec![r, q, 0.0, 0.0]).collect();
+    super::output::curve_csv_in(args.units.units, &cols, &notes, &rows)
 }
 
 /// Runs the Hankel route on checked arguments with bearing pressure `load`.
@@ -62,10 +89,21 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
     )?;
     // every flag was checked: what the route rejects now is a geometry beyond its reach, a
     // limit of the method (exit 1), not bad input
-    let out = two_plate_hole(&plate, &HoledParams::default()).map_err(|e| {
-        anyhow::anyhow!("the Hankel route cannot treat this joint ({e}); try --method fem")
-    })?;
+    // the curve: CURVE_POINTS + 1 radii from A to R_o, denser toward R_o (q ~ √(R_o − r))
+    let at: Vec<f64> = match &args.out.curve {
+        Some(_) => (0..=CURVE_POINTS)
+            .map(|k| 1.0 - (1.0 - k as f64 / CURVE_POINTS as f64).powi(2))
+            .collect(),
+        None => Vec::new(),
+    };
+    let (out, curve) =
+        two_plate_hole_pressure(&plate, &HoledParams::default(), &at).map_err(|e| {
+            anyhow::anyhow!("the Hankel route cannot treat this joint ({e}); try --method fem")
+        })?;
     let converged = out.info.r_o_error <= args.tol * out.r_o;
+    if let Some(path) = &args.out.curve {
+        super::write_output(path, &curve_csv(&curve, &out, converged, args))?;
+    }
     if args.json {
         let mut v = serde_json::json!({
             "method": "hankel",

@@ -199,6 +199,20 @@ fn ex18_heat_speed() {
 }
 
 #[allow(dead_code)]
+#[path = "../../examples/19_two_plate_hankel.rs"]
+mod ex19;
+
+#[test]
+fn ex19_two_plate_hankel() {
+    // quick: Table 1's first row; the example fails itself if the FE at its default tolerance
+    // and the Hankel route disagree beyond both estimates
+    quick();
+    let rows = ex19::run(1, false).unwrap();
+    assert_eq!(rows.len(), 1);
+    assert!(rows[0].hankel.info.r_o_error < 1e-8 * rows[0].hankel.r_o);
+}
+
+#[allow(dead_code)]
 #[path = "../../examples/20_thermal_contact.rs"]
 mod ex20;
 

@@ -325,7 +325,7 @@ fn two_method_hankel_refuses_what_it_cannot_do() {
     for extra in [
         &["--c", "1.54"][..],
         &["--d2", "0.2"],
-        &["--curve", "/tmp/never-written.csv"],
+        &["--field", "/tmp/never-written.vtu"],
         &["--fixed-edge"],
     ] {
         let mut args = vec![

@@ -530,6 +530,24 @@ impl CornerLoads {
         }
     }
 
+    /// [`Self::midplane_basis`] at many radii r_i ≤ `r_max` at once, `count` of them:
+    /// `j0_row(ξ, row)` fills row_i = J₀(ξ r_i) (a tabulation of the caller's, faster than one
+    /// Bessel call per entry). Row i holds the basis at r_i.
+    pub fn midplane_basis_rows(
+        &self,
+        r_max: f64,
+        count: usize,
+        j0_row: impl FnMut(f64, &mut [f64]),
+    ) -> Vec<Vec<f64>> {
+        let rule = self
+            .midplane_nodes
+            .get_or_init(|| self.midplane_rule(r_max));
+        if rule.r_max != r_max {
+            return Vec::new();
+        }
+        rule.basis_rows(count, j0_row)
+    }
+
     /// The midplane rule for radii up to r_max: nodes ξ_i and, per exponent, the weighted
     /// (−w_i ξ_i q̄ K(ξ_i D), w_i ξ_i s̄ L_z(ξ_i D, 0)) (panels of at most five half-periods of
     /// (r_max + A) and 1.5/D, 20 points each, to ξ = 45/D where K, L_z ≤ 2.5(1 + t)e^(−t) are
@@ -576,6 +594,34 @@ impl CornerMidplaneRule {
     /// The largest radius served.
     pub fn r_max(&self) -> f64 {
         self.r_max
+    }
+
+    /// [`Self::basis`] at `count` radii whose J₀(ξ r_i) `j0_row(ξ, row)` fills.
+    pub fn basis_rows(
+        &self,
+        count: usize,
+        mut j0_row: impl FnMut(f64, &mut [f64]),
+    ) -> Vec<Vec<f64>> {
+        let zero = Complex64::new(0.0, 0.0);
+        let terms = self.nodes.first().map_or(0, |n| n.1.len());
+        let mut sums = vec![vec![(zero, zero); terms]; count];
+        let mut row = vec![0.0; count];
+        for (xi, parts) in &self.nodes {
+            j0_row(*xi, &mut row);
+            for (sum, &j) in sums.iter_mut().zip(&row) {
+                for (s, (p, q)) in sum.iter_mut().zip(parts) {
+                    s.0 += j * p;
+                    s.1 += j * q;
+                }
+            }
+        }
+        sums.iter()
+            .map(|sum| {
+                sum.iter()
+                    .flat_map(|(p, q)| [p.re, p.im, q.re, q.im])
+                    .collect()
+            })
+            .collect()
     }
 
     /// For exponent k, [Re, Im] of the pressure field's σ_z(r, 0), then [Re, Im] of the shear

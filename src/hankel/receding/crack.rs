@@ -1,7 +1,8 @@
-//! One trial contact radius of the holed two-plate model ([`super::holed`]): the crack field's
-//! Fredholm equation with a bottom load, its traction on the hole at Chebyshev heights, the hole
-//! correction's fit, and the iteration l ← s₀ + σ_z^Z (derivation in [`super::holed`]), with the
-//! quadrature helpers they share.
+//! One trial contact radius of the holed two-plate model ([`super::holed`]), and the search for
+//! R_o over them: the crack field's Fredholm equation with a bottom load, its traction on the
+//! hole at Chebyshev heights, the hole correction's fit, the iteration l ← s₀ + σ_z^Z
+//! (derivation in [`super::holed`]) and the contact pressure, with the quadrature helpers they
+//! share.
 //!
 //! # Accuracy
 //!
@@ -11,11 +12,14 @@
 //!
 //! # Cost
 //!
-//! Most of the holed route's cost (the brute-force transforms of l and of the hole's traction);
-//! timed by the ignored study `table1_rows_record` in the same file.
+//! Most of the holed route's cost, about 0.17 s of CPU per contact radius on Table 1 row 1: the
+//! cosine and J₀ tables of [`super::grid`], the corner fields' midplane rows, the H_l weights;
+//! timed by example 19 and the ignored study `table1_rows_record`.
 
 use super::contact::RecedingError;
+use super::grid::PanelGrid;
 use super::holed::{Crack, HoledParams, Setup};
+use super::search::{root, Scan};
 use super::system::{cos_m1, panels, Nystrom, XiRule};
 use crate::hankel::hole::fit::{fit, Boundary, Fit, HoleData};
 use crate::hankel::transform::LoadTransform;
@@ -64,46 +68,56 @@ impl PanelInterp {
         }
     }
 
-    /// The nodes (x, w) of every panel, in order.
-    fn rule(&self) -> Vec<(f64, f64)> {
-        panels(
-            self.start,
-            self.start + self.width * self.panels as f64,
-            self.width,
-        )
+    /// The nodes and weights of every panel, in order.
+    fn grid(&self) -> PanelGrid {
+        PanelGrid::equal(self.start, self.width, self.panels)
     }
 
-    /// The interpolant of `values` (one per node of [`Self::rule`]) at `s` (0 beyond the end).
+    /// The interpolant of `values` (one per node of [`Self::grid`]) at `s` (0 beyond the end).
     fn eval(&self, values: &[f64], s: f64) -> f64 {
+        self.weights_at(s).map_or(0.0, |(k, w)| {
+            w.iter()
+                .zip(&values[20 * k..20 * (k + 1)])
+                .map(|(w, v)| w * v)
+                .sum()
+        })
+    }
+
+    /// The interpolation weights at `s`: its panel k and the weights of that panel's 20 values
+    /// (barycentric formula); None beyond the grid.
+    fn weights_at(&self, s: f64) -> Option<(usize, [f64; 20])> {
         let u = (s - self.start) / self.width;
         if !(0.0..=self.panels as f64).contains(&u) {
-            return 0.0;
+            return None;
         }
         let k = (u.floor() as usize).min(self.panels - 1);
         let x = 2.0 * (u - k as f64) - 1.0;
-        let v = &values[20 * k..20 * (k + 1)];
-        let (mut num, mut den) = (0.0, 0.0);
-        for ((xj, wj), vj) in self.nodes.iter().zip(&self.weights).zip(v) {
+        let mut out = [0.0; 20];
+        let mut den = 0.0;
+        for (j, (xj, wj)) in self.nodes.iter().zip(&self.weights).enumerate() {
             let dx = x - xj;
             if dx == 0.0 {
-                return *vj;
+                let mut one = [0.0; 20];
+                one[j] = 1.0;
+                return Some((k, one));
             }
-            let t = wj / dx;
-            num += t * vj;
-            den += t;
+            out[j] = wj / dx;
+            den += out[j];
         }
-        num / den
+        out.iter_mut().for_each(|w| *w /= den);
+        Some((k, out))
     }
 }
 
 impl Setup {
     /// Solves the crack field and its hole correction for contact radius `c` with `n` Nyström
-    /// points, iterating l ← s₀ + σ_z^Z.
+    /// points, iterating l ← s₀ + σ_z^Z; and the contact pressure at `radii` (A ≤ r).
     pub(super) fn crack(
         &self,
         c: f64,
         n: usize,
         params: &HoledParams,
+        radii: &[f64],
     ) -> Result<Crack, RecedingError> {
         let d = self.d;
         let zero = LoadTransform::new(&FaceLoad::uniform(0.0, c, 0.0)?);
@@ -112,18 +126,46 @@ impl Setup {
         let (xi_r, a_r, b_r) = (xi_r.to_vec(), a_r.to_vec(), b_r.to_vec());
         // l on Gauss panels of [c, c + tail] resolving J₀(ξs) up to ξ_l (2.25 periods per panel)
         let lint = PanelInterp::new(c, c + self.tail, (4.5 * PI / self.xi_l).min(0.5 * d));
-        let s_rule = lint.rule();
-        let s0: Vec<f64> = s_rule.iter().map(|&(s, _)| self.s0(s)).collect();
+        let s_grid = lint.grid();
+        let s_rule: Vec<(f64, f64)> = s_grid
+            .nodes()
+            .iter()
+            .copied()
+            .zip(s_grid.weights().iter().copied())
+            .collect();
         let mode_mid: Vec<Vec<num_complex::Complex64>> = s_rule
             .iter()
             .map(|&(s, _)| self.modes.iter().map(|m| m.midplane_sigma_z(s)).collect())
             .collect();
-        let corner_mid: Vec<Vec<f64>> = s_rule
+        let corner_mid: Vec<Vec<f64>> = match &self.corner {
+            None => vec![Vec::new(); s_rule.len()],
+            Some(cl) => {
+                let rows = cl.midplane_basis_rows(self.r_max, s_rule.len(), |xi, row| {
+                    s_grid.j0_row(xi, row)
+                });
+                if rows.len() == s_rule.len() {
+                    rows
+                } else {
+                    s_rule
+                        .iter()
+                        .map(|&(s, _)| cl.midplane_basis(s, self.r_max))
+                        .collect()
+                }
+            }
+        };
+        // s₀ = slab + modes + corner: the bilateral plate's corner fields are the crack
+        // correction's (same A, D, ν, exponents), so their basis rows serve both
+        let weights = self.bilateral.corner_weights();
+        let s0: Vec<f64> = s_rule
             .iter()
-            .map(|&(s, _)| {
-                self.corner
-                    .as_ref()
-                    .map_or_else(Vec::new, |cl| cl.midplane_basis(s, self.r_max))
+            .zip(&corner_mid)
+            .map(|(&(s, _), basis)| {
+                let corner = match (weights.is_empty(), weights.len() == basis.len()) {
+                    (true, _) => 0.0,
+                    (false, true) => weights.iter().zip(basis).map(|(w, b)| w * b).sum(),
+                    (false, false) => return self.s0(s),
+                };
+                self.slab_mid.eval(s).value + self.bilateral.modes_midplane(s) + corner
             })
             .collect();
         // t-grid on [0, c]: panels resolving cos ξt up to the hole rule's end, and on the last
@@ -131,31 +173,55 @@ impl Setup {
         let xi_h = self.hole_xi.last().map_or(0.0, |x| x.0);
         let delta = (0.5 * c).min(0.5 * d);
         let su = delta.sqrt();
-        let mut t_rule = panels(0.0, c - delta, 4.5 * PI / xi_h);
-        t_rule.extend(
+        let t_grid = PanelGrid::new(0.0, c - delta, 4.5 * PI / xi_h);
+        let graded: Vec<(f64, f64)> =
             panels(0.0, su, (4.5 * PI / (2.0 * xi_h * su)).min(0.25 * su))
                 .into_iter()
-                .map(|(u, w)| (c - u * u, 2.0 * u * w)),
-        );
-        let cos_t: Vec<Vec<f64>> = t_rule
+                .map(|(u, w)| (c - u * u, 2.0 * u * w))
+                .collect();
+        let nf = t_grid.len();
+        let t_rule: Vec<(f64, f64)> = t_grid
+            .nodes()
             .iter()
-            .map(|&(t, _)| xi_r.iter().map(|x| (x * t).cos()).collect())
+            .copied()
+            .zip(t_grid.weights().iter().copied())
+            .chain(graded.iter().copied())
             .collect();
-        let cosm1_t: Vec<Vec<f64>> = t_rule
+        let nt = t_rule.len();
+        // the tables, one row per ξ (contiguous in t or s): cos ξt, cos ξt − 1 on the rule's
+        // ξ, cos ξt − 1 on the hole's
+        let mut cos_t = vec![vec![0.0; nt]; xi_r.len()];
+        let mut cosm1_t = vec![vec![0.0; nt]; xi_r.len()];
+        for (k, &x) in xi_r.iter().enumerate() {
+            t_grid.cos_rows(x, &mut cos_t[k][..nf], &mut cosm1_t[k][..nf]);
+            for (i, &(t, _)) in graded.iter().enumerate() {
+                cos_t[k][nf + i] = (x * t).cos();
+                cosm1_t[k][nf + i] = cos_m1(x * t);
+            }
+        }
+        let hole_cosm1: Vec<Vec<f64>> = self
+            .hole_xi
             .iter()
-            .map(|&(t, _)| xi_r.iter().map(|x| cos_m1(x * t)).collect())
-            .collect();
-        let hole_cosm1: Vec<Vec<f64>> = t_rule
-            .iter()
-            .map(|&(t, _)| self.hole_xi.iter().map(|h| cos_m1(h.0 * t)).collect())
+            .map(|h| {
+                let mut row = vec![0.0; nt];
+                t_grid.cos_m1_row(h.0, &mut row[..nf]);
+                for (i, &(t, _)) in graded.iter().enumerate() {
+                    row[nf + i] = cos_m1(h.0 * t);
+                }
+                row
+            })
             .collect();
         // s-weights w·s·J₀(ξs) and w·s·(J₀ − 1) for the rule and the hole's low ξ
         let js = |xi: f64| -> (Vec<f64>, Vec<f64>) {
+            let mut j = vec![0.0; s_rule.len()];
+            s_grid.j0_row(xi, &mut j);
             s_rule
                 .iter()
-                .map(|&(s, w)| {
-                    let m1 = j0_m1(xi * s);
-                    (w * s * (1.0 + m1), w * s * m1)
+                .zip(&j)
+                .map(|(&(s, w), &j)| {
+                    let x = xi * s;
+                    let m1 = if x < 0.1 { j0_m1(x) } else { j - 1.0 };
+                    (w * s * j, w * s * m1)
                 })
                 .unzip()
         };
@@ -163,17 +229,26 @@ impl Setup {
         let hole_low = self.hole_xi.partition_point(|h| h.0 <= self.xi_l);
         let hole_j: Vec<Vec<f64>> = self.hole_xi[..hole_low].iter().map(|h| js(h.0).1).collect();
         let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(a, b)| a * b).sum::<f64>();
-        let v_width = d;
-        let h_l = |l: &[f64], t: f64| -> f64 {
+        // H_l(t) = −(2/π)∫_c^{c+tail} l(s) s ds/√(s² − t²) = −(2/π)∫ l(√(t² + v²)) dv (v from
+        // √(c² − t²)): linear in l's node values, so one row of weights per t, reused by
+        // every iteration
+        let ns = s_rule.len();
+        let h_row = |t: f64| -> Vec<f64> {
             let v0 = ((c - t) * (c + t)).max(0.0).sqrt();
             let end = c + self.tail;
             let v1 = ((end - t) * (end + t)).sqrt();
-            -FRAC_2_PI
-                * panels(v0, v1, v_width)
-                    .iter()
-                    .map(|&(v, w)| w * lint.eval(l, (t * t + v * v).sqrt()))
-                    .sum::<f64>()
+            let mut row = vec![0.0; ns];
+            for (v, w) in panels(v0, v1, d) {
+                if let Some((k, bw)) = lint.weights_at((t * t + v * v).sqrt()) {
+                    for (r, b) in row[20 * k..20 * (k + 1)].iter_mut().zip(&bw) {
+                        *r -= FRAC_2_PI * w * b;
+                    }
+                }
+            }
+            row
         };
+        let h_rows: Vec<Vec<f64>> = t_rule.iter().map(|&(t, _)| h_row(t)).collect();
+        let h_edge = h_row(c);
         let mut fitted: Option<Fit> = None;
         let mut last = f64::NAN;
         let mut out = Crack {
@@ -181,8 +256,11 @@ impl Setup {
             residual: f64::NAN,
             crack_traction: 0.0,
             iterations: 0,
+            pressure: Vec::new(),
         };
         let scale = self.p0 / c;
+        // the last solve and the l and correction it was solved with (for the pressure)
+        let mut state: Option<(Nystrom, Vec<f64>, Option<Fit>)> = None;
         for it in 1..=params.max_iterations {
             let l: Vec<f64> = (0..s_rule.len())
                 .map(|i| {
@@ -198,21 +276,14 @@ impl Setup {
                 })
                 .collect();
             let l0: f64 = s_rule.iter().zip(&l).map(|(&(s, w), v)| w * s * v).sum();
-            let hl: Vec<f64> = t_rule.iter().map(|&(t, _)| h_l(&l, t)).collect();
-            let hl_total: f64 = t_rule.iter().zip(&hl).map(|(&(_, w), h)| w * h).sum();
+            let hl: Vec<f64> = h_rows.iter().map(|row| dot(row, &l)).collect();
+            let whl: Vec<f64> = t_rule.iter().zip(&hl).map(|(&(_, w), h)| w * h).collect();
+            let hl_total: f64 = whl.iter().sum();
             let m = xi_r.len();
             let mut alpha = vec![0.0; m];
             let mut beta = vec![0.0; m];
             for k in 0..m {
-                let (hc, hv) = t_rule
-                    .iter()
-                    .enumerate()
-                    .fold((0.0, 0.0), |acc, (i, &(_, w))| {
-                        (
-                            acc.0 + w * hl[i] * cos_t[i][k],
-                            acc.1 + w * hl[i] * cosm1_t[i][k],
-                        )
-                    });
+                let (hc, hv) = (dot(&whl, &cos_t[k]), dot(&whl, &cosm1_t[k]));
                 let lbar = dot(&rule_j[k].0, &l);
                 let ltil = dot(&rule_j[k].1, &l);
                 alpha[k] = -a_r[k] * (lbar + hc);
@@ -221,13 +292,15 @@ impl Setup {
             let sys = Nystrom::solve_general(rule.clone(), c, n, -l0 - hl_total, &alpha, &beta)
                 .ok_or(RecedingError::Singular { c })?;
             let (c0, g, h) = sys.series();
-            let psi = |i: usize| -> f64 {
-                c0 + (0..m)
-                    .map(|k| g[k] * cosm1_t[i][k] - h[k] * cos_t[i][k])
-                    .sum::<f64>()
-            };
-            let phi: Vec<f64> = (0..t_rule.len()).map(|i| psi(i) + hl[i]).collect();
-            let edge = sys.phi(c) + h_l(&l, c);
+            // φ = ψ + H_l, ψ(t) = C₀ + Σ_k [g_k (cos ξ_k t − 1) − h_k cos ξ_k t]
+            let mut phi: Vec<f64> = hl.iter().map(|h| c0 + h).collect();
+            for k in 0..m {
+                for ((p, cm1), cs) in phi.iter_mut().zip(&cosm1_t[k]).zip(&cos_t[k]) {
+                    *p += g[k] * cm1 - h[k] * cs;
+                }
+            }
+            let wphi: Vec<f64> = t_rule.iter().zip(&phi).map(|(&(_, w), p)| w * p).collect();
+            let edge = sys.phi(c) + dot(&h_edge, &l);
             out.edge = edge / scale;
             out.iterations = it;
             // the crack field's bottom load b = q + l, b̃(ξ) = b̄(ξ) − b̄(0), on the hole rule
@@ -240,11 +313,7 @@ impl Setup {
                 .iter()
                 .enumerate()
                 .map(|(k, &(xi, ..))| {
-                    let q: f64 = t_rule
-                        .iter()
-                        .enumerate()
-                        .map(|(i, &(_, w))| w * phi[i] * hole_cosm1[i][k])
-                        .sum();
+                    let q = dot(&wphi, &hole_cosm1[k]);
                     let lt = if k < hole_low {
                         dot(&hole_j[k], &l)
                     } else {
@@ -291,13 +360,70 @@ impl Setup {
                     },
                 )
                 .0 / self.p_ref;
-            fitted = Some(f);
-            if (edge - last).abs() < params.iteration_tol * scale {
-                return Ok(out);
+            let used = fitted.replace(f);
+            let done = (edge - last).abs() < params.iteration_tol * scale;
+            state = Some((sys, l, used));
+            if done {
+                break;
             }
             last = edge;
         }
+        if let Some((sys, l, used)) = state.filter(|_| !radii.is_empty()) {
+            out.pressure = radii
+                .iter()
+                .map(|&r| self.pressure_at(r, &sys, &l, &lint, used.as_ref()))
+                .collect();
+        }
         Ok(out)
+    }
+
+    /// The contact pressure q(r) ≥ 0 (compression positive) at A ≤ r of the solution with
+    /// contact radius c = `sys`'s, solved with bottom load `l` (values on `lint`'s nodes) that the
+    /// correction `fit` gave: q = q_ψ + q_H − l(r), where q_ψ is the smooth part ψ's pressure
+    /// ([`Nystrom::pressure`]) and q_H that of H_l, in closed form (the Abel pressure of a ring
+    /// load beyond c, integrated over l):
+    /// q_H(r) = −(2/π)/√(c² − r²) ∫_c^∞ l(s) s √(s² − c²)/(s² − r²) ds, with s² = c² + v².
+    /// Zero for r ≥ c.
+    fn pressure_at(
+        &self,
+        r: f64,
+        sys: &Nystrom,
+        l: &[f64],
+        lint: &PanelInterp,
+        fit: Option<&Fit>,
+    ) -> f64 {
+        let c = sys.radius();
+        if r >= c {
+            return 0.0;
+        }
+        let k2 = (c - r) * (c + r);
+        let kappa = k2.sqrt();
+        let end = c + self.tail;
+        let v_end = ((end - c) * (end + c)).sqrt();
+        // the kernel v²/(κ² + v²) turns over at v ~ κ: panels of κ/2 up to 10κ, then of D/2
+        let split = (10.0 * kappa).min(v_end);
+        let mut rule = panels(0.0, split, 0.5 * kappa);
+        rule.extend(panels(split, v_end, 0.5 * self.d));
+        let integral: f64 = rule
+            .iter()
+            .map(|&(v, w)| w * lint.eval(l, (c * c + v * v).sqrt()) * v * v / (k2 + v * v))
+            .sum();
+        let q_h = -FRAC_2_PI * integral / kappa;
+        // l inside c: the bilateral plate's midplane σ_z plus the correction's on the plane
+        let corner = self
+            .corner
+            .as_ref()
+            .map_or_else(Vec::new, |cl| cl.midplane_basis(r, self.r_max));
+        let z = fit.map_or(0.0, |f| {
+            let m: f64 = self
+                .modes
+                .iter()
+                .zip(&f.modes)
+                .map(|(mode, a)| (a * mode.midplane_sigma_z(r)).re)
+                .sum();
+            m + corner.iter().zip(&f.extra).map(|(b, x)| b * x).sum::<f64>()
+        });
+        sys.pressure(r, self.d) + q_h - (self.s0(r) + z)
     }
 
     /// The correction cancelling `data` on the hole (collocation on every other height).
@@ -322,5 +448,38 @@ impl Setup {
                 extra: &extra,
             }],
         )
+    }
+}
+
+impl Setup {
+    /// R_o with `n` Nyström points (bracketing `near` first): (R_o, last solve, solves).
+    pub(super) fn search(
+        &self,
+        b: f64,
+        n: usize,
+        params: &HoledParams,
+        near: Option<f64>,
+        at: &[f64],
+    ) -> Result<(f64, Crack, usize), RecedingError> {
+        let mut solves = 0;
+        let mut edge = |c: f64| {
+            solves += 1;
+            self.crack(c, n, params, &[]).map(|k| k.edge)
+        };
+        let scan = Scan {
+            b,
+            d: self.d,
+            step: params.step * self.d,
+            end: b + params.reach * self.d,
+            tol: params.rel_tol * self.d,
+            max_iterations: 100,
+        };
+        let r_o = root(&mut edge, &scan, near)?.ok_or(RecedingError::NotFound {
+            from: b,
+            to: scan.end,
+        })?;
+        let radii: Vec<f64> = at.iter().map(|x| self.a + x * (r_o - self.a)).collect();
+        let last = self.crack(r_o, n, params, &radii)?;
+        Ok((r_o, last, solves + 1))
     }
 }

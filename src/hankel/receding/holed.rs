@@ -31,7 +31,10 @@
 //!
 //! **Error control.** R_o's estimate adds (a) the change from a run with ⌈3n/4⌉ Nyström points,
 //! (b) the change from a run with half the hole modes (the bilateral plate and Z), (c) the root
-//! tolerance; the residual traction on the hole is measured on the fit's check heights.
+//! tolerance; the residual traction on the hole is measured on the fit's check heights. Each
+//! variant's R_o is one Newton step from R_o (slope: a secant over 1e-3 D), its error ∝ the
+//! change squared (≤ 1e-6 D: negligible; as full searches to 2e-12 D on Table 1 row 1); a
+//! change beyond 0.01 D gets the full search.
 //!
 //! # Accuracy
 //!
@@ -51,16 +54,22 @@
 //! in): the FE's excess is not its cut of the infinite plate.
 //! `agrees_with_the_fe_on_table1_first_row` checks one row with coarse settings. A → 0 (study `small_holes_approach_the_receding_solution`, B = 3D):
 //! R_o minus the no-hole receding solver's under the disk load is −8.3e-8, −2.0e-8, −5.0e-9 (in, D = 0.1 in)
-//! at A = 0.2D, 0.1D, 0.05D — the predicted A² (observed rates 2.07, 1.99). Not yet measured: the
-//! contact force (no pressure curve yet).
+//! at A = 0.2D, 0.1D, 0.05D — the predicted A² (observed rates 2.07, 1.99). The interface
+//! pressure ([`two_plate_hole_pressure`]) balances the load within the hole's residual shear
+//! (`tests/hankel/two_plate_hole_pressure.rs`: −7.8e-9, −1.3e-10 at ξ_l = 40, 70/D). On
+//! (1, 2.2) R_o/A = 2.623523384608 moves ≤ 1.1e-8 under each knob doubled; the FE at 1e-6 stalls
+//! 4.7e-6 below, about its own outer-cut estimate (example 19).
 //!
 //! # Cost
 //!
-//! 0.5–3 minutes per geometry (wall, on the shared 2-core machine; about a quarter
-//! of that in CPU) with the error estimate's two extra searches: about 24 contact radii, each a
-//! few thousand ξ-nodes × a thousand t- and s-nodes of brute-force transforms, iterated 4 times.
-//! Far from the issue's 10 ms: the transforms of l and of q at the hole are the cost to attack
-//! next (closed forms for the mode parts, a c-independent s-grid).
+//! 2.4 s of CPU per geometry with the error estimate (Table 1 row 1: 13 contact radii, about
+//! 0.17 s each; wall time 2–3× that on the shared 2-core machine; before the tables below, 11.7 s
+//! of CPU for 24 radii): each radius tabulates cos ξt (ξ of the Nyström and hole rules, t on
+//! [0, c]) and J₀(ξs) (s on [c, c + tail]) by [`super::grid`] (the addition theorem on equal
+//! panels, Hankel's expansion for J₀), the corner fields' midplane rows once for the bilateral
+//! plate and the correction, and the half-space part H_l as weights on l's nodes reused by every
+//! iteration. Example 19 times Table 1. Far from the issue's 10 ms still: the tables grow with
+//! the contact radius and are rebuilt for each; a c-independent tabulation is the next step.
 //!
 //! ```no_run
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -74,7 +83,6 @@
 
 use super::contact::RecedingError;
 use super::layer_field::bottom_kernels;
-use super::search::{root, Scan};
 use super::system::panels;
 use crate::error::InputError;
 use crate::hankel::hole::corner::CornerLoads;
@@ -208,6 +216,8 @@ pub(super) struct Crack {
     pub(super) residual: f64,
     pub(super) crack_traction: f64,
     pub(super) iterations: usize,
+    /// The contact pressure at the radii asked for.
+    pub(super) pressure: Vec<f64>,
 }
 
 impl Setup {
@@ -370,47 +380,39 @@ impl Setup {
     }
 }
 
-impl Setup {
-    /// R_o with `n` Nyström points (bracketing `near` first): (R_o, last solve, solves).
-    fn search(
-        &self,
-        b: f64,
-        n: usize,
-        params: &HoledParams,
-        near: Option<f64>,
-    ) -> Result<(f64, Crack, usize), RecedingError> {
-        let mut solves = 0;
-        let mut edge = |c: f64| {
-            solves += 1;
-            self.crack(c, n, params).map(|k| k.edge)
-        };
-        let scan = Scan {
-            b,
-            d: self.d,
-            step: params.step * self.d,
-            end: b + params.reach * self.d,
-            tol: params.rel_tol * self.d,
-            max_iterations: 100,
-        };
-        let r_o = root(&mut edge, &scan, near)?.ok_or(RecedingError::NotFound {
-            from: b,
-            to: scan.end,
-        })?;
-        let last = self.crack(r_o, n, params)?;
-        Ok((r_o, last, solves + 1))
-    }
-}
-
 /// R_o of two equal plates with a hole on a frictionless interface: `plate` is the single plate
 /// of the reflected picture (its half-thickness is one plate's thickness D). See the module docs.
 pub fn two_plate_hole(
     plate: &SinglePlate,
     params: &HoledParams,
 ) -> Result<HoledContact, RecedingError> {
+    two_plate_hole_pressure(plate, params, &[]).map(|(out, _)| out)
+}
+
+/// [`two_plate_hole`] and the interface pressure q(r) ≥ 0 (compression positive, the units of
+/// the load) at r = A + x(R_o − A) for each fraction x in `at` (0 ≤ x ≤ 1): pairs (r, q).
+pub fn two_plate_hole_pressure(
+    plate: &SinglePlate,
+    params: &HoledParams,
+    at: &[f64],
+) -> Result<(HoledContact, Vec<(f64, f64)>), RecedingError> {
+    if let Some(&x) = at.iter().find(|x| !(0.0..=1.0).contains(*x)) {
+        return Err(InputError::Parameter {
+            field: "pressure fraction of [A, R_o]",
+            value: x,
+            reason: "between 0 and 1",
+        }
+        .into());
+    }
     let start = Instant::now();
     let setup = Setup::new(plate, params)?;
     let b = plate.load().outer();
-    let (r_o, last, mut solves) = setup.search(b, params.nodes, params, None)?;
+    let (r_o, last, mut solves) = setup.search(b, params.nodes, params, None, at)?;
+    let curve: Vec<(f64, f64)> = at
+        .iter()
+        .map(|x| setup.a + x * (r_o - setup.a))
+        .zip(last.pressure.iter().copied())
+        .collect();
     let mut info = HoledInfo {
         r_o_error: params.rel_tol * setup.d,
         r_o_fewer_nodes: f64::NAN,
@@ -423,8 +425,26 @@ pub fn two_plate_hole(
         seconds: 0.0,
     };
     if params.estimate {
-        let fewer = (3 * params.nodes).div_ceil(4).max(4);
-        let (r1, _, s1) = setup.search(b, fewer, params, Some(r_o))?;
+        // each variant's R_o by one Newton step from R_o with the slope of the edge
+        // coefficient there (a secant over 1e-3 D): its change is ~1e-6 D or less, where the
+        // step's error, ∝ the change squared, is far below it; a larger change gets the search
+        let h = 1e-3 * setup.d;
+        let slope = (setup.crack(r_o + h, params.nodes, params, &[])?.edge - last.edge) / h;
+        solves += 1;
+        let variant = |setup: &Setup, p: &HoledParams| -> Result<(f64, usize), RecedingError> {
+            let step = -setup.crack(r_o, p.nodes, p, &[])?.edge / slope;
+            if step.is_finite() && step.abs() < 0.01 * setup.d {
+                return Ok((r_o + step, 1));
+            }
+            setup
+                .search(b, p.nodes, p, Some(r_o), &[])
+                .map(|(r, _, n)| (r, n + 1))
+        };
+        let fewer = HoledParams {
+            nodes: (3 * params.nodes).div_ceil(4).max(4),
+            ..*params
+        };
+        let (r1, s1) = variant(&setup, &fewer)?;
         let half = HoledParams {
             hole: HoleParams {
                 terms: Some((setup.modes.len() / 2).max(1)),
@@ -434,7 +454,7 @@ pub fn two_plate_hole(
             ..*params
         };
         let setup_half = Setup::new(plate, &half)?;
-        let (r2, _, s2) = setup_half.search(b, params.nodes, &half, Some(r_o))?;
+        let (r2, s2) = variant(&setup_half, &half)?;
         solves += s1 + s2;
         info.r_o_fewer_nodes = r1;
         info.r_o_half_terms = r2;
@@ -442,5 +462,5 @@ pub fn two_plate_hole(
     }
     info.solves = solves;
     info.seconds = start.elapsed().as_secs_f64();
-    Ok(HoledContact { r_o, info })
+    Ok((HoledContact { r_o, info }, curve))
 }

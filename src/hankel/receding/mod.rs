@@ -8,6 +8,7 @@
 //! - [`layer_field`]: the layer's stresses at any height under a bottom (or top) pressure;
 //! - [`holed`]: the two-plate model with the hole (bilateral holed plate + crack field + its
 //!   hole correction, iterated); `crack`: one trial contact radius of it;
+//! - [`grid`]: cosine and J₀ rows over equal Gauss panels, the holed route's tables;
 //! - [`contact`]: the solver ([`Layer::receding_contact`]) and its results (derivation,
 //!   accuracy and cost there).
 //!
@@ -33,6 +34,7 @@
 
 pub mod contact;
 mod crack;
+pub mod grid;
 pub mod holed;
 pub mod layer;
 pub mod layer_field;

@@ -1,0 +1,188 @@
+//! Table 1's two-plate column (C = ∞) by the semi-analytic route with the hole
+//! ([`boltzone::hankel::receding::holed`]) beside the finite elements (default tolerance and,
+//! in the full run, 1e-6) and the report's values (its own FE, at C = 1.54 in: not the same
+//! plate, shown for scale); and the FE's R_o error level by level
+//! against this route, with its observed rate — the convergence study the FE never had.
+//!
+//! **Problem.** Two equal plates D thick, hole A = 0.1, uniform pressure on A ≤ r ≤ B,
+//! frictionless interface, infinite outer radius, ν = 0.3; A/D ∈ {1, 0.75, 0.5},
+//! B/A ∈ {3.1, 2.2, 1.6, 1.3}. R_o is where the interface pressure ends (like √(R_o − r)).
+//!
+//! **Reference.** The two routes share no code (Hankel transforms, Papkovich–Fadle modes and a
+//! Nyström solve against a graded Q9 mesh and an LCP). The self-check: on every row the FE at
+//! its default tolerance (5e-4) lies within that tolerance of this route's R_o (plus this
+//! route's estimate); the column |FE−H|/est shows where the FE's own estimate falls short (> 1).
+//! The level table shows |R_o(level) − R_o(Hankel)| and the observed rate
+//! log₂(e_k/e_{k+1}) (element size halving per level).
+//!
+//! **What to expect** (measured 2026-11-24, load average 10–14 on the 2 cores): this route's
+//! estimates 3.4e-11…1.3e-6 R_o at 4–10 s wall (about 2.4 s of CPU) per row; the FE at its
+//! default tolerance 0.05–0.2 s, low by 3e-5…2.5e-4 R_o, within its tolerance everywhere and
+//! within its own estimate on 11 rows ((1, 1.3): 1.4× its estimate). Level by level the FE's
+//! error against this route falls at rates 2–3 over the first levels and about 1 over the
+//! last (row 1: 1.5e-2, 1.7e-3, 4.0e-4, 1.8e-4, 9.2e-5 at h = D/4 … D/64), erratically on the
+//! narrow loads (B/A 1.6 and 1.3 on A/D = 1). At --tol 1e-6 (rows 1–2, 6–7 s wall each) the
+//! error stalls over the last three levels (h = D/256 … D/1024) at 4.5, 4.1, 2.9e-6 (row 1) and
+//! 6.7, 5.6, 4.7e-6 (row 2), below this route, about the FE's own estimate of its cut of the
+//! infinite plate (at 20.4 and 16.8 in: 3.0e-6 and 4.2e-6 of R_o): the FE's floor there is its
+//! outer cut, not its mesh; |FE − H| (2.9e-6, 4.7e-6) is within its estimate (4.3e-6, 5.1e-6).
+//! Times are wall-clock (state the load beside them).
+//!
+//! Run: `cargo run --release --example 19_two_plate_hankel [rows] [tight]` (rows: how many of
+//! Table 1's, default 12; tight = 1 adds the FE at --tol 1e-6, minutes per row).
+//!
+//! Builds on: example 06 (the receding contact without a hole) and example 14 (the hole
+//! correction, timed).
+
+use boltzone::contact::params::TwoPlateParams;
+use boltzone::contact::two_plate::{solve, TwoPlateSolution};
+use boltzone::hankel::receding::holed::{two_plate_hole, HoledContact, HoledParams};
+use boltzone::{FaceLoad, Joint, Material, OuterRadius, SinglePlate};
+
+/// The hole radius (inches).
+const A: f64 = boltzone::reference::TABLE1_HOLE_RADIUS;
+
+pub fn main() -> anyhow::Result<()> {
+    if std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1") {
+        run(1, false)?;
+        return Ok(());
+    }
+    let mut args = std::env::args().skip(1);
+    let rows: usize = args.next().map(|s| s.parse()).transpose()?.unwrap_or(12);
+    let tight = args.next().is_some_and(|s| s == "1");
+    run(rows, tight)?;
+    Ok(())
+}
+
+/// One row: the Hankel route and the FE at its default tolerance (and at 1e-6 if asked).
+pub struct Row {
+    /// (A/D, B/A, report's R_o/A).
+    pub geometry: (f64, f64, f64),
+    /// This route.
+    pub hankel: HoledContact,
+    /// The FE at its default tolerance.
+    pub fe: TwoPlateSolution,
+    /// The FE at 1e-6.
+    pub fe_tight: Option<TwoPlateSolution>,
+}
+
+fn fe(ad: f64, ba: f64, tolerance: f64) -> anyhow::Result<TwoPlateSolution> {
+    let joint = Joint::symmetric(A, A * ba, A / ad, Material::new(3.0e7, 0.3)?)?;
+    Ok(solve(
+        &joint,
+        &TwoPlateParams {
+            tolerance,
+            ..TwoPlateParams::default()
+        },
+    )?)
+}
+
+/// The first `rows` rows of Table 1; `tight` adds the FE at 1e-6. Fails if the FE at its
+/// default tolerance is not within both estimates of this route's R_o.
+pub fn run(rows: usize, tight: bool) -> anyhow::Result<Vec<Row>> {
+    println!(
+        "Table 1, two plates, C = ∞ (A = {A} in, ν = 0.3): R_o/A by the Hankel route with the hole, \
+         the FE (default tolerance{}) and the report (its FE, C = 1.54 in); estimates relative to R_o, times in s (wall)",
+        if tight { " and 1e-6" } else { "" }
+    );
+    println!(
+        "{:>5} {:>5} {:>6} | {:>14} {:>8} {:>7} | {:>11} {:>8} {:>9} {:>7} {:>9}{}",
+        "A/D",
+        "B/A",
+        "report",
+        "Hankel R_o/A",
+        "est",
+        "t [s]",
+        "FE R_o/A",
+        "est",
+        "(FE−H)/R_o",
+        "t [s]",
+        "|FE−H|/est",
+        if tight {
+            "  | FE 1e-6 R_o/A      est  (FE−H)/R_o   t [s]"
+        } else {
+            ""
+        }
+    );
+    let mut out = Vec::new();
+    for row in boltzone::reference::table1().iter().take(rows) {
+        let (ad, ba, report) = (row.a_over_d, row.b_over_a, row.two);
+        let load = FaceLoad::uniform(A, A * ba, 1.0)?;
+        let plate = SinglePlate::new(
+            A,
+            OuterRadius::Infinite,
+            A / ad,
+            Material::new(3.0e7, 0.3)?,
+            load,
+        )?;
+        let h = two_plate_hole(&plate, &HoledParams::default())?;
+        let f = fe(ad, ba, TwoPlateParams::default().tolerance)?;
+        let ft = if tight { Some(fe(ad, ba, 1e-6)?) } else { None };
+        let rel = |x: f64| x / h.r_o;
+        let mut line = format!(
+            "{ad:>5} {ba:>5} {report:>6} | {:>14.10} {:>8.1e} {:>7.2} | {:>11.7} {:>8.1e} {:>+9.1e} {:>7.2} {:>9.2}",
+            h.r_o / A,
+            rel(h.info.r_o_error),
+            h.info.seconds,
+            f.r_o / A,
+            rel(f.r_o_error),
+            rel(f.r_o - h.r_o),
+            f.info.seconds,
+            (f.r_o - h.r_o).abs() / f.r_o_error
+        );
+        if let Some(t) = &ft {
+            line += &format!(
+                "  | {:>11.8} {:>8.1e} {:>+9.1e} {:>7.2}",
+                t.r_o / A,
+                rel(t.r_o_error),
+                rel(t.r_o - h.r_o),
+                t.info.seconds
+            );
+        }
+        println!("{line}");
+        let tol = TwoPlateParams::default().tolerance;
+        if (f.r_o - h.r_o).abs() > tol * h.r_o + h.info.r_o_error {
+            anyhow::bail!(
+                "row ({ad}, {ba}): FE {} (tolerance {tol:e}) and Hankel {} ± {} disagree beyond \
+                 the FE's tolerance",
+                f.r_o,
+                h.r_o,
+                h.info.r_o_error
+            );
+        }
+        out.push(Row {
+            geometry: (ad, ba, report),
+            hankel: h,
+            fe: f,
+            fe_tight: ft,
+        });
+    }
+    println!("\nThe FE's R_o level by level against the Hankel route (error relative to R_o; rate = log2 of successive ratios):");
+    for row in &out {
+        let (ad, ba, _) = row.geometry;
+        let fe = row.fe_tight.as_ref().unwrap_or(&row.fe);
+        let errors: Vec<f64> = fe
+            .info
+            .levels
+            .iter()
+            .map(|l| (l.r_o - row.hankel.r_o).abs() / row.hankel.r_o)
+            .collect();
+        let mut line = format!(
+            "{ad:>5} {ba:>5} (outer cut {}, its estimated share {:.1e}):",
+            fe.info
+                .cut
+                .map_or_else(|| "none".to_string(), |c| format!("{:.3} in", c)),
+            fe.info.truncation_error / row.hankel.r_o
+        );
+        for (k, (l, e)) in fe.info.levels.iter().zip(&errors).enumerate() {
+            let rate = if k > 0 && *e > 0.0 {
+                format!(" (rate {:.2})", (errors[k - 1] / e).log2())
+            } else {
+                String::new()
+            };
+            line += &format!("  h/D {:.4}: {e:.1e}{rate}", l.h / (A / ad));
+        }
+        println!("{line}");
+    }
+    Ok(out)
+}

@@ -1,0 +1,204 @@
+//! Rows of cos ξs, cos ξs − 1 and J₀(ξs) over the nodes of equal Gauss–Legendre panels, for
+//! the holed two-plate model's transforms (module `crack`): the tables it rebuilds for every
+//! trial contact radius, at a few flops per entry instead of a library call.
+//!
+//! **What is computed.** For nodes s = m_p + δ_j (panel midpoints m_p = a + (p + ½)h, offsets
+//! δ_j = ½h·x_j of the 20-point rule, the same floating-point nodes as
+//! `system::panels`) and one ξ: cos ξs and sin ξs by the addition theorem from
+//! the per-panel and per-offset values; cos ξs − 1 = A + B + AB − sin ξm_p sin ξδ_j with
+//! A = cos ξm_p − 1, B = cos ξδ_j − 1 (each without cancellation; the sum loses at most a factor
+//! (m_p/s)² ≤ 16 of relative accuracy, since nodes with |s| < |m_p|/4 are computed directly);
+//! J₀(x) for x ≥ 25 from Hankel's asymptotic expansion
+//! (Abramowitz & Stegun 9.2.5, 9.2.9–10):
+//!
+//! J₀(x) = √(2/(πx)) [P(x) cos(x − π/4) − Q(x) sin(x − π/4)],
+//! P = Σ_k (−1)^k a_{2k}/x^{2k}, Q = −Σ_k (−1)^k a_{2k+1}/x^{2k+1} (Q ≈ −1/(8x)),
+//! a_k = 1²·3²·…·(2k−1)²/(k!·8^k),
+//!
+//! summed until the term is below 1e-18 (at x = 25 the smallest term, near k = 2x, is ~e^(−50)),
+//! with cos(x − π/4) = (cos x + sin x)/√2, sin(x − π/4) = (sin x − cos x)/√2 from the addition
+//! theorem; below 25, [`libm::j0`].
+//!
+//! # Accuracy
+//!
+//! `tests/hankel/receding_grid.rs`: every row against the library functions evaluated at the
+//! same nodes (cos, `libm::j0`), within the rounding of the argument ξs (a few ulp times x).
+//!
+//! # Cost
+//!
+//! One sin/cos pair per panel and per offset, a few multiplications per entry, and for J₀ about
+//! ten terms of the series: the holed route's timing, example 19.
+//!
+//! ```
+//! use boltzone::hankel::receding::grid::PanelGrid;
+//! let grid = PanelGrid::new(1.0, 3.0, 0.5);
+//! let mut row = vec![0.0; grid.len()];
+//! grid.j0_row(40.0, &mut row);
+//! let s = grid.nodes()[7];
+//! assert!((row[7] - libm::j0(40.0 * s)).abs() < 1e-14);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use crate::numerics::quadrature::gauss_legendre;
+use std::f64::consts::{FRAC_1_SQRT_2, PI};
+
+/// Where the asymptotic expansion of J₀ takes over from [`libm::j0`].
+const ASYMPTOTIC_FROM: f64 = 25.0;
+
+/// Nodes and weights of equal 20-point Gauss–Legendre panels on [a, b], with the split
+/// s = m_p + δ_j that the rows use.
+#[derive(Debug, Clone)]
+pub struct PanelGrid {
+    mids: Vec<f64>,
+    offsets: Vec<f64>,
+    nodes: Vec<f64>,
+    weights: Vec<f64>,
+}
+
+/// −2 sin²(x/2) = cos x − 1 without cancellation at small x.
+fn cos_m1(x: f64) -> f64 {
+    let s = (0.5 * x).sin();
+    -2.0 * s * s
+}
+
+impl PanelGrid {
+    /// Panels no wider than `width` on [`a`, `b`] (at least one).
+    pub fn new(a: f64, b: f64, width: f64) -> Self {
+        let k = ((b - a) / width).ceil().max(1.0) as usize;
+        Self::equal(a, (b - a) / k as f64, k)
+    }
+
+    /// `k` panels of width `h` from `a`.
+    pub fn equal(a: f64, h: f64, k: usize) -> Self {
+        let rule = gauss_legendre(20);
+        let mids: Vec<f64> = (0..k).map(|j| a + (j as f64 + 0.5) * h).collect();
+        let offsets: Vec<f64> = rule.iter().map(|&(x, _)| 0.5 * h * x).collect();
+        let nodes = mids
+            .iter()
+            .flat_map(|m| offsets.iter().map(move |o| m + o))
+            .collect();
+        let weights = mids
+            .iter()
+            .flat_map(|_| rule.iter().map(|&(_, w)| 0.5 * h * w))
+            .collect();
+        Self {
+            mids,
+            offsets,
+            nodes,
+            weights,
+        }
+    }
+
+    /// Number of nodes.
+    pub fn len(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// Whether there are no nodes (never: at least one panel).
+    pub fn is_empty(&self) -> bool {
+        self.nodes.is_empty()
+    }
+
+    /// The nodes s, panel by panel.
+    pub fn nodes(&self) -> &[f64] {
+        &self.nodes
+    }
+
+    /// The quadrature weights.
+    pub fn weights(&self) -> &[f64] {
+        &self.weights
+    }
+
+    /// Calls `f(index, cos ξs, sin ξs, cos ξs − 1)` for every node.
+    fn for_each(&self, xi: f64, mut f: impl FnMut(usize, f64, f64, f64)) {
+        let offs: Vec<(f64, f64, f64)> = self
+            .offsets
+            .iter()
+            .map(|&o| {
+                let (s, c) = (xi * o).sin_cos();
+                (c, s, cos_m1(xi * o))
+            })
+            .collect();
+        for (p, &m) in self.mids.iter().enumerate() {
+            let (sm, cm) = (xi * m).sin_cos();
+            let am = cos_m1(xi * m);
+            for (j, &(co, so, bo)) in offs.iter().enumerate() {
+                let c = cm * co - sm * so;
+                let s = sm * co + cm * so;
+                let i = 20 * p + j;
+                // A + B + AB − sin·sin cancels like (m/s)² where the node s is much nearer zero
+                // than its panel's midpoint m (first panels from 0): there, directly
+                let m1 = if 4.0 * self.nodes[i].abs() < m.abs() {
+                    cos_m1(xi * self.nodes[i])
+                } else {
+                    am + bo + am * bo - sm * so
+                };
+                f(i, c, s, m1);
+            }
+        }
+    }
+
+    /// `cos` ← cos ξs and `cos_m1` ← cos ξs − 1 at every node.
+    pub fn cos_rows(&self, xi: f64, cos: &mut [f64], cos_m1: &mut [f64]) {
+        self.for_each(xi, |i, c, _, m1| {
+            cos[i] = c;
+            cos_m1[i] = m1;
+        });
+    }
+
+    /// `out` ← cos ξs − 1 at every node.
+    pub fn cos_m1_row(&self, xi: f64, out: &mut [f64]) {
+        self.for_each(xi, |i, _, _, m1| out[i] = m1);
+    }
+
+    /// `out` ← J₀(ξs) at every node (ξ ≥ 0).
+    pub fn j0_row(&self, xi: f64, out: &mut [f64]) {
+        let nodes = &self.nodes;
+        self.for_each(xi, |i, c, s, _| {
+            let x = xi * nodes[i];
+            out[i] = if x < ASYMPTOTIC_FROM {
+                libm::j0(x)
+            } else {
+                j0_asymptotic(x, c, s)
+            };
+        });
+    }
+}
+
+/// (2k + 1)²/(k + 1), k = 0…80: the ratios of the expansion's coefficients over 8.
+static RATIOS: std::sync::OnceLock<Vec<f64>> = std::sync::OnceLock::new();
+
+/// J₀(x) for x ≥ 25 from cos x and sin x (module docs).
+fn j0_asymptotic(x: f64, cos: f64, sin: f64) -> f64 {
+    let y = 1.0 / (8.0 * x);
+    // the terms a_k/x^k go alternately to Q (odd k) and P (even k):
+    // a_{k+1}/a_k = (2k+1)²/(8(k+1))
+    let ratios = RATIOS.get_or_init(|| {
+        (0..=80)
+            .map(|k| {
+                let k = k as f64;
+                (2.0 * k + 1.0) * (2.0 * k + 1.0) / (k + 1.0)
+            })
+            .collect()
+    });
+    let (mut p, mut q) = (1.0, 0.0);
+    let mut term = 1.0;
+    let mut k = 0usize;
+    loop {
+        term *= ratios[k] * y;
+        k += 1;
+        // sign (−1)^⌈k/2⌉: P = 1 − a₂/x² + a₄/x⁴ − …, Q = −a₁/x + a₃/x³ − …
+        let signed = if k.div_ceil(2) % 2 == 1 { -term } else { term };
+        if k % 2 == 0 {
+            p += signed;
+        } else {
+            q += signed;
+        }
+        if term < 1e-18 || k > 80 {
+            break;
+        }
+    }
+    let cos_w = (cos + sin) * FRAC_1_SQRT_2;
+    let sin_w = (sin - cos) * FRAC_1_SQRT_2;
+    (2.0 / (PI * x)).sqrt() * (p * cos_w - q * sin_w)
+}
