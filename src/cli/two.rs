@@ -254,6 +254,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             "converged": s.converged,
             "full_contact": s.full_contact,
             "overlap": s.overlap,
+            "overlapping": s.overlapping,
             "report_rule": s.report_rule,
             "tolerance": args.tol,
             "interface": s.info.model,
@@ -297,12 +298,12 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             s.info.rate.map_or("—".into(), |r| format!("{r:.2}")),
             s.info.seconds
         );
-        if s.report_rule || s.overlap > 0.0 && !s.converged {
+        if s.report_rule || s.overlapping {
             println!(
                 "WARNING: no sign-consistent contact edge (welded dissimilar plates have an \
                  oscillatory edge singularity){}; the welded model is ill-posed here: use \
                  --interface frictionless or --interface friction --mu M",
-                if s.overlap > 0.0 {
+                if s.overlapping {
                     format!(", the plates overlap by {:.2e} {l}", s.overlap)
                 } else {
                     String::new()

@@ -130,6 +130,10 @@ pub struct TwoPlateSolution {
     /// Largest overlap of the plates (a negative gap) on the finest level; beyond round-off
     /// it makes the result not converged.
     pub overlap: f64,
+    /// Whether `overlap` exceeds round-off (1e-6 of the displacement scale: the largest gap, or
+    /// the deflection under the nut): the plates pass through each other and the result is
+    /// not a contact solution (never converged).
+    pub overlapping: bool,
     /// Whether the finest level's welded zone came from the report's rule (no sign-consistent
     /// contact edge exists: welded dissimilar plates); such a result is not converged.
     pub report_rule: bool,
@@ -505,14 +509,15 @@ fn solve_unit(
         .iter()
         .fold(sol.nut_deflection.abs(), |m, x| m.max(x.abs()));
     let overlap = gap_factor * sol.gap.iter().fold(0.0f64, |m, x| m.max(-x));
-    let unilateral = !sol.lcp.prefix && overlap <= 1e-6 * gap_factor * gap_scale;
-    let converged = converged && unilateral;
+    let overlapping = overlap > 1e-6 * gap_factor * gap_scale;
+    let converged = converged && !sol.lcp.prefix && !overlapping;
     let solution = TwoPlateSolution {
         r_o,
         r_o_error,
         converged,
         full_contact: sol.closed.last() == Some(&true) && cut == c,
         overlap,
+        overlapping,
         report_rule: sol.lcp.prefix,
         radius: sol.radius.clone(),
         force: sol.force.clone(),

@@ -290,3 +290,21 @@ fn a_closed_pipe_ends_the_program_quietly() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+#[test]
+fn an_unreached_tolerance_is_not_called_an_overlap() {
+    // was: Table 1's first joint (symmetric, frictionless) at --tol 1e-6 exited 3 (honestly:
+    // the cut of the infinite plate is out of reach) but printed the welded-plates warning,
+    // "the plates overlap by 2.08e-28 in": a round-off negative gap read as an overlap.
+    let r = go(&[
+        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--tol", "1e-6", "--json",
+    ]);
+    assert!([0, 3].contains(&code(&r)), "{}", r.stderr);
+    let v = json(&r);
+    assert_eq!(v["overlapping"], false, "{v}");
+    assert_eq!(v["report_rule"], false, "{v}");
+    let text = go(&[
+        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--tol", "1e-6",
+    ]);
+    assert!(!text.stdout.contains("sign-consistent"), "{}", text.stdout);
+}

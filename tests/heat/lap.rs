@@ -21,6 +21,7 @@ fn uniform_contact(p0: f64) -> TwoPlateSolution {
         converged: true,
         full_contact: true,
         overlap: 0.0,
+        overlapping: false,
         report_rule: false,
         radius: vec![0.0, 100.0],
         force: vec![1.0, 1.0],
