@@ -106,6 +106,7 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
         Model::SinglePlate => check_single(scene, t, text)?,
         Model::TwoPlate => {}
     }
+    let from_heat = super::from_heat::check(scene, t, text)?;
     if !t.reference.is_finite() {
         return Err(fail(
             text,
@@ -115,6 +116,7 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
         ));
     }
     match (&t.plates, &t.gradient) {
+        _ if from_heat => {}
         (Some(p), None) => {
             for v in pair(text, "plates", p)? {
                 if !v.is_finite() {

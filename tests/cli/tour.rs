@@ -14,7 +14,9 @@ fn root() -> &'static Path {
 /// The tour table's folder column (`src/cli/`), without the `src/*.rs` row.
 fn tour_folders() -> BTreeSet<String> {
     let text = std::fs::read_to_string(root().join("README.md")).unwrap();
-    let start = text.find("## A short tour").expect("README has a short tour");
+    let start = text
+        .find("## A short tour")
+        .expect("README has a short tour");
     let section = &text[start..];
     let end = section[3..].find("\n## ").map_or(section.len(), |k| k + 3);
     section[..end]
@@ -48,7 +50,10 @@ fn tour_names_every_folder_once() {
     let tour = tour_folders();
     let missing: Vec<_> = on_disk.difference(&tour).collect();
     let stale: Vec<_> = tour.difference(&on_disk).collect();
-    assert!(missing.is_empty(), "folders not in README's tour: {missing:?}");
+    assert!(
+        missing.is_empty(),
+        "folders not in README's tour: {missing:?}"
+    );
     assert!(stale.is_empty(), "tour rows with no folder: {stale:?}");
 }
 
@@ -64,8 +69,14 @@ fn examples_are_numbered_without_gaps_as_the_tour_says() {
         .collect();
     numbers.sort_unstable();
     let expected: Vec<u32> = (1..=numbers.len() as u32).collect();
-    assert_eq!(numbers, expected, "examples/NN_*.rs must run 01, 02, … without gaps");
+    assert_eq!(
+        numbers, expected,
+        "examples/NN_*.rs must run 01, 02, … without gaps"
+    );
     let text = std::fs::read_to_string(root().join("README.md")).unwrap();
     let range = format!("numbered programs 01–{:02}", numbers.len());
-    assert!(text.contains(&range), "README's tour should say \"{range}\"");
+    assert!(
+        text.contains(&range),
+        "README's tour should say \"{range}\""
+    );
 }
