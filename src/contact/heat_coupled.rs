@@ -9,7 +9,7 @@
 //! upper plate's loaded face held at `faces[0]`, the lower plate's at `faces[1]`, the hole and
 //! rim faces insulated, the plates joined by h_c(p(r)) of [`crate::heat::correlation`] where
 //! p > 0 and r ≤ R_o (zero beyond). The heat flow Q into the upper loaded face (positive from
-//! the upper plate to the lower when faces[0] > faces[1]) is that of the last conduction solve.
+//! the upper plate to the lower when `faces[0] > faces[1]`) is that of the last conduction solve.
 //! Units: the joint in SI (m, Pa), conductivities in W/(m·K), temperatures in kelvin or °C
 //! (α per the same degree), Q in W. Compression p > 0, as [`super::two_plate`].
 //!
@@ -57,7 +57,7 @@
 //! let params = TwoPlateParams { tolerance: 1e-2, ..Default::default() };
 //! let s = solve_from_heat(&joint, &params, &coupling)?;
 //! assert_eq!(s.passes, 1); // no heat flows: the first field changes nothing
-//! assert_eq!(s.heat_flow, 0.0);
+//! assert!(s.heat_flow.abs() < 1e-9, "{} W", s.heat_flow); // reactions at 20 °C: rounding only
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 

@@ -104,7 +104,7 @@ fn heat_in_equals_heat_out_and_tends_to_g_delta_t() {
     let (joint, al) = chapter5_joint();
     let iso = two_plate::solve(&joint, &coarse()).unwrap();
     let base = coupling(al, 100.0, [170.0, 70.0], 1e-3);
-    let mut params = JointParams::new(base.contact.clone());
+    let mut params = JointParams::new(base.contact);
     params.length_unit = Length::from_si(1.0); // the joint is in SI units
     params.pressure_unit = Pressure::from_si(1.0);
     let g = joint_conductance(&iso, &params).unwrap().total.si();
