@@ -4,6 +4,7 @@
 //! conductance G of `heat::joint` (computed separately) in the limit of conducting plates; the
 //! example scene against the library call bit for bit; located errors and exit 2.
 
+use crate::heat::error_of;
 use crate::{example, scratch};
 use boltzone::contact::heat_coupled::{conduct, solve_from_heat, HeatCoupling};
 use boltzone::contact::two_plate::{self, TwoPlateParams};
@@ -11,7 +12,7 @@ use boltzone::fem::thermal::ThermalMaterial;
 use boltzone::heat::correlation::{ContactConductance, Correlation, Surfaces};
 use boltzone::heat::joint::{joint_conductance, JointParams};
 use boltzone::heat::units::{Conductivity, Length, Pressure};
-use boltzone::scene::{Scene, SceneError};
+use boltzone::scene::Scene;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate};
 use std::f64::consts::PI;
 use std::process::Command;
@@ -194,13 +195,6 @@ fn scene_equals_the_library_call_bit_for_bit() {
     );
     assert_eq!(s.heat_flow_unit, Some("Btu/hr"));
     assert!(s.converged && lib.solution.converged);
-}
-
-fn error_of(text: &str) -> (String, usize) {
-    match Scene::parse(text) {
-        Err(SceneError::Invalid { key, line, reason }) => (format!("{key}: {reason}"), line),
-        other => panic!("expected a located error, got {other:?}"),
-    }
 }
 
 #[test]
