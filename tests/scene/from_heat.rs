@@ -195,6 +195,66 @@ fn scene_equals_the_library_call_bit_for_bit() {
     );
     assert_eq!(s.heat_flow_unit, Some("Btu/hr"));
     assert!(s.converged && lib.solution.converged);
+    // the command: the JSON keys and the printed line with its unit
+    let path =
+        std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/scenes/from_heat.toml");
+    let dir = scratch("from_heat_scene");
+    let run = |json: bool| {
+        let mut args = vec!["solve", path.to_str().unwrap()];
+        args.extend(json.then_some("--json"));
+        let out = Command::new(env!("CARGO_BIN_EXE_boltzone"))
+            .args(args)
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0));
+        out
+    };
+    let v = crate::common::json_of(&run(true));
+    assert_eq!(v["heat_passes"].as_u64(), Some(lib.passes as u64));
+    assert_eq!(v["heat_flow"].as_f64(), s.heat_flow);
+    assert_eq!(v["heat_flow_unit"], "Btu/hr");
+    let text = String::from_utf8(run(false).stdout).unwrap();
+    assert!(
+        text.contains("heat flow through the joint") && text.contains("Btu/hr"),
+        "{text}"
+    );
+}
+
+#[test]
+fn a_symmetric_pair_gets_an_antisymmetric_field_that_leaves_r_o_unchanged() {
+    // Equal plates and conductivities: T − T_mean is antisymmetric about the interface
+    // (T_upper(r, s) + T_lower(r, s) = 170 + 70 at every depth s below it). The uniform part
+    // T_mean − T_ref expands both plates freely; the antisymmetric part bends the mirrored plates
+    // by equal and opposite amounts, so the gap — and for a frictionless interface R_o — is that
+    // of the isothermal joint.
+    let (joint, al) = chapter5_joint();
+    let iso = two_plate::solve(&joint, &coarse()).unwrap();
+    let c = conduct(&joint, &iso, &coupling(al, 100.0, [170.0, 70.0], 1e-3)).unwrap();
+    let [up, lo] = c.plates().unwrap();
+    let d = 0.1 * IN;
+    let mut worst: f64 = 0.0;
+    for &r in &iso.radius {
+        for j in 0..=8 {
+            let s = d * j as f64 / 8.0;
+            worst = worst.max((up.at(r, s, d) + lo.at(r, s, d) - 240.0).abs());
+        }
+    }
+    let s = solve_from_heat(&joint, &coarse(), &coupling(al, 100.0, [170.0, 70.0], 1e-3)).unwrap();
+    let dr = (s.solution.r_o / iso.r_o - 1.0).abs();
+    println!("symmetric pair: max |T_u + T_l − 240| = {worst:e} °F, ΔR_o/R_o = {dr:e}");
+    assert!(worst < 1e-10 && dr < 1e-10, "{worst:e} °F, {dr:e}");
+}
+
+#[test]
+fn a_fixed_point_not_reached_is_flagged_not_converged() {
+    // One pass allowed and a tolerance below the first pass's change: flagged, not hidden.
+    let (joint, al) = chapter5_joint();
+    let mut heat = coupling(al, 100.0, [170.0, 70.0], 1e-14);
+    heat.max_passes = 1;
+    let s = solve_from_heat(&joint, &coarse(), &heat).unwrap();
+    println!("one pass: ΔR_o/R_o = {:e}", s.r_o_change);
+    assert!(s.passes == 1 && s.r_o_change > 1e-14 && !s.solution.converged);
 }
 
 #[test]
