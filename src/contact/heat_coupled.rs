@@ -26,7 +26,12 @@
 //! stress-free temperature, the isothermal R_o to 1e-10; the conduction's heat in equals its heat
 //! out to 1e-10 relative, and Q/ΔT tends to the interface conductance G of
 //! [`crate::heat::joint::joint_conductance`] as the plates' conductivity grows (the plates'
-//! resistance in series falls as 1/k: the observed rate is printed and checked).
+//! resistance in series falls as 1/k: observed rate 0.99 from k × 1000 to k × 10 000; the limit is
+//! the lumped interface Σ h_i ∫N_i 2πr dr, 1.3e-3 above the tributary rule of `heat::joint`);
+//! a symmetric pair's field is antisymmetric about the interface to 1.4e-12 °F and leaves R_o
+//! at the isothermal value (7e-12: the mirrored plates bend alike, so thermal strains move R_o
+//! only through unequal plates, conductivities or α — the example scene's α ratio 2 moves it
+//! 8.6 % in 3 passes); a fixed point not reached is flagged not converged.
 //!
 //! # Cost
 //!

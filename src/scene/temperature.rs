@@ -16,7 +16,9 @@
 //! alpha = [13e-6]                       # per degree; one value for both plates
 //! ```
 //!
-//! Exactly one of `plates` and `gradient`; one entry stands for both plates. The two-plate and
+//! Or `from_heat = true` with `faces = [upper, lower]`: the temperatures of the joint's own heat
+//! flow ([`super::from_heat`], two-plate, needs `[heat]`).
+//! Exactly one of `plates` and `gradient` otherwise; one entry stands for both plates. The two-plate and
 //! the single-plate models take temperatures; the single-plate substitute mirrors one plate
 //! about the midplane, so it takes one entry of each key (or two equal ones), a face pressure
 //! (no nut displacement) and the FE route (`auto` picks it). With `[outputs] field` (single
