@@ -12,8 +12,9 @@
 //! [heat]                    # required: k, roughness, slope, hardness (super::heat)
 //! ```
 //!
-//! Two-plate scenes only; no `plates` or `gradient` beside it, and no `[outputs] field` (not
-//! written for this route yet). Temperatures are in the degree of the scene's conductivity unit
+//! Two-plate scenes only; no `plates` or `gradient` beside it. `[outputs] field` writes the last
+//! pass's finest level with its thermal stresses and nodal `temperature` (that pass solved once
+//! more, keeping the level: the same inputs give the same R_o). Temperatures are in the degree of the scene's conductivity unit
 //! (°F in in-psi-lbf, K or °C otherwise). The answer adds `heat_passes` (thermal passes run) and
 //! `heat_flow` with `heat_flow_unit` (W; Btu/hr in in-psi-lbf); a fixed point not reached within
 //! [`MAX_PASSES`] passes leaves the answer flagged not converged (the command exits 3). Each error
@@ -101,9 +102,6 @@ pub(super) fn check(scene: &Scene, t: &TemperatureSpec, text: &str) -> Result<bo
     if scene.heat.is_none() {
         return refuse("needs a [heat] table (the interface conductance h_c(p))");
     }
-    if scene.outputs.field.is_some() {
-        return refuse("[outputs] field is not written for from_heat");
-    }
     Ok(true)
 }
 
@@ -148,7 +146,15 @@ pub(super) fn solve(
     t: &TemperatureSpec,
     out: &mut Solution,
 ) -> Result<HeatCoupledSolution, SceneError> {
-    let s = solve_from_heat(joint, params, &coupling(scene, joint, t)?)?;
+    let mut s = solve_from_heat(joint, params, &coupling(scene, joint, t)?)?;
+    if scene.outputs.field.is_some() {
+        // the last pass again, keeping its finest level (the same inputs: the same solution)
+        let units = (scene.units.length(), scene.units.stress());
+        let converged = s.solution.converged;
+        s.solution =
+            super::temperature::joint_field(joint, params, &s.temperature, units, &mut out.field)?;
+        s.solution.converged &= converged;
+    }
     out.heat_passes = Some(s.passes);
     out.heat_flow = Some(s.heat_flow / scene.units.conductance());
     out.heat_flow_unit = Some(heat_flow_unit(scene.units));

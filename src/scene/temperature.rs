@@ -270,7 +270,18 @@ pub fn two_plate_field(
     field: &mut Option<Grid>,
 ) -> Result<TwoPlateSolution, SceneError> {
     let jt = t.joint_temperature(joint, stress)?;
-    let (s, f, th) = crate::contact::thermal::solve_field_with_temperature(joint, params, &jt)?;
+    joint_field(joint, params, &jt, (length, stress), field)
+}
+
+/// As [`two_plate_field`] with the joint's temperatures `jt` (SI units) already built.
+pub fn joint_field(
+    joint: &Joint,
+    params: &TwoPlateParams,
+    jt: &JointTemperature,
+    (length, stress): (f64, f64),
+    field: &mut Option<Grid>,
+) -> Result<TwoPlateSolution, SceneError> {
+    let (s, f, th) = crate::contact::thermal::solve_field_with_temperature(joint, params, jt)?;
     let (grid, _) = super::field::two_plate_grid_with(&s, &f, Some(&th))?;
     *field = Some(super::field::scaled(grid, length, stress));
     Ok(s)

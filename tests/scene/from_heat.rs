@@ -225,6 +225,31 @@ fn scene_equals_the_library_call_bit_for_bit() {
 }
 
 #[test]
+fn the_field_of_the_last_pass_leaves_r_o_bit_for_bit() {
+    let text = example("from_heat").replace("r_o = true\n", "r_o = true\nfield = \"f.vtu\"\n");
+    let plain = boltzone::solve(&Scene::parse(&example("from_heat")).unwrap()).unwrap();
+    let with = boltzone::solve(&Scene::parse(&text).unwrap()).unwrap();
+    assert_eq!(with.r_o.to_bits(), plain.r_o.to_bits());
+    assert_eq!(with.heat_passes, plain.heat_passes);
+    let grid = with.field.expect("a field");
+    let t = grid
+        .scalars
+        .iter()
+        .find(|(name, _)| name == "temperature")
+        .map(|(_, v)| v)
+        .expect("a temperature");
+    // conduction: every temperature between the two faces' (maximum principle)
+    let (lo, hi) = t
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
+    println!("field temperatures {lo} .. {hi} °F");
+    assert!(
+        lo >= 70.0 - 1e-9 && hi <= 570.0 + 1e-9 && hi - lo > 100.0,
+        "{lo} .. {hi}"
+    );
+}
+
+#[test]
 fn a_symmetric_pair_gets_an_antisymmetric_field_that_leaves_r_o_unchanged() {
     // Equal plates and conductivities: T − T_mean is antisymmetric about the interface
     // (T_upper(r, s) + T_lower(r, s) = 170 + 70 at every depth s below it). The uniform part
