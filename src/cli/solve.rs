@@ -165,6 +165,10 @@ fn print_text(s: &Solution) {
             sig(g, 6)
         );
     }
+    if let (Some(q), Some(u), Some(n)) = (s.heat_flow, s.heat_flow_unit, s.heat_passes) {
+        let q = sig(q, 6);
+        println!("heat flow through the joint (from_heat, {n} thermal passes): {q} {u}");
+    }
 }
 
 /// The plan, on stderr-free stdout after the result.

@@ -48,6 +48,7 @@ pub mod check;
 pub mod error;
 pub mod field;
 pub mod file;
+pub mod from_heat;
 pub mod heat;
 pub mod materials;
 pub mod run;

@@ -95,6 +95,15 @@ pub struct Solution {
     /// The unit of `joint_conductance`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub conductance_unit: Option<&'static str>,
+    /// Thermal passes of `[temperature] from_heat` ([`super::from_heat`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub heat_passes: Option<usize>,
+    /// Heat flow through the joint with `from_heat` (`heat_flow_unit`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub heat_flow: Option<f64>,
+    /// The unit of `heat_flow` (W; Btu/hr in in-psi-lbf).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub heat_flow_unit: Option<&'static str>,
     /// The plan: routes that ran and were skipped, time per step.
     pub plan: Vec<Step>,
     /// Interface curve (two-plate; written as CSV, not printed).
@@ -258,6 +267,9 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         nut_deflection: None,
         joint_conductance: None,
         conductance_unit: None,
+        heat_passes: None,
+        heat_flow: None,
+        heat_flow_unit: None,
         plan: Vec::new(),
         interface: None,
         field: None,
@@ -269,6 +281,9 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         (Model::TwoPlate, _) => {
             let params = two_plate_params(scene, nut);
             let s = match (&scene.temperature, &scene.outputs.field) {
+                (Some(t), _) if t.from_heat => {
+                    super::from_heat::solve(scene, &joint, &params, t, &mut out)?.solution
+                }
                 (Some(t), Some(_)) => super::temperature::two_plate_field(
                     &joint,
                     &params,

@@ -16,7 +16,9 @@
 //! alpha = [13e-6]                       # per degree; one value for both plates
 //! ```
 //!
-//! Exactly one of `plates` and `gradient`; one entry stands for both plates. The two-plate and
+//! Or `from_heat = true` with `faces = [upper, lower]`: the temperatures of the joint's own heat
+//! flow ([`super::from_heat`], two-plate, needs `[heat]`).
+//! Exactly one of `plates` and `gradient` otherwise; one entry stands for both plates. The two-plate and
 //! the single-plate models take temperatures; the single-plate substitute mirrors one plate
 //! about the midplane, so it takes one entry of each key (or two equal ones), a face pressure
 //! (no nut displacement) and the FE route (`auto` picks it). With `[outputs] field` (single
@@ -106,6 +108,7 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
         Model::SinglePlate => check_single(scene, t, text)?,
         Model::TwoPlate => {}
     }
+    let from_heat = super::from_heat::check(scene, t, text)?;
     if !t.reference.is_finite() {
         return Err(fail(
             text,
@@ -115,6 +118,7 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
         ));
     }
     match (&t.plates, &t.gradient) {
+        _ if from_heat => {}
         (Some(p), None) => {
             for v in pair(text, "plates", p)? {
                 if !v.is_finite() {
@@ -266,7 +270,18 @@ pub fn two_plate_field(
     field: &mut Option<Grid>,
 ) -> Result<TwoPlateSolution, SceneError> {
     let jt = t.joint_temperature(joint, stress)?;
-    let (s, f, th) = crate::contact::thermal::solve_field_with_temperature(joint, params, &jt)?;
+    joint_field(joint, params, &jt, (length, stress), field)
+}
+
+/// As [`two_plate_field`] with the joint's temperatures `jt` (SI units) already built.
+pub fn joint_field(
+    joint: &Joint,
+    params: &TwoPlateParams,
+    jt: &JointTemperature,
+    (length, stress): (f64, f64),
+    field: &mut Option<Grid>,
+) -> Result<TwoPlateSolution, SceneError> {
+    let (s, f, th) = crate::contact::thermal::solve_field_with_temperature(joint, params, jt)?;
     let (grid, _) = super::field::two_plate_grid_with(&s, &f, Some(&th))?;
     *field = Some(super::field::scaled(grid, length, stress));
     Ok(s)

@@ -26,6 +26,12 @@ pub struct TemperatureSpec {
     /// [contact face, loaded face] temperatures per plate, linear between (one entry: both).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gradient: Option<Vec<[f64; 2]>>,
+    /// The temperatures from the joint's heat flow ([`super::from_heat`]; default false).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub from_heat: bool,
+    /// With `from_heat`: the upper and the lower loaded face's temperatures.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub faces: Option<[f64; 2]>,
     /// Expansion coefficient α per plate, per degree (one entry: both); empty with `table`.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub alpha: Vec<f64>,

@@ -72,6 +72,7 @@ pub(super) fn check(t: &TemperatureSpec, text: &str) -> Result<(), SceneError> {
             .flatten()
             .map(|v| ("gradient", *v)),
     );
+    let given = given.chain(t.faces.iter().flatten().map(|v| ("faces", *v)));
     for (key, v) in given {
         if !(v >= lo && v <= hi) {
             return Err(fail(

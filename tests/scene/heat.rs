@@ -155,7 +155,8 @@ fn chapter5_scene_equals_the_library_calls_and_the_command() {
     assert_eq!(v["inputs"]["heat"]["correlation"], "cmy1969");
 }
 
-fn error_of(text: &str) -> (String, usize) {
+/// The located message "key: reason" and line of the error of `text` (also used by `from_heat`).
+pub fn error_of(text: &str) -> (String, usize) {
     match Scene::parse(text) {
         Err(SceneError::Invalid { key, line, reason }) => (format!("{key}: {reason}"), line),
         other => panic!("expected a located error, got {other:?}"),

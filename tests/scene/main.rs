@@ -8,6 +8,7 @@ mod command_units;
 mod errors;
 mod examples;
 mod field;
+mod from_heat;
 mod fuzz;
 mod heat;
 mod joint_units;
