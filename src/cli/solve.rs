@@ -12,7 +12,7 @@
 //! That of the scene's routes (example 17).
 
 use super::exit::{sig, Status, UsageError};
-use boltzone::scene::sweep::{points, rows, solve_all, Point};
+use boltzone::scene::sweep::{points, rows, solve_all, SweepPoint};
 use boltzone::scene::{read, SceneError, Solution};
 use std::path::{Path, PathBuf};
 
@@ -188,7 +188,7 @@ fn explain(s: &Solution) {
 /// The interface curves as CSV: header with units first (the swept keys first in a sweep),
 /// `#` provenance after it, then r, p, g of each point's finest mesh.
 fn curve_csv(
-    pts: &[Point],
+    pts: &[SweepPoint],
     results: &[Result<Solution, SceneError>],
     scene: &std::path::Path,
 ) -> String {
@@ -225,7 +225,7 @@ fn curve_csv(
 
 /// One row per sweep point: the swept keys, R_o, its error, converged.
 fn sweep_csv(
-    pts: &[Point],
+    pts: &[SweepPoint],
     results: &[Result<Solution, SceneError>],
     scene: &std::path::Path,
 ) -> String {

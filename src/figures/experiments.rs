@@ -23,7 +23,8 @@
 
 use super::pairs::{case, run};
 use super::{
-    value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point, PointSeries, Source,
+    value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Marker, MarkerSeries,
+    Source,
 };
 use crate::reference;
 use rayon::prelude::*;
@@ -36,7 +37,7 @@ pub fn fig28(params: &FiguresParams) -> Result<FigureData, FigureError> {
         .map(|r| run("fig28", &case(r.case), params.tolerance).map(|(s, _)| s))
         .collect::<Result<Vec<_>, _>>()?;
     let two: Vec<f64> = ours.iter().map(|s| 2.0 * s.r_o).collect();
-    let bar = |x: f64, m: &reference::Measurement| Point {
+    let bar = |x: f64, m: &reference::Measurement| Marker {
         x,
         y: m.average,
         x_bar: (x, x),
@@ -46,7 +47,7 @@ pub fn fig28(params: &FiguresParams) -> Result<FigureData, FigureError> {
     let hi = 1.3;
     let computed = ours
         .iter()
-        .map(|s| Point {
+        .map(|s| Marker {
             x: 2.0 * s.r_o,
             y: 2.0 * s.r_o,
             x_bar: (2.0 * (s.r_o - s.r_o_error), 2.0 * (s.r_o + s.r_o_error)),
@@ -72,21 +73,21 @@ pub fn fig28(params: &FiguresParams) -> Result<FigureData, FigureError> {
         y_label: "2R_o [in]".into(),
         curves: vec![line],
         points: vec![
-            PointSeries {
+            MarkerSeries {
                 label: "this program (bars: error estimate)".into(),
                 source: Source::Computed,
                 points: computed,
             },
-            PointSeries {
+            MarkerSeries {
                 label: "report: computed 2R_o (Table 2)".into(),
                 source: Source::Report,
                 points: rows
                     .iter()
                     .zip(&two)
-                    .map(|(r, x)| Point::at(*x, r.computed))
+                    .map(|(r, x)| Marker::at(*x, r.computed))
                     .collect(),
             },
-            PointSeries {
+            MarkerSeries {
                 label: "Table 2: rubbing tests".into(),
                 source: Source::Measured,
                 points: rows
@@ -95,7 +96,7 @@ pub fn fig28(params: &FiguresParams) -> Result<FigureData, FigureError> {
                     .map(|(r, x)| bar(*x, &r.rubbing))
                     .collect(),
             },
-            PointSeries {
+            MarkerSeries {
                 label: "Table 2: autoradiographic tests".into(),
                 source: Source::Measured,
                 points: rows

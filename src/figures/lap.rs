@@ -30,7 +30,8 @@
 //! ```
 
 use super::{
-    value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Point, PointSeries, Source,
+    value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Marker, MarkerSeries,
+    Source,
 };
 use crate::contact::two_plate::{solve, TwoPlateParams};
 use crate::heat::lap::LapJoint;
@@ -156,12 +157,12 @@ pub fn fig29(params: &FiguresParams) -> Result<FigureData, FigureError> {
                 (side - 1.5 * EXAGGERATION * d, side + 1.5 * EXAGGERATION * d),
             ),
         ],
-        points: vec![PointSeries {
+        points: vec![MarkerSeries {
             label: "report (Ch. V): outer radii of the contact rings".into(),
             source: Source::Report,
             points: reference::chapter5_interface()
                 .iter()
-                .map(|r| Point::at(r.r_outer, 0.0))
+                .map(|r| Marker::at(r.r_outer, 0.0))
                 .collect(),
         }],
         values: vec![],

@@ -32,7 +32,7 @@ pub const MAX_POINTS: usize = 100_000;
 
 /// One point of a sweep: the swept values and the scene they make.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Point {
+pub struct SweepPoint {
     /// (dotted key, value) of each swept key.
     pub values: Vec<(String, toml::Value)>,
     /// The scene at this point (no `[sweep]`).
@@ -90,10 +90,10 @@ fn set(root: &mut toml::Value, path: &[Seg], value: toml::Value) -> bool {
 }
 
 /// The points of the scene in `text` (one point, the scene itself, without a sweep).
-pub fn points(text: &str) -> Result<Vec<Point>, SceneError> {
+pub fn points(text: &str) -> Result<Vec<SweepPoint>, SceneError> {
     let base = Scene::parse(text)?;
     if base.sweep.is_empty() {
-        return Ok(vec![Point {
+        return Ok(vec![SweepPoint {
             values: Vec::new(),
             scene: base,
         }]);
@@ -153,7 +153,7 @@ fn point(
     root: &toml::Value,
     assigned: Vec<(String, Vec<Seg>, toml::Value)>,
     bad: &dyn Fn(&str, String) -> SceneError,
-) -> Result<Point, SceneError> {
+) -> Result<SweepPoint, SceneError> {
     let mut doc = root.clone();
     for (key, path, v) in &assigned {
         if !set(&mut doc, path, v.clone()) {
@@ -185,7 +185,7 @@ fn point(
         }
         other => other,
     })?;
-    Ok(Point { values, scene })
+    Ok(SweepPoint { values, scene })
 }
 
 /// A CSV cell as a TOML value: a number, a boolean, or else a string (quotes stripped).
@@ -203,7 +203,7 @@ fn cell(field: &str) -> toml::Value {
 /// The points of a CSV of geometries applied to the scene in `text`: the header (its first
 /// line that is neither blank nor a `#` comment) names dotted scene keys, each further row is
 /// one point. Errors name the CSV line and column.
-pub fn rows(text: &str, csv: &str) -> Result<Vec<Point>, SceneError> {
+pub fn rows(text: &str, csv: &str) -> Result<Vec<SweepPoint>, SceneError> {
     let base = Scene::parse(text)?;
     let at = |line: usize, key: &str, reason: String| SceneError::Geometry {
         key: key.to_string(),
@@ -266,7 +266,10 @@ pub fn rows(text: &str, csv: &str) -> Result<Vec<Point>, SceneError> {
 }
 
 /// Solves every point in parallel; `tick` is called once per point finished (a progress bar).
-pub fn solve_all(points: &[Point], tick: &(dyn Fn() + Sync)) -> Vec<Result<Solution, SceneError>> {
+pub fn solve_all(
+    points: &[SweepPoint],
+    tick: &(dyn Fn() + Sync),
+) -> Vec<Result<Solution, SceneError>> {
     points
         .par_iter()
         .map(|p| {
