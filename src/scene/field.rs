@@ -47,7 +47,7 @@ use crate::numerics::quadrature::QuadParams;
 
 /// The midplane normal stress σ_z(r) (scene units; compression negative).
 #[derive(Debug, Clone, PartialEq, Default)]
-pub struct Midplane {
+pub struct MidplaneStress {
     /// Radii.
     pub radius: Vec<f64>,
     /// σ_z at those radii.
@@ -148,9 +148,12 @@ pub fn single_plate_grid(material: Material, h: &HalfPlate) -> Result<Grid, FemE
 }
 
 /// The midplane of the FE single plate (finest level), in the plate's units.
-pub fn single_plate_midplane(plate: &SinglePlate, h: &HalfPlate) -> Result<Midplane, FemError> {
+pub fn single_plate_midplane(
+    plate: &SinglePlate,
+    h: &HalfPlate,
+) -> Result<MidplaneStress, FemError> {
     let m = crate::fem::single::midplane_of(plate, h)?;
-    Ok(Midplane {
+    Ok(MidplaneStress {
         radius: m.r,
         sigma_z: m.sigma_z,
         error: None,
@@ -161,14 +164,14 @@ pub fn single_plate_midplane(plate: &SinglePlate, h: &HalfPlate) -> Result<Midpl
 pub const SLAB_POINTS: usize = 121;
 
 /// The slab's midplane σ_z on 0 ≤ r ≤ 3 R_o ([`SLAB_POINTS`] radii), in the slab's units.
-pub fn slab_midplane(slab: &Slab, r_o: f64, rel_tol: f64) -> Midplane {
+pub fn slab_midplane(slab: &Slab, r_o: f64, rel_tol: f64) -> MidplaneStress {
     let params = QuadParams {
         rel_tol: rel_tol.min(1e-8),
         ..QuadParams::default()
     };
-    let mut m = Midplane {
+    let mut m = MidplaneStress {
         error: Some(Vec::with_capacity(SLAB_POINTS)),
-        ..Midplane::default()
+        ..MidplaneStress::default()
     };
     for i in 0..SLAB_POINTS {
         let r = 3.0 * r_o * i as f64 / (SLAB_POINTS - 1) as f64;
@@ -183,7 +186,7 @@ pub fn slab_midplane(slab: &Slab, r_o: f64, rel_tol: f64) -> Midplane {
 }
 
 /// `m` with radii divided by `length` and stresses by `stress`.
-pub fn midplane_scaled(mut m: Midplane, length: f64, stress: f64) -> Midplane {
+pub fn midplane_scaled(mut m: MidplaneStress, length: f64, stress: f64) -> MidplaneStress {
     m.radius.iter_mut().for_each(|r| *r /= length);
     m.sigma_z.iter_mut().for_each(|s| *s /= stress);
     if let Some(e) = m.error.as_mut() {

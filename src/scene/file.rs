@@ -131,7 +131,7 @@ pub enum MaterialSpec {
 /// One `[[plates]]` entry.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct PlateSpec {
+pub struct ScenePlate {
     /// Thickness D (length unit).
     pub thickness: f64,
     /// Material (omitted: the plate above's; the top plate's default is `steel-304`).
@@ -227,7 +227,7 @@ pub struct Scene {
     /// The load.
     pub load: LoadSpec,
     /// Plates under the head first; one entry = two equal plates.
-    pub plates: Vec<PlateSpec>,
+    pub plates: Vec<ScenePlate>,
     /// The joint's outer radius and interface.
     #[serde(default)]
     pub joint: JointSpec,

@@ -19,7 +19,7 @@
 //! ```
 
 use super::error::SceneError;
-use super::field::{self, Midplane};
+use super::field::{self, MidplaneStress};
 use super::file::{InterfaceKind, MaterialSpec, Method, Model, ProfileKind, Scene};
 use super::materials;
 use super::units::UnitSystem;
@@ -114,7 +114,7 @@ pub struct Solution {
     pub field: Option<Grid>,
     /// The midplane σ_z(r) in the scene's units (`[outputs] midplane`; written as CSV).
     #[serde(skip)]
-    pub midplane: Option<Midplane>,
+    pub midplane: Option<MidplaneStress>,
 }
 
 /// The material of plate `i` in SI units.
