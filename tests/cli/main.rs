@@ -5,3 +5,4 @@
 mod fuzz;
 mod readme;
 mod regressions;
+mod thin_plates;
