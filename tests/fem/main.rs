@@ -11,3 +11,4 @@ mod lame;
 mod single;
 mod system;
 mod thermal;
+mod tight_tolerance;
