@@ -11,7 +11,10 @@
 //! **Method.** Refinement levels ([`crossing_levels`]): level l is a mesh graded in r and z with element size
 //! h_l = `coarse_size`·D/2^l at the foci — the hole edge A, the load's knots, the load edge B and,
 //! from level 1 on, the previous level's R_o — growing away from them by the ratio `growth`
-//! (radially, up to 4D) and `axial_growth` (from both faces, up to D/2). Only the element size
+//! (radially, up to 4D) and `axial_growth` (from both faces, up to D/2); below h = D/64 (below
+//! D/8 when `tolerance` < [`FIXED_GRADING_TOLERANCE`]) the ratios and the largest axial size
+//! shrink ([`crate::fem::spacing::level_grading`]), so that the mesh away from the foci refines
+//! too and its error shows in the level-to-level changes. Only the element size
 //! at the foci halves from level to level, so the number of unknowns grows 1.5–2.8× (mean 2×) per
 //! level instead of the 4× of halving every element; the meshes are not nested
 //! ([`Refinement::Graded`], the default for Q9; [`Refinement::Uniform`], nested halving of
