@@ -3,6 +3,7 @@
 //! tested in each area's `cli` module).
 
 mod fuzz;
+mod out_of_reach;
 mod readme;
 mod regressions;
 mod thin_plates;
