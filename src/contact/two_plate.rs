@@ -359,10 +359,14 @@ fn solve_level_at(
 ///
 /// R_o approaches its value for the wide plate like C⁻² (a free annulus beyond R_o carries the
 /// rim's influence by bending moments ∝ 1/r²; measured in `receding_vs_fe`). Starting from
-/// C₁ = 10B + 10(D₁ + D₂), two coarse levels at C₁ and 2C₁ give Δ = R(2C₁) − R(C₁), so that the
-/// cut's error in R_o is (4/3)|Δ|(1 − C₁²/C²) for the plate's own C (C = ∞: the factor is 1).
-/// C₁ doubles while that exceeds a quarter of the tolerance and 2C₁ stays below both C and
-/// [`C_MAX_OVER_D`]·D; returns (C₁, its error), or (C, 0) when the plate fits whole.
+/// C₁ = 10B + 10(D₁ + D₂), two coarse levels at C₁ and C₂ = min(2C₁, B + [`C_MAX_OVER_D`]·D)
+/// give Δ = R(C₂) − R(C₁), so that the cut's error in R_o is
+/// |Δ|(C₁⁻² − C⁻²)/(C₁⁻² − C₂⁻²) for the plate's own C (C = ∞: C⁻² = 0; C₂ = 2C₁: (4/3)|Δ|).
+/// C₁ moves to C₂ while that exceeds a quarter of the tolerance and 2C₂ stays below both C and
+/// B + [`C_MAX_OVER_D`]·D; returns (C₁, its error), or (C, 0) when the plate fits whole, i.e.
+/// C ≤ B + [`C_MAX_OVER_D`]·D. (Meshing whole every plate up to 10B + 10(D₁ + D₂), as
+/// before, put a free annulus of 4,000 D on `two --a 666 --b 1000 --d 1 --c 5000`: stiffness
+/// matrix not positive definite, exit 1.)
 fn truncation(
     joint: &Joint,
     g: &MeshLayout,
@@ -372,7 +376,7 @@ fn truncation(
 ) -> Result<(f64, f64), ContactError> {
     let c_max = g.b + C_MAX_OVER_D * g.d[0].min(g.d[1]);
     let mut c1 = 10.0 * g.b + 10.0 * (g.d[0] + g.d[1]);
-    if c <= c1.max(c_max) {
+    if c <= c_max {
         return Ok((c, 0.0));
     }
     c1 = c1.min(g.b + 0.5 * (c_max - g.b));
@@ -387,12 +391,10 @@ fn truncation(
         Ok(solve_level_at(joint, &g, params, 0.5 * h0, None)?.est.r_o)
     };
     loop {
-        let c2 = 2.0 * c1;
-        if c2 >= c {
-            return Ok((c, 0.0)); // the whole plate fits
-        }
+        let c2 = (2.0 * c1).min(c_max);
         let (r1, r2) = (at(c1, None)?, at(c2, Some(c1))?);
-        let error = 4.0 / 3.0 * (r2 - r1).abs() * (1.0 - (c1 / c).powi(2));
+        let (k1, k2) = (c1.powi(-2), c2.powi(-2));
+        let error = (r2 - r1).abs() * (k1 - c.powi(-2)) / (k1 - k2);
         if error <= 0.25 * params.tolerance * r2 || 2.0 * c2 > c_max {
             return Ok((c1, error));
         }

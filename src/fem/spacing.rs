@@ -237,7 +237,26 @@ pub const GRADING_FIXED_DOWN_TO: f64 = 1.0 / 64.0;
 /// assert!((qz - (1.0 + 0.5 * 0.5f64.sqrt())).abs() < 1e-12);
 /// ```
 pub fn level_grading(h: f64, d: f64, radial: f64, axial: f64) -> (f64, f64, f64) {
-    let shrink = (h / (GRADING_FIXED_DOWN_TO * d)).min(1.0).sqrt();
+    level_grading_below(h, d, radial, axial, GRADING_FIXED_DOWN_TO)
+}
+
+/// [`level_grading`] with the ratios kept down to h = `fixed_down_to`·d instead of d/64 (a
+/// study asked a tolerance that the fixed grading cannot certify starts the shrink sooner).
+///
+/// ```
+/// use boltzone::fem::spacing::{level_grading, level_grading_below};
+/// assert_eq!(level_grading_below(0.1 / 32.0, 0.1, 1.25, 1.5, 1.0 / 8.0).2, 0.5);
+/// assert_eq!(level_grading_below(0.1 / 256.0, 0.1, 1.25, 1.5, 1.0 / 64.0),
+///            level_grading(0.1 / 256.0, 0.1, 1.25, 1.5));
+/// ```
+pub fn level_grading_below(
+    h: f64,
+    d: f64,
+    radial: f64,
+    axial: f64,
+    fixed_down_to: f64,
+) -> (f64, f64, f64) {
+    let shrink = (h / (fixed_down_to * d)).min(1.0).sqrt();
     (
         1.0 + (radial - 1.0) * shrink,
         1.0 + (axial - 1.0) * shrink.sqrt(),

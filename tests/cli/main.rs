@@ -3,6 +3,8 @@
 //! tested in each area's `cli` module).
 
 mod fuzz;
+mod out_of_reach;
 mod readme;
 mod regressions;
+mod thin_plates;
 mod tour;

@@ -12,3 +12,4 @@ mod single;
 mod single_thermal;
 mod system;
 mod thermal;
+mod tight_tolerance;
