@@ -159,7 +159,11 @@ pub struct TwoPlateSolution {
 /// The problem is solved in units where the thinner plate's thickness, the stiffer plate's
 /// modulus and the largest bearing pressure are 1 (R_o depends only on ratios), so that any
 /// finite input — a modulus of 1e-300 or 1e300, plates a nanometre or a kilometre thick —
-/// meets the same well-scaled matrices; the results are scaled back.
+/// meets the same well-scaled matrices; the results are scaled back. Each scaled number is a
+/// quotient, correctly rounded, so the same joint written in inches, millimetres or metres
+/// reaches the solver as the same bits whenever its ratios are (R_o then agrees to the last
+/// digit: `tests/scene/joint_units.rs`; an ulp of difference in a ratio moves R_o by up to
+/// ~3e-10 relative, the FE's round-off floor).
 pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution, ContactError> {
     solve_keeping(joint, params).map(|(s, _)| s)
 }
