@@ -236,15 +236,17 @@ impl FaceLoad {
         self.total_force() / (PI * (b * b - a * a))
     }
 
-    /// The same load in other units: every radius multiplied by `length`, every pressure by
-    /// `pressure` (both finite and positive).
-    pub fn rescaled(&self, length: f64, pressure: f64) -> Result<Self, InputError> {
+    /// The same load in units where `length` and `pressure` are 1: every radius divided by
+    /// `length`, every pressure by `pressure` (both finite and positive). Division, not
+    /// multiplication by a reciprocal, so that each number is its ratio correctly rounded: a
+    /// joint written in other units (whose ratios are the same) scales to the same bits.
+    pub fn nondimensional(&self, length: f64, pressure: f64) -> Result<Self, InputError> {
         crate::error::positive("load length scale", length)?;
         crate::error::positive("load pressure scale", pressure)?;
         Ok(Self {
             profile: self.profile,
-            knots: self.knots.iter().map(|r| r * length).collect(),
-            values: self.values.iter().map(|v| v * pressure).collect(),
+            knots: self.knots.iter().map(|r| r / length).collect(),
+            values: self.values.iter().map(|v| v / pressure).collect(),
         })
     }
 

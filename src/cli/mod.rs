@@ -31,6 +31,7 @@ mod slab;
 mod solve;
 mod table1;
 mod table2;
+mod table_units;
 mod two;
 mod two_args;
 mod two_files;

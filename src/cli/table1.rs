@@ -22,6 +22,8 @@ use boltzone::compare::{table1, CompareParams};
 pub struct Args {
     #[command(flatten)]
     out: TableOutput,
+    #[command(flatten)]
+    units: super::args::Units,
     /// Skip the second single-plate method (Hankel transforms with the hole correction, C = ∞).
     #[arg(long)]
     no_hankel: bool,
@@ -40,9 +42,25 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let rows = table1::compute(&params, &|| bar.inc(1))?;
     bar.finish_and_clear();
     if args.out.json {
-        super::print_json(&rows)?;
+        super::print_json(&super::table_units::rows_json(
+            &rows,
+            args.units.units,
+            &[
+                "ours.geometry.a",
+                "ours.geometry.b",
+                "ours.geometry.d",
+                "ours.geometry.c",
+                "ours.single.value",
+                "ours.single.error",
+                "ours.single_hankel.value",
+                "ours.single_hankel.error",
+                "ours.two.value",
+                "ours.two.error",
+                "ours.rules.*.radius",
+            ],
+        )?)?;
     } else {
-        print!("{}", table1::text(&rows));
+        print!("{}", table1::text_in(&rows, args.units.units));
         println!(
             "\n{} geometries in {:.2} s (relative tolerance {:e} per R_o)",
             rows.len(),
@@ -51,7 +69,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         );
     }
     if let Some(path) = &args.out.csv {
-        write_output(path, &table1::csv(&rows))?;
+        write_output(path, &table1::csv_in(&rows, args.units.units))?;
     }
     let converged = rows.iter().all(|r| r.ours.converged());
     if !converged && !args.out.json {

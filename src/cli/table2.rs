@@ -23,6 +23,8 @@ use clap::ValueEnum;
 pub struct Args {
     #[command(flatten)]
     out: TableOutput,
+    #[command(flatten)]
+    units: super::args::Units,
     /// Interface model of unequal pairs (welded is the report's).
     #[arg(long, value_enum, default_value_t = Interface::Welded)]
     interface: Interface,
@@ -44,9 +46,27 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let rows = table2::compute(model, args.out.tol, &|| bar.inc(1))?;
     bar.finish_and_clear();
     if args.out.json {
-        super::print_json(&rows)?;
+        super::print_json(&super::table_units::rows_json(
+            &rows,
+            args.units.units,
+            &[
+                "two_r_o.value",
+                "two_r_o.error",
+                "report.computed",
+                "report.d1",
+                "report.d2",
+                "report.d_table",
+                "report.two_b",
+                "report.rubbing.min",
+                "report.rubbing.max",
+                "report.rubbing.average",
+                "report.autoradiographic.min",
+                "report.autoradiographic.max",
+                "report.autoradiographic.average",
+            ],
+        )?)?;
     } else {
-        print!("{}", table2::text(&rows));
+        print!("{}", table2::text_in(&rows, args.units.units));
         let name = args
             .interface
             .to_possible_value()
@@ -58,7 +78,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         );
     }
     if let Some(path) = &args.out.csv {
-        write_output(path, &table2::csv(&rows))?;
+        write_output(path, &table2::csv_in(&rows, args.units.units))?;
     }
     let converged = rows.iter().all(|r| r.two_r_o.converged);
     if !converged && !args.out.json {

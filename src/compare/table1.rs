@@ -22,6 +22,8 @@
 
 use super::{compare_all, show, CompareError, CompareParams, Comparison, Geometry};
 use crate::reference::{self, Table1Row};
+use crate::scene::units::INCH;
+use crate::scene::UnitSystem;
 use serde::Serialize;
 
 /// One row: ours and the report's.
@@ -94,27 +96,63 @@ pub fn csv_fields(c: &Comparison) -> String {
         .join(",")
 }
 
-/// The table as CSV (header + 12 lines).
+/// The table as CSV (header + 12 lines), lengths in inches.
 pub fn csv(rows: &[Row]) -> String {
-    let mut out = format!("{CSV_HEADER}\n");
+    csv_in(rows, UnitSystem::InPsiLbf)
+}
+
+/// The table as CSV: the columns of [`CSV_HEADER`] (ratios and percentages, the same in every
+/// unit system), then the geometry and both R_o in the length unit of `units`, named with it
+/// (`a [mm]`, …).
+pub fn csv_in(rows: &[Row], units: UnitSystem) -> String {
+    let k = INCH / units.length();
+    let l = units.symbols().0;
+    let mut out = format!(
+        "{CSV_HEADER},a [{l}],b [{l}],d [{l}],c [{l}],single_r_o [{l}],single_r_o_error [{l}],\
+         two_r_o [{l}],two_r_o_error [{l}]\n"
+    );
     for r in rows {
+        let c = &r.ours;
+        let g = &c.geometry;
+        let lengths = [
+            g.a,
+            g.b,
+            g.d,
+            g.c,
+            c.single.value,
+            c.single.error,
+            c.two.value,
+            c.two.error,
+        ];
+        let lengths: Vec<String> = lengths.iter().map(|x| format!("{}", x * k)).collect();
         out += &format!(
-            "{},{},{},{}\n",
-            csv_fields(&r.ours),
+            "{},{},{},{},{}\n",
+            csv_fields(c),
             r.report.single,
             r.report.two,
-            r.report.discrepancy_percent
+            r.report.discrepancy_percent,
+            lengths.join(",")
         );
     }
     out
 }
 
-/// The table as text: ours ± error beside the report's, then the rules of thumb.
+/// The table as text in inches: ours ± error beside the report's, then the rules of thumb.
 pub fn text(rows: &[Row]) -> String {
-    let mut s = String::from(
+    text_in(rows, UnitSystem::InPsiLbf)
+}
+
+/// [`text`] with A and C in the length unit of `units` (every other number is a ratio or a
+/// percentage, the same in every system).
+pub fn text_in(rows: &[Row], units: UnitSystem) -> String {
+    let (k, l) = (INCH / units.length(), units.symbols().0);
+    let a = format!("{} {l}", reference::TABLE1_HOLE_RADIUS * k);
+    let c = format!("{} {l}", reference::TABLE1_OUTER_RADIUS * k);
+    let mut s = format!(
         "Table 1 recomputed (Gould & Mikic 1970): R_o/A, single-plate substitution vs two-plate model\n\
-         A = 0.1 in, C = 1.54 in, nu = 0.3; single plate 2D thick (FE, finite C); two plates D thick each\n\
-         (one on a frictionless rigid plane); ours ± error estimate [report's value]\n\n",
+         A = {a}, C = {c}, nu = 0.3; single plate 2D thick (FE, finite C); two plates D thick each\n\
+         (one on a frictionless rigid plane); ours ± error estimate [report's value];\n\
+         R_o/A, A/D, B/A are ratios [-], discrepancies in %\n\n",
     );
     s += &format!(
         "{:>5} {:>5}  {:>24} {:>6}  {:>24} {:>6}  {:>19} {:>6}  {:>17}  {:>24}\n",

@@ -35,6 +35,8 @@ use crate::joint::{Joint, OuterRadius, Plate};
 use crate::load::FaceLoad;
 use crate::material::Material;
 use crate::reference::{self, Table2Row, TABLE2_HOLE_RADIUS, TABLE2_OUTER_RADIUS};
+use crate::scene::units::INCH;
+use crate::scene::UnitSystem;
 use crate::value::Value;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -116,12 +118,38 @@ pub fn compute(
         .collect()
 }
 
-/// The table as text.
+/// The table as text, in inches (the report's units).
 pub fn text(rows: &[Row]) -> String {
-    let mut s = String::from(
-        "Table 2 recomputed (Gould & Mikic 1970): separation diameter 2R_o, inches\n\
-         304 steel, A = 0.1285 in, C = 2.0 in; ours ± error estimate; report's computed value;\n\
+    text_in(rows, UnitSystem::InPsiLbf)
+}
+
+/// Decimals that show `x` to `digits` significant digits.
+fn decimals(x: f64, digits: i32) -> usize {
+    (digits - 1 - x.abs().log10().floor() as i32).max(0) as usize
+}
+
+/// A length given in inches, in the length unit of `units`, to `digits` significant digits
+/// for a table (inches print as the report wrote them).
+fn length_text(inches: f64, units: UnitSystem, digits: i32) -> String {
+    if units == UnitSystem::InPsiLbf {
+        return format!("{inches}");
+    }
+    let x = inches * (INCH / units.length());
+    format!("{x:.*}", decimals(x, digits))
+}
+
+/// The table as text with every length in the length unit of `units` (percentages are
+/// ratios, the same in every system).
+pub fn text_in(rows: &[Row], units: UnitSystem) -> String {
+    let k = INCH / units.length();
+    let (l, _, _) = units.symbols();
+    let len = |x: f64| length_text(x, units, 4);
+    let mut s = format!(
+        "Table 2 recomputed (Gould & Mikic 1970): separation diameter 2R_o [{l}]\n\
+         304 steel, A = {} {l}, C = {} {l}; ours ± error estimate; report's computed value;\n\
          tests min-max (average); discrepancy |computed - tested|/computed in %, ours [report's]\n\n",
+        len(TABLE2_HOLE_RADIUS),
+        len(TABLE2_OUTER_RADIUS),
     );
     s += &format!(
         "{:>4} {:>11} {:>5}  {:>16} {:>7}  {:>17} {:>17}  {:>13} {:>13}  {}\n",
@@ -136,12 +164,24 @@ pub fn text(rows: &[Row]) -> String {
         "disc. rad %",
         "model"
     );
+    // the tests' ranges to 0.01 in, three digits in other units
+    let range = |m: reference::Measurement| {
+        let d = match units {
+            UnitSystem::InPsiLbf => 2,
+            _ => decimals(m.max * k, 3),
+        };
+        format!(
+            "{:.d$}-{:.d$} ({:.d$})",
+            m.min * k,
+            m.max * k,
+            m.average * k
+        )
+    };
+    // ours and the report's computed 2R_o to four significant digits (0.4740 in)
+    let d4 = decimals(0.5 * k, 4);
     for r in rows {
         let c = &r.report;
-        let rad = c
-            .autoradiographic
-            .map(|m| format!("{:.2}-{:.2} ({:.2})", m.min, m.max, m.average))
-            .unwrap_or_else(|| "-".into());
+        let rad = c.autoradiographic.map(range).unwrap_or_else(|| "-".into());
         let drad = match (
             r.discrepancy_autoradiographic_percent,
             c.discrepancy_autoradiographic_percent,
@@ -150,17 +190,14 @@ pub fn text(rows: &[Row]) -> String {
             _ => "-".into(),
         };
         s += &format!(
-            "{:>4} {:>5}/{:<5} {:>5}  {:>16} {:>7.3}  {:>17} {:>17}  {:>13} {:>13}  {}\n",
+            "{:>4} {:>5}/{:<5} {:>5}  {:>16} {:>7}  {:>17} {:>17}  {:>13} {:>13}  {}\n",
             c.case,
-            c.d1,
-            c.d2,
-            c.two_b,
-            show(r.two_r_o, 4),
-            c.computed,
-            format!(
-                "{:.2}-{:.2} ({:.2})",
-                c.rubbing.min, c.rubbing.max, c.rubbing.average
-            ),
+            len(c.d1),
+            len(c.d2),
+            len(c.two_b),
+            show(r.two_r_o.scaled(k), d4),
+            format!("{:.*}", d4 - 1, c.computed * k),
+            range(c.rubbing),
             rad,
             format!(
                 "{:.1} [{:.1}]",
@@ -173,33 +210,43 @@ pub fn text(rows: &[Row]) -> String {
     s
 }
 
-/// The table as CSV.
+/// The table as CSV in inches (the report's units).
 pub fn csv(rows: &[Row]) -> String {
-    let mut s = String::from(
-        "case,d1,d2,two_b,two_r_o,two_r_o_error,model,report_computed,rub_min,rub_max,rub_avg,\
-         rad_min,rad_max,rad_avg,disc_rub_percent,disc_rad_percent,report_disc_rub_percent,\
-         report_disc_rad_percent\n",
+    csv_in(rows, UnitSystem::InPsiLbf)
+}
+
+/// The table as CSV, every column named with its unit: lengths in the length unit of `units`,
+/// discrepancies in %.
+pub fn csv_in(rows: &[Row], units: UnitSystem) -> String {
+    let k = INCH / units.length();
+    let (l, _, _) = units.symbols();
+    let mut s = format!(
+        "case,d1 [{l}],d2 [{l}],two_b [{l}],two_r_o [{l}],two_r_o_error [{l}],model,\
+         report_computed [{l}],rub_min [{l}],rub_max [{l}],rub_avg [{l}],rad_min [{l}],\
+         rad_max [{l}],rad_avg [{l}],disc_rub_percent [%],disc_rad_percent [%],\
+         report_disc_rub_percent [%],report_disc_rad_percent [%]\n",
     );
     let o = |x: Option<f64>| x.map(|v| format!("{v}")).unwrap_or_default();
+    let ol = |x: Option<f64>| o(x.map(|v| v * k));
     for r in rows {
         let c = &r.report;
         let m = c.autoradiographic;
         s += &format!(
-            "{},{},{},{},{:.6},{:.2e},{},{},{},{},{},{},{},{},{:.4},{},{},{}\n",
+            "{},{},{},{},{},{:.2e},{},{},{},{},{},{},{},{},{:.4},{},{},{}\n",
             c.case,
-            c.d1,
-            c.d2,
-            c.two_b,
-            r.two_r_o.value,
-            r.two_r_o.error,
+            c.d1 * k,
+            c.d2 * k,
+            c.two_b * k,
+            r.two_r_o.value * k,
+            r.two_r_o.error * k,
             r.model,
-            c.computed,
-            c.rubbing.min,
-            c.rubbing.max,
-            c.rubbing.average,
-            o(m.map(|m| m.min)),
-            o(m.map(|m| m.max)),
-            o(m.map(|m| m.average)),
+            c.computed * k,
+            c.rubbing.min * k,
+            c.rubbing.max * k,
+            c.rubbing.average * k,
+            ol(m.map(|m| m.min)),
+            ol(m.map(|m| m.max)),
+            ol(m.map(|m| m.average)),
             r.discrepancy_rubbing_percent,
             o(r.discrepancy_autoradiographic_percent
                 .map(|v| (v * 1e4).round() / 1e4)),

@@ -163,7 +163,11 @@ pub struct TwoPlateSolution {
 /// The problem is solved in units where the thinner plate's thickness, the stiffer plate's
 /// modulus and the largest bearing pressure are 1 (R_o depends only on ratios), so that any
 /// finite input — a modulus of 1e-300 or 1e300, plates a nanometre or a kilometre thick —
-/// meets the same well-scaled matrices; the results are scaled back.
+/// meets the same well-scaled matrices; the results are scaled back. Each scaled number is a
+/// quotient, correctly rounded, so the same joint written in inches, millimetres or metres
+/// reaches the solver as the same bits whenever its ratios are (R_o then agrees to the last
+/// digit: `tests/scene/joint_units.rs`; an ulp of difference in a ratio moves R_o by up to
+/// ~3e-10 relative, the FE's round-off floor).
 pub fn solve(joint: &Joint, params: &TwoPlateParams) -> Result<TwoPlateSolution, ContactError> {
     solve_keeping(joint, params).map(|(s, _)| s)
 }
@@ -221,24 +225,25 @@ pub(crate) fn solve_keeping_with(
     let unit = |m: crate::material::Material| {
         crate::material::Material::new(m.youngs_modulus() / modulus, m.poisson_ratio())
     };
-    // Every length is multiplied by the same factor, so that the load's inner radius stays
-    // bit for bit the hole radius.
-    let inv = 1.0 / length;
+    // Every length is divided by the same length (each ratio correctly rounded: the same joint
+    // in other units meets the same bits, and the load's inner radius stays bit for bit the
+    // hole radius).
+    let nd = |x: f64| x / length;
     let scaled = Joint::new(
-        joint.hole_radius() * inv,
+        nd(joint.hole_radius()),
         match joint.outer_radius() {
             // wider than f64 can hold in these units: infinite to every digit of R_o
-            OuterRadius::Finite(c) if (c * inv).is_finite() => OuterRadius::Finite(c * inv),
+            OuterRadius::Finite(c) if nd(c).is_finite() => OuterRadius::Finite(nd(c)),
             OuterRadius::Finite(_) => OuterRadius::Infinite,
             OuterRadius::Infinite => OuterRadius::Infinite,
         },
-        Plate::new(up.thickness() * inv, unit(up.material())?)?,
-        Plate::new(lo.thickness() * inv, unit(lo.material())?)?,
-        joint.load().rescaled(inv, 1.0 / stress)?,
+        Plate::new(nd(up.thickness()), unit(up.material())?)?,
+        Plate::new(nd(lo.thickness()), unit(lo.material())?)?,
+        joint.load().nondimensional(length, stress)?,
     )?;
     let scaled_params = TwoPlateParams {
         loading: match params.loading {
-            Loading::NutDisplacement(d) => Loading::NutDisplacement(d * inv),
+            Loading::NutDisplacement(d) => Loading::NutDisplacement(nd(d)),
             l => l,
         },
         ..*params

@@ -4,4 +4,5 @@
 mod cli;
 mod map;
 mod reference;
+mod table_units;
 mod tables;

@@ -131,23 +131,32 @@ fn scene_friction_keys_reach_the_model() {
     use boltzone::contact::two_plate::{solve, InterfaceModel, TwoPlateParams};
     let text = scene("interface = \"friction\"\nmu = 0.3\n");
     let s = boltzone::solve(&boltzone::scene::Scene::parse(&text).unwrap()).unwrap();
-    let case = boltzone::reference::table2()
-        .into_iter()
-        .find(|c| c.case == 5)
-        .unwrap();
-    let joint = boltzone::compare::table2::joint(&case).unwrap();
+    // the library call the scene wraps: Table 2 case 5 in SI units (1 in = 0.0254 m, 1 psi =
+    // 4.4482216152605 N / 0.0254² m², the library's steel-304); equal bit for bit
+    use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate};
+    let (inch, psi) = (0.0254, 4.4482216152605 / (0.0254 * 0.0254));
+    let m = boltzone::scene::materials::lookup("steel-304").unwrap();
+    let steel = Material::new(m.youngs_modulus, m.poisson_ratio).unwrap();
+    let joint = Joint::new(
+        0.1285 * inch,
+        OuterRadius::Finite(2.0 * inch),
+        Plate::new(0.124 * inch, steel).unwrap(),
+        Plate::new(0.257 * inch, steel).unwrap(),
+        FaceLoad::uniform(0.1285 * inch, 0.211 * inch, psi).unwrap(),
+    )
+    .unwrap();
     let params = TwoPlateParams {
         interface: InterfaceModel::Friction { mu: 0.3 },
         tolerance: 5e-3,
         ..Default::default()
     };
     let direct = solve(&joint, &params).unwrap();
-    // the scene works in SI and reports in inches: equal up to the unit conversion's round-off
-    assert!(
-        (s.r_o - direct.r_o).abs() <= 1e-12 * direct.r_o,
+    assert_eq!(
+        s.r_o.to_bits(),
+        (direct.r_o / inch).to_bits(),
         "{} vs {}",
         s.r_o,
-        direct.r_o
+        direct.r_o / inch
     );
     for (joint, key) in [
         ("interface = \"friction\"\n", "joint.interface"),

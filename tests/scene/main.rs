@@ -4,6 +4,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod chapter6;
 mod command_units;
 mod errors;
 mod examples;
