@@ -19,7 +19,7 @@
 //!
 //! Builds on: example 04 (the converged R_o it explains).
 
-use boltzone::contact::level::{solve_level, LevelSetup, LevelSolution, Model};
+use boltzone::contact::level::{solve_level, LevelSetup, LevelSolution, MeshedJoint};
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
 use boltzone::contact::LcpParams;
 use boltzone::fem::{ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
@@ -47,7 +47,7 @@ fn report_mesh_solve(a: f64, b: f64, c: f64, d: f64, m: Material, p: f64) -> Lev
         .add_face_pressure(&mesh, &mesh.top(0), 1.0, &load)
         .unwrap();
     let r = mesh.radial_nodes().to_vec();
-    let model = Model {
+    let model = MeshedJoint {
         mesh,
         materials: vec![m],
         upper: 0,

@@ -34,14 +34,14 @@
 //! ```
 
 use super::error::ContactError;
-use super::level::Model;
+use super::level::MeshedJoint;
 use crate::material::Material;
 
 /// The finest level's field in the joint's units (module docs).
 #[derive(Debug, Clone)]
 pub struct TwoPlateField {
     /// Mesh, materials and which plate is upper/lower (lower None: a rigid plane at z = 0).
-    pub model: Model,
+    pub model: MeshedJoint,
     /// Nodal displacements (u, w).
     pub u: Vec<[f64; 2]>,
     /// Whether each interface node (in radial order) is closed.
@@ -51,7 +51,7 @@ pub struct TwoPlateField {
 /// The field in the solver's units and the factors back to the joint's.
 #[derive(Debug, Clone)]
 pub(crate) struct UnitField {
-    pub model: Model,
+    pub model: MeshedJoint,
     pub u: Vec<[f64; 2]>,
     pub closed: Vec<bool>,
     pub length: f64,

@@ -42,7 +42,7 @@
 use super::error::ContactError;
 use super::friction::{solve_friction, FrictionProblem, FrictionZones, PointState};
 use super::lcp::LcpSolution;
-use super::level_types::{LevelSetup, LevelSolution, Model};
+use super::level_types::{LevelSetup, LevelSolution, MeshedJoint};
 use crate::fem::Loads;
 use nalgebra::{DMatrix, DVector};
 
@@ -58,7 +58,7 @@ pub(crate) fn held(setup: &LevelSetup<'_>, mu: Option<f64>) -> Option<usize> {
 /// unknowns of the window, their tangential ones, then the held point's), returning it in the
 /// layout of the welded LCP and the state of every interface node.
 pub(crate) fn solve(
-    model: &Model,
+    model: &MeshedJoint,
     setup: &LevelSetup<'_>,
     mu: f64,
     flexibility: DMatrix<f64>,
@@ -110,7 +110,7 @@ pub(crate) fn plan(
 
 /// The friction record of a solved level (None without friction): states and the slip
 /// u_upper − u_lower at each interface node (open nodes: their relative radial motion).
-pub(crate) fn zones(model: &Model, sol: &LevelSolution, mu: f64) -> Option<FrictionZones> {
+pub(crate) fn zones(model: &MeshedJoint, sol: &LevelSolution, mu: f64) -> Option<FrictionZones> {
     let state = sol.friction.clone()?;
     let slip = (0..sol.radius.len())
         .map(|i| match model.pair(i) {

@@ -32,7 +32,7 @@
 //! bench --bench contact` and example 12 (the report's own mesh).
 //!
 //! ```
-//! use boltzone::contact::level::{solve_level, LevelSetup, Model};
+//! use boltzone::contact::level::{solve_level, LevelSetup, MeshedJoint};
 //! use boltzone::contact::LcpParams;
 //! use boltzone::fem::{ElementKind, Loads, Mesh, PlateSpec, Spacing, Supports};
 //! use boltzone::{FaceLoad, Material};
@@ -43,7 +43,7 @@
 //! let load = FaceLoad::uniform(0.1, 0.2, 1.0)?;
 //! let mut loads = Loads::new(mesh.n_nodes());
 //! loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, &load)?;
-//! let model = Model { mesh, materials: vec![Material::unit(0.3)?], upper: 0, lower: None };
+//! let model = MeshedJoint { mesh, materials: vec![Material::unit(0.3)?], upper: 0, lower: None };
 //! let window: Vec<usize> = (0..37).filter(|&i| i != 2).collect();
 //! let setup = LevelSetup { tied: &[2], window: &window, welded: false, fix_rigid: true,
 //!                          lcp: LcpParams::default(), nut: (0.1, 0.2) };
@@ -57,7 +57,7 @@
 use super::error::ContactError;
 use super::friction_level;
 use super::lcp::{solve_lcp, Lcp};
-pub use super::level_types::{LevelSetup, LevelSolution, Model};
+pub use super::level_types::{LevelSetup, LevelSolution, MeshedJoint};
 use super::tie::Ties;
 use crate::fem::{
     assemble, nested_dissection, Component, DofMap, Factorization, Loads, Mesh, Pattern,
@@ -71,7 +71,7 @@ use std::time::Instant;
 /// Ties, numbers, assembles, factors and solves the level (module docs). `supports` adds the
 /// edge supports and prescribed nut displacements; `loads` are the external nodal forces.
 pub fn solve_level(
-    model: &Model,
+    model: &MeshedJoint,
     setup: &LevelSetup<'_>,
     supports: &Supports,
     loads: &Loads,
@@ -83,7 +83,7 @@ pub fn solve_level(
 /// welded): every window point gets a tangential unknown, and so does the first tied point
 /// when it is held by supports (module `friction_level`).
 pub(crate) fn solve_level_mu(
-    model: &Model,
+    model: &MeshedJoint,
     setup: &LevelSetup<'_>,
     mu: Option<f64>,
     supports: &Supports,
@@ -249,7 +249,7 @@ pub(crate) fn solve_level_mu(
 /// The unit pair force of component `c` at radial line `i` in tied unknowns: +1 on the upper
 /// node, −1 on the lower one (free equations only).
 fn pair_vector(
-    model: &Model,
+    model: &MeshedJoint,
     dofs: &DofMap,
     ties: &Ties,
     i: usize,
@@ -284,7 +284,7 @@ fn face_weights(
 /// Internal forces K u (radial, axial) of the upper plate at its interface nodes `line` (only
 /// the elements touching the line are visited): the contact forces on the upper plate.
 fn line_forces(
-    model: &Model,
+    model: &MeshedJoint,
     u: &[[f64; 2]],
     line: &[usize],
 ) -> Result<Vec<[f64; 2]>, ContactError> {

@@ -2,7 +2,7 @@
 //! returns: the meshed joint, what the level needs besides the mesh, and the interface state
 //! after the solve. They live apart from the solver so that the friction step
 //! ([`super::friction_level`]) reads them without importing the solver that calls it. Public
-//! paths stay `boltzone::contact::level::{Model, LevelSetup, LevelSolution}`.
+//! paths stay `boltzone::contact::level::{MeshedJoint, LevelSetup, LevelSolution}`.
 //!
 //! # Accuracy
 //!
@@ -21,7 +21,7 @@ use std::time::Duration;
 
 /// The meshed joint: a fem mesh of one plate (on a rigid plane) or two plates, and which is which.
 #[derive(Debug, Clone)]
-pub struct Model {
+pub struct MeshedJoint {
     /// The mesh (plates stacked bottom to top).
     pub mesh: Mesh,
     /// Materials, indexed by the plates' material indices.
@@ -32,7 +32,7 @@ pub struct Model {
     pub lower: Option<usize>,
 }
 
-impl Model {
+impl MeshedJoint {
     /// Interface node of the upper plate at radial line `i` and its partner below (if any).
     pub fn pair(&self, i: usize) -> (usize, Option<usize>) {
         let low = self.lower.map(|l| self.mesh.top(l)[i]);

@@ -31,7 +31,7 @@
 
 use super::error::ContactError;
 use super::friction_level;
-use super::level::{solve_level_mu, LevelSetup, LevelSolution, Model};
+use super::level::{solve_level_mu, LevelSetup, LevelSolution, MeshedJoint};
 use super::params::{EdgeSupport, Loading, TwoPlateParams};
 use super::temperature::ScaledTemperature;
 use crate::fem::spacing::level_grading;
@@ -76,7 +76,7 @@ pub(crate) fn mesh(
     kind: ElementKind,
     h: f64,
     r_est: Option<f64>,
-) -> Result<Model, ContactError> {
+) -> Result<MeshedJoint, ContactError> {
     // growth ratios 1.25 radially, 1.5 axially (the fields vary more slowly across the
     // plates near R_o), shrinking on the finest levels ([`level_grading`])
     let (q, q_axial, _) = level_grading(h, g.d[0].min(g.d[1]), 1.25, 1.5);
@@ -101,7 +101,7 @@ pub(crate) fn mesh(
                 material: 1,
             },
         ];
-        Model {
+        MeshedJoint {
             mesh: Mesh::structured(kind, &r, &plates)?,
             materials: vec![joint.lower().material(), upper_mat],
             upper: 1,
@@ -112,7 +112,7 @@ pub(crate) fn mesh(
             z: zs(0.0, g.d[0])?,
             material: 0,
         }];
-        Model {
+        MeshedJoint {
             mesh: Mesh::structured(kind, &r, &plates)?,
             materials: vec![upper_mat],
             upper: 0,
@@ -125,7 +125,7 @@ pub(crate) fn mesh(
 /// Solves one level, choosing tied and window points from the previous level and widening the
 /// window or untying points when the solution shows the choice was wrong.
 pub(crate) fn solve_adaptive(
-    model: &Model,
+    model: &MeshedJoint,
     joint: &Joint,
     g: &MeshLayout,
     params: &TwoPlateParams,
@@ -284,7 +284,7 @@ fn centroid(load: &crate::load::FaceLoad) -> f64 {
 
 /// Edge supports, prescribed nut displacements and face loads.
 fn boundary(
-    model: &Model,
+    model: &MeshedJoint,
     joint: &Joint,
     g: &MeshLayout,
     params: &TwoPlateParams,

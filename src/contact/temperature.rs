@@ -19,7 +19,7 @@
 //! One pass over the mesh nodes per level; the thermal joint is timed by example 20.
 
 use super::error::ContactError;
-use super::level_types::Model;
+use super::level_types::MeshedJoint;
 use crate::error::InputError;
 pub use crate::fem::plate_temperature::{PlateTemperature, TemperatureGrid};
 use crate::fem::thermal::{Thermal, ThermalMaterial};
@@ -90,7 +90,7 @@ impl<'a> ScaledTemperature<'a> {
     /// Sets the model's materials (one per element, at its temperature) and returns the
     /// thermal forces. The model is one of `refine::mesh`: plate p has material p, the upper
     /// plate lies above z = 0 and the lower one below.
-    pub(crate) fn apply(&self, model: &mut Model) -> Result<Loads, ContactError> {
+    pub(crate) fn apply(&self, model: &mut MeshedJoint) -> Result<Loads, ContactError> {
         let mesh = &model.mesh;
         let mut temperature = vec![0.0; mesh.n_nodes()];
         let plates = [(model.upper, 0usize)]

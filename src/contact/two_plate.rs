@@ -54,7 +54,7 @@
 use super::error::ContactError;
 pub use super::field::TwoPlateField;
 use super::field::UnitField;
-use super::level::{LevelSolution, Model};
+use super::level::{LevelSolution, MeshedJoint};
 pub use super::params::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use super::refine::{mesh, solve_adaptive, MeshLayout, PreviousLevel};
 use super::separation::{estimate, NodalInterface, SeparationEstimate};
@@ -306,7 +306,7 @@ const C_MAX_OVER_D: f64 = 500.0;
 
 /// One solved mesh level and its R_o.
 struct Level {
-    model: Model,
+    model: MeshedJoint,
     sol: LevelSolution,
     est: SeparationEstimate,
     record: TwoPlateLevel,
@@ -419,7 +419,7 @@ fn solve_unit(
     joint: &Joint,
     params: &TwoPlateParams,
     thermal: Option<&ScaledTemperature>,
-) -> Result<(TwoPlateSolution, (Model, LevelSolution)), ContactError> {
+) -> Result<(TwoPlateSolution, (MeshedJoint, LevelSolution)), ContactError> {
     let start = Instant::now();
     let load = joint.load();
     let (a, b) = (joint.hole_radius(), load.outer());
@@ -449,7 +449,7 @@ fn solve_unit(
     let mut r_o_error = f64::INFINITY;
     let mut converged = false;
     let mut rate = None;
-    let mut last: Option<(Model, LevelSolution)> = None;
+    let mut last: Option<(MeshedJoint, LevelSolution)> = None;
     for k in 0..params.max_levels {
         let h = h0 / 2f64.powi(k as i32);
         let Level {
