@@ -23,7 +23,7 @@
 
 use super::pairs::{case, run};
 use super::{
-    value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Marker, MarkerSeries,
+    value, CurveKind, DataPoint, DataSeries, FigCurve, FigureData, FigureError, FiguresParams,
     Source,
 };
 use crate::reference;
@@ -37,7 +37,7 @@ pub fn fig28(params: &FiguresParams) -> Result<FigureData, FigureError> {
         .map(|r| run("fig28", &case(r.case), params.tolerance).map(|(s, _)| s))
         .collect::<Result<Vec<_>, _>>()?;
     let two: Vec<f64> = ours.iter().map(|s| 2.0 * s.r_o).collect();
-    let bar = |x: f64, m: &reference::Measurement| Marker {
+    let bar = |x: f64, m: &reference::Measurement| DataPoint {
         x,
         y: m.average,
         x_bar: (x, x),
@@ -47,7 +47,7 @@ pub fn fig28(params: &FiguresParams) -> Result<FigureData, FigureError> {
     let hi = 1.3;
     let computed = ours
         .iter()
-        .map(|s| Marker {
+        .map(|s| DataPoint {
             x: 2.0 * s.r_o,
             y: 2.0 * s.r_o,
             x_bar: (2.0 * (s.r_o - s.r_o_error), 2.0 * (s.r_o + s.r_o_error)),
@@ -73,21 +73,21 @@ pub fn fig28(params: &FiguresParams) -> Result<FigureData, FigureError> {
         y_label: "2R_o [in]".into(),
         curves: vec![line],
         points: vec![
-            MarkerSeries {
+            DataSeries {
                 label: "this program (bars: error estimate)".into(),
                 source: Source::Computed,
                 points: computed,
             },
-            MarkerSeries {
+            DataSeries {
                 label: "report: computed 2R_o (Table 2)".into(),
                 source: Source::Report,
                 points: rows
                     .iter()
                     .zip(&two)
-                    .map(|(r, x)| Marker::at(*x, r.computed))
+                    .map(|(r, x)| DataPoint::at(*x, r.computed))
                     .collect(),
             },
-            MarkerSeries {
+            DataSeries {
                 label: "Table 2: rubbing tests".into(),
                 source: Source::Measured,
                 points: rows
@@ -96,7 +96,7 @@ pub fn fig28(params: &FiguresParams) -> Result<FigureData, FigureError> {
                     .map(|(r, x)| bar(*x, &r.rubbing))
                     .collect(),
             },
-            MarkerSeries {
+            DataSeries {
                 label: "Table 2: autoradiographic tests".into(),
                 source: Source::Measured,
                 points: rows

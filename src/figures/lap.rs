@@ -30,7 +30,7 @@
 //! ```
 
 use super::{
-    value, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Marker, MarkerSeries,
+    value, CurveKind, DataPoint, DataSeries, FigCurve, FigureData, FigureError, FiguresParams,
     Source,
 };
 use crate::contact::two_plate::{solve, TwoPlateParams};
@@ -157,12 +157,12 @@ pub fn fig29(params: &FiguresParams) -> Result<FigureData, FigureError> {
                 (side - 1.5 * EXAGGERATION * d, side + 1.5 * EXAGGERATION * d),
             ),
         ],
-        points: vec![MarkerSeries {
+        points: vec![DataSeries {
             label: "report (Ch. V): outer radii of the contact rings".into(),
             source: Source::Report,
             points: reference::chapter5_interface()
                 .iter()
-                .map(|r| Marker::at(r.r_outer, 0.0))
+                .map(|r| DataPoint::at(r.r_outer, 0.0))
                 .collect(),
         }],
         values: vec![],

@@ -4,7 +4,7 @@
 //! Each figure is a [`FigureData`]: the report's caption as its title, curves computed from
 //! the captions' cases (Chapter IV) by this crate's converged solvers, each curve with the
 //! separation radius R_o it implies (value ± error estimate), and the report's printed values
-//! beside them as [`MarkerSeries`] (Tables 1 and 2, the Chapter IV text). Sign convention:
+//! beside them as [`DataSeries`] (Tables 1 and 2, the Chapter IV text). Sign convention:
 //! compression negative for σ_z; interface pressure p ≥ 0 (compression positive), as the report
 //! plots it; lengths in inches, stresses in psi.
 //!
@@ -167,9 +167,9 @@ pub enum Source {
     Computed,
 }
 
-/// One marker: a point with its error bars or range (lo ≤ value ≤ hi in each direction).
+/// One data point (a report value, a measurement or a computed point) with its error bars or range (lo ≤ value ≤ hi in each direction).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Marker {
+pub struct DataPoint {
     /// Abscissa.
     pub x: f64,
     /// Ordinate.
@@ -180,7 +180,7 @@ pub struct Marker {
     pub y_bar: (f64, f64),
 }
 
-impl Marker {
+impl DataPoint {
     /// A point without bars.
     pub fn at(x: f64, y: f64) -> Self {
         Self {
@@ -202,13 +202,13 @@ impl Marker {
 
 /// Points of one kind with a legend entry.
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct MarkerSeries {
+pub struct DataSeries {
     /// Legend text.
     pub label: String,
     /// Where the values come from.
     pub source: Source,
     /// The points.
-    pub points: Vec<Marker>,
+    pub points: Vec<DataPoint>,
 }
 
 /// A figure: caption, axes, computed curves and the report's values.
@@ -227,7 +227,7 @@ pub struct FigureData {
     /// The computed curves.
     pub curves: Vec<FigCurve>,
     /// The report's values and measurements (and computed points, e.g. Fig. 28).
-    pub points: Vec<MarkerSeries>,
+    pub points: Vec<DataSeries>,
     /// Computed values shown as points rather than curves (Fig. 28's 2R_o), with their errors.
     pub values: Vec<Value>,
     /// What the report prints for this figure (the source of its markers), or, starting with
@@ -318,9 +318,9 @@ fn short(x: f64) -> f64 {
 /// Moves the series of `points` that are ranges (measured, or the report's r/A ranges) off the
 /// axis, one level each below it (−6 %, −12 %, … of `scale`), so that their bars hide neither
 /// each other nor the curves' zeros and the report's points.
-fn stagger(points: &mut [MarkerSeries], scale: f64) {
+fn stagger(points: &mut [DataSeries], scale: f64) {
     let mut level = 0.0;
-    let is_range = |s: &MarkerSeries| s.points.iter().any(|p| p.x_bar.0 < p.x_bar.1);
+    let is_range = |s: &DataSeries| s.points.iter().any(|p| p.x_bar.0 < p.x_bar.1);
     for s in points.iter_mut().filter(|s| is_range(s)) {
         level += 0.06 * scale;
         for p in &mut s.points {

@@ -44,8 +44,8 @@
 //! ```
 
 use super::{
-    clip, stagger, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Marker,
-    MarkerSeries, Source,
+    clip, stagger, CurveKind, DataPoint, DataSeries, FigCurve, FigureData, FigureError,
+    FiguresParams, Source,
 };
 use crate::compare::table2::joint as table2_joint;
 use crate::contact::two_plate::{
@@ -252,23 +252,23 @@ fn single_compression(figure: &str, c: &Case, tolerance: f64) -> Result<FigCurve
 }
 
 /// Table 2's values for case `r` as R_o (half of the printed diameters) on the axis.
-fn table2_points(r: &Table2Row) -> Vec<MarkerSeries> {
+fn table2_points(r: &Table2Row) -> Vec<DataSeries> {
     let range =
-        |m: &reference::Measurement| Marker::range(m.average / 2.0, m.min / 2.0, m.max / 2.0);
+        |m: &reference::Measurement| DataPoint::range(m.average / 2.0, m.min / 2.0, m.max / 2.0);
     let mut out = vec![
-        MarkerSeries {
+        DataSeries {
             label: format!("report, Table 2 case {}: computed R_o", r.case),
             source: Source::Report,
-            points: vec![Marker::at(r.computed / 2.0, 0.0)],
+            points: vec![DataPoint::at(r.computed / 2.0, 0.0)],
         },
-        MarkerSeries {
+        DataSeries {
             label: "Table 2: rubbing test R_o (min–avg–max)".into(),
             source: Source::Measured,
             points: vec![range(&r.rubbing)],
         },
     ];
     if let Some(m) = &r.autoradiographic {
-        out.push(MarkerSeries {
+        out.push(DataSeries {
             label: "Table 2: autoradiographic R_o (min–avg–max)".into(),
             source: Source::Measured,
             points: vec![range(m)],
@@ -286,33 +286,33 @@ fn text(key: &str) -> Result<f64, FigureError> {
 
 /// The Chapter IV text on the 1/4 in pair's load variants (Figs. 18, 19, 21): two-plate r/A
 /// 2.73–2.93, single plate 3.5.
-fn variant_points() -> Result<Vec<MarkerSeries>, FigureError> {
+fn variant_points() -> Result<Vec<DataSeries>, FigureError> {
     let (lo, hi) = (
         text("variants_two_r_over_a_min")?,
         text("variants_two_r_over_a_max")?,
     );
     let single = text("single_r_over_a")?;
     Ok(vec![
-        MarkerSeries {
+        DataSeries {
             label: format!("report (Ch. IV): two-plate variants, r/A = {lo}–{hi}"),
             source: Source::Report,
-            points: vec![Marker::range((lo + hi) / 2.0 * A, lo * A, hi * A)],
+            points: vec![DataPoint::range((lo + hi) / 2.0 * A, lo * A, hi * A)],
         },
-        MarkerSeries {
+        DataSeries {
             label: format!("report (Ch. IV): single plate, r/A = {single}"),
             source: Source::Report,
-            points: vec![Marker::at(single * A, 0.0)],
+            points: vec![DataPoint::at(single * A, 0.0)],
         },
     ])
 }
 
 /// Fig. 22: the report's 50 µin under each nut (Fig. 21's loading), as a bar A..B at −50 µin.
-fn nut_points(b: f64) -> Result<Vec<MarkerSeries>, FigureError> {
+fn nut_points(b: f64) -> Result<Vec<DataSeries>, FigureError> {
     let w = -text("nut_displacement")?;
-    Ok(vec![MarkerSeries {
+    Ok(vec![DataSeries {
         label: format!("report (Ch. IV): {} µin under each nut (A ≤ r ≤ B)", -w),
         source: Source::Report,
-        points: vec![Marker {
+        points: vec![DataPoint {
             x: (A + b) / 2.0,
             y: w,
             x_bar: (A, b),
@@ -323,22 +323,22 @@ fn nut_points(b: f64) -> Result<Vec<MarkerSeries>, FigureError> {
 
 /// Fig. 25: Chapter VI's gap of the 1/4 in pair (98.6 µin at r = 2 in, 3 µin 1/32 in beyond
 /// its R_o = 0.35 in).
-fn gap_points() -> Result<Vec<MarkerSeries>, FigureError> {
-    let at = |key: &str| -> Result<Marker, FigureError> {
+fn gap_points() -> Result<Vec<DataSeries>, FigureError> {
+    let at = |key: &str| -> Result<DataPoint, FigureError> {
         let t = reference::text_value(key)
             .ok_or_else(|| FigureError::Unknown(format!("reference/text_values.csv key {key}")))?;
-        Ok(Marker::at(t.r.unwrap_or(0.0), t.value))
+        Ok(DataPoint::at(t.r.unwrap_or(0.0), t.value))
     };
     Ok(vec![
-        MarkerSeries {
+        DataSeries {
             label: "report (Ch. VI): gap of the 1/4 in pair".into(),
             source: Source::Report,
             points: vec![at("gap_near_separation")?, at("gap_outer_radius")?],
         },
-        MarkerSeries {
+        DataSeries {
             label: "report (Ch. VI): R_o of the 1/4 in pair".into(),
             source: Source::Report,
-            points: vec![Marker::at(text("separation_radius_quarter")?, 0.0)],
+            points: vec![DataPoint::at(text("separation_radius_quarter")?, 0.0)],
         },
     ])
 }

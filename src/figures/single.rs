@@ -30,8 +30,8 @@
 //! ```
 
 use super::{
-    clip, short, CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Marker, MarkerSeries,
-    Source,
+    clip, short, CurveKind, DataPoint, DataSeries, FigCurve, FigureData, FigureError,
+    FiguresParams, Source,
 };
 use crate::compare::Geometry;
 use crate::contact::two_plate::{solve, TwoPlateParams};
@@ -91,7 +91,7 @@ pub fn table1_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Fig
         .collect();
     let report = |r: &reference::Table1Row| {
         let a = reference::TABLE1_HOLE_RADIUS;
-        Marker::at(a * if two { r.two } else { r.single }, 0.0)
+        DataPoint::at(a * if two { r.two } else { r.single }, 0.0)
     };
     let which = if two { "two-plate" } else { "single-plate" };
     let (title, y_label) = if two {
@@ -127,7 +127,7 @@ pub fn table1_figure(id: &str, params: &FiguresParams) -> Result<FigureData, Fig
         x_label: "r [in]".into(),
         y_label: y_label.into(),
         curves,
-        points: vec![MarkerSeries {
+        points: vec![DataSeries {
             label: format!("report, Table 1: {which} R_o"),
             source: Source::Report,
             points: rows.iter().map(|(_, r)| report(r)).collect(),

@@ -31,7 +31,7 @@
 //! ```
 
 use super::{
-    CurveKind, FigCurve, FigureData, FigureError, FiguresParams, Marker, MarkerSeries, Source,
+    CurveKind, DataPoint, DataSeries, FigCurve, FigureData, FigureError, FiguresParams, Source,
 };
 use crate::hankel::{MidplaneCurve, SeparationParams, Slab};
 use crate::load::FaceLoad;
@@ -65,7 +65,7 @@ pub fn slab_figure(params: &FiguresParams) -> Result<FigureData, FigureError> {
             .map(|i| r_end * i as f64 / SAMPLES as f64)
             .collect();
         let y = x.iter().map(|r| curve.eval(*r).value).collect();
-        zeros.push(Marker {
+        zeros.push(DataPoint {
             x: sep.r_o,
             y: 0.0,
             x_bar: (sep.r_o - sep.r_o_error, sep.r_o + sep.r_o_error),
@@ -97,7 +97,7 @@ pub fn slab_figure(params: &FiguresParams) -> Result<FigureData, FigureError> {
         x_label: "r/D".into(),
         y_label: "σz/P".into(),
         curves,
-        points: vec![MarkerSeries {
+        points: vec![DataSeries {
             label: "computed R_o (first upward zero)".into(),
             source: Source::Computed,
             points: zeros,
