@@ -338,11 +338,16 @@ fn check_model(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
     };
     let method = [k("method")];
     match scene.model {
-        Model::TwoPlate if scene.method == Method::Hankel => Err(c.fail(
-            &method,
-            "\"hankel\"",
-            "the two-plate model has no Hankel route here: use \"fem\" or \"auto\"",
-        )),
+        Model::TwoPlate if scene.method == Method::Hankel => {
+            match super::two_hankel::blocker(scene) {
+                Some((key, reason)) => {
+                    let path: Vec<Seg> = key.split('.').map(k).collect();
+                    let text = format!("{reason}; use method \"fem\" or \"auto\"");
+                    Err(c.fail(&path, "with method \"hankel\"", &text))
+                }
+                None => Ok(()),
+            }
+        }
         Model::Slab if scene.method == Method::Fem => Err(c.fail(
             &method,
             "\"fem\"",

@@ -16,6 +16,7 @@
 use crate::contact::ContactError;
 use crate::error::InputError;
 use crate::fem::FemError;
+use crate::hankel::receding::RecedingError;
 use crate::hankel::separation::SeparationError;
 
 /// Why a scene could not be read or answered.
@@ -58,6 +59,9 @@ pub enum SceneError {
     /// A Hankel route failed.
     #[error(transparent)]
     Separation(#[from] SeparationError),
+    /// The semi-analytic two-plate route failed.
+    #[error(transparent)]
+    Receding(#[from] RecedingError),
     /// A library constructor rejected a value.
     #[error(transparent)]
     Input(#[from] InputError),
@@ -73,6 +77,7 @@ impl SceneError {
             Self::Contact(e) => e.is_input(),
             Self::Fem(e) => e.is_input(),
             Self::Separation(e) => e.is_input(),
+            Self::Receding(e) => e.is_input(),
         }
     }
 

@@ -56,6 +56,7 @@ pub mod sweep;
 pub mod temperature;
 mod temperature_spec;
 pub mod temperature_table;
+pub mod two_hankel;
 pub mod units;
 
 pub use error::SceneError;

@@ -209,6 +209,14 @@ pub fn hankel_params(tolerance: f64) -> (SeparationParams, HoleParams) {
 /// What `method` resolves to for `scene`, and why.
 pub fn pick(scene: &Scene) -> (Method, &'static str) {
     match (scene.model, scene.method) {
+        (Model::TwoPlate, Method::Hankel) => (
+            Method::Hankel,
+            "semi-analytic two plates with the hole (asked): R_o and the interface pressure",
+        ),
+        (Model::TwoPlate, Method::Auto) if super::two_hankel::auto_takes(scene) => (
+            Method::Hankel,
+            "semi-analytic two plates with the hole: below a tolerance of 1e-5 it is the cheaper route",
+        ),
         (Model::TwoPlate, _) => (
             Method::Fem,
             "finite elements: the two-plate model's route; the interface curve comes from the same levels",
@@ -278,6 +286,11 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
     let t1 = Instant::now();
     let mut heat_step = None;
     let other = match (scene.model, method) {
+        (Model::TwoPlate, Method::Hankel) => {
+            let scale = (l, scene.units.stress());
+            super::two_hankel::solve(scene, &joint, scale, &mut out)?;
+            Some("finite elements")
+        }
         (Model::TwoPlate, _) => {
             let params = two_plate_params(scene, nut);
             let s = match (&scene.temperature, &scene.outputs.field) {

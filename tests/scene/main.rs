@@ -15,6 +15,7 @@ mod heat;
 mod joint_units;
 mod temperature;
 mod thermal_single;
+mod two_hankel;
 mod units;
 
 use std::path::PathBuf;
