@@ -34,11 +34,13 @@
 //!    policy, the one deck error type [`fortran::DeckError`]), [`error`] (typed input
 //!    errors), [`reference`](mod@reference) (the report's Tables 1 and 2 and the Chapter V
 //!    table, as data), [`fsutil`] (files written whole or not at all), [`value`] (the one
-//!    value-with-error type [`Value`]: value, error, converged).
+//!    value-with-error type [`Value`]: value, error, converged), [`units`] (the three unit
+//!    systems and their exact factors).
 //!
 //! Sign convention throughout: compression negative (σ_z = −p under a face pressure p > 0); z is
 //! measured from the midplane (single plate) or the interface (joint); lengths and stresses in
-//! any consistent units (the command-line tool uses inches and psi).
+//! any consistent units (the command-line tool uses inches and psi unless `--units` says
+//! otherwise; scenes are solved in SI).
 //!
 //! # Accuracy
 //!
@@ -76,6 +78,7 @@ pub mod plot;
 pub mod reference;
 pub mod rules;
 pub mod scene;
+pub mod units;
 pub mod value;
 
 pub use error::InputError;

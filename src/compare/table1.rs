@@ -22,8 +22,8 @@
 
 use super::{compare_all, show, CompareError, CompareParams, Comparison, Geometry};
 use crate::reference::{self, Table1Row};
-use crate::scene::units::INCH;
-use crate::scene::UnitSystem;
+use crate::units::UnitSystem;
+use crate::units::INCH;
 use serde::Serialize;
 
 /// One row: ours and the report's.

@@ -43,7 +43,6 @@ mod error;
 pub mod field;
 pub mod friction;
 mod friction_level;
-pub mod heat_coupled;
 pub mod lcp;
 pub mod level;
 mod level_types;

@@ -66,6 +66,7 @@ pub mod ordering;
 pub mod plate_temperature;
 pub mod recover;
 pub mod single;
+pub mod single_temperature;
 pub mod single_thermal;
 pub mod solve;
 pub mod spacing;

@@ -75,7 +75,7 @@ use super::loads::Loads;
 use super::mesh::{Mesh, PlateSpec};
 use super::ordering::nested_dissection;
 use super::recover::{line_traction, reactions};
-use super::single_thermal::SingleTemperature;
+use super::single_temperature::SingleTemperature;
 use super::solve::{Factorization, SolveParams};
 use super::spacing::{level_grading_below, Spacing, GRADING_FIXED_DOWN_TO};
 use super::thermal::Thermal;
@@ -367,7 +367,16 @@ pub fn solve_half_plate_with(
     }
     let (materials, thermal) = match temperature {
         Some(t) => {
-            let (m, th) = t.apply(&mut mesh, plate.half_thickness(), loading, &mut loads)?;
+            if loading == FaceCondition::UniformDisplacement {
+                return Err(InputError::Parameter {
+                    field: "face loading with temperatures",
+                    value: t.reference,
+                    reason:
+                        "a rigid-nut displacement has no stress scale: load the faces by a pressure",
+                }
+                .into());
+            }
+            let (m, th) = t.apply(&mut mesh, plate.half_thickness(), &mut loads)?;
             (m, Some(th))
         }
         None => (vec![plate.material()], None),

@@ -56,76 +56,9 @@
 
 use super::error::FemError;
 pub use super::plate_temperature::PlateTemperature;
-use super::single::{
-    check_tolerance, study, FaceCondition, HalfPlate, SingleParams, SingleSolution,
-};
-use super::thermal::{Thermal, ThermalMaterial};
-use super::{Loads, Mesh};
-use crate::error::InputError;
+use super::single::{check_tolerance, study, HalfPlate, SingleParams, SingleSolution};
+pub use super::single_temperature::SingleTemperature;
 use crate::joint::SinglePlate;
-use crate::material::Material;
-
-/// The single plate's temperature (mirror-symmetric about the midplane) and thermal table.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SingleTemperature {
-    /// Stress-free temperature T_ref.
-    pub reference: f64,
-    /// Temperature by radius and depth s below the midplane.
-    pub plate: PlateTemperature,
-    /// E(T), ν(T), α(T) (used in place of the plate's material).
-    pub material: ThermalMaterial,
-}
-
-impl SingleTemperature {
-    /// The plate's own E and ν with a constant expansion coefficient `alpha`.
-    pub fn constant(
-        plate: &SinglePlate,
-        reference: f64,
-        temperature: PlateTemperature,
-        alpha: f64,
-    ) -> Result<Self, InputError> {
-        crate::error::finite("reference temperature", reference)?;
-        Ok(Self {
-            reference,
-            plate: temperature,
-            material: ThermalMaterial::constant(plate.material(), alpha)?,
-        })
-    }
-
-    /// The nodal temperatures of the half plate `mesh` (0 ≤ z ≤ `d`) as a [`Thermal`] field.
-    pub fn field(&self, mesh: &Mesh, d: f64) -> Result<Thermal, FemError> {
-        let t = mesh
-            .nodes()
-            .iter()
-            .map(|x| self.plate.at(x[0], x[1], d))
-            .collect();
-        Thermal::new(mesh, vec![self.material.clone()], t, self.reference)
-    }
-
-    /// Gives each element of the half plate `mesh` its material at its temperature, adds the
-    /// thermal forces to `loads`, and returns the element materials and the field.
-    pub(crate) fn apply(
-        &self,
-        mesh: &mut Mesh,
-        d: f64,
-        loading: FaceCondition,
-        loads: &mut Loads,
-    ) -> Result<(Vec<Material>, Thermal), FemError> {
-        if loading == FaceCondition::UniformDisplacement {
-            return Err(InputError::Parameter {
-                field: "face loading with temperatures",
-                value: self.reference,
-                reason:
-                    "a rigid-nut displacement has no stress scale: load the faces by a pressure",
-            }
-            .into());
-        }
-        let th = self.field(mesh, d)?;
-        let materials = th.apply(mesh)?;
-        th.add_loads(mesh, &materials, loads)?;
-        Ok((materials, th))
-    }
-}
 
 /// R_o of `plate` with the temperatures `t`, refined as [`super::single::solve`] refines.
 pub fn solve_with_temperature(

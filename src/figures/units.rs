@@ -32,8 +32,8 @@
 //! ```
 
 use super::FigureData;
-use crate::scene::units::INCH;
-use crate::scene::UnitSystem;
+use crate::units::UnitSystem;
+use crate::units::INCH;
 
 /// Factor and new symbol of the unit `symbol` (`in`, `µin`, `psi`, `lb`) in `units`.
 fn unit(symbol: &str, units: UnitSystem) -> Option<(f64, String)> {

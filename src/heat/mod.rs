@@ -14,6 +14,8 @@
 //! - [`lap`]: Chapter V's lap joint as such a network, with the geometry it assumes;
 //! - [`conduction`]: steady axisymmetric conduction on the [`crate::fem`] meshes, plates joined
 //!   by an interface conductance h(r); [`zone`]: a joint's contact-zone resistance by it.
+//! - [`coupled`]: the two-plate joint under the temperature its own heat flow sets (contact →
+//!   h_c(p) → conduction → thermal contact, to a fixed point: a scene's `from_heat`).
 //!
 //! Sign convention: interface pressure p > 0 in compression (σ_z = −p); heat flows toward a node
 //! are positive.
@@ -35,6 +37,7 @@
 
 pub mod conduction;
 pub mod correlation;
+pub mod coupled;
 pub mod deck;
 pub mod joint;
 pub mod lap;

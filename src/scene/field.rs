@@ -34,14 +34,16 @@
 //! assert!((g.points[0][0] - 1.0).abs() < 1e-15 && (g.scalars[0].1[0] + 1.0).abs() < 1e-15);
 //! ```
 
+use super::error::SceneError;
 use crate::contact::field::TwoPlateField;
-use crate::contact::two_plate::TwoPlateSolution;
+use crate::contact::thermal::JointTemperature;
+use crate::contact::two_plate::{TwoPlateParams, TwoPlateSolution};
 use crate::fem::single::HalfPlate;
 use crate::fem::thermal::Thermal;
 use crate::fem::FemError;
 use crate::hankel::Slab;
 use crate::io::vtu::Grid;
-use crate::joint::SinglePlate;
+use crate::joint::{Joint, SinglePlate};
 use crate::material::Material;
 use crate::numerics::quadrature::QuadParams;
 
@@ -193,4 +195,20 @@ pub fn midplane_scaled(mut m: MidplaneStress, length: f64, stress: f64) -> Midpl
         e.iter_mut().for_each(|s| *s /= stress);
     }
     m
+}
+
+/// The two-plate joint with the temperatures `jt` (SI units) and its finest level's field
+/// (thermal stresses, nodal temperature) written to `field` in the scene's units
+/// `(length, stress)`.
+pub fn two_plate_thermal_grid(
+    joint: &Joint,
+    params: &TwoPlateParams,
+    jt: &JointTemperature,
+    (length, stress): (f64, f64),
+    field: &mut Option<Grid>,
+) -> Result<TwoPlateSolution, SceneError> {
+    let (s, f, th) = crate::contact::thermal::solve_field_with_temperature(joint, params, jt)?;
+    let (grid, _) = two_plate_grid_with(&s, &f, Some(&th))?;
+    *field = Some(scaled(grid, length, stress));
+    Ok(s)
 }

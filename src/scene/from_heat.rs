@@ -1,5 +1,5 @@
 //! The scene's `[temperature] from_heat = true`: the plates' temperatures from the joint's own
-//! heat flow ([`crate::contact::heat_coupled`]) — the loaded faces held at `faces`, the
+//! heat flow ([`crate::heat::coupled`]) — the loaded faces held at `faces`, the
 //! interface conductance h_c(p(r)) of the `[heat]` table, iterated with the contact solve to a
 //! fixed point of R_o.
 //!
@@ -22,7 +22,7 @@
 //!
 //! # Accuracy
 //!
-//! Those of [`crate::contact::heat_coupled`]; `tests/scene/from_heat.rs` checks that the example
+//! Those of [`crate::heat::coupled`]; `tests/scene/from_heat.rs` checks that the example
 //! scene `examples/scenes/from_heat.toml` equals the library call bit for bit and that bad tables
 //! exit 2 naming the key and the line.
 //!
@@ -41,13 +41,13 @@
 
 use super::error::SceneError;
 use super::file::{Model, Scene};
-use super::run::Solution;
-use super::temperature::fail;
+use super::solution::Solution;
+use super::temperature_keys::fail;
 use super::temperature_spec::TemperatureSpec;
 use super::temperature_table::materials;
 use super::units::UnitSystem;
-use crate::contact::heat_coupled::{solve_from_heat, HeatCoupledSolution, HeatCoupling};
 use crate::contact::two_plate::TwoPlateParams;
+use crate::heat::coupled::{solve_from_heat, HeatCoupledSolution, HeatCoupling};
 use crate::joint::Joint;
 
 /// Most thermal passes before the answer is flagged not converged.
@@ -152,8 +152,13 @@ pub(super) fn solve(
         // the last pass again, keeping its finest level (the same inputs: the same solution)
         let units = (scene.units.length(), scene.units.stress());
         let converged = s.solution.converged;
-        s.solution =
-            super::temperature::joint_field(joint, params, &s.temperature, units, &mut out.field)?;
+        s.solution = super::field::two_plate_thermal_grid(
+            joint,
+            params,
+            &s.temperature,
+            units,
+            &mut out.field,
+        )?;
         s.solution.converged &= converged;
     }
     out.heat_passes = Some(s.passes);

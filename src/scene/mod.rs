@@ -52,12 +52,14 @@ pub mod from_heat;
 pub mod heat;
 pub mod materials;
 pub mod run;
+pub mod solution;
 pub mod sweep;
 pub mod temperature;
+pub mod temperature_keys;
 mod temperature_spec;
 pub mod temperature_table;
 pub mod two_hankel;
-pub mod units;
+pub use crate::units;
 
 pub use error::SceneError;
 pub use file::{read, Method, Model, Scene};

@@ -19,103 +19,21 @@
 //! ```
 
 use super::error::SceneError;
-use super::field::{self, MidplaneStress};
+use super::field;
 use super::file::{InterfaceKind, MaterialSpec, Method, Model, ProfileKind, Scene};
 use super::materials;
-use super::units::UnitSystem;
 use crate::contact::thermal;
 use crate::contact::two_plate::{self, EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use crate::fem::single::{self as fem_single, FaceCondition, SingleParams};
 use crate::hankel::hole::{single_plate_separation, HoleParams};
 use crate::hankel::{SeparationParams, Slab};
-use crate::io::vtu::Grid;
 use crate::joint::{Joint, OuterRadius, Plate};
 use crate::load::{FaceLoad, Peak};
 use crate::material::Material;
-use serde::Serialize;
 use std::f64::consts::PI;
 use std::time::Instant;
 
-/// One step of the plan: a route that ran or was skipped, and why.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Step {
-    /// What the step computes.
-    pub name: String,
-    /// Whether it ran.
-    pub ran: bool,
-    /// Why it ran or was skipped.
-    pub note: String,
-    /// Wall time, seconds (0 when skipped).
-    pub seconds: f64,
-}
-
-/// The interface curve of the two-plate model (scene units).
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct InterfaceCurve {
-    /// Radii of the interface nodes.
-    pub radius: Vec<f64>,
-    /// Interface pressure (stress unit, compression > 0).
-    pub pressure: Vec<f64>,
-    /// Gap between the plates (length unit).
-    pub gap: Vec<f64>,
-}
-
-/// The answer to a scene, in the scene's units (the JSON of `boltzone solve --json`).
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Solution {
-    /// Separation radius R_o (length unit).
-    pub r_o: f64,
-    /// Its estimated absolute error (length unit).
-    pub r_o_error: f64,
-    /// Whether `r_o_error` met the tolerance relative to R_o.
-    pub converged: bool,
-    /// The scene's unit system.
-    pub units: UnitSystem,
-    /// The length unit of `r_o`, `r_o_error` (and of every length in `inputs`).
-    pub length_unit: &'static str,
-    /// The model.
-    pub model: Model,
-    /// The method that ran (`fem` or `hankel`; what `auto` picked).
-    pub method: Method,
-    /// boltzone's version.
-    pub version: &'static str,
-    /// The scene as understood, defaults filled in.
-    pub inputs: Scene,
-    /// Whether the plates touch out to the rim (two-plate; R_o = C).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub full_contact: Option<bool>,
-    /// Mean axial displacement under the nut (two-plate; length unit, negative toward the
-    /// interface).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub nut_deflection: Option<f64>,
-    /// The joint's interface conductance ∫ h_c dA (two-plate, `[outputs] conductance = true`;
-    /// W/K, Btu/(hr·°F) in in-psi-lbf).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub joint_conductance: Option<f64>,
-    /// The unit of `joint_conductance`.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub conductance_unit: Option<&'static str>,
-    /// Thermal passes of `[temperature] from_heat` ([`super::from_heat`]).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub heat_passes: Option<usize>,
-    /// Heat flow through the joint with `from_heat` (`heat_flow_unit`).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub heat_flow: Option<f64>,
-    /// The unit of `heat_flow` (W; Btu/hr in in-psi-lbf).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub heat_flow_unit: Option<&'static str>,
-    /// The plan: routes that ran and were skipped, time per step.
-    pub plan: Vec<Step>,
-    /// Interface curve (two-plate; written as CSV, not printed).
-    #[serde(skip)]
-    pub interface: Option<InterfaceCurve>,
-    /// The finest mesh's field in the scene's units (`[outputs] field`; written as VTU).
-    #[serde(skip)]
-    pub field: Option<Grid>,
-    /// The midplane σ_z(r) in the scene's units (`[outputs] midplane`; written as CSV).
-    #[serde(skip)]
-    pub midplane: Option<MidplaneStress>,
-}
+pub use super::solution::{InterfaceCurve, Solution, Step};
 
 /// The material of plate `i` in SI units.
 fn material(scene: &Scene, i: usize) -> Result<Material, SceneError> {

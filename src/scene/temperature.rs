@@ -49,7 +49,7 @@
 //! ```
 
 use super::error::SceneError;
-use super::file::{line_of, path_name, Method, Model, Scene, Seg};
+use super::file::{Method, Model, Scene};
 pub use super::temperature_spec::TemperatureSpec;
 use super::temperature_table::materials;
 use crate::contact::thermal::{JointTemperature, PlateTemperature};
@@ -59,37 +59,7 @@ use crate::fem::single_thermal::{self, SingleTemperature};
 use crate::io::vtu::Grid;
 use crate::joint::{Joint, SinglePlate};
 
-pub(super) fn fail(
-    text: &str,
-    key: &str,
-    value: impl std::fmt::Display,
-    reason: &str,
-) -> SceneError {
-    let path = [Seg::Key("temperature".into()), Seg::Key(key.into())];
-    SceneError::Invalid {
-        key: path_name(&path),
-        line: line_of(text, &path).unwrap_or(1),
-        reason: format!("{value}: {reason}"),
-    }
-}
-
-/// One or two entries → (upper, lower).
-pub(super) fn pair<T: Clone + std::fmt::Debug>(
-    text: &str,
-    key: &str,
-    v: &[T],
-) -> Result<[T; 2], SceneError> {
-    match v {
-        [a] => Ok([a.clone(), a.clone()]),
-        [a, b] => Ok([a.clone(), b.clone()]),
-        _ => Err(fail(
-            text,
-            key,
-            format!("{v:?}"),
-            "give one entry (both plates) or two (upper, lower)",
-        )),
-    }
-}
+use super::temperature_keys::{fail, pair};
 
 /// Checks the scene's `[temperature]` table (if any) against `text` for the lines.
 pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
@@ -270,19 +240,5 @@ pub fn two_plate_field(
     field: &mut Option<Grid>,
 ) -> Result<TwoPlateSolution, SceneError> {
     let jt = t.joint_temperature(joint, stress)?;
-    joint_field(joint, params, &jt, (length, stress), field)
-}
-
-/// As [`two_plate_field`] with the joint's temperatures `jt` (SI units) already built.
-pub fn joint_field(
-    joint: &Joint,
-    params: &TwoPlateParams,
-    jt: &JointTemperature,
-    (length, stress): (f64, f64),
-    field: &mut Option<Grid>,
-) -> Result<TwoPlateSolution, SceneError> {
-    let (s, f, th) = crate::contact::thermal::solve_field_with_temperature(joint, params, jt)?;
-    let (grid, _) = super::field::two_plate_grid_with(&s, &f, Some(&th))?;
-    *field = Some(super::field::scaled(grid, length, stress));
-    Ok(s)
+    super::field::two_plate_thermal_grid(joint, params, &jt, (length, stress), field)
 }

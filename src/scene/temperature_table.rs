@@ -34,7 +34,7 @@
 //! ```
 
 use super::error::SceneError;
-use super::temperature::{fail, pair};
+use super::temperature_keys::{fail, pair};
 use super::temperature_spec::TemperatureSpec;
 use crate::fem::thermal::ThermalMaterial;
 use crate::material::Material;

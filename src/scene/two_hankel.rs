@@ -33,7 +33,7 @@
 
 use super::error::SceneError;
 use super::file::{Model, Scene};
-use super::run::{InterfaceCurve, Solution};
+use super::solution::{InterfaceCurve, Solution};
 use crate::hankel::receding::holed::{two_plate_hole_pressure, HoledParams};
 use crate::joint::{Joint, OuterRadius};
 

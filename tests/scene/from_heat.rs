@@ -1,15 +1,15 @@
 //! `[temperature] from_heat = true` (issue 12 item 5) and its library call
-//! `boltzone::contact::heat_coupled`: equal face temperatures against the uniform field and the
+//! `boltzone::heat::coupled`: equal face temperatures against the uniform field and the
 //! isothermal joint; the conduction's energy balance and its heat flow against the interface
 //! conductance G of `heat::joint` (computed separately) in the limit of conducting plates; the
 //! example scene against the library call bit for bit; located errors and exit 2.
 
 use crate::heat::error_of;
 use crate::{example, scratch};
-use boltzone::contact::heat_coupled::{conduct, solve_from_heat, HeatCoupling};
 use boltzone::contact::two_plate::{self, TwoPlateParams};
 use boltzone::fem::thermal::ThermalMaterial;
 use boltzone::heat::correlation::{ContactConductance, Correlation, Surfaces};
+use boltzone::heat::coupled::{conduct, solve_from_heat, HeatCoupling};
 use boltzone::heat::joint::{joint_conductance, JointParams};
 use boltzone::heat::units::{Conductivity, Length, Pressure};
 use boltzone::scene::Scene;

@@ -4,14 +4,14 @@
 //! `[temperature] from_heat = true`; report Chapter V: "for large heat fluxes where thermal
 //! strains may have an influence on the radii of separation").
 //!
-//! **What is computed.** R_o, p(r), g(r) of [`super::thermal::solve_with_temperature`] with the
+//! **What is computed.** R_o, p(r), g(r) of [`crate::contact::thermal::solve_with_temperature`] with the
 //! field T(r, z) of [`crate::heat::conduction::solve_conduction`] on the two-plate stack: the
 //! upper plate's loaded face held at `faces[0]`, the lower plate's at `faces[1]`, the hole and
 //! rim faces insulated, the plates joined by h_c(p(r)) of [`crate::heat::correlation`] where
 //! p > 0 and r ≤ R_o (zero beyond). The heat flow Q into the upper loaded face (positive from
 //! the upper plate to the lower when `faces[0] > faces[1]`) is that of the last conduction solve.
 //! Units: the joint in SI (m, Pa), conductivities in W/(m·K), temperatures in kelvin or °C
-//! (α per the same degree), Q in W. Compression p > 0, as [`super::two_plate`].
+//! (α per the same degree), Q in W. Compression p > 0, as [`crate::contact::two_plate`].
 //!
 //! **Method.** Pass 0 is the isothermal joint. Each pass meshes the stack with Q4 elements on
 //! the radii of the previous pass's interface nodes ([`TwoPlateSolution::radius`]) and
@@ -40,7 +40,7 @@
 //! (3 passes) takes 0.22 s through `boltzone solve --explain`.
 //!
 //! ```
-//! use boltzone::contact::heat_coupled::{solve_from_heat, HeatCoupling};
+//! use boltzone::heat::coupled::{solve_from_heat, HeatCoupling};
 //! use boltzone::contact::two_plate::TwoPlateParams;
 //! use boltzone::fem::thermal::ThermalMaterial;
 //! use boltzone::heat::correlation::{ContactConductance, Correlation, Surfaces};
@@ -67,14 +67,16 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::error::ContactError;
-use super::thermal::{solve_with_temperature, JointTemperature, PlateTemperature, TemperatureGrid};
-use super::two_plate::{self, TwoPlateParams, TwoPlateSolution};
+use super::conduction::{solve_conduction, ConductionSolution};
+use super::correlation::ContactConductance;
+use crate::contact::thermal::{
+    solve_with_temperature, JointTemperature, PlateTemperature, TemperatureGrid,
+};
+use crate::contact::two_plate::{self, TwoPlateParams, TwoPlateSolution};
+use crate::contact::ContactError;
 use crate::error::InputError;
 use crate::fem::thermal::ThermalMaterial;
 use crate::fem::{ElementKind, Mesh, PlateSpec, Spacing};
-use crate::heat::conduction::{solve_conduction, ConductionSolution};
-use crate::heat::correlation::ContactConductance;
 use crate::joint::Joint;
 
 /// The heat side of [`solve_from_heat`] (module docs; SI units).
