@@ -71,7 +71,7 @@ pub fn solve_with_temperature(
 }
 
 /// As [`solve_with_temperature`], keeping the finest level's half plate (with its
-/// [`Thermal`] field) for a field or curve output.
+/// [`Thermal`](super::thermal::Thermal) field) for a field or curve output.
 pub fn solve_with_temperature_field(
     plate: &SinglePlate,
     params: &SingleParams,
