@@ -68,6 +68,9 @@ use faer::Mat;
 use nalgebra::{DMatrix, DVector};
 use std::time::Instant;
 
+/// Bytes of right-hand sides solved at once for the flexibility matrix (256 MiB).
+const FLEX_BLOCK_BYTES: usize = 256 << 20;
+
 /// Ties, numbers, assembles, factors and solves the level (module docs). `supports` adds the
 /// edge supports and prescribed nut displacements; `loads` are the external nodal forces.
 pub fn solve_level(
@@ -148,19 +151,35 @@ pub(crate) fn solve_level_mu(
         .chain(friction_level::held(setup, mu).map(|i| (Component::R, i)))
         .map(|(c, i)| pair_vector(model, &dofs, &ties, i, c))
         .collect();
-    let mut b = Mat::<f64>::zeros(ties.n(), cols.len());
-    for (k, col) in cols.iter().enumerate() {
-        for &(e, v) in col {
-            b[(e, k)] += v;
-        }
-    }
-    let xb = solver.solve_many(b.as_ref());
     let dot = |col: &[(usize, f64)], x: &dyn Fn(usize) -> f64| {
         col.iter().map(|&(e, v)| v * x(e)).sum::<f64>()
     };
     let m = cols.len();
     let g0 = DVector::from_fn(m, |k, _| dot(&cols[k], &|e| x0[e]));
-    let flex = DMatrix::from_fn(m, m, |a, c| dot(&cols[a], &|e| xb[(e, c)]));
+    // The flexibility's columns are solved in blocks of at most FLEX_BLOCK_BYTES of right-hand
+    // sides (and as many of solutions): a fine mesh with a wide candidate window (320k unknowns
+    // × 800 columns held 2.3 GB) stays bounded; below the bound it is one block, as before.
+    let width = (FLEX_BLOCK_BYTES / (8 * ties.n().max(1))).clamp(1, m.max(1));
+    let mut flex = DMatrix::<f64>::zeros(m, m);
+    let mut whole = None; // the solutions, kept when one block holds them all
+    for start in (0..m).step_by(width) {
+        let block = &cols[start..(start + width).min(m)];
+        let mut b = Mat::<f64>::zeros(ties.n(), block.len());
+        for (k, col) in block.iter().enumerate() {
+            for &(e, v) in col {
+                b[(e, k)] += v;
+            }
+        }
+        let xb = solver.solve_many(b.as_ref());
+        for (k, _) in block.iter().enumerate() {
+            for a in 0..m {
+                flex[(a, start + k)] = dot(&cols[a], &|e| xb[(e, k)]);
+            }
+        }
+        if width >= m {
+            whole = Some(xb);
+        }
+    }
     let flexibility = (&flex + flex.transpose()) * 0.5;
     let (sol, states) = match mu {
         None => {
@@ -177,10 +196,27 @@ pub(crate) fn solve_level_mu(
         }
     };
     let mut y = x0;
-    for (k, l) in sol.force.iter().enumerate() {
-        if *l != 0.0 {
+    match &whole {
+        Some(xb) => {
+            for (k, l) in sol.force.iter().enumerate() {
+                if *l != 0.0 {
+                    for (i, yi) in y.iter_mut().enumerate() {
+                        *yi += xb[(i, k)] * l;
+                    }
+                }
+            }
+        }
+        None => {
+            // blocks: one more solve, of the contact forces' load, instead of m kept solutions
+            let mut b = Mat::<f64>::zeros(ties.n(), 1);
+            for (col, l) in cols.iter().zip(sol.force.iter()) {
+                for &(e, v) in col {
+                    b[(e, 0)] += v * l;
+                }
+            }
+            let dy = solver.solve_many(b.as_ref());
             for (i, yi) in y.iter_mut().enumerate() {
-                *yi += xb[(i, k)] * l;
+                *yi += dy[(i, 0)];
             }
         }
     }
