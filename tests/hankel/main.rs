@@ -6,6 +6,7 @@
 mod cli;
 #[path = "../common/mod.rs"]
 mod common;
+mod grid_study;
 mod hole_cli;
 mod hole_corner;
 mod hole_correction;
