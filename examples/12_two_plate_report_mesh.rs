@@ -52,6 +52,7 @@ fn report_mesh_solve(a: f64, b: f64, c: f64, d: f64, m: Material, p: f64) -> Lev
         materials: vec![m],
         upper: 0,
         lower: None,
+        exterior: None,
     };
     // The node at the hole edge holds the plate down; every node out to B + 3D is unknown.
     let window: Vec<usize> = (1..r.len()).filter(|&i| r[i] <= b + 3.0 * d).collect();

@@ -43,7 +43,8 @@
 //! let load = FaceLoad::uniform(0.1, 0.2, 1.0)?;
 //! let mut loads = Loads::new(mesh.n_nodes());
 //! loads.add_face_pressure(&mesh, &mesh.top(0), 1.0, &load)?;
-//! let model = MeshedJoint { mesh, materials: vec![Material::unit(0.3)?], upper: 0, lower: None };
+//! let model = MeshedJoint { mesh, materials: vec![Material::unit(0.3)?], upper: 0, lower: None,
+//!                          exterior: None };
 //! let window: Vec<usize> = (0..37).filter(|&i| i != 2).collect();
 //! let setup = LevelSetup { tied: &[2], window: &window, welded: false, fix_rigid: true,
 //!                          lcp: LcpParams::default(), nut: (0.1, 0.2) };
@@ -59,6 +60,7 @@ use super::friction_level;
 use super::lcp::{solve_lcp, Lcp};
 pub use super::level_types::{LevelSetup, LevelSolution, MeshedJoint};
 use super::tie::Ties;
+use crate::fem::exterior::add_exterior;
 use crate::fem::{
     assemble, nested_dissection, Component, DofMap, Factorization, Loads, Mesh, Pattern,
     SolveParams, Supports,
@@ -119,7 +121,13 @@ pub(crate) fn solve_level_mu(
         .filter_map(|&(a, b, c)| Some((dofs.equation(a, c)?, dofs.equation(b, c)?)))
         .collect();
     let ties = Ties::new(dofs.n_equations(), &eq_pairs);
-    let stiff = assemble(mesh, &model.materials, &dofs, &Pattern::new(mesh, &dofs))?;
+    let pattern = Pattern::new(mesh, &dofs);
+    let mut stiff = assemble(mesh, &model.materials, &dofs, &pattern)?;
+    if let Some(rim) = model.exterior {
+        for p in std::iter::once(model.upper).chain(model.lower) {
+            add_exterior(&mut stiff, &pattern, mesh, &model.materials, &dofs, p, rim)?;
+        }
+    }
     let k = ties.matrix(&stiff.matrix)?;
     // Nested dissection of the structured mesh (fem's), carried over to the tied unknowns by
     // keeping each tied unknown at the place of its first equation.

@@ -30,6 +30,10 @@ pub struct MeshedJoint {
     pub upper: usize,
     /// Plate index of the lower plate, None for a rigid plane.
     pub lower: Option<usize>,
+    /// The plates' rim beyond the mesh's outer face when that face is a cut
+    /// (`f64::INFINITY`: infinite plates), None when the plates are meshed whole: the cut face
+    /// then carries the exact exterior ([`crate::fem::exterior`]).
+    pub exterior: Option<f64>,
 }
 
 impl MeshedJoint {

@@ -43,9 +43,9 @@ pub(crate) struct MeshLayout<'a> {
     pub a: f64,
     pub b: f64,
     pub c: f64,
-    /// A radius inside the plate that must be a node, with the radial spacing inside it as for a
-    /// plate cut there (so that two cuts share their mesh up to the nearer one).
-    pub inner_cut: Option<f64>,
+    /// The plates' rim when `c` is a cut (`f64::INFINITY`: infinite plates), None when `c` is
+    /// the rim ([`MeshedJoint::exterior`]).
+    pub exterior: Option<f64>,
     pub d: [f64; 2],
     pub two: bool,
     pub welded: bool,
@@ -81,12 +81,9 @@ pub(crate) fn mesh(
     // plates near R_o), shrinking on the finest levels ([`level_grading`])
     let (q, q_axial, _) = level_grading(h, g.d[0].min(g.d[1]), 1.25, 1.5);
     let mut foci = vec![g.a, g.b];
-    let c_spacing = g.inner_cut.unwrap_or(g.c);
-    foci.extend(r_est.filter(|&r| r > g.a && r < c_spacing));
-    let h_max = ((c_spacing - g.a) / 10.0).min(H_MAX_OVER_D * g.d[0].max(g.d[1]));
-    let mut knots = foci[1..].to_vec();
-    knots.extend(g.inner_cut);
-    let r = Spacing::graded(g.a, g.c, &knots, &foci, h, q, h_max)?;
+    foci.extend(r_est.filter(|&r| r > g.a && r < g.c));
+    let h_max = ((g.c - g.a) / 10.0).min(H_MAX_OVER_D * g.d[0].max(g.d[1]));
+    let r = Spacing::graded(g.a, g.c, &foci[1..], &foci, h, q, h_max)?;
     let zs =
         |z0: f64, z1: f64| Spacing::graded(z0, z1, &[], &[z0, z1], h, q_axial, (z1 - z0) / 3.0);
     let upper_mat = joint.upper().material();
@@ -106,6 +103,7 @@ pub(crate) fn mesh(
             materials: vec![joint.lower().material(), upper_mat],
             upper: 1,
             lower: Some(0),
+            exterior: g.exterior,
         }
     } else {
         let plates = [PlateSpec {
@@ -117,6 +115,7 @@ pub(crate) fn mesh(
             materials: vec![upper_mat],
             upper: 0,
             lower: None,
+            exterior: g.exterior,
         }
     };
     Ok(model)

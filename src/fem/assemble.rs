@@ -120,7 +120,7 @@ impl Pattern {
     }
 
     /// Position of entry (i, j), i ≥ j, in the value array.
-    fn position(&self, i: usize, j: usize) -> Option<usize> {
+    pub(crate) fn position(&self, i: usize, j: usize) -> Option<usize> {
         let range = self.symbolic.col_range(j);
         let rows = &self.symbolic.row_idx()[range.clone()];
         rows.binary_search(&i).ok().map(|k| range.start + k)

@@ -48,7 +48,7 @@ pub struct Loads {
 }
 
 /// 1D Lagrange shape functions of an edge with `n` = 2 or 3 equally spaced nodes, at s ∈ [0, 1].
-fn edge_shape(n: usize, s: f64) -> [f64; 3] {
+pub(crate) fn edge_shape(n: usize, s: f64) -> [f64; 3] {
     if n == 2 {
         [1.0 - s, s, 0.0]
     } else {

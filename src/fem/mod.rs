@@ -59,6 +59,7 @@ pub mod assemble;
 pub mod dofs;
 pub mod element;
 pub mod error;
+pub mod exterior;
 pub mod lame;
 pub mod loads;
 pub mod mesh;

@@ -10,26 +10,20 @@
 //! the distribution of that ratio (median, p99, max). Geometries where the semi route fails are
 //! listed, not dropped.
 //!
-//! **Measured** (2026-11-24, release, sequential under nice, load average 2–5 on the 2 cores;
-//! 390 s wall for both tolerances, of which the FE 10 s at 1e-4 and 51 s at 1e-5, the rest the
-//! semi route at ~3 s per geometry): the semi route ran on all 100 geometries, its estimates
-//! 1e-11…1.7e-5 of R_o (median 4e-9; largest on the thick plates, A/D = 0.25). The FE is low on
-//! every geometry at 1e-4 (95 of 100 at 1e-5): biased, not scattered.
-//! - 1e-4: all 100 converged (5–7 levels, ≤ 0.2 s each); |FE − semi| ≤ 5.5e-5 R_o; the ratio
-//!   |FE − semi| / FE estimate has median 0.40, p99 0.79, max 1.19 — above 1 (and beyond both
-//!   estimates) on one geometry, (A/D, B/A) = (0.25, 2.05): −5.5e-5 against 4.7e-5 + 7e-7. The
-//!   observed rate against the semi route is 0.8…2.35 (median 2.0).
-//! - 1e-5: 87 converged (6–9 levels, ≤ 1.2 s each), 13 not (their errors 0.5…1.3e-5 R_o, within
-//!   their larger estimates); |FE − semi| ≤ 1.2e-5 R_o; ratio median 0.55, p99 1.56, max 1.56 —
-//!   beyond both estimates on 18 geometries, all with A/D ≥ 0.69: the FE's estimate (its last
-//!   level differences plus its outer cut) undershoots a one-signed error by up to 1.6×. Rate
-//!   1.4…2.35 (median 1.9). On those 18 the FE's estimate of its outer cut's share (column
-//!   "cut est", 2.6…7.1e-6 R_o) is 53–90 % of its whole estimate: at 1e-5 the cut of the
-//!   infinite plate, not the mesh, dominates its error budget (as example 19 found at 1e-6).
+//! **Measured** (2026-11-24, release, sequential under nice, load average 2–3 on the 2 cores,
+//! 701 s wall for both tolerances; the FE 19 s in all at 1e-4 and 77 s at 1e-5, the rest the
+//! semi route at ~3 s per geometry), with the FE's cut carrying the exact exterior of the free
+//! plate (`fem::exterior`): all 100 FE runs converged at both tolerances (5–7 levels at 1e-4,
+//! 6–8 at 1e-5) and every one is within its own estimate:
+//! - 1e-4: |FE − semi| / FE estimate median 0.29, p99 0.39, max 0.42;
+//! - 1e-5: median 0.19, p99 0.85, max 0.86 (the largest on the thick plates, A/D ≤ 0.7 at
+//!   B/A = 1.2, where the FE now sits 3–5e-6 high).
 //!
-//! So the assertion fails at both tolerances: the finding is that the FE's `r_o_error` is not a
-//! bound at the 1e-5 level (nor, once, at 1e-4), while its `tolerance` is nearly met
-//! (|FE − semi| ≤ 1.2 tolerance at 1e-5, ≤ 0.55 at 1e-4).
+//! Before (same day, the cut face left free and its C⁻² error estimated from two coarse levels):
+//! the FE was low on every geometry at 1e-4 and 95 of 100 at 1e-5; the ratio reached 1.19 at 1e-4
+//! (one geometry beyond both estimates) and 1.56 at 1e-5 (18 of 87 converged beyond both), the
+//! cut's estimated share being 53–90 % of the FE estimate there: the free cut, not the mesh, was
+//! the error, and its C⁻² estimate undershot it.
 //!
 //! Run: `BOLTZONE_GRID_TOLERANCES=1e-4,1e-5 nice cargo test --release --test hankel grid_study --
 //! --ignored --nocapture` (default tolerance list: 1e-4).
@@ -108,7 +102,7 @@ struct Tally {
 }
 
 #[test]
-#[ignore = "study: ~6 min in release (100 geometries); it FAILS today: the FE two-plate estimate misses its error on 1 of 100 at 1e-4 and 18 of 87 at 1e-5 (issue 17)"]
+#[ignore = "study: ~6–12 min in release (100 geometries, semi route ~3 s each)"]
 fn grid_study() {
     let tols = tolerances();
     let start = std::time::Instant::now();
