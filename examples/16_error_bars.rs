@@ -11,6 +11,7 @@
 //! | single plate, FE (`fe`; `fe1`: Table 1's range) | 1e-3, 1e-4, 1e-5 | the Hankel route with hole and rim at 1e-7 (shares no code) |
 //! | two plates, equal (`two`) | 1e-3, 1e-4 | the same route at 1e-5 |
 //! | two plates, unequal, frictionless (`two2`) | 1e-3, 1e-4 | the same route at 1e-5 |
+//! | two equal infinite plates, no hole (`two0`; the case's B, A = 0) | 1e-4, 1e-5, 1e-6 | the receding contact, Hankel (~1e-12, shares no code) |
 //!
 //! The two-plate reference at 1e-5 is only 10× tighter than the 1e-4 runs (1e-6 is out of the
 //! study's reach on most geometries: it stops, not converged); its own estimate is added to the
@@ -49,6 +50,7 @@
 use boltzone::contact::two_plate::{solve as solve_two, InterfaceModel, TwoPlateParams};
 use boltzone::fem::single::{solve as solve_single, SingleParams};
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
+use boltzone::hankel::receding::{Layer, RecedingParams};
 use boltzone::hankel::{SeparationParams, Slab};
 use boltzone::numerics::random::SplitMix64 as Rng;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate, SinglePlate};
@@ -201,6 +203,33 @@ fn two(k: &Case, tols: &[f64], unequal: bool) -> anyhow::Result<Outcome> {
     Ok(Some((runs, (r.0, r.1))))
 }
 
+/// Two equal infinite plates without a hole (A = 0, the load over r ≤ B of the case) against the
+/// semi-analytic receding contact (`hankel::receding`, ~1e-12, shares no code with the FE).
+fn two_no_hole(k: &Case, tols: &[f64]) -> anyhow::Result<Outcome> {
+    let m = Material::unit(k.nu)?;
+    let load = FaceLoad::uniform(0.0, k.b, 1.0)?;
+    let reference =
+        Layer::new(1.0, m, load.clone())?.receding_contact(&RecedingParams::default())?;
+    let joint = Joint::new(
+        0.0,
+        OuterRadius::Infinite,
+        Plate::new(1.0, m)?,
+        Plate::new(1.0, m)?,
+        load,
+    )?;
+    let at = |t: f64| -> anyhow::Result<Run> {
+        let params = TwoPlateParams {
+            tolerance: t,
+            interface: InterfaceModel::Frictionless,
+            ..Default::default()
+        };
+        let s = solve_two(&joint, &params)?;
+        Ok((s.r_o, s.r_o_error, s.converged))
+    };
+    let runs = tols.iter().map(|&t| at(t)).collect::<anyhow::Result<_>>()?;
+    Ok(Some((runs, (reference.r_o, reference.info.r_o_error))))
+}
+
 type Solver = fn(&Case, &[f64]) -> anyhow::Result<Outcome>;
 
 /// A route of the survey: name, solver, working tolerances, geometry range.
@@ -213,13 +242,14 @@ struct Route {
 }
 
 #[rustfmt::skip]
-const ROUTES: [Route; 6] = [
+const ROUTES: [Route; 7] = [
     route("slab", "slab (Hankel)", slab, &[1e-4, 1e-6, 1e-8, 1e-10], WIDE),
     route("hankel", "single, Hankel + hole", single_hankel, &[1e-3, 1e-4, 1e-5], WIDE),
     route("fe", "single, FE vs Hankel", single_fem, &[1e-3, 1e-4, 1e-5], WIDE),
     route("fe1", "single FE, Table 1 range", single_fem, &[1e-4, 1e-5], TABLE1),
     route("two", "two plates, equal", |k, t| two(k, t, false), &[1e-3, 1e-4], WIDE),
     route("two2", "two plates, unequal", |k, t| two(k, t, true), &[1e-3, 1e-4], WIDE),
+    route("two0", "two plates, no hole, vs Hankel", two_no_hole, &[1e-4, 1e-5, 1e-6], WIDE),
 ];
 
 const fn route(

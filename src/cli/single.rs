@@ -76,7 +76,7 @@ pub struct Args {
     nut: Nut,
     /// Most refinement levels (fem, 3..=12): levels are added until the error estimate meets
     /// --tol.
-    #[arg(long, default_value_t = 8)]
+    #[arg(long, default_value_t = boltzone::fem::single::MAX_LEVELS)]
     levels: usize,
     /// Wanted relative error of R_o (default 5e-4 for fem, 1e-6 for hankel); a result that
     /// misses it is flagged NOT converged and the command exits 3.

@@ -36,10 +36,6 @@ use crate::hankel::separation::{SeparationError, SeparationParams};
 use crate::joint::SinglePlate;
 use crate::value::Value;
 
-/// Most FE levels [`single_fem`] tries (the finest has 2⁻⁷ of the first's element size at the
-/// foci).
-pub const MAX_FEM_LEVELS: usize = 8;
-
 /// Sizes of the FE study.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FemStudy {
@@ -57,7 +53,7 @@ pub fn single_fem(plate: &SinglePlate, tolerance: f64) -> Result<(Value, FemStud
     // nested uniform references; the growth 1.35 needed a fifth level at 10 points).
     let params = SingleParams {
         tolerance,
-        levels: MAX_FEM_LEVELS,
+        levels: crate::fem::single::MAX_LEVELS,
         ..SingleParams::default()
     };
     let s = solve(plate, &params)?;

@@ -267,6 +267,12 @@ pub fn level_spacings(
 
 pub use crate::joint::FAR_RIM;
 
+/// Most levels [`solve`] refines to meet a tolerance for its callers that do not choose
+/// (`single --levels`' default, the tables, scenes and figures): the finest has 2⁻⁷ of the
+/// first's element size at the foci. [`SingleParams::default`]'s 5 are the fixed study of
+/// [`single_plate_r_o`].
+pub const MAX_LEVELS: usize = 8;
+
 /// The tightest `tolerance` whose levels keep the fixed grading down to h = D/64
 /// ([`crate::fem::spacing::level_grading`]); tighter ones shrink it from h = D/8 on
 /// ([`FIXED_GRADING_TIGHT`]). The fixed grading leaves a floor of 1.2e-6 to 2.4e-6 of R_o that

@@ -236,6 +236,7 @@ fn single_compression(figure: &str, c: &Case, tolerance: f64) -> Result<FigCurve
     };
     let sp = SingleParams {
         tolerance,
+        levels: crate::fem::single::MAX_LEVELS,
         ..SingleParams::default()
     };
     let (s, h) = solve_with_field(&plate, &sp).map_err(fem)?;

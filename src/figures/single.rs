@@ -153,6 +153,7 @@ fn sigma_z_curve(
     let plate = g.single_plate(OuterRadius::Finite(g.c))?;
     let sp = SingleParams {
         tolerance: params.tolerance,
+        levels: crate::fem::single::MAX_LEVELS,
         ..SingleParams::default()
     };
     let fem = |source| FigureError::Fem {

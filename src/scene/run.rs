@@ -285,6 +285,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                     FaceCondition::UniformDisplacement
                 }),
                 tolerance: scene.tolerance,
+                levels: crate::fem::single::MAX_LEVELS,
                 ..SingleParams::default()
             };
             let plate = substitute(&joint)?;

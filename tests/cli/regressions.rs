@@ -122,7 +122,9 @@ fn an_infinite_plate_holds_its_error_bar_against_the_receding_contact_solution()
         let v = json(&go(&[
             "two", "--a", "0", "--b", "0.1", "--d", "0.1", "--tol", tol, "--json",
         ]));
-        assert_eq!(v["converged"], tol != "1e-6", "tol {tol}");
+        // (at 1e-5 and 1e-6 not converged: every two-plate estimate carries 2e-5 of R_o,
+        // `contact::two_plate::TRANSIENT_FLOOR`)
+        assert_eq!(v["converged"], ["1e-3", "1e-4"].contains(&tol), "tol {tol}");
         let actual = (v["r_o"].as_f64().unwrap() - exact.r_o).abs();
         let bar = v["r_o_error"].as_f64().unwrap() + exact.info.r_o_error;
         assert!(
