@@ -96,8 +96,8 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
             .collect(),
         None => Vec::new(),
     };
-    let (out, curve) =
-        two_plate_hole_pressure(&plate, &HoledParams::default(), &at).map_err(|e| {
+    let (out, curve) = two_plate_hole_pressure(&plate, &HoledParams::for_tolerance(args.tol), &at)
+        .map_err(|e| {
             anyhow::anyhow!("the Hankel route cannot treat this joint ({e}); try --method fem")
         })?;
     let converged = out.info.r_o_error <= args.tol * out.r_o;

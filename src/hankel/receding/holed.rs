@@ -82,6 +82,8 @@
 //! ```
 
 use super::contact::RecedingError;
+use super::grid::PanelInterp;
+use super::holed_search::estimate;
 use super::layer_field::bottom_kernels;
 use super::system::panels;
 use crate::error::InputError;
@@ -123,6 +125,12 @@ pub struct HoledParams {
     pub xi_l: f64,
     /// Length beyond c over which l is integrated, in D (default 14: l ~ e^(−2.1(r − c)/D)).
     pub tail: f64,
+    /// Whether the coarse variant of the estimate also lowers ξ_l to 2/3 (default false), so
+    /// that the estimate covers the cutoff of l's transform, whose error falls only like ξ_l⁻³.
+    pub vary_xi_l: bool,
+    /// Depth of the Anderson acceleration of the crack iteration (default 3; 0: the plain
+    /// iteration), module `anderson`.
+    pub anderson: usize,
 }
 
 impl Default for HoledParams {
@@ -142,6 +150,32 @@ impl Default for HoledParams {
             estimate: true,
             xi_l: 40.0,
             tail: 14.0,
+            vary_xi_l: false,
+            anderson: 3,
+        }
+    }
+}
+
+impl HoledParams {
+    /// Knobs for R_o to a relative tolerance `tol`, the estimate covering every knob but the
+    /// tail: for `tol` ≥ 1e-6, 16 Nyström points, a tail of 10D (l's truncation there moves R_o
+    /// by ~1e-9 R_o on Table 1), root and iteration tolerances 1e-9 (of D; of p̄(0)/c), and the
+    /// estimate's coarse variant at ξ_l = 80/(3D); tighter, the defaults with ξ_l varied as
+    /// well. Checked on Table 1 by `tests/hankel/two_plate_hole_fast.rs`.
+    pub fn for_tolerance(tol: f64) -> Self {
+        let base = Self {
+            vary_xi_l: true,
+            ..Self::default()
+        };
+        if tol < 1e-6 {
+            return base;
+        }
+        Self {
+            nodes: 16,
+            rel_tol: 1e-9,
+            iteration_tol: 1e-9,
+            tail: 10.0,
+            ..base
         }
     }
 }
@@ -207,6 +241,9 @@ pub(super) struct Setup {
     pub(super) hole_kernels: Vec<Vec<[f64; 3]>>,
     /// ξ beyond which l̄ is taken from its endpoint expansion.
     pub(super) xi_l: f64,
+    /// The corner fields' midplane σ_z (the basis rows of [`CornerLoads::midplane_basis`]) on
+    /// panels of D/2 over [A, r_max], interpolated by every trial radius.
+    pub(super) corner_table: Option<(PanelInterp, Vec<Vec<f64>>)>,
 }
 
 /// One contact radius solved.
@@ -221,7 +258,7 @@ pub(super) struct Crack {
 }
 
 impl Setup {
-    fn new(plate: &SinglePlate, params: &HoledParams) -> Result<Self, RecedingError> {
+    pub(super) fn new(plate: &SinglePlate, params: &HoledParams) -> Result<Self, RecedingError> {
         let (a, d) = (plate.hole_radius(), plate.half_thickness());
         if a <= 0.0 {
             return Err(InputError::Parameter {
@@ -352,7 +389,16 @@ impl Setup {
                     .collect()
             })
             .collect();
+        // the corner fields are analytic in a strip of half-width ≈ D about the midplane's
+        // r-axis (their corner is D away): 20-point panels of D/2 interpolate them to ~1e-18
+        let corner_table = corner.as_ref().map(|cl| {
+            let interp = PanelInterp::new(a, r_max, 0.5 * d);
+            let grid = interp.grid();
+            let rows = cl.midplane_basis_rows(r_max, grid.len(), |xi, row| grid.j0_row(xi, row));
+            (interp, rows)
+        });
         Ok(Self {
+            corner_table,
             a,
             d,
             p0: LoadTransform::new(load).eval(0.0),
@@ -407,7 +453,8 @@ pub fn two_plate_hole_pressure(
     let start = Instant::now();
     let setup = Setup::new(plate, params)?;
     let b = plate.load().outer();
-    let (r_o, last, mut solves) = setup.search(b, params.nodes, params, None, at)?;
+    let found = setup.search(b, params.nodes, params, None, at)?;
+    let (r_o, last) = (found.r_o, &found.last);
     let curve: Vec<(f64, f64)> = at
         .iter()
         .map(|x| setup.a + x * (r_o - setup.a))
@@ -424,38 +471,10 @@ pub fn two_plate_hole_pressure(
         solves: 0,
         seconds: 0.0,
     };
+    let mut solves = found.solves;
     if params.estimate {
-        // each variant's R_o by one Newton step from R_o with the slope of the edge
-        // coefficient there (a secant over 1e-3 D): its change is ~1e-6 D or less, where the
-        // step's error, ∝ the change squared, is far below it; a larger change gets the search
-        let h = 1e-3 * setup.d;
-        let slope = (setup.crack(r_o + h, params.nodes, params, &[])?.edge - last.edge) / h;
-        solves += 1;
-        let variant = |setup: &Setup, p: &HoledParams| -> Result<(f64, usize), RecedingError> {
-            let step = -setup.crack(r_o, p.nodes, p, &[])?.edge / slope;
-            if step.is_finite() && step.abs() < 0.01 * setup.d {
-                return Ok((r_o + step, 1));
-            }
-            setup
-                .search(b, p.nodes, p, Some(r_o), &[])
-                .map(|(r, _, n)| (r, n + 1))
-        };
-        let fewer = HoledParams {
-            nodes: (3 * params.nodes).div_ceil(4).max(4),
-            ..*params
-        };
-        let (r1, s1) = variant(&setup, &fewer)?;
-        let half = HoledParams {
-            hole: HoleParams {
-                terms: Some((setup.modes.len() / 2).max(1)),
-                ..params.hole
-            },
-            heights: (params.heights / 3 * 2).max(4),
-            ..*params
-        };
-        let setup_half = Setup::new(plate, &half)?;
-        let (r2, s2) = variant(&setup_half, &half)?;
-        solves += s1 + s2;
+        let ((r1, r2), s) = estimate(&setup, plate, params, &found)?;
+        solves += s;
         info.r_o_fewer_nodes = r1;
         info.r_o_half_terms = r2;
         info.r_o_error += (r1 - r_o).abs() + (r2 - r_o).abs();
