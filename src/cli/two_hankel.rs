@@ -10,7 +10,8 @@
 //!
 //! # Cost
 //!
-//! The holed route's: about 2.4 s of CPU per geometry (Table 1 row 1), timed by example 19.
+//! The holed route's with the knobs for --tol ([`HoledParams::for_tolerance`]): about 1 s of
+//! CPU per geometry at --tol 1e-6 or looser (Table 1), timed by example 19.
 
 use super::exit::{sig, Status};
 use super::two_args::Args;

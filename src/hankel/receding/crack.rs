@@ -12,9 +12,10 @@
 //!
 //! # Cost
 //!
-//! Most of the holed route's cost, about 0.17 s of CPU per contact radius on Table 1 row 1: the
-//! cosine and J₀ tables of [`super::grid`], the corner fields' midplane rows, the H_l weights;
-//! timed by example 19 and the ignored study `table1_rows_record`.
+//! Most of the holed route's cost, about 0.1 s of CPU per contact radius on Table 1: the
+//! cosine and J₀ tables of [`super::grid`] and the H_l weights, rebuilt for every radius (rows
+//! in parallel), and the Anderson-accelerated iteration; timed by example 19 (breakdown in
+//! [`super::holed`]).
 
 use super::anderson::{pack, unpack, Anderson};
 use super::contact::RecedingError;
@@ -241,6 +242,11 @@ impl Setup {
             let hstep = 1e-3 * lint.width;
             let dl = (-3.0 * lc + 4.0 * lint.eval(&l, c + hstep) - lint.eval(&l, c + 2.0 * hstep))
                 / (2.0 * hstep);
+            // f = (s l′)′ = l′ + s l″ at c, l″ by the one-sided four-point difference
+            let h2 = 0.02 * lint.width;
+            let at = |j: f64| lint.eval(&l, c + j * h2);
+            let d2l = (2.0 * lc - 5.0 * at(1.0) + 4.0 * at(2.0) - at(3.0)) / (h2 * h2);
+            let fc = dl + c * d2l;
             let btil: Vec<f64> = self
                 .hole_xi
                 .par_iter()
@@ -251,7 +257,8 @@ impl Setup {
                         dot(&hole_j[k], &l)
                     } else {
                         let x = xi * c;
-                        -lc * c * libm::j1(x) / xi - dl * c * libm::j0(x) / (xi * xi) - l0
+                        let (j0, j1) = (libm::j0(x), libm::j1(x));
+                        -lc * c * j1 / xi - dl * c * j0 / (xi * xi) + fc * j1 / (xi * xi * xi) - l0
                     };
                     q + lt
                 })

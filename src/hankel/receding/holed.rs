@@ -26,15 +26,20 @@
 //!
 //! The total is free on r > c exactly because of l's definition; Z's own σ_z there feeds back into
 //! l, so 2–3 are iterated (a contraction: X's traction on the hole and Z's stress beyond c both
-//! decay over c − A). The edge coefficient of the total is X's φ(c); R_o is its root, by the
-//! receding solver's scan and Brent search.
+//! decay over c − A), Anderson-accelerated (module `anderson`: 17 → 8 steps on the narrowest
+//! load). X's traction on the hole needs l's transform to ξ ≫ ξ_l; beyond ξ_l it is the
+//! endpoint expansion by parts, −l(c)cJ₁(ξc)/ξ − l′(c)cJ₀(ξc)/ξ² + (l′ + c l″)(c)J₁(ξc)/ξ³,
+//! exact to O(ξ^(−4.5)). The edge coefficient of the total is X's φ(c); R_o is its root, by the
+//! receding solver's scan and Brent search (module `holed_search`).
 //!
 //! **Error control.** R_o's estimate adds (a) the change from a run with ⌈3n/4⌉ Nyström points,
-//! (b) the change from a run with half the hole modes (the bilateral plate and Z), (c) the root
-//! tolerance; the residual traction on the hole is measured on the fit's check heights. Each
-//! variant's R_o is one Newton step from R_o (slope: a secant over 1e-3 D), its error ∝ the
-//! change squared (≤ 1e-6 D: negligible; as full searches to 2e-12 D on Table 1 row 1); a
-//! change beyond 0.01 D gets the full search.
+//! (b) the change from a run with half the hole modes (the bilateral plate and Z), 2/3 of the
+//! heights and, with [`HoledParams::vary_xi_l`], 2/3 of ξ_l, (c) the root tolerance; the
+//! residual traction on the hole is measured on the fit's check heights. Each variant's R_o is
+//! one Newton step from R_o (slope: a secant through two of the search's edge values), its error
+//! ∝ the change squared (≤ 1e-6 D: negligible; as full searches to 2e-12 D on Table 1 row 1); a
+//! change beyond 0.01 D gets the full search. [`HoledParams::for_tolerance`] picks the knobs for
+//! a tolerance.
 //!
 //! # Accuracy
 //!
@@ -56,20 +61,40 @@
 //! R_o minus the no-hole receding solver's under the disk load is −8.3e-8, −2.0e-8, −5.0e-9 (in, D = 0.1 in)
 //! at A = 0.2D, 0.1D, 0.05D — the predicted A² (observed rates 2.07, 1.99). The interface
 //! pressure ([`two_plate_hole_pressure`]) balances the load within the hole's residual shear
-//! (`tests/hankel/two_plate_hole_pressure.rs`: −7.8e-9, −1.3e-10 at ξ_l = 40, 70/D). On
-//! (1, 2.2) R_o/A = 2.623523384608 moves ≤ 1.1e-8 under each knob doubled; the FE at 1e-6 stalls
-//! 4.7e-6 below, about its own outer-cut estimate (example 19).
+//! (`tests/hankel/two_plate_hole_pressure.rs`: −7.8e-9, −1.3e-10 at ξ_l = 40, 70/D, measured
+//! with the two-term expansion). On (1, 2.2) R_o/A = 2.623523384608 (two-term expansion) moved
+//! ≤ 1.1e-8 under each knob doubled; the FE at 1e-6 stalls 4.7e-6 below, about its own outer-cut
+//! estimate (example 19).
+//!
+//! The third term of l's endpoint expansion moved the defaults' R_o on Table 1 by −1.2e-7 …
+//! +3.7e-8 R_o (largest on (0.5, 1.3), where R_o/A is now 2.4256930944): the two-term error in
+//! ξ_l fell like ξ_l⁻³ (1.5e-6, 5e-7, 1.3e-7 R_o at 20, 28, 40/D), the three-term error falls at
+//! rate ≈ 6 (1.6e-8, 1.3e-9 at 27, 40/D against 70/D; `tests/hankel/two_plate_hole_fast.rs`,
+//! `the_endpoint_expansion_converges_fast_in_its_cutoff`), and the defaults now agree with
+//! ξ_l = 70/D within 1.3e-9 R_o on all twelve rows. The knobs of
+//! [`HoledParams::for_tolerance`]`(1e-6)` lie within 1.1e-8 R_o of that finer run on all twelve,
+//! their estimates 3.8e-10 … 1.3e-6 R_o (over 1e-6, honestly not converged, on (0.5, 1.3) only);
+//! Anderson moves R_o by ≤ 3.7e-13 R_o (same file).
 //!
 //! # Cost
 //!
-//! 2.4 s of CPU per geometry with the error estimate (Table 1 row 1: 13 contact radii, about
-//! 0.17 s each; wall time 2–3× that on the shared 2-core machine; before the tables below, 11.7 s
-//! of CPU for 24 radii): each radius tabulates cos ξt (ξ of the Nyström and hole rules, t on
-//! [0, c]) and J₀(ξs) (s on [c, c + tail]) by [`super::grid`] (the addition theorem on equal
-//! panels, Hankel's expansion for J₀), the corner fields' midplane rows once for the bilateral
-//! plate and the correction, and the half-space part H_l as weights on l's nodes reused by every
-//! iteration. Example 19 times Table 1. Far from the issue's 10 ms still: the tables grow with
-//! the contact radius and are rebuilt for each; a c-independent tabulation is the next step.
+//! Example 19 times Table 1 (CPU seconds of all threads, load 3–5 on the 2 cores): with the
+//! default knobs 1.6–2.1 s per geometry (2.4 s before the changes below), with
+//! [`HoledParams::for_tolerance`]`(1e-6)` 0.9–1.3 s; the FE at --tol 1e-6 takes 1.0–1.2 s on the
+//! same rows (rows 1–2, same run). The issue's 10 ms (20× faster than the FE) is far off: each
+//! geometry solves 11 trial contact radii (about 9 for the search, one per estimate variant) at
+//! about 0.1 s each, and each radius rebuilds its tables — cos ξt on t ∈ [0, c] for the Nyström
+//! rule (~900 ξ) and the hole rule (~2600 ξ, to e^(−13) at the lowest height), J₀(ξs) on
+//! s ∈ [c, c + tail] (~500 s), the H_l weights — by [`super::grid`] (addition theorem on equal
+//! panels, Hankel's expansion for J₀); measured by `perf` on the 1e-6 knobs: J₀ rows 21 %, sines
+//! and cosines 24 %, the H_l weights 15 %, the iteration's products 18 %. Computed once per
+//! geometry: the bilateral plate, the hole rule and its kernels, the corner fields' midplane
+//! table. What has been cut: the Anderson-accelerated iteration (17 → 8 steps per radius on the
+//! narrowest load), the corner table (12 ms per radius), two solves per geometry (the search's
+//! last solve and the secant are reused), rayon over table rows and over the two variants.
+//! Next: tables independent of c (fixed panels in t and s with a partial panel at c; the
+//! full-panel rows then serve every radius, but hold 10⁷ entries per geometry) or a contact
+//! basis whose transforms are tabulated once.
 //!
 //! ```no_run
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -83,7 +108,7 @@
 
 use super::contact::RecedingError;
 use super::grid::PanelInterp;
-use super::holed_search::estimate;
+use super::holed_search::{estimate, fraction_radius};
 use super::layer_field::bottom_kernels;
 use super::system::panels;
 use crate::error::InputError;
@@ -128,6 +153,11 @@ pub struct HoledParams {
     /// Whether the coarse variant of the estimate also lowers ξ_l to 2/3 (default false), so
     /// that the estimate covers the cutoff of l's transform, whose error falls only like ξ_l⁻³.
     pub vary_xi_l: bool,
+    /// The hole ξ-rule ends where e^(−ξ z_min) = e^(−`hole_decay`) at the lowest Chebyshev height
+    /// z_min (default 13: 2e-6). 10 saves 15 % of the time and moves R_o by ≤ 2e-8 R_o on Table 1
+    /// rows 1, 4, 12, but the estimate then fell short of the error on (0.75, 1.3) (7.8e-9 against
+    /// 9.9e-9): not used by [`HoledParams::for_tolerance`].
+    pub hole_decay: f64,
     /// Depth of the Anderson acceleration of the crack iteration (default 3; 0: the plain
     /// iteration), module `anderson`.
     pub anderson: usize,
@@ -151,6 +181,7 @@ impl Default for HoledParams {
             xi_l: 40.0,
             tail: 14.0,
             vary_xi_l: false,
+            hole_decay: 13.0,
             anderson: 3,
         }
     }
@@ -158,10 +189,11 @@ impl Default for HoledParams {
 
 impl HoledParams {
     /// Knobs for R_o to a relative tolerance `tol`, the estimate covering every knob but the
-    /// tail: for `tol` ≥ 1e-6, 16 Nyström points, a tail of 10D (l's truncation there moves R_o
-    /// by ~1e-9 R_o on Table 1), root and iteration tolerances 1e-9 (of D; of p̄(0)/c), and the
-    /// estimate's coarse variant at ξ_l = 80/(3D); tighter, the defaults with ξ_l varied as
-    /// well. Checked on Table 1 by `tests/hankel/two_plate_hole_fast.rs`.
+    /// tail: for `tol` ≥ 1e-6, 16 Nyström points, ξ_l = 28/D, a tail of 12D (l ~ e^(−2.1(r−c)/D):
+    /// 10D moved R_o by 1.5e-9 R_o on Table 1 row 1, 12D by ~2e-11), root and iteration
+    /// tolerances 1e-9 (of D; of p̄(0)/c), and the estimate's coarse variant also at 2/3 of ξ_l;
+    /// tighter, the defaults with ξ_l varied as well. Checked against a run finer in every knob
+    /// by `tests/hankel/two_plate_hole_fast.rs`.
     pub fn for_tolerance(tol: f64) -> Self {
         let base = Self {
             vary_xi_l: true,
@@ -174,7 +206,8 @@ impl HoledParams {
             nodes: 16,
             rel_tol: 1e-9,
             iteration_tol: 1e-9,
-            tail: 10.0,
+            xi_l: 28.0,
+            tail: 12.0,
             ..base
         }
     }
@@ -286,6 +319,7 @@ impl Setup {
         }
         crate::error::positive("holed xi_l", params.xi_l)?;
         crate::error::positive("holed tail", params.tail)?;
+        crate::error::positive("holed hole_decay", params.hole_decay)?;
         let mat = plate.material();
         let nu = mat.poisson_ratio();
         let g = mat.shear_modulus();
@@ -364,7 +398,7 @@ impl Setup {
         // its endpoint expansion there)
         let z_min = z_cheb[m / 2 - 1];
         let xi_l = params.xi_l / d;
-        let xi_max = (13.0 / z_min).max(2.0 * xi_l);
+        let xi_max = (params.hole_decay / z_min).max(2.0 * xi_l);
         let c_max = b + params.reach * d;
         let width = |omega: f64| (4.5 * PI / omega).min(1.0 / d);
         let mut rule = panels(0.0, xi_l, width(c_max + 8.0 * d + a));
@@ -457,7 +491,7 @@ pub fn two_plate_hole_pressure(
     let (r_o, last) = (found.r_o, &found.last);
     let curve: Vec<(f64, f64)> = at
         .iter()
-        .map(|x| setup.a + x * (r_o - setup.a))
+        .map(|&x| fraction_radius(setup.a, r_o, x))
         .zip(last.pressure.iter().copied())
         .collect();
     let mut info = HoledInfo {

@@ -76,7 +76,10 @@ impl Setup {
             Some(i) => seen.swap_remove(i).1,
             None => {
                 solves += 1;
-                let radii: Vec<f64> = at.iter().map(|x| self.a + x * (r_o - self.a)).collect();
+                let radii: Vec<f64> = at
+                    .iter()
+                    .map(|&x| fraction_radius(self.a, r_o, x))
+                    .collect();
                 self.crack(r_o, n, params, &radii)?
             }
         };
@@ -86,6 +89,16 @@ impl Setup {
             solves,
             edges,
         })
+    }
+}
+
+/// r = A + x(R_o − A), exactly R_o at x = 1 (where the pressure is zero: one ulp inside, its
+/// edge term φ(R_o)/√(R_o² − r²) is the root's rounding over 1e-8 R_o).
+pub(super) fn fraction_radius(a: f64, r_o: f64, x: f64) -> f64 {
+    if x >= 1.0 {
+        r_o
+    } else {
+        a + x * (r_o - a)
     }
 }
 
