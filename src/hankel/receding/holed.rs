@@ -62,7 +62,8 @@
 //! at A = 0.2D, 0.1D, 0.05D — the predicted A² (observed rates 2.07, 1.99). The interface
 //! pressure ([`two_plate_hole_pressure`]) balances the load within the hole's residual shear
 //! (`tests/hankel/two_plate_hole_pressure.rs`: −7.8e-9, −1.3e-10 at ξ_l = 40, 70/D, measured
-//! with the two-term expansion). On (1, 2.2) R_o/A = 2.623523384608 (two-term expansion) moved
+//! with the two-term expansion; −5.8e-11 at 70/D with three). With the changes below, A → 0
+//! re-measured: −8.26e-8, −1.97e-8, −4.97e-9 (rates 2.06, 1.99). On (1, 2.2) R_o/A = 2.623523384608 (two-term expansion) moved
 //! ≤ 1.1e-8 under each knob doubled; the FE at 1e-6 stalls 4.7e-6 below, about its own outer-cut
 //! estimate (example 19).
 //!
@@ -108,6 +109,7 @@
 
 use super::contact::RecedingError;
 use super::grid::PanelInterp;
+pub use super::holed_params::HoledParams;
 use super::holed_search::{estimate, fraction_radius};
 use super::layer_field::bottom_kernels;
 use super::system::panels;
@@ -115,103 +117,12 @@ use crate::error::InputError;
 use crate::hankel::hole::corner::CornerLoads;
 use crate::hankel::hole::eigen::{symmetric_roots, Mode};
 use crate::hankel::hole::fit::heights;
-use crate::hankel::hole::{HoleParams, HolePlate};
+use crate::hankel::hole::HolePlate;
 use crate::hankel::midplane::MidplaneCurve;
 use crate::hankel::transform::LoadTransform;
 use crate::joint::{OuterRadius, SinglePlate};
 use std::f64::consts::PI;
 use std::time::Instant;
-
-/// Knobs of [`two_plate_hole`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct HoledParams {
-    /// The hole correction: modes N (`terms`, default 16 here) and corner terms, for both the
-    /// bilateral plate and the crack field's correction.
-    pub hole: HoleParams,
-    /// Nyström points on [0, c] (default 24).
-    pub nodes: usize,
-    /// Chebyshev heights on [−D, D] at which the crack field's hole traction is integrated
-    /// (default 18; even).
-    pub heights: usize,
-    /// Root tolerance on R_o relative to D (default 1e-10).
-    pub rel_tol: f64,
-    /// The crack iteration stops when φ(c) changes by less than this fraction of p̄(0)/c
-    /// (default 1e-12).
-    pub iteration_tol: f64,
-    /// Iterations allowed per contact radius (default 60).
-    pub max_iterations: usize,
-    /// Scan step as a fraction of D (default 0.25).
-    pub step: f64,
-    /// The scan gives up at B + `reach`·D (default 8).
-    pub reach: f64,
-    /// Whether to estimate the error by the two extra runs (⌈3n/4⌉ points; N/2 modes).
-    pub estimate: bool,
-    /// ξ·D beyond which l's transform is its two-term endpoint expansion (default 40).
-    pub xi_l: f64,
-    /// Length beyond c over which l is integrated, in D (default 14: l ~ e^(−2.1(r − c)/D)).
-    pub tail: f64,
-    /// Whether the coarse variant of the estimate also lowers ξ_l to 2/3 (default false), so
-    /// that the estimate covers the cutoff of l's transform, whose error falls only like ξ_l⁻³.
-    pub vary_xi_l: bool,
-    /// The hole ξ-rule ends where e^(−ξ z_min) = e^(−`hole_decay`) at the lowest Chebyshev height
-    /// z_min (default 13: 2e-6). 10 saves 15 % of the time and moves R_o by ≤ 2e-8 R_o on Table 1
-    /// rows 1, 4, 12, but the estimate then fell short of the error on (0.75, 1.3) (7.8e-9 against
-    /// 9.9e-9): not used by [`HoledParams::for_tolerance`].
-    pub hole_decay: f64,
-    /// Depth of the Anderson acceleration of the crack iteration (default 3; 0: the plain
-    /// iteration), module `anderson`.
-    pub anderson: usize,
-}
-
-impl Default for HoledParams {
-    fn default() -> Self {
-        Self {
-            hole: HoleParams {
-                terms: Some(16),
-                ..HoleParams::default()
-            },
-            nodes: 24,
-            heights: 18,
-            rel_tol: 1e-10,
-            iteration_tol: 1e-12,
-            max_iterations: 60,
-            step: 0.25,
-            reach: 8.0,
-            estimate: true,
-            xi_l: 40.0,
-            tail: 14.0,
-            vary_xi_l: false,
-            hole_decay: 13.0,
-            anderson: 3,
-        }
-    }
-}
-
-impl HoledParams {
-    /// Knobs for R_o to a relative tolerance `tol`, the estimate covering every knob but the
-    /// tail: for `tol` ≥ 1e-6, 16 Nyström points, ξ_l = 28/D, a tail of 12D (l ~ e^(−2.1(r−c)/D):
-    /// 10D moved R_o by 1.5e-9 R_o on Table 1 row 1, 12D by ~2e-11), root and iteration
-    /// tolerances 1e-9 (of D; of p̄(0)/c), and the estimate's coarse variant also at 2/3 of ξ_l;
-    /// tighter, the defaults with ξ_l varied as well. Checked against a run finer in every knob
-    /// by `tests/hankel/two_plate_hole_fast.rs`.
-    pub fn for_tolerance(tol: f64) -> Self {
-        let base = Self {
-            vary_xi_l: true,
-            ..Self::default()
-        };
-        if tol < 1e-6 {
-            return base;
-        }
-        Self {
-            nodes: 16,
-            rel_tol: 1e-9,
-            iteration_tol: 1e-9,
-            xi_l: 28.0,
-            tail: 12.0,
-            ..base
-        }
-    }
-}
 
 /// What [`two_plate_hole`] did and how well.
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]

@@ -37,6 +37,7 @@ pub mod contact;
 mod crack;
 pub mod grid;
 pub mod holed;
+mod holed_params;
 mod holed_search;
 pub mod layer;
 pub mod layer_field;
