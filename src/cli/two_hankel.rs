@@ -10,7 +10,8 @@
 //!
 //! # Cost
 //!
-//! The holed route's: about 2.4 s of CPU per geometry (Table 1 row 1), timed by example 19.
+//! The holed route's with the knobs for --tol ([`HoledParams::for_tolerance`]): about 1 s of
+//! CPU per geometry at --tol 1e-6 or looser (Table 1), timed by example 19.
 
 use super::exit::{sig, Status};
 use super::two_args::Args;
@@ -96,8 +97,8 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
             .collect(),
         None => Vec::new(),
     };
-    let (out, curve) =
-        two_plate_hole_pressure(&plate, &HoledParams::default(), &at).map_err(|e| {
+    let (out, curve) = two_plate_hole_pressure(&plate, &HoledParams::for_tolerance(args.tol), &at)
+        .map_err(|e| {
             anyhow::anyhow!("the Hankel route cannot treat this joint ({e}); try --method fem")
         })?;
     let converged = out.info.r_o_error <= args.tol * out.r_o;

@@ -122,7 +122,8 @@ pub fn solve(
     } else {
         Vec::new()
     };
-    let (h, curve) = two_plate_hole_pressure(&plate, &HoledParams::default(), &at)?;
+    let (h, curve) =
+        two_plate_hole_pressure(&plate, &HoledParams::for_tolerance(scene.tolerance), &at)?;
     out.r_o = h.r_o / length;
     out.r_o_error = h.info.r_o_error / length;
     out.converged = h.info.r_o_error <= scene.tolerance * h.r_o;

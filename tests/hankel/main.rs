@@ -20,4 +20,5 @@ mod shear_kernels;
 mod slab;
 mod transform;
 mod two_plate_hole;
+mod two_plate_hole_fast;
 mod two_plate_hole_pressure;

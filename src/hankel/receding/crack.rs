@@ -1,8 +1,8 @@
-//! One trial contact radius of the holed two-plate model ([`super::holed`]), and the search for
-//! R_o over them: the crack field's Fredholm equation with a bottom load, its traction on the
-//! hole at Chebyshev heights, the hole correction's fit, the iteration l ← s₀ + σ_z^Z
-//! (derivation in [`super::holed`]) and the contact pressure, with the quadrature helpers they
-//! share.
+//! One trial contact radius of the holed two-plate model ([`super::holed`]; the search for R_o
+//! over them is module `holed_search`): the crack field's Fredholm equation with a bottom load,
+//! its traction on the hole at Chebyshev heights, the hole correction's fit, the iteration
+//! l ← s₀ + σ_z^Z (derivation in [`super::holed`], Anderson-accelerated, module `anderson`) and
+//! the contact pressure, with the quadrature helpers they share.
 //!
 //! # Accuracy
 //!
@@ -12,19 +12,20 @@
 //!
 //! # Cost
 //!
-//! Most of the holed route's cost, about 0.17 s of CPU per contact radius on Table 1 row 1: the
-//! cosine and J₀ tables of [`super::grid`], the corner fields' midplane rows, the H_l weights;
-//! timed by example 19 and the ignored study `table1_rows_record`.
+//! Most of the holed route's cost, about 0.1 s of CPU per contact radius on Table 1: the
+//! cosine and J₀ tables of [`super::grid`] and the H_l weights, rebuilt for every radius (rows
+//! in parallel), and the Anderson-accelerated iteration; timed by example 19 (breakdown in
+//! [`super::holed`]).
 
+use super::anderson::{pack, unpack, Anderson};
 use super::contact::RecedingError;
-use super::grid::PanelGrid;
+use super::grid::{PanelGrid, PanelInterp};
 use super::holed::{Crack, HoledParams, Setup};
-use super::search::{root, Scan};
 use super::system::{cos_m1, panels, Nystrom, XiRule};
 use crate::hankel::hole::fit::{fit, Boundary, Fit, HoleData};
 use crate::hankel::transform::LoadTransform;
 use crate::load::FaceLoad;
-use crate::numerics::quadrature::gauss_legendre;
+use rayon::prelude::*;
 use std::f64::consts::{FRAC_2_PI, PI};
 
 /// J₀(x) − 1 without cancellation at small x.
@@ -35,77 +36,6 @@ fn j0_m1(x: f64) -> f64 {
         -y * (1.0 - y / 4.0 * (1.0 - y / 9.0 * (1.0 - y / 16.0)))
     } else {
         libm::j0(x) - 1.0
-    }
-}
-
-/// Barycentric interpolation on Gauss–Legendre panels of equal width from `start`.
-struct PanelInterp {
-    start: f64,
-    width: f64,
-    panels: usize,
-    nodes: Vec<f64>,
-    weights: Vec<f64>,
-}
-
-impl PanelInterp {
-    fn new(start: f64, end: f64, width: f64) -> Self {
-        let panels = ((end - start) / width).ceil().max(1.0) as usize;
-        let nodes: Vec<f64> = gauss_legendre(20).iter().map(|&(x, _)| x).collect();
-        let weights = (0..nodes.len())
-            .map(|j| {
-                1.0 / (0..nodes.len())
-                    .filter(|&k| k != j)
-                    .map(|k| nodes[j] - nodes[k])
-                    .product::<f64>()
-            })
-            .collect();
-        Self {
-            start,
-            width: (end - start) / panels as f64,
-            panels,
-            nodes,
-            weights,
-        }
-    }
-
-    /// The nodes and weights of every panel, in order.
-    fn grid(&self) -> PanelGrid {
-        PanelGrid::equal(self.start, self.width, self.panels)
-    }
-
-    /// The interpolant of `values` (one per node of [`Self::grid`]) at `s` (0 beyond the end).
-    fn eval(&self, values: &[f64], s: f64) -> f64 {
-        self.weights_at(s).map_or(0.0, |(k, w)| {
-            w.iter()
-                .zip(&values[20 * k..20 * (k + 1)])
-                .map(|(w, v)| w * v)
-                .sum()
-        })
-    }
-
-    /// The interpolation weights at `s`: its panel k and the weights of that panel's 20 values
-    /// (barycentric formula); None beyond the grid.
-    fn weights_at(&self, s: f64) -> Option<(usize, [f64; 20])> {
-        let u = (s - self.start) / self.width;
-        if !(0.0..=self.panels as f64).contains(&u) {
-            return None;
-        }
-        let k = (u.floor() as usize).min(self.panels - 1);
-        let x = 2.0 * (u - k as f64) - 1.0;
-        let mut out = [0.0; 20];
-        let mut den = 0.0;
-        for (j, (xj, wj)) in self.nodes.iter().zip(&self.weights).enumerate() {
-            let dx = x - xj;
-            if dx == 0.0 {
-                let mut one = [0.0; 20];
-                one[j] = 1.0;
-                return Some((k, one));
-            }
-            out[j] = wj / dx;
-            den += out[j];
-        }
-        out.iter_mut().for_each(|w| *w /= den);
-        Some((k, out))
     }
 }
 
@@ -139,19 +69,15 @@ impl Setup {
             .collect();
         let corner_mid: Vec<Vec<f64>> = match &self.corner {
             None => vec![Vec::new(); s_rule.len()],
-            Some(cl) => {
-                let rows = cl.midplane_basis_rows(self.r_max, s_rule.len(), |xi, row| {
-                    s_grid.j0_row(xi, row)
-                });
-                if rows.len() == s_rule.len() {
-                    rows
-                } else {
-                    s_rule
-                        .iter()
-                        .map(|&(s, _)| cl.midplane_basis(s, self.r_max))
-                        .collect()
-                }
-            }
+            Some(cl) => s_rule
+                .iter()
+                .map(|&(s, _)| {
+                    self.corner_table
+                        .as_ref()
+                        .and_then(|(interp, rows)| interp.rows_at(rows, s))
+                        .unwrap_or_else(|| cl.midplane_basis(s, self.r_max))
+                })
+                .collect(),
         };
         // s₀ = slab + modes + corner: the bilateral plate's corner fields are the crack
         // correction's (same A, D, ν, exponents), so their basis rows serve both
@@ -190,18 +116,22 @@ impl Setup {
         let nt = t_rule.len();
         // the tables, one row per ξ (contiguous in t or s): cos ξt, cos ξt − 1 on the rule's
         // ξ, cos ξt − 1 on the hole's
-        let mut cos_t = vec![vec![0.0; nt]; xi_r.len()];
-        let mut cosm1_t = vec![vec![0.0; nt]; xi_r.len()];
-        for (k, &x) in xi_r.iter().enumerate() {
-            t_grid.cos_rows(x, &mut cos_t[k][..nf], &mut cosm1_t[k][..nf]);
-            for (i, &(t, _)) in graded.iter().enumerate() {
-                cos_t[k][nf + i] = (x * t).cos();
-                cosm1_t[k][nf + i] = cos_m1(x * t);
-            }
-        }
+        // (rows in parallel: they are independent)
+        let (cos_t, cosm1_t): (Vec<Vec<f64>>, Vec<Vec<f64>>) = xi_r
+            .par_iter()
+            .map(|&x| {
+                let (mut cos, mut cosm1) = (vec![0.0; nt], vec![0.0; nt]);
+                t_grid.cos_rows(x, &mut cos[..nf], &mut cosm1[..nf]);
+                for (i, &(t, _)) in graded.iter().enumerate() {
+                    cos[nf + i] = (x * t).cos();
+                    cosm1[nf + i] = cos_m1(x * t);
+                }
+                (cos, cosm1)
+            })
+            .unzip();
         let hole_cosm1: Vec<Vec<f64>> = self
             .hole_xi
-            .iter()
+            .par_iter()
             .map(|h| {
                 let mut row = vec![0.0; nt];
                 t_grid.cos_m1_row(h.0, &mut row[..nf]);
@@ -225,9 +155,12 @@ impl Setup {
                 })
                 .unzip()
         };
-        let rule_j: Vec<(Vec<f64>, Vec<f64>)> = xi_r.iter().map(|&x| js(x)).collect();
+        let rule_j: Vec<(Vec<f64>, Vec<f64>)> = xi_r.par_iter().map(|&x| js(x)).collect();
         let hole_low = self.hole_xi.partition_point(|h| h.0 <= self.xi_l);
-        let hole_j: Vec<Vec<f64>> = self.hole_xi[..hole_low].iter().map(|h| js(h.0).1).collect();
+        let hole_j: Vec<Vec<f64>> = self.hole_xi[..hole_low]
+            .par_iter()
+            .map(|h| js(h.0).1)
+            .collect();
         let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(a, b)| a * b).sum::<f64>();
         // H_l(t) = −(2/π)∫_c^{c+tail} l(s) s ds/√(s² − t²) = −(2/π)∫ l(√(t² + v²)) dv (v from
         // √(c² − t²)): linear in l's node values, so one row of weights per t, reused by
@@ -247,7 +180,7 @@ impl Setup {
             }
             row
         };
-        let h_rows: Vec<Vec<f64>> = t_rule.iter().map(|&(t, _)| h_row(t)).collect();
+        let h_rows: Vec<Vec<f64>> = t_rule.par_iter().map(|&(t, _)| h_row(t)).collect();
         let h_edge = h_row(c);
         let mut fitted: Option<Fit> = None;
         let mut last = f64::NAN;
@@ -261,6 +194,7 @@ impl Setup {
         let scale = self.p0 / c;
         // the last solve and the l and correction it was solved with (for the pressure)
         let mut state: Option<(Nystrom, Vec<f64>, Option<Fit>)> = None;
+        let mut accel = (params.anderson > 0).then(|| Anderson::new(params.anderson));
         for it in 1..=params.max_iterations {
             let l: Vec<f64> = (0..s_rule.len())
                 .map(|i| {
@@ -308,9 +242,14 @@ impl Setup {
             let hstep = 1e-3 * lint.width;
             let dl = (-3.0 * lc + 4.0 * lint.eval(&l, c + hstep) - lint.eval(&l, c + 2.0 * hstep))
                 / (2.0 * hstep);
+            // f = (s l′)′ = l′ + s l″ at c, l″ by the one-sided four-point difference
+            let h2 = 0.02 * lint.width;
+            let at = |j: f64| lint.eval(&l, c + j * h2);
+            let d2l = (2.0 * lc - 5.0 * at(1.0) + 4.0 * at(2.0) - at(3.0)) / (h2 * h2);
+            let fc = dl + c * d2l;
             let btil: Vec<f64> = self
                 .hole_xi
-                .iter()
+                .par_iter()
                 .enumerate()
                 .map(|(k, &(xi, ..))| {
                     let q = dot(&wphi, &hole_cosm1[k]);
@@ -318,7 +257,8 @@ impl Setup {
                         dot(&hole_j[k], &l)
                     } else {
                         let x = xi * c;
-                        -lc * c * libm::j1(x) / xi - dl * c * libm::j0(x) / (xi * xi) - l0
+                        let (j0, j1) = (libm::j0(x), libm::j1(x));
+                        -lc * c * j1 / xi - dl * c * j0 / (xi * xi) + fc * j1 / (xi * xi * xi) - l0
                     };
                     q + lt
                 })
@@ -360,6 +300,16 @@ impl Setup {
                     },
                 )
                 .0 / self.p_ref;
+            let f = match accel.as_mut() {
+                Some(acc) => {
+                    let x = fitted
+                        .as_ref()
+                        .map_or_else(|| vec![0.0; pack(&f).len()], pack);
+                    let next = acc.next(&x, pack(&f));
+                    unpack(f, &next)
+                }
+                None => f,
+            };
             let used = fitted.replace(f);
             let done = (edge - last).abs() < params.iteration_tol * scale;
             state = Some((sys, l, used));
@@ -448,38 +398,5 @@ impl Setup {
                 extra: &extra,
             }],
         )
-    }
-}
-
-impl Setup {
-    /// R_o with `n` Nyström points (bracketing `near` first): (R_o, last solve, solves).
-    pub(super) fn search(
-        &self,
-        b: f64,
-        n: usize,
-        params: &HoledParams,
-        near: Option<f64>,
-        at: &[f64],
-    ) -> Result<(f64, Crack, usize), RecedingError> {
-        let mut solves = 0;
-        let mut edge = |c: f64| {
-            solves += 1;
-            self.crack(c, n, params, &[]).map(|k| k.edge)
-        };
-        let scan = Scan {
-            b,
-            d: self.d,
-            step: params.step * self.d,
-            end: b + params.reach * self.d,
-            tol: params.rel_tol * self.d,
-            max_iterations: 100,
-        };
-        let r_o = root(&mut edge, &scan, near)?.ok_or(RecedingError::NotFound {
-            from: b,
-            to: scan.end,
-        })?;
-        let radii: Vec<f64> = at.iter().map(|x| self.a + x * (r_o - self.a)).collect();
-        let last = self.crack(r_o, n, params, &radii)?;
-        Ok((r_o, last, solves + 1))
     }
 }

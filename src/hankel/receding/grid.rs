@@ -202,3 +202,91 @@ fn j0_asymptotic(x: f64, cos: f64, sin: f64) -> f64 {
     let sin_w = (sin - cos) * FRAC_1_SQRT_2;
     (2.0 / (PI * x)).sqrt() * (p * cos_w - q * sin_w)
 }
+
+/// Barycentric interpolation on Gauss–Legendre panels of equal width from `start`.
+pub(crate) struct PanelInterp {
+    start: f64,
+    /// The panels' width.
+    pub(crate) width: f64,
+    panels: usize,
+    nodes: Vec<f64>,
+    weights: Vec<f64>,
+}
+
+impl PanelInterp {
+    pub(crate) fn new(start: f64, end: f64, width: f64) -> Self {
+        let panels = ((end - start) / width).ceil().max(1.0) as usize;
+        let nodes: Vec<f64> = gauss_legendre(20).iter().map(|&(x, _)| x).collect();
+        let weights = (0..nodes.len())
+            .map(|j| {
+                1.0 / (0..nodes.len())
+                    .filter(|&k| k != j)
+                    .map(|k| nodes[j] - nodes[k])
+                    .product::<f64>()
+            })
+            .collect();
+        Self {
+            start,
+            width: (end - start) / panels as f64,
+            panels,
+            nodes,
+            weights,
+        }
+    }
+
+    /// The nodes and weights of every panel, in order.
+    pub(crate) fn grid(&self) -> PanelGrid {
+        PanelGrid::equal(self.start, self.width, self.panels)
+    }
+
+    /// The interpolant of `values` (one per node of [`Self::grid`]) at `s` (0 beyond the end).
+    pub(crate) fn eval(&self, values: &[f64], s: f64) -> f64 {
+        self.weights_at(s).map_or(0.0, |(k, w)| {
+            w.iter()
+                .zip(&values[20 * k..20 * (k + 1)])
+                .map(|(w, v)| w * v)
+                .sum()
+        })
+    }
+
+    /// The interpolation weights at `s`: its panel k and the weights of that panel's 20 values
+    /// (barycentric formula); None beyond the grid.
+    pub(crate) fn weights_at(&self, s: f64) -> Option<(usize, [f64; 20])> {
+        let u = (s - self.start) / self.width;
+        if !(0.0..=self.panels as f64).contains(&u) {
+            return None;
+        }
+        let k = (u.floor() as usize).min(self.panels - 1);
+        let x = 2.0 * (u - k as f64) - 1.0;
+        let mut out = [0.0; 20];
+        let mut den = 0.0;
+        for (j, (xj, wj)) in self.nodes.iter().zip(&self.weights).enumerate() {
+            let dx = x - xj;
+            if dx == 0.0 {
+                let mut one = [0.0; 20];
+                one[j] = 1.0;
+                return Some((k, one));
+            }
+            out[j] = wj / dx;
+            den += out[j];
+        }
+        out.iter_mut().for_each(|w| *w /= den);
+        Some((k, out))
+    }
+
+    /// The interpolant of a table with one row per node (`rows`, each of equal length) at `s`:
+    /// None beyond the grid or when the table does not match it.
+    pub(crate) fn rows_at(&self, rows: &[Vec<f64>], s: f64) -> Option<Vec<f64>> {
+        if rows.len() != 20 * self.panels {
+            return None;
+        }
+        let (k, w) = self.weights_at(s)?;
+        let mut out = vec![0.0; rows[20 * k].len()];
+        for (wj, row) in w.iter().zip(&rows[20 * k..20 * (k + 1)]) {
+            for (o, v) in out.iter_mut().zip(row) {
+                *o += wj * v;
+            }
+        }
+        Some(out)
+    }
+}

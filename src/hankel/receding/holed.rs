@@ -26,15 +26,20 @@
 //!
 //! The total is free on r > c exactly because of l's definition; Z's own σ_z there feeds back into
 //! l, so 2–3 are iterated (a contraction: X's traction on the hole and Z's stress beyond c both
-//! decay over c − A). The edge coefficient of the total is X's φ(c); R_o is its root, by the
-//! receding solver's scan and Brent search.
+//! decay over c − A), Anderson-accelerated (module `anderson`: 17 → 8 steps on the narrowest
+//! load). X's traction on the hole needs l's transform to ξ ≫ ξ_l; beyond ξ_l it is the
+//! endpoint expansion by parts, −l(c)cJ₁(ξc)/ξ − l′(c)cJ₀(ξc)/ξ² + (l′ + c l″)(c)J₁(ξc)/ξ³,
+//! exact to O(ξ^(−4.5)). The edge coefficient of the total is X's φ(c); R_o is its root, by the
+//! receding solver's scan and Brent search (module `holed_search`).
 //!
 //! **Error control.** R_o's estimate adds (a) the change from a run with ⌈3n/4⌉ Nyström points,
-//! (b) the change from a run with half the hole modes (the bilateral plate and Z), (c) the root
-//! tolerance; the residual traction on the hole is measured on the fit's check heights. Each
-//! variant's R_o is one Newton step from R_o (slope: a secant over 1e-3 D), its error ∝ the
-//! change squared (≤ 1e-6 D: negligible; as full searches to 2e-12 D on Table 1 row 1); a
-//! change beyond 0.01 D gets the full search.
+//! (b) the change from a run with half the hole modes (the bilateral plate and Z), 2/3 of the
+//! heights and, with [`HoledParams::vary_xi_l`], 2/3 of ξ_l, (c) the root tolerance; the
+//! residual traction on the hole is measured on the fit's check heights. Each variant's R_o is
+//! one Newton step from R_o (slope: a secant through two of the search's edge values), its error
+//! ∝ the change squared (≤ 1e-6 D: negligible; as full searches to 2e-12 D on Table 1 row 1); a
+//! change beyond 0.01 D gets the full search. [`HoledParams::for_tolerance`] picks the knobs for
+//! a tolerance.
 //!
 //! # Accuracy
 //!
@@ -56,20 +61,41 @@
 //! R_o minus the no-hole receding solver's under the disk load is −8.3e-8, −2.0e-8, −5.0e-9 (in, D = 0.1 in)
 //! at A = 0.2D, 0.1D, 0.05D — the predicted A² (observed rates 2.07, 1.99). The interface
 //! pressure ([`two_plate_hole_pressure`]) balances the load within the hole's residual shear
-//! (`tests/hankel/two_plate_hole_pressure.rs`: −7.8e-9, −1.3e-10 at ξ_l = 40, 70/D). On
-//! (1, 2.2) R_o/A = 2.623523384608 moves ≤ 1.1e-8 under each knob doubled; the FE at 1e-6 stalls
-//! 4.7e-6 below, about its own outer-cut estimate (example 19).
+//! (`tests/hankel/two_plate_hole_pressure.rs`: −7.8e-9, −1.3e-10 at ξ_l = 40, 70/D, measured
+//! with the two-term expansion; −5.8e-11 at 70/D with three). With the changes below, A → 0
+//! re-measured: −8.26e-8, −1.97e-8, −4.97e-9 (rates 2.06, 1.99). On (1, 2.2) R_o/A = 2.623523384608 (two-term expansion) moved
+//! ≤ 1.1e-8 under each knob doubled; the FE at 1e-6 stalls 4.7e-6 below, about its own outer-cut
+//! estimate (example 19).
+//!
+//! The third term of l's endpoint expansion moved the defaults' R_o on Table 1 by −1.2e-7 …
+//! +3.7e-8 R_o (largest on (0.5, 1.3), where R_o/A is now 2.4256930944): the two-term error in
+//! ξ_l fell like ξ_l⁻³ (1.5e-6, 5e-7, 1.3e-7 R_o at 20, 28, 40/D), the three-term error falls at
+//! rate ≈ 6 (1.6e-8, 1.3e-9 at 27, 40/D against 70/D; `tests/hankel/two_plate_hole_fast.rs`,
+//! `the_endpoint_expansion_converges_fast_in_its_cutoff`), and the defaults now agree with
+//! ξ_l = 70/D within 1.3e-9 R_o on all twelve rows. The knobs of
+//! [`HoledParams::for_tolerance`]`(1e-6)` lie within 1.1e-8 R_o of that finer run on all twelve,
+//! their estimates 3.8e-10 … 1.3e-6 R_o (over 1e-6, honestly not converged, on (0.5, 1.3) only);
+//! Anderson moves R_o by ≤ 3.7e-13 R_o (same file).
 //!
 //! # Cost
 //!
-//! 2.4 s of CPU per geometry with the error estimate (Table 1 row 1: 13 contact radii, about
-//! 0.17 s each; wall time 2–3× that on the shared 2-core machine; before the tables below, 11.7 s
-//! of CPU for 24 radii): each radius tabulates cos ξt (ξ of the Nyström and hole rules, t on
-//! [0, c]) and J₀(ξs) (s on [c, c + tail]) by [`super::grid`] (the addition theorem on equal
-//! panels, Hankel's expansion for J₀), the corner fields' midplane rows once for the bilateral
-//! plate and the correction, and the half-space part H_l as weights on l's nodes reused by every
-//! iteration. Example 19 times Table 1. Far from the issue's 10 ms still: the tables grow with
-//! the contact radius and are rebuilt for each; a c-independent tabulation is the next step.
+//! Example 19 times Table 1 (CPU seconds of all threads, load 3–5 on the 2 cores): with the
+//! default knobs 1.6–2.1 s per geometry (2.4 s before the changes below), with
+//! [`HoledParams::for_tolerance`]`(1e-6)` 0.9–1.3 s; the FE at --tol 1e-6 takes 1.0–1.2 s on the
+//! same rows (rows 1–2, same run). The issue's 10 ms (20× faster than the FE) is far off: each
+//! geometry solves 11 trial contact radii (about 9 for the search, one per estimate variant) at
+//! about 0.1 s each, and each radius rebuilds its tables — cos ξt on t ∈ [0, c] for the Nyström
+//! rule (~900 ξ) and the hole rule (~2600 ξ, to e^(−13) at the lowest height), J₀(ξs) on
+//! s ∈ [c, c + tail] (~500 s), the H_l weights — by [`super::grid`] (addition theorem on equal
+//! panels, Hankel's expansion for J₀); measured by `perf` on the 1e-6 knobs: J₀ rows 21 %, sines
+//! and cosines 24 %, the H_l weights 15 %, the iteration's products 18 %. Computed once per
+//! geometry: the bilateral plate, the hole rule and its kernels, the corner fields' midplane
+//! table. What has been cut: the Anderson-accelerated iteration (17 → 8 steps per radius on the
+//! narrowest load), the corner table (12 ms per radius), two solves per geometry (the search's
+//! last solve and the secant are reused), rayon over table rows and over the two variants.
+//! Next: tables independent of c (fixed panels in t and s with a partial panel at c; the
+//! full-panel rows then serve every radius, but hold 10⁷ entries per geometry) or a contact
+//! basis whose transforms are tabulated once.
 //!
 //! ```no_run
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -82,69 +108,21 @@
 //! ```
 
 use super::contact::RecedingError;
+use super::grid::PanelInterp;
+pub use super::holed_params::HoledParams;
+use super::holed_search::{estimate, fraction_radius};
 use super::layer_field::bottom_kernels;
 use super::system::panels;
 use crate::error::InputError;
 use crate::hankel::hole::corner::CornerLoads;
 use crate::hankel::hole::eigen::{symmetric_roots, Mode};
 use crate::hankel::hole::fit::heights;
-use crate::hankel::hole::{HoleParams, HolePlate};
+use crate::hankel::hole::HolePlate;
 use crate::hankel::midplane::MidplaneCurve;
 use crate::hankel::transform::LoadTransform;
 use crate::joint::{OuterRadius, SinglePlate};
 use std::f64::consts::PI;
 use std::time::Instant;
-
-/// Knobs of [`two_plate_hole`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct HoledParams {
-    /// The hole correction: modes N (`terms`, default 16 here) and corner terms, for both the
-    /// bilateral plate and the crack field's correction.
-    pub hole: HoleParams,
-    /// Nyström points on [0, c] (default 24).
-    pub nodes: usize,
-    /// Chebyshev heights on [−D, D] at which the crack field's hole traction is integrated
-    /// (default 18; even).
-    pub heights: usize,
-    /// Root tolerance on R_o relative to D (default 1e-10).
-    pub rel_tol: f64,
-    /// The crack iteration stops when φ(c) changes by less than this fraction of p̄(0)/c
-    /// (default 1e-12).
-    pub iteration_tol: f64,
-    /// Iterations allowed per contact radius (default 60).
-    pub max_iterations: usize,
-    /// Scan step as a fraction of D (default 0.25).
-    pub step: f64,
-    /// The scan gives up at B + `reach`·D (default 8).
-    pub reach: f64,
-    /// Whether to estimate the error by the two extra runs (⌈3n/4⌉ points; N/2 modes).
-    pub estimate: bool,
-    /// ξ·D beyond which l's transform is its two-term endpoint expansion (default 40).
-    pub xi_l: f64,
-    /// Length beyond c over which l is integrated, in D (default 14: l ~ e^(−2.1(r − c)/D)).
-    pub tail: f64,
-}
-
-impl Default for HoledParams {
-    fn default() -> Self {
-        Self {
-            hole: HoleParams {
-                terms: Some(16),
-                ..HoleParams::default()
-            },
-            nodes: 24,
-            heights: 18,
-            rel_tol: 1e-10,
-            iteration_tol: 1e-12,
-            max_iterations: 60,
-            step: 0.25,
-            reach: 8.0,
-            estimate: true,
-            xi_l: 40.0,
-            tail: 14.0,
-        }
-    }
-}
 
 /// What [`two_plate_hole`] did and how well.
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
@@ -207,6 +185,9 @@ pub(super) struct Setup {
     pub(super) hole_kernels: Vec<Vec<[f64; 3]>>,
     /// ξ beyond which l̄ is taken from its endpoint expansion.
     pub(super) xi_l: f64,
+    /// The corner fields' midplane σ_z (the basis rows of [`CornerLoads::midplane_basis`]) on
+    /// panels of D/2 over [A, r_max], interpolated by every trial radius.
+    pub(super) corner_table: Option<(PanelInterp, Vec<Vec<f64>>)>,
 }
 
 /// One contact radius solved.
@@ -221,7 +202,7 @@ pub(super) struct Crack {
 }
 
 impl Setup {
-    fn new(plate: &SinglePlate, params: &HoledParams) -> Result<Self, RecedingError> {
+    pub(super) fn new(plate: &SinglePlate, params: &HoledParams) -> Result<Self, RecedingError> {
         let (a, d) = (plate.hole_radius(), plate.half_thickness());
         if a <= 0.0 {
             return Err(InputError::Parameter {
@@ -249,6 +230,7 @@ impl Setup {
         }
         crate::error::positive("holed xi_l", params.xi_l)?;
         crate::error::positive("holed tail", params.tail)?;
+        crate::error::positive("holed hole_decay", params.hole_decay)?;
         let mat = plate.material();
         let nu = mat.poisson_ratio();
         let g = mat.shear_modulus();
@@ -327,7 +309,7 @@ impl Setup {
         // its endpoint expansion there)
         let z_min = z_cheb[m / 2 - 1];
         let xi_l = params.xi_l / d;
-        let xi_max = (13.0 / z_min).max(2.0 * xi_l);
+        let xi_max = (params.hole_decay / z_min).max(2.0 * xi_l);
         let c_max = b + params.reach * d;
         let width = |omega: f64| (4.5 * PI / omega).min(1.0 / d);
         let mut rule = panels(0.0, xi_l, width(c_max + 8.0 * d + a));
@@ -352,7 +334,16 @@ impl Setup {
                     .collect()
             })
             .collect();
+        // the corner fields are analytic in a strip of half-width ≈ D about the midplane's
+        // r-axis (their corner is D away): 20-point panels of D/2 interpolate them to ~1e-18
+        let corner_table = corner.as_ref().map(|cl| {
+            let interp = PanelInterp::new(a, r_max, 0.5 * d);
+            let grid = interp.grid();
+            let rows = cl.midplane_basis_rows(r_max, grid.len(), |xi, row| grid.j0_row(xi, row));
+            (interp, rows)
+        });
         Ok(Self {
+            corner_table,
             a,
             d,
             p0: LoadTransform::new(load).eval(0.0),
@@ -407,10 +398,11 @@ pub fn two_plate_hole_pressure(
     let start = Instant::now();
     let setup = Setup::new(plate, params)?;
     let b = plate.load().outer();
-    let (r_o, last, mut solves) = setup.search(b, params.nodes, params, None, at)?;
+    let found = setup.search(b, params.nodes, params, None, at)?;
+    let (r_o, last) = (found.r_o, &found.last);
     let curve: Vec<(f64, f64)> = at
         .iter()
-        .map(|x| setup.a + x * (r_o - setup.a))
+        .map(|&x| fraction_radius(setup.a, r_o, x))
         .zip(last.pressure.iter().copied())
         .collect();
     let mut info = HoledInfo {
@@ -424,38 +416,10 @@ pub fn two_plate_hole_pressure(
         solves: 0,
         seconds: 0.0,
     };
+    let mut solves = found.solves;
     if params.estimate {
-        // each variant's R_o by one Newton step from R_o with the slope of the edge
-        // coefficient there (a secant over 1e-3 D): its change is ~1e-6 D or less, where the
-        // step's error, ∝ the change squared, is far below it; a larger change gets the search
-        let h = 1e-3 * setup.d;
-        let slope = (setup.crack(r_o + h, params.nodes, params, &[])?.edge - last.edge) / h;
-        solves += 1;
-        let variant = |setup: &Setup, p: &HoledParams| -> Result<(f64, usize), RecedingError> {
-            let step = -setup.crack(r_o, p.nodes, p, &[])?.edge / slope;
-            if step.is_finite() && step.abs() < 0.01 * setup.d {
-                return Ok((r_o + step, 1));
-            }
-            setup
-                .search(b, p.nodes, p, Some(r_o), &[])
-                .map(|(r, _, n)| (r, n + 1))
-        };
-        let fewer = HoledParams {
-            nodes: (3 * params.nodes).div_ceil(4).max(4),
-            ..*params
-        };
-        let (r1, s1) = variant(&setup, &fewer)?;
-        let half = HoledParams {
-            hole: HoleParams {
-                terms: Some((setup.modes.len() / 2).max(1)),
-                ..params.hole
-            },
-            heights: (params.heights / 3 * 2).max(4),
-            ..*params
-        };
-        let setup_half = Setup::new(plate, &half)?;
-        let (r2, s2) = variant(&setup_half, &half)?;
-        solves += s1 + s2;
+        let ((r1, r2), s) = estimate(&setup, plate, params, &found)?;
+        solves += s;
         info.r_o_fewer_nodes = r1;
         info.r_o_half_terms = r2;
         info.r_o_error += (r1 - r_o).abs() + (r2 - r_o).abs();

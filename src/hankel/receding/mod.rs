@@ -32,10 +32,13 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod anderson;
 pub mod contact;
 mod crack;
 pub mod grid;
 pub mod holed;
+mod holed_params;
+mod holed_search;
 pub mod layer;
 pub mod layer_field;
 mod search;

@@ -1,0 +1,111 @@
+//! The knobs of the holed two-plate route ([`super::holed`]): [`HoledParams`], its defaults
+//! and [`HoledParams::for_tolerance`], the knobs for a relative tolerance on R_o.
+//!
+//! # Accuracy
+//!
+//! What each knob buys is measured in [`super::holed`]'s docs; the knobs for 1e-6 against a run
+//! finer in every knob: `tests/hankel/two_plate_hole_fast.rs`
+//! (`knobs_for_1e6_are_within_their_estimate_of_a_finer_run`).
+//!
+//! # Cost
+//!
+//! None of its own; the route's cost with each set of knobs: example 19.
+//!
+//! ```
+//! use boltzone::hankel::receding::holed::HoledParams;
+//! let p = HoledParams::for_tolerance(1e-6);
+//! assert!(p.vary_xi_l && p.nodes < HoledParams::default().nodes);
+//! ```
+
+use crate::hankel::hole::HoleParams;
+
+/// Knobs of [`two_plate_hole`](super::holed::two_plate_hole).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HoledParams {
+    /// The hole correction: modes N (`terms`, default 16 here) and corner terms, for both the
+    /// bilateral plate and the crack field's correction.
+    pub hole: HoleParams,
+    /// Nyström points on [0, c] (default 24).
+    pub nodes: usize,
+    /// Chebyshev heights on [−D, D] at which the crack field's hole traction is integrated
+    /// (default 18; even).
+    pub heights: usize,
+    /// Root tolerance on R_o relative to D (default 1e-10).
+    pub rel_tol: f64,
+    /// The crack iteration stops when φ(c) changes by less than this fraction of p̄(0)/c
+    /// (default 1e-12).
+    pub iteration_tol: f64,
+    /// Iterations allowed per contact radius (default 60).
+    pub max_iterations: usize,
+    /// Scan step as a fraction of D (default 0.25).
+    pub step: f64,
+    /// The scan gives up at B + `reach`·D (default 8).
+    pub reach: f64,
+    /// Whether to estimate the error by the two extra runs (⌈3n/4⌉ points; N/2 modes).
+    pub estimate: bool,
+    /// ξ·D beyond which l's transform is its two-term endpoint expansion (default 40).
+    pub xi_l: f64,
+    /// Length beyond c over which l is integrated, in D (default 14: l ~ e^(−2.1(r − c)/D)).
+    pub tail: f64,
+    /// Whether the coarse variant of the estimate also lowers ξ_l to 2/3 (default false), so
+    /// that the estimate covers the cutoff of l's transform, whose error falls only like ξ_l⁻³.
+    pub vary_xi_l: bool,
+    /// The hole ξ-rule ends where e^(−ξ z_min) = e^(−`hole_decay`) at the lowest Chebyshev height
+    /// z_min (default 13: 2e-6). 10 saves 15 % of the time and moves R_o by ≤ 2e-8 R_o on Table 1
+    /// rows 1, 4, 12, but the estimate then fell short of the error on (0.75, 1.3) (7.8e-9 against
+    /// 9.9e-9): not used by [`HoledParams::for_tolerance`].
+    pub hole_decay: f64,
+    /// Depth of the Anderson acceleration of the crack iteration (default 3; 0: the plain
+    /// iteration), module `anderson`.
+    pub anderson: usize,
+}
+
+impl Default for HoledParams {
+    fn default() -> Self {
+        Self {
+            hole: HoleParams {
+                terms: Some(16),
+                ..HoleParams::default()
+            },
+            nodes: 24,
+            heights: 18,
+            rel_tol: 1e-10,
+            iteration_tol: 1e-12,
+            max_iterations: 60,
+            step: 0.25,
+            reach: 8.0,
+            estimate: true,
+            xi_l: 40.0,
+            tail: 14.0,
+            vary_xi_l: false,
+            hole_decay: 13.0,
+            anderson: 3,
+        }
+    }
+}
+
+impl HoledParams {
+    /// Knobs for R_o to a relative tolerance `tol`, the estimate covering every knob but the
+    /// tail: for `tol` ≥ 1e-6, 16 Nyström points, ξ_l = 28/D, a tail of 12D (l ~ e^(−2.1(r−c)/D):
+    /// 10D moved R_o by 1.5e-9 R_o on Table 1 row 1, 12D by ~2e-11), root and iteration
+    /// tolerances 1e-9 (of D; of p̄(0)/c), and the estimate's coarse variant also at 2/3 of ξ_l;
+    /// tighter, the defaults with ξ_l varied as well. Checked against a run finer in every knob
+    /// by `tests/hankel/two_plate_hole_fast.rs`.
+    pub fn for_tolerance(tol: f64) -> Self {
+        let base = Self {
+            vary_xi_l: true,
+            ..Self::default()
+        };
+        if tol < 1e-6 {
+            return base;
+        }
+        Self {
+            nodes: 16,
+            rel_tol: 1e-9,
+            iteration_tol: 1e-9,
+            xi_l: 28.0,
+            tail: 12.0,
+            ..base
+        }
+    }
+}

@@ -1,0 +1,169 @@
+//! The search for R_o of the holed two-plate model ([`super::holed`]) and its error estimate:
+//! the trial contact radii of module `crack` driven by the receding solver's scan and Brent
+//! search ([`super::search::root`]), every edge value kept so that none is computed twice.
+//!
+//! - [`Setup::search`]: R_o, the solve at R_o (reused from the search when no pressure is asked
+//!   for) and the edge values (c, c·φ(c)/p̄(0)) the search computed;
+//! - [`estimate`]: the R_o of the two coarser variants (⌈3n/4⌉ Nyström points; half the hole
+//!   modes and 2/3 of the heights), each one Newton step from R_o with the slope of the edge
+//!   coefficient taken as a secant through two of the search's own edge values (a solve at
+//!   R_o + 10⁻³D only when the search left none between 10⁻⁵D and 10⁻²D of R_o); the two
+//!   variants run in parallel (rayon).
+//!
+//! # Accuracy
+//!
+//! The secant's relative error is about f″δ/f′ for points δ ≤ 10⁻²D apart; the Newton step's
+//! error is that times the step, below 10⁻⁸D for the steps (≤ 10⁻⁶D) of Table 1. Measured as the
+//! estimate against a finer run: `tests/hankel/two_plate_hole_fast.rs`.
+//!
+//! # Cost
+//!
+//! Two solves fewer per geometry than a fresh solve at R_o and a secant solve (13 → 11 on Table 1
+//! row 1); the variants' solves on two cores at once. Timed by example 19.
+
+use super::contact::RecedingError;
+use super::holed::{Crack, HoledParams, Setup};
+use super::search::{root, Scan};
+use crate::hankel::hole::HoleParams;
+use crate::joint::SinglePlate;
+
+/// What [`Setup::search`] found.
+pub(super) struct Found {
+    /// The contact radius R_o.
+    pub(super) r_o: f64,
+    /// The solve at R_o (with the pressure at the radii asked for).
+    pub(super) last: Crack,
+    /// Contact radii solved.
+    pub(super) solves: usize,
+    /// Every edge value of the search, (c, c·φ(c)/p̄(0)).
+    pub(super) edges: Vec<(f64, f64)>,
+}
+
+impl Setup {
+    /// R_o with `n` Nyström points (bracketing `near` first) and the contact pressure at
+    /// r = A + x(R_o − A) for x in `at`.
+    pub(super) fn search(
+        &self,
+        b: f64,
+        n: usize,
+        params: &HoledParams,
+        near: Option<f64>,
+        at: &[f64],
+    ) -> Result<Found, RecedingError> {
+        let mut seen: Vec<(f64, Crack)> = Vec::new();
+        let mut edge = |c: f64| {
+            let k = self.crack(c, n, params, &[])?;
+            let e = k.edge;
+            seen.push((c, k));
+            Ok::<f64, RecedingError>(e)
+        };
+        let scan = Scan {
+            b,
+            d: self.d,
+            step: params.step * self.d,
+            end: b + params.reach * self.d,
+            tol: params.rel_tol * self.d,
+            max_iterations: 100,
+        };
+        let r_o = root(&mut edge, &scan, near)?.ok_or(RecedingError::NotFound {
+            from: b,
+            to: scan.end,
+        })?;
+        let edges: Vec<(f64, f64)> = seen.iter().map(|(c, k)| (*c, k.edge)).collect();
+        let mut solves = seen.len();
+        let reuse = seen.iter().position(|(c, _)| *c == r_o);
+        let last = match reuse.filter(|_| at.is_empty()) {
+            Some(i) => seen.swap_remove(i).1,
+            None => {
+                solves += 1;
+                let radii: Vec<f64> = at
+                    .iter()
+                    .map(|&x| fraction_radius(self.a, r_o, x))
+                    .collect();
+                self.crack(r_o, n, params, &radii)?
+            }
+        };
+        Ok(Found {
+            r_o,
+            last,
+            solves,
+            edges,
+        })
+    }
+}
+
+/// r = A + x(R_o − A), exactly R_o at x = 1 (where the pressure is zero: one ulp inside, its
+/// edge term φ(R_o)/√(R_o² − r²) is the root's rounding over 1e-8 R_o).
+pub(super) fn fraction_radius(a: f64, r_o: f64, x: f64) -> f64 {
+    if x >= 1.0 {
+        r_o
+    } else {
+        a + x * (r_o - a)
+    }
+}
+
+/// The slope of the edge coefficient at R_o: a secant through the edge value at R_o and the
+/// nearest other one of the search between 10⁻⁵D and 10⁻²D away; `None` when there is none.
+fn secant_slope(found: &Found, d: f64) -> Option<f64> {
+    let r_o = found.r_o;
+    let near = found
+        .edges
+        .iter()
+        .filter(|(c, _)| (1e-5 * d..=1e-2 * d).contains(&(c - r_o).abs()))
+        .min_by(|x, y| (x.0 - r_o).abs().total_cmp(&(y.0 - r_o).abs()))?;
+    Some((near.1 - found.last.edge) / (near.0 - r_o))
+}
+
+/// The variants' R_o (⌈3n/4⌉ points; half the modes and 2/3 of the heights) and the solves
+/// they took: ((R_o fewer nodes, R_o half terms), solves).
+pub(super) fn estimate(
+    setup: &Setup,
+    plate: &SinglePlate,
+    params: &HoledParams,
+    found: &Found,
+) -> Result<((f64, f64), usize), RecedingError> {
+    let (r_o, b) = (found.r_o, plate.load().outer());
+    // each variant's R_o by one Newton step from R_o: its change is ~1e-6 D or less, where the
+    // step's error, ∝ the change squared, is far below it; a larger change gets the search
+    let (slope, mut solves) = match secant_slope(found, setup.d) {
+        Some(s) => (s, 0),
+        None => {
+            let h = 1e-3 * setup.d;
+            let up = setup.crack(r_o + h, params.nodes, params, &[])?.edge;
+            ((up - found.last.edge) / h, 1)
+        }
+    };
+    let variant = |setup: &Setup, p: &HoledParams| -> Result<(f64, usize), RecedingError> {
+        let step = -setup.crack(r_o, p.nodes, p, &[])?.edge / slope;
+        if step.is_finite() && step.abs() < 0.01 * setup.d {
+            return Ok((r_o + step, 1));
+        }
+        setup
+            .search(b, p.nodes, p, Some(r_o), &[])
+            .map(|f| (f.r_o, f.solves))
+    };
+    let fewer = HoledParams {
+        nodes: (3 * params.nodes).div_ceil(4).max(4),
+        ..*params
+    };
+    let half = HoledParams {
+        hole: HoleParams {
+            terms: Some((setup.modes.len() / 2).max(1)),
+            ..params.hole
+        },
+        heights: (params.heights / 3 * 2).max(4),
+        xi_l: if params.vary_xi_l {
+            params.xi_l * 2.0 / 3.0
+        } else {
+            params.xi_l
+        },
+        ..*params
+    };
+    let (r1, r2) = rayon::join(
+        || variant(setup, &fewer),
+        || Setup::new(plate, &half).and_then(|s| variant(&s, &half)),
+    );
+    let ((r1, s1), (r2, s2)) = (r1?, r2?);
+    solves += s1 + s2;
+    Ok(((r1, r2), solves))
+}
