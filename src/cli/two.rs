@@ -29,12 +29,6 @@ use boltzone::fem::ElementKind;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Peak, Plate};
 use std::f64::consts::PI;
 
-/// `--method auto` takes the Hankel route only below this tolerance: above it the FE is 10–100×
-/// faster and its estimate held on all of Table 1 at 1e-4 (tests/hankel/two_plate_hole.rs,
-/// `table1_against_the_fe`); at 1e-5 and 1e-6 the FE was high by up to 2e-5, 1.3–2.5× its
-/// estimate, on four of the twelve rows.
-const AUTO_HANKEL_BELOW: f64 = 1e-5;
-
 impl Args {
     /// Young's modulus E of the upper plate in the --units stress (--e, or 304 steel's 28e6 psi
     /// converted).
@@ -150,7 +144,8 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         Method::Fem => false,
         Method::Hankel => true,
         Method::Auto => {
-            args.tol < AUTO_HANKEL_BELOW && super::two_hankel::unsupported(&args).is_none()
+            args.tol < boltzone::scene::two_hankel::AUTO_BELOW
+                && super::two_hankel::unsupported(&args).is_none()
         }
     };
     if hankel {

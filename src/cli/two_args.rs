@@ -24,7 +24,7 @@ pub enum Method {
     /// Hankel transforms: bilateral holed plate + crack field + hole correction.
     Hankel,
     /// Hankel where it applies (equal infinite plates with a hole, pressure load, no outputs
-    /// but R_o) and the tolerance is below 1e-5 (where the FE's estimate is not trusted), else
+    /// but R_o) and the tolerance is below 3e-5 (where the FE's estimate, which carries 2e-5 of R_o, cannot claim it), else
     /// fem.
     Auto,
 }
@@ -111,7 +111,7 @@ pub struct Args {
     #[arg(long, default_value_t = 5e-4)]
     pub(super) tol: f64,
     /// Solver: fem, hankel (equal infinite plates with a hole, R_o only; seconds, not
-    /// milliseconds) or auto (hankel where it applies and --tol is below 1e-5).
+    /// milliseconds) or auto (hankel where it applies and --tol is below 3e-5).
     #[arg(long, value_enum, default_value_t = Method::Fem)]
     pub(super) method: Method,
     /// Curve, field and figure files.

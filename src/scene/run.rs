@@ -133,7 +133,7 @@ pub fn pick(scene: &Scene) -> (Method, &'static str) {
         ),
         (Model::TwoPlate, Method::Auto) if super::two_hankel::auto_takes(scene) => (
             Method::Hankel,
-            "semi-analytic two plates with the hole: below a tolerance of 1e-5 it is the cheaper route",
+            "semi-analytic two plates with the hole: below a tolerance of 3e-5 the FE cannot claim it",
         ),
         (Model::TwoPlate, _) => (
             Method::Fem,

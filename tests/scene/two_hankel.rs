@@ -1,7 +1,7 @@
 //! Scenes of two equal plates with a hole by the semi-analytic route (`method = "hankel"`):
 //! the scene equals the library call bit for bit (SI scene: no conversion), agrees with the
 //! finite elements within both error bars, `auto` takes the route only below a tolerance of
-//! 1e-5, and every key that keeps a scene from the route is named with its line.
+//! 3e-5 (`scene::two_hankel::AUTO_BELOW`), and every key that keeps a scene from the route is named with its line.
 
 use boltzone::hankel::receding::holed::{two_plate_hole_pressure, HoledParams};
 use boltzone::scene::{solve, Method, Scene, SceneError};
@@ -70,7 +70,7 @@ fn the_scene_is_the_library_call_and_agrees_with_the_finite_elements() {
 }
 
 #[test]
-fn auto_takes_the_route_only_below_1e_5_where_it_applies() {
+fn auto_takes_the_route_only_below_3e_5_where_it_applies() {
     let pick = |text: &str| boltzone::scene::run::pick(&Scene::parse(text).unwrap()).0;
     assert_eq!(pick(&scene("auto", 1e-6, "")), Method::Hankel);
     assert_eq!(pick(&scene("auto", 1e-4, "")), Method::Fem);
