@@ -37,6 +37,7 @@
 use super::dofs::{Component, DofMap};
 use super::error::FemError;
 use super::mesh::Mesh;
+use super::recover::material;
 use crate::material::Material;
 use faer::sparse::{SparseColMat, SymbolicSparseColMat};
 
@@ -134,12 +135,7 @@ pub(crate) fn element_matrix(
     dofs: &DofMap,
     e: usize,
 ) -> Result<Vec<f64>, FemError> {
-    let mi = mesh.element_material(e);
-    let m = materials.get(mi).ok_or(FemError::MissingMaterial {
-        element: e,
-        material: mi,
-        available: materials.len(),
-    })?;
+    let m = material(mesh, materials, e)?;
     let mut k = mesh.kind().stiffness(&mesh.element_coords(e), m);
     let nodes = mesh.element_nodes(e);
     let nd = 2 * nodes.len();

@@ -54,6 +54,7 @@ use super::element::GAUSS3;
 use super::error::FemError;
 use super::loads::edges;
 use super::mesh::Mesh;
+use super::recover::material;
 use crate::material::Material;
 use std::f64::consts::PI;
 
@@ -106,12 +107,7 @@ pub fn add_exterior(
                 col: e,
             });
         }
-        let mi = mesh.element_material(e);
-        let m = materials.get(mi).ok_or(FemError::MissingMaterial {
-            element: e,
-            material: mi,
-            available: materials.len(),
-        })?;
+        let m = material(mesh, materials, e)?;
         let kappa = spring_coefficient(m, c, rim);
         let (za, zb) = (x[edge[0]][1], x[edge[edge.len() - 1]][1]);
         let mut local = [[0.0; 3]; 3];

@@ -39,6 +39,11 @@
 /// against a last change (or two) that is small by accident, as when the crossing stalls for
 /// two levels before moving on.
 pub fn level_estimate(v: &[f64]) -> Option<(f64, f64)> {
+    weighted_changes(v, [1.0, 0.25, 0.0625])
+}
+
+/// The last value of `v` and max_k wₖ|dₖ| over its last three changes, last first.
+fn weighted_changes(v: &[f64], weights: [f64; 3]) -> Option<(f64, f64)> {
     let n = v.len();
     if n < 3 {
         return None;
@@ -46,7 +51,7 @@ pub fn level_estimate(v: &[f64]) -> Option<(f64, f64)> {
     let error = v[n.saturating_sub(4)..]
         .windows(2)
         .rev()
-        .zip([1.0, 0.25, 0.0625])
+        .zip(weights)
         .map(|(w, f)| f * (w[1] - w[0]).abs())
         .fold(0.0, f64::max);
     Some((v[n - 1], error))
@@ -66,17 +71,7 @@ pub fn level_estimate(v: &[f64]) -> Option<(f64, f64)> {
 /// assert_eq!((x, e), (1.875, 0.25)); // 2 × 0.125; the limit 2 is 0.125 away
 /// ```
 pub fn cautious_level_estimate(v: &[f64]) -> Option<(f64, f64)> {
-    let n = v.len();
-    if n < 3 {
-        return None;
-    }
-    let error = v[n.saturating_sub(4)..]
-        .windows(2)
-        .rev()
-        .zip([2.0, 1.0, 0.5])
-        .map(|(w, f)| f * (w[1] - w[0]).abs())
-        .fold(0.0, f64::max);
-    Some((v[n - 1], error))
+    weighted_changes(v, [2.0, 1.0, 0.5])
 }
 
 /// Least-squares slope of y on x through `points` (x, y); NaN with fewer than two distinct x.
