@@ -9,13 +9,12 @@
 //! | slab, no hole, Hankel (`slab`) | 1e-4, 1e-6, 1e-8, 1e-10 | the same route at 1e-12 |
 //! | single plate, Hankel + hole (`hankel`) | 1e-3, 1e-4, 1e-5 | the same route at 1e-7 |
 //! | single plate, FE (`fe`; `fe1`: Table 1's range) | 1e-3, 1e-4, 1e-5 | the Hankel route with hole and rim at 1e-7 (shares no code) |
-//! | two plates, equal (`two`) | 1e-3, 1e-4 | the same route at 1e-5 |
-//! | two plates, unequal, frictionless (`two2`) | 1e-3, 1e-4 | the same route at 1e-5 |
+//! | two plates, equal (`two`) | 1e-3, 1e-4 | the same route on eight levels |
+//! | two plates, unequal, frictionless (`two2`) | 1e-3, 1e-4 | the same route on eight levels |
 //! | two equal infinite plates, no hole (`two0`; the case's B, A = 0) | 1e-4, 1e-5, 1e-6 | the receding contact, Hankel (~1e-12, shares no code) |
 //!
-//! The two-plate reference at 1e-5 is only 10× tighter than the 1e-4 runs (1e-6 is out of the
-//! study's reach on most geometries: it stops, not converged); its own estimate is added to the
-//! bar. Geometry (D = 1): A/D log-uniform in [0.1, 10], B/A in [1.05, 10] (`fe1`: A/D in
+//! The two-plate reference (eight levels) carries the 2e-5 of R_o that every two-plate estimate
+//! carries; its own estimate is added to the bar. Geometry (D = 1): A/D log-uniform in [0.1, 10], B/A in [1.05, 10] (`fe1`: A/D in
 //! [0.3, 1.5], B/A in [1.2, 8]), ν in [0, 0.45]; half the plates finite with C/B in [1.5, 20];
 //! the lower plate of an unequal pair 0.3–3 times as thick. A case whose reference did not
 //! converge is skipped. For every run that says `converged` the actual error |R − R_ref| must
@@ -31,11 +30,20 @@
 //! | single, Hankel + hole | 1e-3 / 1e-4 / 1e-5 | 172 each | 5.2e-4 / 3.1e-3 / 6.4e-3 | 0.066 / 0.53 / 0.54 | 0.16 / 0.84 / 0.85 | 0 |
 //! | single, FE | 1e-3 / 1e-4 / 1e-5 | 172 each | 0.066 / 0.086 / 0.14 | 0.34 / 0.42 / 0.54 | 0.42 / 0.84 / 0.84 | 0 |
 //! | single FE, Table 1 range | 1e-4 / 1e-5 | 184 each | 0.073 / 0.14 | 0.49 / 0.58 | 0.71 / 0.80 | 0 |
-//! | two plates, equal | 1e-3 / 1e-4 | 166 each | 0.14 / 0.23 | 0.66 / 0.67 | 0.79 / 0.81 | 0 |
-//! | two plates, unequal | 1e-3 / 1e-4 | 142 each | 0.16 / 0.11 | 0.72 / 0.74 | 0.79 / 0.74 | 0 |
+//! | two plates, equal | 1e-3 / 1e-4 | 171 each | 0.092 / 0.015 | 0.55 / 0.14 | 0.60 / 0.16 | 0 |
+//! | two plates, unequal | 1e-3 / 1e-4 | 188 each | 0.096 / 0.018 | 0.49 / 0.20 | 0.57 / 0.26 | 0 |
+//! | two plates, no hole, vs Hankel | 1e-4 / 1e-5 / 1e-6 | 200 / 0 / 0 | 0.057 | 0.25 | 0.50 | 0 |
 //!
-//! (The two-plate rows ran before the truncation of plates wider than B + 500 D changed,
-//! `contact::two_plate`; it changes only geometries with B ≳ 24 D.)
+//! (The three two-plate rows: 2026-11-24 15:00–15:24 UTC, release, load 3–4, after the cut of
+//! an infinite plate became exact (`fem::exterior`) and the two-plate estimate gained its floor
+//! of 2e-5 of R_o and, below the default tolerance, its cautious form (`contact::two_plate`):
+//! no run claims 1e-5 or 1e-6 any more. The two-plate references are eight levels, used where
+//! their bar is below 5e-5 of R_o, so those rows hold the estimate against a reference only
+//! 2–5× tighter at 1e-4; the `two0` row's reference is the receding contact, ~1e-12. With the
+//! exterior but the old estimate, `two0` had 32 converged runs beyond their bars, 1 at 1e-4
+//! (2.56×), 12 at 1e-5 and 19 at 1e-6 (up to 10×): the slow hump of the FE's R_o that the
+//! floor now covers. Earlier, 166 / 142 converged equal / unequal runs held at 1e-3 and 1e-4
+//! with maxima 0.81 / 0.79 against the FE at 1e-5.)
 //!
 //! Before the single plate's grading shrank from h = D/8 at tolerances below 1e-4
 //! (`fem::single::FIXED_GRADING_TOLERANCE`) its FE at 1e-5 had 5 of 172 (wide) and 10 of 183
