@@ -141,3 +141,21 @@ fn within_both_error_estimates_at_1e5() {
         Comparison::new(a, FaceLoad::uniform(a, 1.0, 1.0).unwrap(), d, TIGHT, false).check_budget();
     }
 }
+
+#[test]
+fn the_axis_pressure_of_a_solid_plate_is_finite_and_the_hankel_value() {
+    // was: 2.1e9 for a mean pressure of 1 (force over the axis node's zero tributary area)
+    let load = FaceLoad::uniform(0.0, 1.0, 1.0).unwrap();
+    let m = Material::unit(0.3).unwrap();
+    let hankel = Layer::new(1.0, m, load.clone())
+        .unwrap()
+        .receding_contact(&RecedingParams::default())
+        .unwrap();
+    let plate = Plate::new(1.0, m).unwrap();
+    let joint = Joint::new(0.0, OuterRadius::Infinite, plate, plate, load).unwrap();
+    let s = solve(&joint, &TwoPlateParams::default()).unwrap();
+    let (fe, exact) = (s.pressure[0], hankel.solution.pressure(0.0));
+    println!("q(0): FE {fe}, Hankel {exact}");
+    // the nodal pressure near the axis, at the default tolerance: within 1e-3
+    assert!((fe - exact).abs() < 1e-3 * exact, "FE {fe} against {exact}");
+}
