@@ -22,3 +22,4 @@ mod transform;
 mod two_plate_hole;
 mod two_plate_hole_fast;
 mod two_plate_hole_pressure;
+mod two_plate_rim;
