@@ -20,7 +20,8 @@
 use super::anderson::{pack, unpack, Anderson};
 use super::contact::RecedingError;
 use super::grid::{PanelGrid, PanelInterp};
-use super::holed::{Crack, HoledParams, Setup};
+use super::holed_params::HoledParams;
+use super::holed_setup::{Crack, Setup};
 use super::system::{cos_m1, panels, Nystrom, XiRule};
 use crate::hankel::hole::fit::{fit, Boundary, Fit, HoleData};
 use crate::hankel::transform::LoadTransform;

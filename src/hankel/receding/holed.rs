@@ -12,7 +12,7 @@
 //! **Method** (superposition; compression negative, w upward, lengths in the units of D).
 //! For a trial contact radius c the solution is the sum of
 //! 1. the *bilateral* holed plate: the single plate with the hole, midplane held everywhere
-//!    ([`HolePlate`]: slab + Papkovich–Fadle modes + corner enrichment), midplane stress s₀(r);
+//!    ([`crate::hankel::hole::HolePlate`]: slab + Papkovich–Fadle modes + corner enrichment), midplane stress s₀(r);
 //! 2. the *crack field* X of a layer without hole on the plane, in contact on r ≤ c and pressed
 //!    on its bottom r > c by l(r) = s₀(r) + σ_z^Z(r, 0): the receding layer's Fredholm equation
 //!    (module `system`) with a bottom load instead of a top one (Abel function
@@ -108,20 +108,11 @@
 //! ```
 
 use super::contact::RecedingError;
-use super::grid::PanelInterp;
 pub use super::holed_params::HoledParams;
 use super::holed_search::{estimate, fraction_radius};
-use super::layer_field::bottom_kernels;
-use super::system::panels;
+use super::holed_setup::Setup;
 use crate::error::InputError;
-use crate::hankel::hole::corner::CornerLoads;
-use crate::hankel::hole::eigen::{symmetric_roots, Mode};
-use crate::hankel::hole::fit::heights;
-use crate::hankel::hole::HolePlate;
-use crate::hankel::midplane::MidplaneCurve;
-use crate::hankel::transform::LoadTransform;
-use crate::joint::{OuterRadius, SinglePlate};
-use std::f64::consts::PI;
+use crate::joint::SinglePlate;
 use std::time::Instant;
 
 /// What [`two_plate_hole`] did and how well.
@@ -154,221 +145,6 @@ pub struct HoledContact {
     pub r_o: f64,
     /// Error estimate and cost.
     pub info: HoledInfo,
-}
-
-/// The geometry's fixed parts: the bilateral plate, the correction basis, the hole's ξ-rule.
-pub(super) struct Setup {
-    pub(super) a: f64,
-    pub(super) d: f64,
-    /// p̄(0) of the load.
-    pub(super) p0: f64,
-    /// P, the mean pressure.
-    pub(super) p_ref: f64,
-    pub(super) bilateral: HolePlate,
-    pub(super) slab_mid: MidplaneCurve,
-    pub(super) modes: Vec<Mode>,
-    pub(super) corner: Option<CornerLoads>,
-    /// Radius up to which the corner fields' midplane rule is built.
-    pub(super) r_max: f64,
-    /// Length beyond c over which l is integrated.
-    pub(super) tail: f64,
-    /// Fit heights (face to plane) and the corner columns there.
-    pub(super) z_fit: Vec<f64>,
-    pub(super) corner_cols: Vec<f64>,
-    /// Upper Chebyshev heights and the barycentric matrices (fit height × Chebyshev height)
-    /// for even (σ_r) and odd (τ_rz) extension.
-    pub(super) z_cheb: Vec<f64>,
-    pub(super) interp_even: Vec<Vec<f64>>,
-    pub(super) interp_odd: Vec<Vec<f64>>,
-    /// Hole ξ-rule: (ξ, w, J₀(ξA), J₁(ξA)/(ξA), J₁(ξA)) and kernels per Chebyshev height.
-    pub(super) hole_xi: Vec<(f64, f64, f64, f64, f64)>,
-    pub(super) hole_kernels: Vec<Vec<[f64; 3]>>,
-    /// ξ beyond which l̄ is taken from its endpoint expansion.
-    pub(super) xi_l: f64,
-    /// The corner fields' midplane σ_z (the basis rows of [`CornerLoads::midplane_basis`]) on
-    /// panels of D/2 over [A, r_max], interpolated by every trial radius.
-    pub(super) corner_table: Option<(PanelInterp, Vec<Vec<f64>>)>,
-}
-
-/// One contact radius solved.
-pub(super) struct Crack {
-    /// c·φ(c)/p̄(0).
-    pub(super) edge: f64,
-    pub(super) residual: f64,
-    pub(super) crack_traction: f64,
-    pub(super) iterations: usize,
-    /// The contact pressure at the radii asked for.
-    pub(super) pressure: Vec<f64>,
-}
-
-impl Setup {
-    pub(super) fn new(plate: &SinglePlate, params: &HoledParams) -> Result<Self, RecedingError> {
-        let (a, d) = (plate.hole_radius(), plate.half_thickness());
-        if a <= 0.0 {
-            return Err(InputError::Parameter {
-                field: "hole radius A",
-                value: a,
-                reason: "the holed two-plate route needs A > 0 (use the receding solver)",
-            }
-            .into());
-        }
-        if plate.outer_radius() != OuterRadius::Infinite {
-            return Err(InputError::Parameter {
-                field: "outer radius C",
-                value: f64::NAN,
-                reason: "the holed two-plate route supports infinite plates only so far",
-            }
-            .into());
-        }
-        if params.heights < 4 || params.heights % 2 == 1 || params.heights > 128 {
-            return Err(InputError::Parameter {
-                field: "Chebyshev heights",
-                value: params.heights as f64,
-                reason: "an even number in 4..=128",
-            }
-            .into());
-        }
-        crate::error::positive("holed xi_l", params.xi_l)?;
-        crate::error::positive("holed tail", params.tail)?;
-        crate::error::positive("holed hole_decay", params.hole_decay)?;
-        let mat = plate.material();
-        let nu = mat.poisson_ratio();
-        let g = mat.shear_modulus();
-        let load = plate.load();
-        let p_ref = load.mean_pressure().abs().max(f64::MIN_POSITIVE);
-        let bilateral = HolePlate::new(plate, &params.hole)?;
-        let n = bilateral.info().terms;
-        let b = load.outer();
-        let tail = params.tail * d;
-        let r_max = b + params.reach * d + tail + d;
-        let slab_mid = MidplaneCurve::new(bilateral.slab(), a, r_max, 1e-12 * p_ref)?;
-        let modes: Vec<Mode> = symmetric_roots(n)
-            .iter()
-            .map(|x| Mode::new(*x, a, d, nu, g))
-            .collect();
-        let ct = params.hole.corner_terms;
-        let corner = (ct > 0).then(|| CornerLoads::new(a, d, nu, g, ct));
-        let z_fit = heights(d, if ct > 0 { 8 * n } else { 4 * n });
-        let corner_cols = corner.as_ref().map_or_else(Vec::new, |cl| {
-            cl.tractions(a, &z_fit)
-                .iter()
-                .flat_map(|t| {
-                    let mut sr = Vec::new();
-                    let mut tau = Vec::new();
-                    for c in t {
-                        sr.extend([c[0].re, c[0].im, c[1].re, c[1].im]);
-                        tau.extend([c[2].re, c[2].im, c[3].re, c[3].im]);
-                    }
-                    sr.extend(tau);
-                    sr
-                })
-                .collect()
-        });
-        // Chebyshev points of the first kind on [−D, D]; the upper half are integrated
-        let m = params.heights;
-        let theta = |j: usize| PI * (j as f64 + 0.5) / m as f64;
-        let x_all: Vec<f64> = (0..m).map(|j| theta(j).cos()).collect();
-        let w_all: Vec<f64> = (0..m)
-            .map(|j| if j % 2 == 0 { 1.0 } else { -1.0 } * theta(j).sin())
-            .collect();
-        let z_cheb: Vec<f64> = x_all[..m / 2].iter().map(|x| d * x).collect();
-        let interp = |odd: bool| -> Vec<Vec<f64>> {
-            z_fit
-                .iter()
-                .map(|&z| {
-                    let x = z / d;
-                    let mut row = vec![0.0; m / 2];
-                    if let Some(j) = x_all.iter().position(|&xj| (xj - x).abs() < 1e-15) {
-                        let (k, s) = if j < m / 2 {
-                            (j, 1.0)
-                        } else {
-                            (m - 1 - j, -1.0)
-                        };
-                        row[k] = if odd { s } else { 1.0 };
-                        return row;
-                    }
-                    let terms: Vec<f64> = (0..m).map(|j| w_all[j] / (x - x_all[j])).collect();
-                    let total: f64 = terms.iter().sum();
-                    for (j, t) in terms.iter().enumerate() {
-                        // the lower point m−1−k mirrors the upper point k
-                        let (k, s) = if j < m / 2 {
-                            (j, 1.0)
-                        } else {
-                            (m - 1 - j, -1.0)
-                        };
-                        row[k] += if odd { s } else { 1.0 } * t / total;
-                    }
-                    row
-                })
-                .collect()
-        };
-        let (interp_even, interp_odd) = (interp(false), interp(true));
-        // the hole ξ-rule: e^(−ξ z_min) < 2e-6 at its end; 20-point panels of 2.25 periods
-        // (Gauss–Legendre's error on them ≈ (e·ωh/80)^40 ≈ 2e-13) of cos ξ(r ± A) for the crack
-        // loads within c + 8D up to ξ_l, and of the contact edge c beyond (l's transform is
-        // its endpoint expansion there)
-        let z_min = z_cheb[m / 2 - 1];
-        let xi_l = params.xi_l / d;
-        let xi_max = (params.hole_decay / z_min).max(2.0 * xi_l);
-        let c_max = b + params.reach * d;
-        let width = |omega: f64| (4.5 * PI / omega).min(1.0 / d);
-        let mut rule = panels(0.0, xi_l, width(c_max + 8.0 * d + a));
-        rule.extend(panels(xi_l, xi_max, width(c_max + a + d)));
-        let hole_xi: Vec<(f64, f64, f64, f64, f64)> = rule
-            .into_iter()
-            .map(|(xi, w)| {
-                let x = xi * a;
-                let j1 = libm::j1(x);
-                (xi, w, libm::j0(x), j1 / x, j1)
-            })
-            .collect();
-        let hole_kernels = hole_xi
-            .iter()
-            .map(|&(xi, ..)| {
-                z_cheb
-                    .iter()
-                    .map(|&z| {
-                        let k = bottom_kernels(xi, d, z, nu);
-                        [k.r0, k.r1, k.t]
-                    })
-                    .collect()
-            })
-            .collect();
-        // the corner fields are analytic in a strip of half-width ≈ D about the midplane's
-        // r-axis (their corner is D away): 20-point panels of D/2 interpolate them to ~1e-18
-        let corner_table = corner.as_ref().map(|cl| {
-            let interp = PanelInterp::new(a, r_max, 0.5 * d);
-            let grid = interp.grid();
-            let rows = cl.midplane_basis_rows(r_max, grid.len(), |xi, row| grid.j0_row(xi, row));
-            (interp, rows)
-        });
-        Ok(Self {
-            corner_table,
-            a,
-            d,
-            p0: LoadTransform::new(load).eval(0.0),
-            p_ref,
-            bilateral,
-            slab_mid,
-            modes,
-            corner,
-            r_max,
-            tail,
-            z_fit,
-            corner_cols,
-            z_cheb,
-            interp_even,
-            interp_odd,
-            hole_xi,
-            hole_kernels,
-            xi_l,
-        })
-    }
-
-    /// The bilateral plate's midplane σ_z.
-    pub(super) fn s0(&self, r: f64) -> f64 {
-        self.slab_mid.eval(r).value + self.bilateral.correction_midplane(r)
-    }
 }
 
 /// R_o of two equal plates with a hole on a frictionless interface: `plate` is the single plate

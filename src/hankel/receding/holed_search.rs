@@ -22,7 +22,8 @@
 //! row 1); the variants' solves on two cores at once. Timed by example 19.
 
 use super::contact::RecedingError;
-use super::holed::{Crack, HoledParams, Setup};
+use super::holed_params::HoledParams;
+use super::holed_setup::{Crack, Setup};
 use super::search::{root, Scan};
 use crate::hankel::hole::HoleParams;
 use crate::joint::SinglePlate;

@@ -39,6 +39,7 @@ pub mod grid;
 pub mod holed;
 mod holed_params;
 mod holed_search;
+mod holed_setup;
 pub mod layer;
 pub mod layer_field;
 mod search;
