@@ -405,8 +405,13 @@ fn check_cut_allowed(
     } else {
         return Ok(());
     };
+    let field = if c.is_finite() {
+        "plate outer radius C"
+    } else {
+        "plate outer radius C (none given: an infinite plate)"
+    };
     Err(InputError::Parameter {
-        field: "plate outer radius C",
+        field,
         value: c,
         reason,
     }
