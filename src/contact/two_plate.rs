@@ -375,12 +375,17 @@ fn solve_level_at(
 /// coarse levels at C′ and 2C′; on a 10 × 10 grid of infinite plates the FE then sat below the
 /// semi-analytic route by up to 1.6× its estimate at 1e-5: `tests/hankel/grid_study.rs`.)
 fn cut_at(g: &MeshLayout, c: f64) -> (f64, Option<f64>) {
-    let c_max = g.b + C_MAX_OVER_D * g.d[0].min(g.d[1]);
+    let c_max = widest_meshed(g.b, g.d[0].min(g.d[1]));
     if c <= c_max {
         return (c, None);
     }
     let cut = (10.0 * g.b + 10.0 * (g.d[0] + g.d[1])).min(g.b + 0.5 * (c_max - g.b));
     (cut, Some(c))
+}
+
+/// The widest plate meshed whole, B + [`C_MAX_OVER_D`]·D (D of the thinner plate).
+fn widest_meshed(b: f64, d_min: f64) -> f64 {
+    b + C_MAX_OVER_D * d_min
 }
 
 /// Refuses a plate that [`cut_at`] would cut when its outer edge is fixed or it carries
@@ -395,7 +400,7 @@ fn check_cut_allowed(
         OuterRadius::Finite(c) => c,
         OuterRadius::Infinite => f64::INFINITY,
     };
-    if c <= joint.load().outer() + C_MAX_OVER_D * d {
+    if c <= widest_meshed(joint.load().outer(), d) {
         return Ok(());
     }
     let reason = if params.edge == EdgeSupport::Fixed {
