@@ -22,8 +22,9 @@
 //! with the error max(|d₃|, |d₂|/4, |d₁|/16) of the last three changes
 //! ([`crate::numerics::convergence::level_estimate`], shared with the single-plate model) at
 //! the default tolerance and looser, and max(2|d₃|, |d₂|, |d₁|/2) tighter
-//! ([`crate::numerics::convergence::cautious_level_estimate`]: below ~1e-4 of R_o a slow
-//! component of the error, and turns of the sequence, defeat the first).
+//! ([`crate::numerics::convergence::cautious_level_estimate`]: below ~1e-4 of R_o the error's
+//! two first- and second-order parts of opposite sign cross, and the turn of the sequence
+//! defeats the first), plus a floor of 2e-5 R_o for what no level change shows.
 //! Welded dissimilar plates may have no sign-consistent contact edge; the level record then says
 //! that the report's rule decided ([`TwoPlateLevel::report_rule`]).
 //!
@@ -436,15 +437,18 @@ fn cut_error(cut: f64, r_o: f64, d_max: f64) -> f64 {
 /// 200 random joints at 1e-3 and 1e-4: `examples/16_error_bars.rs`).
 const CAUTIOUS_BELOW: f64 = 5e-4;
 
-/// The part of R_o's error that no level difference shows, relative to R_o: its sequence over
-/// the levels has a slow, non-monotone component (a hump) that the changes cannot bound.
-/// Measured against the semi-analytic receding contact (60 random infinite plates without a
-/// hole, 10 levels on one of them): the error rose to +8.3e-6 of R_o near level 7 and then fell
-/// only 1.8× per level (+4.3e-6, +2.5e-6 at levels 9, 10) while the level changes were a few
-/// 1e-7; an independent converged reference of the issue put three Table 1 joints 2.5e-6 to
-/// 1.4e-5 high at tolerance 1e-6. So every estimate carries 2e-5 of R_o, and no tolerance at or
-/// below it is claimed (tighter: the semi-analytic route, `two --method hankel`, for equal
-/// infinite plates with a hole).
+/// The part of R_o's error that no level difference shows, relative to R_o. R_o's error is
+/// first order in the element size, e ≈ c₁h + c₂h² with c₂ < 0. The coefficient c₁ depends
+/// on ν (the exact R_o does not: the elements' error), and so does its sign: at ν ≲ 0.3 it is
+/// small and positive, and where the two parts cancel (levels 5–7) the error makes a hump.
+/// Measured against the semi-analytic routes (65 random infinite plates, 25 with a hole, 10
+/// levels each): the hump reached +7.5e-6 of R_o and then fell only 1.8–2× per level while
+/// the level changes were a few 1e-7. The issue's independent converged reference put three
+/// Table 1 joints 2.5e-6 to 1.4e-5 high at tolerance 1e-6. So every estimate carries 2e-5 of
+/// R_o, and no tolerance at or below it is claimed (tighter: the semi-analytic route,
+/// `two --method hankel`). The study, and the sub-element estimators and extrapolations tried
+/// against it: `tests/contact/receding_vs_fe.rs`
+/// (`levels_are_first_order_and_within_every_estimate`).
 const TRANSIENT_FLOOR: f64 = 2e-5;
 
 /// The shrink of the R_o estimate per level beyond which the study decides that a tolerance is

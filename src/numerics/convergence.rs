@@ -58,11 +58,12 @@ fn weighted_changes(v: &[f64], weights: [f64; 3]) -> Option<(f64, f64)> {
 }
 
 /// [`level_estimate`] for sequences whose changes may shrink only 2× per level and may turn:
-/// max(2|d₃|, |d₂|, |d₁|/2). The two-plate model's R_o has a slow component (on 60 random
-/// infinite plates without a hole, its error rose to +8e-6 of R_o at level 7 and fell only 1.8×
-/// per level after: +4.3e-6, +2.5e-6 at levels 9 and 10), and at such a turn the last change is
-/// small by accident; [`level_estimate`] then claimed 1e-5 on 75 level sequences of those 60
-/// plates and missed on 39 (up to 3.1×), this one on 17 and missed on none
+/// max(2|d₃|, |d₂|, |d₁|/2). The two-plate model's R_o error has a first- and a second-order part
+/// of opposite sign that cross (`contact::two_plate`, `TRANSIENT_FLOOR`; on 60 random infinite
+/// plates without a hole, its error rose to +8e-6 of R_o at level 7 and fell only 1.8× per level
+/// after: +4.3e-6, +2.5e-6 at levels 9 and 10), and at such a turn the last change is small by
+/// accident; [`level_estimate`] then claimed 1e-5 on 75 level sequences of those 60 plates and
+/// missed on 39 (up to 3.1×), this one on 17 and missed on none
 /// (`examples/16_error_bars.rs`, route `two0`, holds it on another 200).
 ///
 /// ```

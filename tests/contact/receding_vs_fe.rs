@@ -16,16 +16,38 @@
 //!    0.0–0.6 of that budget on five geometries.
 //!
 //! Measured (Nov 2026): the extrapolated differences are ~1e-5 R_o (+1.2e-5 for B = D = 1,
-//! +0.9e-5 for the annulus), below the 0.05 % target but above the FE's own error estimates
-//! (~2e-6 R_o at its 1e-5 tolerance). The Hankel side: error estimate < 1e-9, the displacement
-//! integral flat on the contact zone to 4e-14, the slab midplane stress met to 1e-12 in the
-//! bilateral limit (tests/hankel/receding_contact.rs). Independently of the Hankel solution, the FE's
-//! extrapolated R_o moves with ν (+1.7e-5, +1.2e-5, −0.8e-5 relative at ν = 0, 0.3, 0.45;
-//! example 06) although the exact R_o cannot (no kernel of the layer depends on ν): the
-//! ~1e-5 discrepancy is an FE bias its estimate does not see at tight tolerances (at the
-//! default one it is far below the estimate). The comparison within both estimates at the
-//! FE tolerance 1e-5 is `within_both_error_estimates_at_1e5`, ignored until the FE's R_o error
-//! estimate covers that bias.
+//! +0.9e-5 for the annulus), below the 0.05 % target. The Hankel side: error estimate < 1e-9,
+//! the displacement integral flat on the contact zone to 4e-14, the slab midplane stress met
+//! to 1e-12 in the bilateral limit (tests/hankel/receding_contact.rs). Independently of the
+//! Hankel solution, the FE's R_o moves with ν although the exact R_o cannot (no kernel of the
+//! layer depends on ν): that is the FE's first-order error, whose coefficient depends on ν
+//! (`levels_are_first_order_and_within_every_estimate` below, on infinite plates against the
+//! receding contact directly). Every two-plate estimate now carries a floor of 2e-5 R_o for
+//! the part of it that the level changes do not show (`contact::two_plate`), and the
+//! comparison within both estimates at the FE tolerance 1e-5,
+//! `within_both_error_estimates_at_1e5`, holds (it was ignored while the estimate missed it
+//! ~5×).
+//!
+//! `levels_are_first_order_and_within_every_estimate` (ignored, ~1 min) is the study behind
+//! that floor. Infinite plates without a hole; the FE cut with its exact exterior; levels 4…9
+//! (h = D/16 … D/512) against the receding contact (~1e-12). What it shows (measured on 65
+//! random plates, 25 of them with a hole against the semi-analytic route, 10 levels each):
+//! - R_o's error is e ≈ c₁h + c₂h², with c₂ < 0 always (every plate is low at the coarse
+//!   levels, −1e-4 … −3e-3 R_o at h = D/32).
+//! - c₁'s sign and size depend on ν. At ν ≳ 0.35, c₁ < 0 and the error falls cleanly at rate
+//!   2 (e.g. ν = 0.46, B = 0.75D: −1.0e-4, −4.8e-5, −2.3e-5, −1.1e-5), and the level
+//!   changes show it. At ν ≲ 0.3, c₁ is small and positive. The two parts then cancel near
+//!   levels 5–7 and leave a hump of up to +7.5e-6 R_o, which falls only 1.8–2× per level after
+//!   (+3.5e-6, +2.0e-6, +1.0e-6 at levels 9–11 for B = D, ν = 0.01). At that turn the level
+//!   changes are a few 1e-7: the floor covers this part.
+//! - The node at the previous level's R_o ends the discrete contact zone within 0–8 % of an
+//!   element of the exact R_o. Every sub-element estimator tried on the same solutions is
+//!   first order, with another c₁: the gap through the first two open nodes (the one used),
+//!   the next two, a three-point fit with curvature, and the pressure inside. Richardson in h
+//!   with two terms, (8R_k − 6R_{k−1} + R_{k−2})/3, did not help: the sequences carry ~1e-6
+//!   of irregular noise (where R_o falls in its element), and the extrapolation amplifies it.
+//! - The external reference put three Table 1 joints 2.5e-6 … 1.4e-5 HIGH at
+//!   `--tol 1e-6`, consistent with the positive c₁ at ν = 0.3 and below.
 
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
 use boltzone::hankel::receding::{Layer, RecedingContact, RecedingParams};
@@ -135,7 +157,6 @@ fn annulus_with_a_tiny_hole() {
 }
 
 #[test]
-#[ignore = "at FE tolerance 1e-5 the FE's R_o estimate is ~5x below the FE-Hankel difference"]
 fn within_both_error_estimates_at_1e5() {
     for (a, d) in [(0.0, 1.0), (1e-3, 0.5)] {
         Comparison::new(a, FaceLoad::uniform(a, 1.0, 1.0).unwrap(), d, TIGHT, false).check_budget();
@@ -158,4 +179,59 @@ fn the_axis_pressure_of_a_solid_plate_is_finite_and_the_hankel_value() {
     println!("q(0): FE {fe}, Hankel {exact}");
     // the nodal pressure near the axis, at the default tolerance: within 1e-3
     assert!((fe - exact).abs() < 1e-3 * exact, "FE {fe} against {exact}");
+}
+
+#[test]
+#[ignore = "a study: ~1 min of FE levels down to h = D/512"]
+fn levels_are_first_order_and_within_every_estimate() {
+    // (B/D, ν): a hump at low ν, clean geometric at high ν, a wide and a narrow load
+    for (b, nu) in [(1.0, 0.01), (1.0, 0.46), (0.3, 0.12), (3.0, 0.3)] {
+        let m = Material::unit(nu).unwrap();
+        let load = FaceLoad::uniform(0.0, b, 1.0).unwrap();
+        let exact = Layer::new(1.0, m, load.clone())
+            .unwrap()
+            .receding_contact(&RecedingParams::default())
+            .unwrap()
+            .r_o;
+        let plate = Plate::new(1.0, m).unwrap();
+        let joint = Joint::new(0.0, OuterRadius::Infinite, plate, plate, load).unwrap();
+        let mut errors = Vec::new();
+        for k in 4..=9 {
+            let s = solve(
+                &joint,
+                &TwoPlateParams {
+                    tolerance: 1e-12,
+                    min_levels: k,
+                    max_levels: k,
+                    ..Default::default()
+                },
+            )
+            .unwrap();
+            let e = s.r_o - exact;
+            println!(
+                "B {b} nu {nu} levels {k}: R_o − exact {:+.3e} R_o, estimate {:.2e} R_o",
+                e / exact,
+                s.r_o_error / exact
+            );
+            assert!(
+                e.abs() <= s.r_o_error,
+                "level {k}: {e:e} beyond {:e}",
+                s.r_o_error
+            );
+            errors.push(e);
+        }
+        // first order at the finest levels: each level halves h, and the error with it (2;
+        // a second-order error would fall 4×, a hump not yet passed would not fall)
+        let n = errors.len();
+        let rate = errors[n - 2] / errors[n - 1];
+        println!("B {b} nu {nu}: error ratio over the last level {rate:.2}");
+        assert!((1.5..=2.5).contains(&rate), "rate {rate}");
+        // the exact R_o does not depend on ν, the FE's first-order part does
+        if nu < 0.05 {
+            assert!(errors[n - 1] > 0.0);
+        }
+        if nu > 0.45 {
+            assert!(errors[n - 1] < 0.0);
+        }
+    }
 }
