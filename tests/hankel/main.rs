@@ -15,6 +15,7 @@ mod hole_profile;
 mod receding_contact;
 mod receding_grid;
 mod receding_kernels;
+mod receding_pair;
 mod separation;
 mod shear_kernels;
 mod slab;
