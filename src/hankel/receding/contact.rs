@@ -355,6 +355,16 @@ impl Layer {
         })
     }
 
+    /// The Nyström size n of [`Self::receding_contact`]: [`nodes`] for a contact radius of
+    /// B + 2D (R_o ≈ B + 0.4…1.1 D; of a stack B + 2D_max in units of D_min); an error beyond 256.
+    pub fn basis_size(&self, params: &RecedingParams) -> Result<usize, InputError> {
+        let reach = self.stack.thickest();
+        nodes(
+            params,
+            self.transform.outer() / self.d + 2.0 * reach / self.d,
+        )
+    }
+
     /// The receding contact: R_o with φ(R_o) = 0, its pressure and gap, and an error estimate
     /// from a second run with ⌈3n/4⌉ points.
     pub fn receding_contact(
@@ -366,10 +376,7 @@ impl Layer {
         // R_o ≈ B + 0.4…1.1 D (examples/06_receding_contact.rs): size the rule for B + 2D (of
         // a stack: B + 2D_max, resolved on D_min)
         let reach = self.stack.thickest();
-        let n = nodes(
-            params,
-            self.transform.outer() / self.d + 2.0 * reach / self.d,
-        )?;
+        let n = self.basis_size(params)?;
         let coarse_n = (3 * n).div_ceil(4).max(4);
         // one ξ-rule (it does not depend on n) for radii up to B + 2D, widened if the search
         // goes beyond: the load transform is evaluated once per node, not once per solve

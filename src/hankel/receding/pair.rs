@@ -114,6 +114,12 @@ impl Pair {
         self.layer.load()
     }
 
+    /// The Nyström size of [`Self::receding_contact`] ([`Layer::basis_size`]): an error when the
+    /// contact zone is too many thinner-plate thicknesses wide (B/D_min beyond about 50).
+    pub fn basis_size(&self, params: &RecedingParams) -> Result<usize, crate::InputError> {
+        self.layer.basis_size(params)
+    }
+
     /// The plates in contact over r ≤ `c` (bilateral there, open beyond); the solution's gap is
     /// the opening between the two faces.
     pub fn contact_over(
