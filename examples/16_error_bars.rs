@@ -223,6 +223,20 @@ fn two(k: &Case, tols: &[f64], unequal: bool) -> anyhow::Result<Outcome> {
     Ok(Some((runs, (r.0, r.1))))
 }
 
+/// The FE two-plate model with a frictionless interface at each tolerance of `tols`.
+fn frictionless_runs(joint: &Joint, tols: &[f64]) -> anyhow::Result<Vec<Run>> {
+    let at = |t: f64| -> anyhow::Result<Run> {
+        let params = TwoPlateParams {
+            tolerance: t,
+            interface: InterfaceModel::Frictionless,
+            ..Default::default()
+        };
+        let s = solve_two(joint, &params)?;
+        Ok((s.r_o, s.r_o_error, s.converged))
+    };
+    tols.iter().map(|&t| at(t)).collect()
+}
+
 /// Two equal infinite plates without a hole (A = 0, the load over r ≤ B of the case) against the
 /// semi-analytic receding contact (`hankel::receding`, ~1e-12, shares no code with the FE).
 fn two_no_hole(k: &Case, tols: &[f64]) -> anyhow::Result<Outcome> {
@@ -237,16 +251,7 @@ fn two_no_hole(k: &Case, tols: &[f64]) -> anyhow::Result<Outcome> {
         Plate::new(1.0, m)?,
         load,
     )?;
-    let at = |t: f64| -> anyhow::Result<Run> {
-        let params = TwoPlateParams {
-            tolerance: t,
-            interface: InterfaceModel::Frictionless,
-            ..Default::default()
-        };
-        let s = solve_two(&joint, &params)?;
-        Ok((s.r_o, s.r_o_error, s.converged))
-    };
-    let runs = tols.iter().map(|&t| at(t)).collect::<anyhow::Result<_>>()?;
+    let runs = frictionless_runs(&joint, tols)?;
     Ok(Some((runs, (reference.r_o, reference.info.r_o_error))))
 }
 
@@ -263,16 +268,7 @@ fn two_unequal_no_hole(k: &Case, tols: &[f64]) -> anyhow::Result<Outcome> {
         return Ok(None);
     }
     let joint = Joint::new(0.0, OuterRadius::Infinite, upper, lower, load)?;
-    let at = |t: f64| -> anyhow::Result<Run> {
-        let params = TwoPlateParams {
-            tolerance: t,
-            interface: InterfaceModel::Frictionless,
-            ..Default::default()
-        };
-        let s = solve_two(&joint, &params)?;
-        Ok((s.r_o, s.r_o_error, s.converged))
-    };
-    let runs: Vec<Run> = tols.iter().map(|&t| at(t)).collect::<anyhow::Result<_>>()?;
+    let runs = frictionless_runs(&joint, tols)?;
     let (rv, re) = (reference.r_o, reference.info.r_o_error);
     if runs.iter().any(|&(v, e, c)| c && (v - rv).abs() > e + re) {
         // the case's printout does not hold this route's geometry

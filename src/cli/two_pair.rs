@@ -73,44 +73,44 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
         super::write_output(path, &text)?;
     }
     let i = &out.info;
-    if args.json {
-        let mut v = serde_json::json!({
-            "method": "hankel",
-            "r_o": r_o,
-            "r_o_error": error,
-            "converged": converged,
-            "tolerance": args.tol,
-            "interface": "frictionless (receding contact of the two plates, no hole)",
-            "hankel": {
-                "nodes": i.nodes,
-                "xi_nodes": i.xi_nodes,
-                "solves": i.solves,
-                "r_o_coarse": i.r_o_coarse,
-                "min_pressure": i.min_pressure,
-                "min_gap": i.min_gap,
-            },
-            "seconds": i.seconds,
-            "units": args.units.units.name(),
-        });
-        super::output::stamp(&mut v, &args.inputs()?, start)?;
-        super::print_json(&v)?;
-    } else {
+    if !args.json {
         let l = args.units.length();
+        let note = if converged {
+            ""
+        } else {
+            "  NOT converged to --tol (exit 3)"
+        };
         println!(
-            "R_o = {} ± {error:.1e} {l}   (2R_o = {} {l}){}",
+            "R_o = {} ± {error:.1e} {l}   (2R_o = {} {l}){note}",
             sig(r_o, 10),
             sig(2.0 * r_o, 10),
-            if converged {
-                ""
-            } else {
-                "  NOT converged to --tol (exit 3)"
-            }
         );
         println!(
             "method: Hankel (receding contact of the two plates in series, no hole); {} Nystrom \
              points, {} systems solved; {:.3} s",
             i.nodes, i.solves, i.seconds
         );
+        return Ok(Status::from_converged(converged));
     }
+    let mut v = serde_json::json!({
+        "method": "hankel",
+        "r_o": r_o,
+        "r_o_error": error,
+        "converged": converged,
+        "tolerance": args.tol,
+        "interface": "frictionless (receding contact of the two plates, no hole)",
+        "hankel": {
+            "nodes": i.nodes,
+            "xi_nodes": i.xi_nodes,
+            "solves": i.solves,
+            "r_o_coarse": i.r_o_coarse,
+            "min_pressure": i.min_pressure,
+            "min_gap": i.min_gap,
+        },
+        "seconds": i.seconds,
+        "units": args.units.units.name(),
+    });
+    super::output::stamp(&mut v, &args.inputs()?, start)?;
+    super::print_json(&v)?;
     Ok(Status::from_converged(converged))
 }
