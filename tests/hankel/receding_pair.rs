@@ -5,7 +5,7 @@
 //! and the finite-element two-plate solver (shares no code) within its error bar.
 
 use boltzone::contact::two_plate::{solve as solve_two, InterfaceModel, TwoPlateParams};
-use boltzone::hankel::receding::layer::{bottom_from_bottom, bottom_from_top};
+use boltzone::hankel::receding::layer::{bottom_from_bottom, bottom_from_top, Stack};
 use boltzone::hankel::receding::{Layer, Pair, RecedingParams};
 use boltzone::numerics::convergence::slope;
 use boltzone::numerics::quadrature::gauss_legendre;
@@ -25,6 +25,37 @@ fn r_o(upper: Plate, lower: Plate, load: FaceLoad) -> f64 {
         .receding_contact(&RecedingParams::default())
         .unwrap()
         .r_o
+}
+
+#[test]
+fn the_summed_kernels_are_kirchhoff_plates_and_half_spaces_in_series() {
+    // (c₁ + c₂)·M̂(ξ)/ξ is the interface's transform compliance. Long waves (ξD ≪ 1): two
+    // Kirchhoff plates bending in series, 1/(𝒟₁ξ⁴) + 1/(𝒟₂ξ⁴), 𝒟 = ED³/(12(1 − ν²)), to
+    // O((ξD)²) (asserted (ξD_max)² = 1e-6 at ξD_max = 1e-3; observed 3.6e-8). Short waves: two half-spaces pressed
+    // together, M̂_q(c₁ + c₂) = 2/E* with Hertz's 1/E* = Σ(1 − νᵢ²)/Eᵢ (Johnson, Contact
+    // Mechanics § 4.2), M̂_p exponentially small, ~40e^(−40) ≈ 2e-16 at ξD_min = 40 (asserted
+    // 1e-14; observed 2.2e-16).
+    let ((d1, e1, nu1), (d2, e2, nu2)) = ((1.0, 2e5, 0.3), (0.4, 7e4, 0.33));
+    let c = |e: f64, nu: f64| (1.0 - nu) / (e / (2.0 * (1.0 + nu)));
+    let (c1, c2) = (c(e1, nu1), c(e2, nu2));
+    let stack = Stack::pair((c1, d1), (c2, d2));
+    let rigidity = |e: f64, d: f64, nu: f64| e * d * d * d / (12.0 * (1.0 - nu * nu));
+    let xi = 1e-3 / d1;
+    let plates = (1.0 / rigidity(e1, d1, nu1) + 1.0 / rigidity(e2, d2, nu2)) / xi.powi(4);
+    for m in [stack.bottom_from_top(xi), stack.bottom_from_bottom(xi)] {
+        let w = (c1 + c2) * m / xi;
+        println!("plates in series: {:.1e}", w / plates - 1.0);
+        assert!((w / plates - 1.0).abs() < 1e-6, "{w} vs {plates}");
+    }
+    let xi = 40.0 / d2;
+    let e_star = 1.0 / ((1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2);
+    let half_spaces = (c1 + c2) * stack.bottom_from_bottom(xi);
+    println!("half-spaces: {:.1e}", half_spaces * e_star / 2.0 - 1.0);
+    assert!(
+        (half_spaces * e_star / 2.0 - 1.0).abs() < 1e-14,
+        "{half_spaces}"
+    );
+    assert!(stack.bottom_from_top(xi) < 1e-14);
 }
 
 #[test]
