@@ -12,6 +12,7 @@
 //! | two plates, equal (`two`) | 1e-3, 1e-4 | the same route on eight levels |
 //! | two plates, unequal, frictionless (`two2`) | 1e-3, 1e-4 | the same route on eight levels |
 //! | two equal infinite plates, no hole (`two0`; the case's B, A = 0) | 1e-4, 1e-5, 1e-6 | the receding contact, Hankel (~1e-12, shares no code) |
+//! | two unequal infinite plates, no hole, frictionless (`two0u`; own B, D₂, E₂, ν₂) | 1e-4, 1e-5 | the receding contact of the pair, Hankel (~1e-12, shares no code) |
 //!
 //! The two-plate reference (eight levels) carries the 2e-5 of R_o that every two-plate estimate
 //! carries; its own estimate is added to the bar. Geometry (D = 1): A/D log-uniform in [0.1, 10], B/A in [1.05, 10] (`fe1`: A/D in

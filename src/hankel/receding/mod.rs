@@ -18,7 +18,8 @@
 //! `tests/hankel/receding_contact.rs` (force balance, complementarity, geometric convergence in the
 //! basis size, the bilateral limit against the slab) and `tests/hankel/receding_kernels.rs`
 //! (kernels against the general Love solution and its limits); against the finite elements in
-//! `tests/contact/receding_vs_fe.rs`.
+//! `tests/contact/receding_vs_fe.rs`; two unequal plates in `tests/hankel/receding_pair.rs`
+//! (and against the FE over 200 random pairs: example 16, route `two0u`).
 //!
 //! # Cost
 //!
