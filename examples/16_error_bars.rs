@@ -34,6 +34,7 @@
 //! | two plates, equal | 1e-3 / 1e-4 | 171 each | 0.092 / 0.015 | 0.55 / 0.14 | 0.60 / 0.16 | 0 |
 //! | two plates, unequal | 1e-3 / 1e-4 | 188 each | 0.096 / 0.018 | 0.49 / 0.20 | 0.57 / 0.26 | 0 |
 //! | two plates, no hole, vs Hankel | 1e-4 / 1e-5 / 1e-6 | 200 / 0 / 0 | 0.057 | 0.25 | 0.50 | 0 |
+//! | two unequal plates, no hole, vs Hankel | 1e-4 / 1e-5 | 200 / 0 | 0.078 | 0.32 | 0.33 | 0 |
 //!
 //! (The three two-plate rows: 2026-11-24 15:00–15:24 UTC, release, load 3–4, after the cut of
 //! an infinite plate became exact (`fem::exterior`) and the two-plate estimate gained its floor
@@ -46,6 +47,12 @@
 //! floor now covers. Earlier, 166 / 142 converged equal / unequal runs held at 1e-3 and 1e-4
 //! with maxima 0.81 / 0.79 against the FE at 1e-5.)
 //!
+//! The `two0u` row (2026-11-24 17:30–18:04 UTC, release, load 5–8, 2,030 s for 200 cases, none
+//! skipped): B/D₁ in [0.1, 10], D₂/D₁ in [0.25, 4], E₂/E₁ in [1e-2, 1e2], ν₁, ν₂ in [0, 0.45], A = 0,
+//! infinite plates, frictionless; the reference is `hankel::receding::Pair` (estimates ~1e-12 of
+//! R_o, shares no code with the FE). At 1e-4 all 200 FE runs say `converged` and every one is
+//! within its bar (largest actual/estimate 0.33); at 1e-5 none says `converged` (the 2e-5 floor).
+
 //! Before the single plate's grading shrank from h = D/8 at tolerances below 1e-4
 //! (`fem::single::FIXED_GRADING_TOLERANCE`) its FE at 1e-5 had 5 of 172 (wide) and 10 of 183
 //! (Table 1 range) converged runs over their estimate, up to 1.71×.
