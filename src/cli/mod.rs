@@ -36,6 +36,7 @@ mod two;
 mod two_args;
 mod two_files;
 mod two_hankel;
+mod two_pair;
 
 pub use command::{run, Cli};
 use print::{print_json, progress, write_output};

@@ -148,6 +148,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
                 && super::two_hankel::unsupported(&args).is_none()
         }
     };
+    if hankel && args.geom.a <= 0.0 {
+        return super::two_pair::run(&args, load, start);
+    }
     if hankel {
         return super::two_hankel::run(&args, load, start);
     }

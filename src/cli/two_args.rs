@@ -110,8 +110,9 @@ pub struct Args {
     /// Wanted relative error of R_o.
     #[arg(long, default_value_t = 5e-4)]
     pub(super) tol: f64,
-    /// Solver: fem, hankel (equal infinite plates with a hole, R_o only; seconds, not
-    /// milliseconds) or auto (hankel where it applies and --tol is below 3e-5).
+    /// Solver: fem, hankel (infinite plates, R_o only: equal plates with a hole, seconds not
+    /// milliseconds; or, with --a 0, any two plates in frictionless contact, milliseconds) or
+    /// auto (hankel where it applies and --tol is below 3e-5).
     #[arg(long, value_enum, default_value_t = Method::Fem)]
     pub(super) method: Method,
     /// Curve, field and figure files.

@@ -15,26 +15,31 @@
 
 use super::exit::{sig, Status};
 use super::two_args::Args;
-use boltzone::hankel::receding::holed::{two_plate_hole_pressure, HoledContact, HoledParams};
+use boltzone::hankel::receding::holed::{two_plate_hole_pressure, HoledParams};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
 /// Why the Hankel route does not apply to these arguments: (flag, value, reason).
 pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> {
     let g = &args.geom;
-    let why = "needs --method fem (the Hankel route: two equal infinite plates with a hole, \
-               pressed by a pressure, R_o only)";
+    let why = "needs --method fem (the Hankel route: infinite plates pressed by a pressure, R_o \
+               only; with a hole two equal plates, without one (--a 0) any two plates in \
+               frictionless contact)";
     let differs = |x: Option<f64>, y: f64| x.is_some_and(|v| v != y);
-    if g.a <= 0.0 {
-        return Some(("--a", g.a.to_string(), why));
-    }
-    if differs(args.d2, g.d) {
-        return Some(("--d2", format!("{:?}", args.d2), why));
-    }
-    if differs(args.e2, args.e()) {
-        return Some(("--e2", format!("{:?}", args.e2), why));
-    }
-    if differs(args.nu2, g.nu) {
-        return Some(("--nu2", format!("{:?}", args.nu2), why));
+    let unequal = [
+        ("--d2", args.d2, differs(args.d2, g.d)),
+        ("--e2", args.e2, differs(args.e2, args.e())),
+        ("--nu2", args.nu2, differs(args.nu2, g.nu)),
+    ];
+    let refusal = if g.a <= 0.0 {
+        super::two_pair::unsupported(args, why)
+    } else {
+        unequal
+            .into_iter()
+            .find(|u| u.2)
+            .map(|(flag, value, _)| (flag, format!("{value:?}"), why))
+    };
+    if refusal.is_some() {
+        return refusal;
     }
     if let Some(c) = args.c {
         return Some(("--c", c.to_string(), why));
@@ -55,17 +60,22 @@ pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> 
 const CURVE_POINTS: usize = 100;
 
 /// The interface curve in the FE's layout (r, p, g, τ): on A ≤ r ≤ R_o the gap is 0 and, the
-/// interface being frictionless, so is τ.
-fn curve_csv(curve: &[(f64, f64)], out: &HoledContact, converged: bool, args: &Args) -> String {
+/// interface being frictionless, so is τ; `method` names the route in the notes, `r_o` is
+/// (R_o, its error).
+pub(super) fn curve_csv(
+    curve: &[(f64, f64)],
+    method: &str,
+    r_o: (f64, f64),
+    converged: bool,
+    args: &Args,
+) -> String {
     let (l, st) = (args.units.length(), args.units.stress());
     let notes = [
-        "method: Hankel route with the hole (boltzone::hankel::receding::holed), interface \
-         A <= r <= R_o"
-            .to_string(),
+        format!("method: {method}"),
         "p = interface pressure (compression > 0), g = gap between the plates (0 on the \
          contact zone), tau = interface shear (0: frictionless)"
             .to_string(),
-        super::output::r_o_note_in(l, out.r_o, out.info.r_o_error, converged),
+        super::output::r_o_note_in(l, r_o.0, r_o.1, converged),
     ];
     let cols = [
         format!("r [{l}]"),
@@ -103,7 +113,10 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
         })?;
     let converged = out.info.r_o_error <= args.tol * out.r_o;
     if let Some(path) = &args.out.curve {
-        super::write_output(path, &curve_csv(&curve, &out, converged, args))?;
+        let method = "Hankel route with the hole (boltzone::hankel::receding::holed), \
+                      interface A <= r <= R_o";
+        let r_o = (out.r_o, out.info.r_o_error);
+        super::write_output(path, &curve_csv(&curve, method, r_o, converged, args))?;
     }
     if args.json {
         let mut v = serde_json::json!({

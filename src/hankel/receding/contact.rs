@@ -65,6 +65,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use super::layer::Stack;
 use super::search::{root, unilateral, RuleCache, Scan};
 use super::system::{Nystrom, XiRule};
 use crate::error::{positive, InputError};
@@ -179,8 +180,12 @@ impl RecedingError {
 /// An elastic layer of thickness D on a frictionless rigid base, pressed on its top face.
 #[derive(Debug, Clone)]
 pub struct Layer {
+    /// The thickness (of a stack, the thinnest layer's: the kernels' length scale).
     pub(super) d: f64,
-    material: Material,
+    /// The kernels: one layer, or two in series ([`super::pair`]).
+    stack: Stack,
+    /// The interface's compliance Σ(1 − νᵢ)/Gᵢ (one term for a layer on a rigid base).
+    compliance: f64,
     load: FaceLoad,
     pub(super) transform: LoadTransform,
 }
@@ -265,13 +270,21 @@ impl Layer {
     /// A layer of thickness `d` (> 0) of `material` pressed by `load` on its top face.
     pub fn new(d: f64, material: Material, load: FaceLoad) -> Result<Self, InputError> {
         positive("plate thickness D", d)?;
+        let compliance = (1.0 - material.poisson_ratio()) / material.shear_modulus();
+        Ok(Self::stacked(Stack::single(d), compliance, load))
+    }
+
+    /// The layer of `stack`'s kernels with interface compliance `compliance`: one layer, or
+    /// the two plates of [`super::pair::Pair`] (thicknesses already checked).
+    pub(super) fn stacked(stack: Stack, compliance: f64, load: FaceLoad) -> Self {
         let transform = LoadTransform::new(&load);
-        Ok(Self {
-            d,
-            material,
+        Self {
+            d: stack.thinnest(),
+            stack,
+            compliance,
             load,
             transform,
-        })
+        }
     }
 
     /// Thickness D.
@@ -323,7 +336,7 @@ impl Layer {
     /// (≤ B + c) and the gap's J₀(ξr) for r ≤ 2c.
     pub(super) fn rule(&self, cap: f64, tol: f64) -> XiRule {
         let omega = 3.0 * cap + self.transform.outer();
-        XiRule::new(self.d, &self.transform, omega, tol)
+        XiRule::stacked(&self.stack, &self.transform, omega, tol)
     }
 
     /// The system for contact radius `c` with `n` points on `rule` (built for radii ≥ c).
@@ -338,8 +351,18 @@ impl Layer {
         Ok(ContactSolution {
             system,
             d: self.d,
-            compliance: (1.0 - self.material.poisson_ratio()) / self.material.shear_modulus(),
+            compliance: self.compliance,
         })
+    }
+
+    /// The Nyström size n of [`Self::receding_contact`]: [`nodes`] for a contact radius of
+    /// B + 2D (R_o ≈ B + 0.4…1.1 D; of a stack B + 2D_max in units of D_min); an error beyond 256.
+    pub fn basis_size(&self, params: &RecedingParams) -> Result<usize, InputError> {
+        let reach = self.stack.thickest();
+        nodes(
+            params,
+            self.transform.outer() / self.d + 2.0 * reach / self.d,
+        )
     }
 
     /// The receding contact: R_o with φ(R_o) = 0, its pressure and gap, and an error estimate
@@ -350,14 +373,16 @@ impl Layer {
     ) -> Result<RecedingContact, RecedingError> {
         let start = Instant::now();
         self.check(params)?;
-        // R_o ≈ B + 0.4…1.1 D (examples/06_receding_contact.rs): size the rule for B + 2D
-        let n = nodes(params, self.transform.outer() / self.d + 2.0)?;
+        // R_o ≈ B + 0.4…1.1 D (examples/06_receding_contact.rs): size the rule for B + 2D (of
+        // a stack: B + 2D_max, resolved on D_min)
+        let reach = self.stack.thickest();
+        let n = self.basis_size(params)?;
         let coarse_n = (3 * n).div_ceil(4).max(4);
         // one ξ-rule (it does not depend on n) for radii up to B + 2D, widened if the search
         // goes beyond: the load transform is evaluated once per node, not once per solve
         let mut cache = RuleCache {
-            cap: self.transform.outer() + 2.0 * self.d,
-            rule: self.rule(self.transform.outer() + 2.0 * self.d, params.quad_tol),
+            cap: self.transform.outer() + 2.0 * reach,
+            rule: self.rule(self.transform.outer() + 2.0 * reach, params.quad_tol),
             solves: 0,
         };
         let p0 = self.transform.eval(0.0);
@@ -370,7 +395,7 @@ impl Layer {
             b,
             d: self.d,
             step: params.step * self.d,
-            end: b + params.reach * self.d,
+            end: b + params.reach * reach,
             tol: params.rel_tol * self.d,
             max_iterations: params.max_iterations,
         };

@@ -118,6 +118,67 @@ pub fn bottom_from_bottom(x: f64) -> f64 {
     1.0 + 0.5 * (bending_remainder(x) + symmetric_remainder(x))
 }
 
+/// The kernels of two layers in series, Σᵢ λᵢ M(ξDᵢ) with weights λᵢ ≥ 0 summing to 1: the
+/// interface of two plates pressed apart by their contact pressure ([`super::pair`]), whose
+/// relative displacement is the sum of the two faces' ([`super::pair`] derives it). One layer on
+/// a rigid base is the special case λ = (1, 0); equal plates give λ = (½, ½) and, because
+/// ½k + ½k = k exactly in floating point, the one layer's kernels bit for bit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Stack {
+    /// (λᵢ, Dᵢ) of the two layers.
+    layers: [(f64, f64); 2],
+}
+
+impl Stack {
+    /// One layer of thickness `d` (weights (1, 0)).
+    pub fn single(d: f64) -> Self {
+        Self {
+            layers: [(1.0, d), (0.0, d)],
+        }
+    }
+
+    /// Two layers `d1`, `d2` thick with compliances `c1`, `c2` = (1 − νᵢ)/Gᵢ (> 0): weights
+    /// λᵢ = cᵢ/(c₁ + c₂).
+    pub fn pair((c1, d1): (f64, f64), (c2, d2): (f64, f64)) -> Self {
+        let sum = c1 + c2;
+        Self {
+            layers: [(c1 / sum, d1), (c2 / sum, d2)],
+        }
+    }
+
+    /// The thinnest thickness: the length over which the kernels vary (their ξ-decay
+    /// e^(−ξD_min) sets the quadrature and the Nyström rule's resolution).
+    pub fn thinnest(&self) -> f64 {
+        self.layers[0].1.min(self.layers[1].1)
+    }
+
+    /// The thickest thickness: the scale of R_o − B (the scan's reach).
+    pub fn thickest(&self) -> f64 {
+        self.layers[0].1.max(self.layers[1].1)
+    }
+
+    fn sum(&self, xi: f64, kernel: fn(f64) -> f64) -> f64 {
+        let [(l1, d1), (l2, d2)] = self.layers;
+        let second = if l2 == 0.0 { 0.0 } else { l2 * kernel(xi * d2) };
+        l1 * kernel(xi * d1) + second
+    }
+
+    /// Σ λᵢ (S(ξDᵢ) − 1): the bounded part k₁ of the interface kernel.
+    pub fn symmetric_remainder(&self, xi: f64) -> f64 {
+        self.sum(xi, symmetric_remainder)
+    }
+
+    /// Σ λᵢ M_p(ξDᵢ): the interface's displacement per unit far-face pressure.
+    pub fn bottom_from_top(&self, xi: f64) -> f64 {
+        self.sum(xi, bottom_from_top)
+    }
+
+    /// Σ λᵢ M_q(ξDᵢ): the interface's displacement per unit contact pressure (→ 1 as ξ → ∞).
+    pub fn bottom_from_bottom(&self, xi: f64) -> f64 {
+        self.sum(xi, bottom_from_bottom)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

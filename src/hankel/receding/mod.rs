@@ -5,6 +5,7 @@
 //! - [`layer`]: the layer's Hankel kernels (bottom-face displacement under face pressures);
 //! - `system`: the Fredholm equation of a contact disk r ≤ c, by Nyström's method;
 //! - `search`: the scan and root search for R_o and the check of the unilateral conditions;
+//! - [`pair`]: two unequal plates without a hole (the kernels of both in series, [`layer::Stack`]);
 //! - [`layer_field`]: the layer's stresses at any height under a bottom (or top) pressure;
 //! - [`holed`]: the two-plate model with the hole (bilateral holed plate + crack field + its
 //!   hole correction, iterated); `crack`: one trial contact radius of it;
@@ -17,7 +18,8 @@
 //! `tests/hankel/receding_contact.rs` (force balance, complementarity, geometric convergence in the
 //! basis size, the bilateral limit against the slab) and `tests/hankel/receding_kernels.rs`
 //! (kernels against the general Love solution and its limits); against the finite elements in
-//! `tests/contact/receding_vs_fe.rs`.
+//! `tests/contact/receding_vs_fe.rs`; two unequal plates in `tests/hankel/receding_pair.rs`
+//! (and against the FE over 200 random pairs: example 16, route `two0u`).
 //!
 //! # Cost
 //!
@@ -42,6 +44,7 @@ mod holed_search;
 mod holed_setup;
 pub mod layer;
 pub mod layer_field;
+pub mod pair;
 mod search;
 mod system;
 
@@ -49,3 +52,4 @@ pub use contact::{
     contact_radius, nodes, ContactSolution, Layer, RecedingContact, RecedingError, RecedingInfo,
     RecedingParams,
 };
+pub use pair::Pair;

@@ -23,7 +23,7 @@
 //!
 //! One dense solve of the Nyström system per radius; example 06.
 
-use super::layer::{bottom_from_top, symmetric_remainder};
+use super::layer::Stack;
 use crate::hankel::transform::LoadTransform;
 use crate::numerics::quadrature::{gauss_legendre, panel};
 use nalgebra::{DMatrix, DVector};
@@ -43,9 +43,17 @@ impl XiRule {
     /// Nodes on [0, X/D] resolving cosines of angular frequency up to `omega`, with the tail
     /// beyond X/D below `tol` relative to the integrals' scale.
     pub(crate) fn new(d: f64, transform: &LoadTransform, omega: f64, tol: f64) -> Self {
+        Self::stacked(&Stack::single(d), transform, omega, tol)
+    }
+
+    /// The same for the weighted kernels of `stack` (two layers in series); D is its thinnest
+    /// layer, whose kernels decay slowest in ξ.
+    pub(crate) fn stacked(stack: &Stack, transform: &LoadTransform, omega: f64, tol: f64) -> Self {
+        let d = stack.thinnest();
         // tail: |k₁|, M_p ≤ 2.5(1 + x)e^(−x) for x ≥ 30 (both → 2(1 + x)e^(−x)); the cosine factors
         // are ≤ 4 and the loads' transforms ≤ 2p̄(0), so ∫_X^∞ ≤ 20(2 + X)e^(−X)·p̄(0)/D,
-        // against the integrals' scale p̄(0)/(ωD ∨ 1)/D.
+        // against the integrals' scale p̄(0)/(ωD ∨ 1)/D. For a stack the weights sum to 1 and the
+        // thicker layer's kernels are smaller there ((1 + x)e^(−x) falls): D = D_min bounds both.
         let scale = 20.0 * (omega * d).max(1.0);
         let mut x_max: f64 = 30.0;
         for _ in 0..20 {
@@ -71,8 +79,8 @@ impl XiRule {
                 let z = c + 0.5 * h * x;
                 let wz = 0.5 * h * w / FRAC_PI_2;
                 xi.push(z);
-                a.push(wz * symmetric_remainder(z * d));
-                b.push(wz * bottom_from_top(z * d));
+                a.push(wz * stack.symmetric_remainder(z));
+                b.push(wz * stack.bottom_from_top(z));
                 p_tilde.push(transform.eval(z) - p0);
             }
         }

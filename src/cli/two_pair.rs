@@ -1,0 +1,117 @@
+//! `boltzone two --method hankel|auto --a 0`: two infinite plates without a hole, equal or
+//! unequal (`--d2`, `--e2`, `--nu2`) in frictionless contact, by the semi-analytic receding
+//! contact of the two plates in series ([`boltzone::hankel::receding::Pair`]): R_o with its
+//! error estimate, and with `--curve` the interface pressure on 0 ≤ r ≤ R_o in the FE's CSV
+//! layout. Equal plates carry no interface shear (symmetry), so any `--interface` is exact for
+//! them; unequal plates need `--interface frictionless`.
+//!
+//! # Accuracy
+//!
+//! That of [`boltzone::hankel::receding::Pair`] (`tests/hankel/receding_pair.rs`); the command:
+//! `tests/hankel/pair_cli.rs` (the library value, exit codes, the flags it refuses).
+//!
+//! # Cost
+//!
+//! One receding-contact solve ([`boltzone::hankel::receding::pair`]): 0.1–0.2 s at B ≈ D,
+//! seconds at B ≈ 8 thicknesses of the thinner plate.
+
+use super::exit::{sig, Status};
+use super::two_args::{Args, Interface};
+use boltzone::hankel::receding::{Pair, RecedingParams};
+use boltzone::{FaceLoad, Material, Plate};
+
+/// Points of the `--curve` (plus one).
+const CURVE_POINTS: usize = 100;
+
+/// Why the route does not take these arguments (the flags shared with the holed route are
+/// checked by [`super::two_hankel::unsupported`]): an interface other than frictionless
+/// between unequal plates, or a load wider than the route's basis reaches.
+pub fn unsupported(args: &Args, why: &'static str) -> Option<(&'static str, String, &'static str)> {
+    let g = &args.geom;
+    let equal = args.d2.is_none_or(|d| d == g.d)
+        && args.e2.is_none_or(|e| e == args.e())
+        && args.nu2.is_none_or(|n| n == g.nu);
+    if !equal && !matches!(args.interface, Interface::Frictionless) {
+        return Some(("--interface", format!("{:?}", args.interface), why));
+    }
+    let reach = "is beyond the Hankel route's reach without a hole (B + 2D of the thicker \
+                 plate at most 64 thicknesses of the thinner); use --method fem";
+    let fits = || -> Option<usize> {
+        let pair = Pair::new(
+            Plate::new(g.d, Material::unit(0.3).ok()?).ok()?,
+            Plate::new(args.d2.unwrap_or(g.d), Material::unit(0.3).ok()?).ok()?,
+            FaceLoad::uniform(0.0, g.b, 1.0).ok()?,
+        );
+        pair.basis_size(&RecedingParams::default()).ok()
+    };
+    fits().is_none().then(|| ("--b", g.b.to_string(), reach))
+}
+
+/// Runs the route on checked arguments with bearing pressure `load`.
+pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Result<Status> {
+    let g = &args.geom;
+    let upper = Plate::new(g.d, Material::new(args.e(), g.nu)?)?;
+    let lower = Plate::new(
+        args.d2.unwrap_or(g.d),
+        Material::new(args.e2.unwrap_or(args.e()), args.nu2.unwrap_or(g.nu))?,
+    )?;
+    // every flag was checked: what the route rejects now is beyond its reach (exit 1)
+    let out = Pair::new(upper, lower, load)
+        .receding_contact(&RecedingParams::default())
+        .map_err(|e| {
+            anyhow::anyhow!("the Hankel route cannot treat this joint ({e}); try --method fem")
+        })?;
+    let (r_o, error) = (out.r_o, out.info.r_o_error);
+    let converged = error <= args.tol * r_o;
+    if let Some(path) = &args.out.curve {
+        let curve: Vec<(f64, f64)> = (0..=CURVE_POINTS)
+            .map(|k| r_o * (1.0 - (1.0 - k as f64 / CURVE_POINTS as f64).powi(2)))
+            .map(|r| (r, out.solution.pressure(r)))
+            .collect();
+        let method = "Hankel, receding contact of the two plates in series \
+                      (boltzone::hankel::receding::Pair), interface 0 <= r <= R_o";
+        let text = super::two_hankel::curve_csv(&curve, method, (r_o, error), converged, args);
+        super::write_output(path, &text)?;
+    }
+    let i = &out.info;
+    if !args.json {
+        let l = args.units.length();
+        let note = if converged {
+            ""
+        } else {
+            "  NOT converged to --tol (exit 3)"
+        };
+        println!(
+            "R_o = {} ± {error:.1e} {l}   (2R_o = {} {l}){note}",
+            sig(r_o, 10),
+            sig(2.0 * r_o, 10),
+        );
+        println!(
+            "method: Hankel (receding contact of the two plates in series, no hole); {} Nystrom \
+             points, {} systems solved; {:.3} s",
+            i.nodes, i.solves, i.seconds
+        );
+        return Ok(Status::from_converged(converged));
+    }
+    let mut v = serde_json::json!({
+        "method": "hankel",
+        "r_o": r_o,
+        "r_o_error": error,
+        "converged": converged,
+        "tolerance": args.tol,
+        "interface": "frictionless (receding contact of the two plates, no hole)",
+        "hankel": {
+            "nodes": i.nodes,
+            "xi_nodes": i.xi_nodes,
+            "solves": i.solves,
+            "r_o_coarse": i.r_o_coarse,
+            "min_pressure": i.min_pressure,
+            "min_gap": i.min_gap,
+        },
+        "seconds": i.seconds,
+        "units": args.units.units.name(),
+    });
+    super::output::stamp(&mut v, &args.inputs()?, start)?;
+    super::print_json(&v)?;
+    Ok(Status::from_converged(converged))
+}
