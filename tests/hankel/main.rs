@@ -12,6 +12,7 @@ mod hole_corner;
 mod hole_correction;
 mod hole_eigen;
 mod hole_profile;
+mod hole_rim_skip;
 mod receding_contact;
 mod receding_grid;
 mod receding_kernels;

@@ -152,6 +152,10 @@ pub struct HoleInfo {
     pub rim_residual_max: f64,
     /// Condition number of the column-scaled collocation matrix.
     pub condition: f64,
+    /// A finite rim left unfitted because it is too far from R_o to matter: the bound on its
+    /// effect on R_o ([`super::rim`], a length, included in R_o's estimate); 0 when the rim
+    /// was fitted or the plate is infinite.
+    pub rim_bound: f64,
     /// Error estimate of the slab's hole tractions, relative to P: the traction profile's
     /// (interpolation + samples), or with [`SlabSampling::Direct`] the largest quadrature
     /// estimate.

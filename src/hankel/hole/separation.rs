@@ -30,6 +30,7 @@
 
 use super::corner::CornerMidplaneRule;
 use super::plate::dot;
+use super::rim::{rim_bound, RIM_SHARE, RIM_TRIAL};
 use super::{HoleInfo, HoleParams, HolePlate};
 use crate::error::positive;
 use crate::hankel::midplane::MidplaneRule;
@@ -44,7 +45,8 @@ use std::time::Instant;
 /// (midplane quadrature and interpolation errors + the hole data's quadrature error)/slope at
 /// R_o, plus the hole's share (the last change of R_o as N doubled when the doublings contract,
 /// else the larger of the last two; at the first N max residual·P/slope); N doubles until it is
-/// below `hole.r_o_tolerance`·R_o.
+/// below `hole.r_o_tolerance`·R_o. A rim far enough from R_o to move it by at most a tenth of
+/// that is not fitted ([`super::rim`]): its bound joins the estimate.
 pub fn single_plate_separation(
     plate: &SinglePlate,
     sep: &SeparationParams,
@@ -54,24 +56,56 @@ pub fn single_plate_separation(
     positive("R_o relative tolerance", sep.rel_tol)?;
     positive("scan step", sep.step)?;
     positive("scan reach", sep.reach)?;
+    hole.check()?;
+    let (d, b) = (plate.half_thickness(), plate.load().outer());
+    let without_rim = || {
+        SinglePlate::new(
+            plate.hole_radius(),
+            OuterRadius::Infinite,
+            d,
+            plate.material(),
+            plate.load().clone(),
+        )
+    };
+    let OuterRadius::Finite(c) = plate.outer_radius() else {
+        return search(plate, sep, hole, start);
+    };
     // A rim farther than B + 30 D is an end effect decaying like e^(−2.1 (C − r)/D) at the
     // midplane, below f64 resolution of R_o (see `fem::single`): the plate is infinite to
     // every digit, and its rim correction (whose cost grows with C/D) is skipped.
-    let far = crate::joint::FAR_RIM * plate.half_thickness() + plate.load().outer();
-    let infinite;
-    let plate = match plate.outer_radius() {
-        OuterRadius::Finite(c) if c > far => {
-            infinite = SinglePlate::new(
-                plate.hole_radius(),
-                OuterRadius::Infinite,
-                plate.half_thickness(),
-                plate.material(),
-                plate.load().clone(),
-            )?;
-            &infinite
+    if c > crate::joint::FAR_RIM * d + b {
+        return search(&without_rim()?, sep, hole, start);
+    }
+    // A rim far enough from R_o to move it by at most RIM_SHARE of the tolerance: the
+    // infinite plate to the rest of the tolerance, with the rim's bound added to its estimate.
+    if plate.hole_radius() > 0.0 && c - b >= RIM_TRIAL * d {
+        let trial = HoleParams {
+            r_o_tolerance: (1.0 - RIM_SHARE) * hole.r_o_tolerance,
+            ..*hole
+        };
+        let p_ref = Some(plate.load().mean_pressure().abs())
+            .filter(|p| *p > 0.0)
+            .unwrap_or(1.0);
+        if let Ok((mut s, mut h)) = search(&without_rim()?, sep, &trial, start) {
+            let bound = rim_bound(c, s.r_o, d, s.slope, p_ref);
+            if s.r_o < c && bound <= RIM_SHARE * hole.r_o_tolerance * s.r_o {
+                s.r_o_error += bound;
+                s.converged = s.converged && s.r_o_error <= hole.r_o_tolerance * s.r_o;
+                h.rim_bound = bound;
+                return Ok((s, h));
+            }
         }
-        _ => plate,
-    };
+    }
+    search(plate, sep, hole, start)
+}
+
+/// The search of [`single_plate_separation`] on `plate` as it is (rim fitted if it has one).
+fn search(
+    plate: &SinglePlate,
+    sep: &SeparationParams,
+    hole: &HoleParams,
+    start: Instant,
+) -> Result<(SeparationInfo, HoleInfo), SeparationError> {
     let mut holed = HolePlate::with_terms(plate, hole, hole.terms.unwrap_or(hole.start_terms))?;
     let d = plate.half_thickness();
     let b = plate.load().outer();
