@@ -125,10 +125,8 @@ fn hankel(plate: &SinglePlate, tol: f64) -> anyhow::Result<Run> {
         rel_tol: 1e-3 * tol,
         ..Default::default()
     };
-    let hole = HoleParams {
-        r_o_tolerance: tol,
-        ..Default::default()
-    };
+    // as `single --method hankel` and the scenes
+    let hole = HoleParams::for_tolerance(tol);
     let (s, _) = single_plate_separation(plate, &sep, &hole)?;
     Ok((s.r_o, s.r_o_error, s.converged))
 }

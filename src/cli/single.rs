@@ -251,8 +251,7 @@ fn run_hankel(
 ) -> anyhow::Result<Status> {
     let params = HoleParams {
         corner_terms: args.corner_terms,
-        r_o_tolerance: tolerance(args),
-        ..HoleParams::default()
+        ..HoleParams::for_tolerance(tolerance(args))
     };
     let search = SeparationParams {
         rel_tol: SeparationParams::default()

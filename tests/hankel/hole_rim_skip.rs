@@ -14,7 +14,8 @@ fn plate(a: f64, b: f64, d: f64, c: Option<f64>) -> SinglePlate {
     SinglePlate::new(a, outer, d, Material::unit(0.3).unwrap(), load).unwrap()
 }
 
-/// (R_o, estimate, slope, rim bound) at relative tolerance `tol` (as `single --method hankel`).
+/// (R_o, estimate, slope, rim bound) at relative tolerance `tol` (the parameters of `single
+/// --method hankel` and the scenes).
 fn r_o(p: &SinglePlate, tol: f64) -> (f64, f64, f64, f64) {
     r_o_at(p, tol, tol)
 }
@@ -27,7 +28,7 @@ fn r_o_at(p: &SinglePlate, tol: f64, hole_tol: f64) -> (f64, f64, f64, f64) {
     };
     let hole = HoleParams {
         r_o_tolerance: hole_tol,
-        ..Default::default()
+        ..HoleParams::for_tolerance(tol)
     };
     let (s, h) = single_plate_separation(p, &sep, &hole).unwrap();
     assert!(s.converged, "{s:?}");

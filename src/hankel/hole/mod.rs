@@ -101,7 +101,7 @@ pub mod traction;
 
 // Former homes, kept so that old paths work.
 pub use crate::numerics::{bessel_i, bessel_k, bessel_nu, chebyshev};
-pub use params::{HoleInfo, HoleLevel, HoleParams, SlabSampling};
+pub use params::{HoleInfo, HoleLevel, HoleParams, SlabSampling, SLAB_SHARE};
 pub use plate::HolePlate;
 pub use profile::TractionProfile;
 pub use separation::single_plate_separation;

@@ -6,15 +6,17 @@
 //!
 //! The slab's part does not change as N doubles, and the root stays in the same scan interval
 //! (it moves by ≪ `step`·D): on that interval the slab's σ_z(r, 0) is replaced by its Chebyshev
-//! interpolant ([`LocalMidplane`]), built once from 17–65 rule evaluations, so each level's
-//! root search costs only the modes' closed forms (a rule evaluation is a sum over its
-//! 500–1000 ξ-nodes, the modes N complex K₀/K₁ pairs). σ_z(r, 0) is analytic in the strip
-//! |Im r| < D (its ξ-integrand is bounded by e^(−ξD)·e^(ξ|Im r|)), so on an interval of
-//! half-width D/4 the coefficients fall like ρ^(−k), ρ = 4 + √17 ≈ 8.1: 17 points give ~1e-15
-//! of the scale. The corner enrichment's fields do not change with N either (only their
-//! amplitudes do): their midplane σ_z are kept at the scan radii and interpolated on the
-//! bracket the same way (to 1e-13 of each field's size; the amplitude-weighted interpolation
-//! error joins R_o's estimate), each on a node set sized for the radii it serves.
+//! interpolant ([`LocalMidplane`]), so each level's root search costs only the modes' closed
+//! forms (a rule evaluation is a sum over its 500–1000 ξ-nodes, the modes N complex K₀/K₁
+//! pairs). σ_z(r, 0) is analytic in the strip |Im r| < D (its ξ-integrand is bounded by
+//! e^(−ξD)·e^(ξ|Im r|)), so on an interval of half-width D/4 the coefficients fall like
+//! ρ^(−k), ρ = 4 + √17 ≈ 8.1: 9 points give ~1e-6, 17 points ~1e-15 of the scale (measured on
+//! Table 1: 2e-6 and 4e-15 as estimated). The corner enrichment's fields do not change with N
+//! either (only their amplitudes do): their midplane σ_z are kept at the scan radii and
+//! interpolated on the bracket the same way, each on a node set sized for the radii it serves.
+//! The interpolants start on 9 points and double (nested) while their error — the slab's plus
+//! the corner fields' weighted by the fitted amplitudes — divided by the slope at R_o exceeds
+//! 5 % of R_o's tolerance; it joins R_o's estimate.
 //!
 //! N doubles until R_o's whole error estimate is below `r_o_tolerance`·R_o (see [`super`] for
 //! the hole's share of it). The scan is [`crate::numerics::root::first_upward_crossing`].
@@ -127,7 +129,7 @@ fn search(
     // kept across levels (only the modes and the amplitudes do).
     let h = sep.step * d;
     let mut scan_cache: Vec<(f64, Vec<f64>)> = Vec::new();
-    let mut local: Option<(LocalMidplane, LocalMidplane)> = None;
+    let mut local: Option<LocalMidplane> = None;
     // The corner fields' midplane σ_z on a node set sized for the radii asked: to B + 4D
     // (Table 1's brackets end by B + 2.5D; the fewer radii the rule serves, the fewer nodes),
     // beyond that the plate's own (to B + 20D) for the scan and one sized for the bracket.
@@ -154,38 +156,52 @@ fn search(
         let crossing = crossing.ok_or(SeparationError::NotFound { searched_to: r_end })?;
         let tol = rel_tol * b * 0.25;
         let ((a, fa), (c, fc)) = (crossing.before, crossing.after);
-        if local.as_ref().is_none_or(|l| l.0.lo != a || l.0.hi != c) {
-            let slab = LocalMidplane::new(|r| vec![rule.eval(r).value], a, c, |_, _| sigma_tol);
-            // the corner fields to ~1e-13 of their size (the rounding of their sums)
-            let bracket_rule = match &near_rule {
-                Some(q) if q.r_max() >= c => None,
-                _ => holed.corner_midplane_rule(c),
-            };
-            let bracket_rule = bracket_rule.as_ref().or(near_rule.as_ref());
-            let corner = LocalMidplane::new(
-                |r| corner_basis(&holed, bracket_rule, r),
-                a,
-                c,
-                |_, s| 1e-13 * s,
-            );
-            evaluations += slab.evaluations;
-            local = Some((slab, corner));
-        }
-        let (slab, corner) = local.as_ref().expect("built above");
-        let mut f = |r: f64| {
-            let s = slab.eval1(r).unwrap_or_else(|| {
-                evaluations += 1;
-                rule.eval(r).value
-            });
-            let basis = corner
-                .eval(r)
-                .unwrap_or_else(|| holed.corner_midplane_basis(r));
-            sign * (s + holed.modes_midplane(r) + dot(&weights, &basis))
+        // The slab's σ_z and the corner fields' on the bracket (the corner fields from a
+        // node set that serves it), interpolated until their error, the corner fields'
+        // weighted by the fitted amplitudes, is below `local_tol`; kept across levels while
+        // the bracket stays, refined when new amplitudes ask for more.
+        let bracket_rule = match &near_rule {
+            Some(q) if q.r_max() >= c => None,
+            _ => holed.corner_midplane_rule(c),
         };
-        let mut g = |x: f64| Ok::<f64, std::convert::Infallible>(f(x));
-        let Ok(Root { x: r_o, half_width }) = brent(&mut g, a, fa, c, fc, tol, sep.max_iterations);
-        let dr = (1e-4 * d).max(1e-6 * r_o);
-        let slope = (f(r_o + dr) - f(r_o - dr)) / (2.0 * dr);
+        let bracket_rule = bracket_rule.as_ref().or(near_rule.as_ref());
+        let at = |r: f64| {
+            let mut v = vec![rule.eval(r).value];
+            v.extend(corner_basis(&holed, bracket_rule, r));
+            v
+        };
+        let abs_weights: Vec<f64> = weights.iter().map(|w| w.abs()).collect();
+        let local_error = |l: &LocalMidplane| l.errors[0] + dot(&abs_weights, &l.errors[1..]);
+        if local.as_ref().is_none_or(|l| l.lo != a || l.hi != c) {
+            let l = LocalMidplane::new(&at, a, c);
+            evaluations += l.evaluations;
+            local = Some(l);
+        }
+        // Brent on the interpolants; while their error's share of R_o's (error/slope) exceeds
+        // LOCAL_SHARE of the tolerance, refine them and search again.
+        let (r_o, half_width, slope) = loop {
+            let l = local.as_ref().expect("built above");
+            let mut f = |r: f64| {
+                let v = l.eval(r).unwrap_or_else(|| {
+                    evaluations += 1;
+                    let mut v = vec![rule.eval(r).value];
+                    v.extend(holed.corner_midplane_basis(r));
+                    v
+                });
+                sign * (v[0] + holed.modes_midplane(r) + dot(&weights, &v[1..]))
+            };
+            let mut g = |x: f64| Ok::<f64, std::convert::Infallible>(f(x));
+            let Ok(Root { x, half_width }) = brent(&mut g, a, fa, c, fc, tol, sep.max_iterations);
+            let dr = (1e-4 * d).max(1e-6 * x);
+            let slope = (f(x + dr) - f(x - dr)) / (2.0 * dr);
+            let target = LOCAL_SHARE * hole.r_o_tolerance * x * slope.abs();
+            if local_error(l) <= target || l.intervals() >= LOCAL_MAX {
+                break (x, half_width, slope);
+            }
+            let l = local.as_mut().expect("built above");
+            evaluations += l.refine(&at, |l| local_error(l) <= target);
+        };
+        let local = local.as_ref().expect("built above");
         // The rim's residual counts as the hole's: a rim near R_o converges by its own modes.
         let residual_max = holed.info().residual_max.max(holed.info().rim_residual_max);
         let residual_met = residual_max <= hole.residual_target;
@@ -230,12 +246,8 @@ fn search(
         // residual (measured against the same data) cannot see: add its effect too; and the
         // local interpolants' errors (the corner fields' weighted by the fitted amplitudes).
         let data_error = holed.info().slab_error * p_ref;
-        let corner_error = dot(
-            &weights.iter().map(|w| w.abs()).collect::<Vec<_>>(),
-            &corner.errors,
-        );
         let error = half_width
-            + (slab.errors[0] + rule.eval(r_o).error + data_error + corner_error) / slope.abs()
+            + (local_error(local) + rule.eval(r_o).error + data_error) / slope.abs()
             + hole_error;
         // Stop when R_o's whole estimate meets the R_o target (the residual target alone does
         // not: at the first N its bound can exceed it), or N is fixed, or N can grow no more.
@@ -262,84 +274,96 @@ fn corner_basis(holed: &HolePlate, rule: Option<&CornerMidplaneRule>, r: f64) ->
         .unwrap_or_else(|| holed.corner_midplane_basis(r))
 }
 
-/// Functions of r on one scan interval [lo, hi] (the slab's midplane σ_z(r, 0), or the corner
+/// Functions of r on one scan interval [lo, hi] (the slab's midplane σ_z(r, 0) and the corner
 /// enrichment's fields there) by Chebyshev interpolation on the Chebyshev–Lobatto grid (see the
-/// module docs): M = 16, doubled (nested) until the last three coefficients of every function
-/// are below its tolerance, at most 64.
+/// module docs): M = 8, doubled (nested) while the caller asks (error estimates: twice the
+/// largest of the last three coefficients of each function), at most 64.
 struct LocalMidplane {
     lo: f64,
     hi: f64,
+    /// Samples on the current grid (one vector of all functions per point).
+    values: Vec<Vec<f64>>,
     /// Chebyshev coefficients, one vector per function.
     coef: Vec<Vec<f64>>,
-    /// Interpolation error estimates (2 × the largest of the last three coefficients).
+    /// Interpolation error estimates.
     errors: Vec<f64>,
     /// Function evaluations spent.
     evaluations: usize,
 }
 
+/// Largest M of a [`LocalMidplane`].
+const LOCAL_MAX: usize = 64;
+
+/// The share of R_o's tolerance the bracket's interpolation error may take (its error over the
+/// slope at R_o); beyond it the interpolants are refined.
+const LOCAL_SHARE: f64 = 0.05;
+
 impl LocalMidplane {
-    /// `at(r)` gives every function at r; `tol(j, s)` is function j's tolerance when its
-    /// largest sample is s.
-    fn new(
-        mut at: impl FnMut(f64) -> Vec<f64>,
-        lo: f64,
-        hi: f64,
-        tol: impl Fn(usize, f64) -> f64,
-    ) -> Self {
+    /// The interpolants on the first grid (M = 8); `at(r)` gives every function at r.
+    fn new(at: impl Fn(f64) -> Vec<f64>, lo: f64, hi: f64) -> Self {
         let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-        let mut m = 16;
-        let mut values: Vec<Vec<f64>> = lobatto_points(m)
+        let values: Vec<Vec<f64>> = lobatto_points(8)
             .into_iter()
             .map(|x| at(mid + half * x))
             .collect();
-        let mut evaluations = values.len();
-        let count = values[0].len();
-        loop {
-            let (mut coef, mut errors, mut ok) = (Vec::new(), Vec::new(), true);
-            for j in 0..count {
-                let column: Vec<f64> = values.iter().map(|v| v[j]).collect();
-                let scale = column.iter().fold(0.0f64, |s, v| s.max(v.abs()));
-                let c = lobatto_coefficients(&column);
-                let error = 2.0 * c[m - 2..].iter().fold(0.0f64, |e, c| e.max(c.abs()));
-                ok &= error <= tol(j, scale);
-                coef.push(c);
-                errors.push(error);
-            }
-            if ok || m >= 64 {
-                return Self {
-                    lo,
-                    hi,
-                    coef,
-                    errors,
-                    evaluations,
-                };
-            }
-            // nested doubling: the old values sit at the even points of the new grid
+        let mut l = Self {
+            lo,
+            hi,
+            evaluations: values.len(),
+            values,
+            coef: Vec::new(),
+            errors: Vec::new(),
+        };
+        l.coefficients();
+        l
+    }
+
+    /// Intervals M of the current grid.
+    fn intervals(&self) -> usize {
+        self.values.len() - 1
+    }
+
+    /// Doubles M (nested: the old samples are the even points of the new grid) until
+    /// `accept(self)` or M = [`LOCAL_MAX`]; returns the evaluations spent.
+    fn refine(&mut self, at: impl Fn(f64) -> Vec<f64>, accept: impl Fn(&Self) -> bool) -> usize {
+        let before = self.evaluations;
+        let (mid, half) = (0.5 * (self.lo + self.hi), 0.5 * (self.hi - self.lo));
+        while !accept(self) && self.intervals() < LOCAL_MAX {
+            let m = self.intervals();
             let x = lobatto_points(2 * m);
-            let mut old = std::mem::take(&mut values).into_iter();
-            values = (0..=2 * m)
+            let mut old = std::mem::take(&mut self.values).into_iter();
+            self.values = (0..=2 * m)
                 .map(|j| {
                     if j % 2 == 0 {
                         old.next().expect("nested grid")
                     } else {
-                        evaluations += 1;
+                        self.evaluations += 1;
                         at(mid + half * x[j])
                     }
                 })
                 .collect();
-            m *= 2;
+            self.coefficients();
         }
+        self.evaluations - before
+    }
+
+    /// Coefficients and error estimates from the samples.
+    fn coefficients(&mut self) {
+        let m = self.values.len() - 1;
+        (self.coef, self.errors) = (0..self.values[0].len())
+            .map(|j| {
+                let column: Vec<f64> = self.values.iter().map(|v| v[j]).collect();
+                let c = lobatto_coefficients(&column);
+                let error = 2.0 * c[m - 2..].iter().fold(0.0f64, |e, c| e.max(c.abs()));
+                (c, error)
+            })
+            .unzip();
     }
 
     /// Every function at r, or None outside [lo, hi].
     fn eval(&self, r: f64) -> Option<Vec<f64>> {
         let x = (2.0 * r - self.lo - self.hi) / (self.hi - self.lo);
         (r >= self.lo && r <= self.hi).then(|| self.coef.iter().map(|c| clenshaw(c, x)).collect())
-    }
-
-    /// The single function's value (the slab's interpolant).
-    fn eval1(&self, r: f64) -> Option<f64> {
-        self.eval(r).map(|v| v[0])
     }
 }
 
@@ -355,7 +379,8 @@ mod tests {
     fn local_midplane_interpolates_the_rule_within_its_estimate() {
         // Scan intervals of width D/2 around Table 1's zeros (wide and narrow load): the
         // interpolant against the rule itself at points off the grid, within the interpolant's
-        // estimate plus rounding of the rule's sum (~1e-15 of its scale).
+        // estimate plus rounding of the rule's sum (~1e-15 of its scale); at a loose tolerance
+        // from the first grid (M = 8), at a tight one after doublings.
         for (b, d) in [(0.31, 0.1), (0.13, 0.2)] {
             let slab = Slab::new(
                 d,
@@ -364,15 +389,23 @@ mod tests {
             )
             .unwrap();
             let rule = MidplaneRule::new(&slab, b + 12.0 * d, 1e-13).unwrap();
-            for k in [2.0, 5.0] {
+            for (k, tol) in [(2.0, 1e-12), (5.0, 1e-12), (2.0, 1e-6), (5.0, 1e-6)] {
                 let lo = b + 0.5 * k * d;
                 let hi = lo + 0.5 * d;
-                let l = LocalMidplane::new(|r| vec![rule.eval(r).value], lo, hi, |_, _| 1e-12);
+                let at = |r| vec![rule.eval(r).value];
+                let mut l = LocalMidplane::new(at, lo, hi);
+                l.refine(at, |l| l.errors[0] <= tol);
                 let error = l.errors[0];
-                assert!(error <= 1e-12, "estimate {error:e}");
+                assert!(error <= tol, "estimate {error:e}");
+                assert_eq!(
+                    l.values.len() == 9,
+                    tol > 1e-7,
+                    "M = {}",
+                    l.values.len() - 1
+                );
                 for i in 0..40 {
                     let r = lo + (hi - lo) * (i as f64 + 0.37) / 40.0;
-                    let diff = (l.eval1(r).unwrap() - rule.eval(r).value).abs();
+                    let diff = (l.eval(r).unwrap()[0] - rule.eval(r).value).abs();
                     assert!(diff <= error + 1e-14, "r {r}: {diff:e} vs {error:e}");
                 }
                 assert!(l.eval(lo - 1e-9).is_none() && l.eval(hi + 1e-9).is_none());
