@@ -92,6 +92,7 @@ pub mod corner;
 pub mod corner_quad;
 pub mod eigen;
 pub mod fit;
+pub mod midplane_sum;
 mod params;
 pub mod plate;
 pub mod profile;

@@ -28,7 +28,7 @@
 //! The bound holds with a wide margin: the actual shift (R_o with the rim fitted against R_o
 //! without, both to 1e-8) was at most 0.042 of the bound on 150 geometries (A/D 0.3–5, B/A
 //! 1.1–6, ν 0–0.45, C − R_o from 0.25D to 4D), falling faster than the bound with distance
-//! (the slab's own traction at C decays too): `tests/hankel/hole_rim_skip.rs`,
+//! (the slab's own traction at C decays too): `tests/hankel/hole_fast.rs`,
 //! `rim_bound_holds_against_the_fitted_rim`.
 //!
 //! # Cost

@@ -31,6 +31,7 @@
 //! ~15 % of a hole run (`cargo bench --bench hole`).
 
 use super::corner::CornerMidplaneRule;
+use super::midplane_sum::MidplaneSum;
 use super::plate::dot;
 use super::rim::{rim_bound, RIM_SHARE, RIM_TRIAL};
 use super::{HoleInfo, HoleParams, HolePlate};
@@ -130,23 +131,23 @@ fn search(
     let h = sep.step * d;
     let mut scan_cache: Vec<(f64, Vec<f64>)> = Vec::new();
     let mut local: Option<LocalMidplane> = None;
-    // The corner fields' midplane σ_z on a node set sized for the radii asked: to B + 4D
-    // (Table 1's brackets end by B + 2.5D; the fewer radii the rule serves, the fewer nodes),
-    // beyond that the plate's own (to B + 20D) for the scan and one sized for the bracket.
-    let near_rule = holed.corner_midplane_rule((b + 4.0 * d).min(r_end));
+    // The slab's σ_z and the corner fields' on one node set sized for the radii asked: to
+    // B + 4D (Table 1's brackets end by B + 2.5D; the fewer radii it serves, the fewer nodes),
+    // beyond that the slab's rule and the corner fields' own node sets.
+    let near = holed.midplane_sum((b + 4.0 * d).min(r_end));
     loop {
         let weights = holed.corner_weights().to_vec();
+        let values = |r: f64, corner: Option<&CornerMidplaneRule>| {
+            midplane_values(near.as_ref(), &rule, &holed, corner, r)
+        };
         let mut scan = |k: usize| {
             let r = (b + k as f64 * h).min(r_end);
             while scan_cache.len() <= k {
                 let rk = (b + scan_cache.len() as f64 * h).min(r_end);
-                scan_cache.push((
-                    rule.eval(rk).value,
-                    corner_basis(&holed, near_rule.as_ref(), rk),
-                ));
+                scan_cache.push((rk, values(rk, None)));
             }
-            let (slab, corner) = &scan_cache[k];
-            let value = slab + holed.modes_midplane(r) + dot(&weights, corner);
+            let v = &scan_cache[k].1;
+            let value = v[0] + holed.modes_midplane(r) + dot(&weights, &v[1..]);
             (r, sign * value)
         };
         let Ok(crossing) = first_upward_crossing(
@@ -156,19 +157,16 @@ fn search(
         let crossing = crossing.ok_or(SeparationError::NotFound { searched_to: r_end })?;
         let tol = rel_tol * b * 0.25;
         let ((a, fa), (c, fc)) = (crossing.before, crossing.after);
-        // The slab's σ_z and the corner fields' on the bracket (the corner fields from a
-        // node set that serves it), interpolated until their error, the corner fields'
-        // weighted by the fitted amplitudes, is below `local_tol`; kept across levels while
-        // the bracket stays, refined when new amplitudes ask for more.
-        let bracket_rule = match &near_rule {
+        // The slab's σ_z and the corner fields' on the bracket (beyond `near`, the corner
+        // fields from a node set sized for it), interpolated from the scan's values at its
+        // ends and new ones inside; kept across levels while the bracket stays.
+        let bracket_rule = match &near {
             Some(q) if q.r_max() >= c => None,
             _ => holed.corner_midplane_rule(c),
         };
-        let bracket_rule = bracket_rule.as_ref().or(near_rule.as_ref());
-        let at = |r: f64| {
-            let mut v = vec![rule.eval(r).value];
-            v.extend(corner_basis(&holed, bracket_rule, r));
-            v
+        let at = |r: f64| match scan_cache.iter().find(|(rk, _)| *rk == r) {
+            Some((_, v)) => v.clone(),
+            None => values(r, bracket_rule.as_ref()),
         };
         let abs_weights: Vec<f64> = weights.iter().map(|w| w.abs()).collect();
         let local_error = |l: &LocalMidplane| l.errors[0] + dot(&abs_weights, &l.errors[1..]);
@@ -184,9 +182,7 @@ fn search(
             let mut f = |r: f64| {
                 let v = l.eval(r).unwrap_or_else(|| {
                     evaluations += 1;
-                    let mut v = vec![rule.eval(r).value];
-                    v.extend(holed.corner_midplane_basis(r));
-                    v
+                    values(r, None)
                 });
                 sign * (v[0] + holed.modes_midplane(r) + dot(&weights, &v[1..]))
             };
@@ -268,6 +264,22 @@ fn search(
     }
 }
 
+/// [σ_z(r, 0) of the slab, the corner basis…] at r: from `near` if it serves r, else the
+/// slab's `rule` and the corner fields' `corner` rule (or the plate's own).
+fn midplane_values(
+    near: Option<&MidplaneSum>,
+    rule: &MidplaneRule,
+    holed: &HolePlate,
+    corner: Option<&CornerMidplaneRule>,
+    r: f64,
+) -> Vec<f64> {
+    near.and_then(|q| q.eval(r)).unwrap_or_else(|| {
+        let mut v = vec![rule.eval(r).value];
+        v.extend(corner_basis(holed, corner, r));
+        v
+    })
+}
+
 /// The corner fields' midplane basis at r from `rule` if it serves r, else the plate's own.
 fn corner_basis(holed: &HolePlate, rule: Option<&CornerMidplaneRule>, r: f64) -> Vec<f64> {
     rule.and_then(|q| q.basis(r))
@@ -302,9 +314,15 @@ impl LocalMidplane {
     /// The interpolants on the first grid (M = 8); `at(r)` gives every function at r.
     fn new(at: impl Fn(f64) -> Vec<f64>, lo: f64, hi: f64) -> Self {
         let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+        // the ends exactly (a caller may know the values there)
         let values: Vec<Vec<f64>> = lobatto_points(8)
             .into_iter()
-            .map(|x| at(mid + half * x))
+            .enumerate()
+            .map(|(j, x)| match j {
+                0 => at(hi),
+                8 => at(lo),
+                _ => at(mid + half * x),
+            })
             .collect();
         let mut l = Self {
             lo,

@@ -1,11 +1,16 @@
-//! The single plate's R_o without fitting a far rim (`boltzone::hankel::hole::rim`): the bound
-//! on the rim's effect against R_o with the rim fitted (a second computation), when the rim is
-//! skipped and when it is not, and the estimates of the whole route on Table 1 against a much
-//! tighter run.
+//! The single plate's R_o made cheap (issue 10): without fitting a far rim
+//! (`boltzone::hankel::hole::rim`: the bound on the rim's effect against R_o with the rim
+//! fitted, a second computation; when the rim is skipped and when it is not), the merged
+//! midplane node set (`hole::midplane_sum`) against the two rules it replaces, and the
+//! estimates of the whole route on Table 1 against a much tighter run.
 
+use boltzone::hankel::hole::corner::CornerLoads;
+use boltzone::hankel::hole::midplane_sum::MidplaneSum;
+use boltzone::hankel::hole::plate::extended_load;
 use boltzone::hankel::hole::rim::{rim_bound, RIM_SHARE};
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
-use boltzone::hankel::SeparationParams;
+use boltzone::hankel::midplane::MidplaneRule;
+use boltzone::hankel::{SeparationParams, Slab};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
 fn plate(a: f64, b: f64, d: f64, c: Option<f64>) -> SinglePlate {
@@ -127,4 +132,54 @@ fn table1_estimates_hold_against_a_run_to_1e_9() {
         }
     }
     println!("largest actual/estimate: {worst:.2e}");
+}
+
+#[test]
+fn midplane_sum_matches_the_two_rules() {
+    // One node set for the slab's midplane σ_z and the corner fields' basis against the two
+    // rules it replaces, built on other nodes (panels for radii 20 D further): the slab within the rule's own
+    // estimate plus the rounding of ~1000-term sums (1e-14 of P), the corner basis within
+    // 1e-13 of its largest value (at B). Wide and narrow loads, thick and thin plates.
+    for (b, d) in [(0.31, 0.1), (0.2, 0.1), (0.13, 0.2)] {
+        let a = 0.1;
+        let ext = extended_load(&FaceLoad::uniform(a, b, 1.0).unwrap(), a, d)
+            .unwrap()
+            .unwrap();
+        let slab = Slab::new(d, Material::unit(0.3).unwrap(), ext).unwrap();
+        let corner = CornerLoads::new(a, d, 0.3, 1.0 / 2.6, 3);
+        let r_max = b + 4.0 * d;
+        let sum = MidplaneSum::new(&slab, &corner, r_max);
+        // the references on rules built for radii 20 D further: narrower panels, other nodes
+        let rule = MidplaneRule::new(&slab, r_max + 20.0 * d, 1e-14).unwrap();
+        let corner_rule = corner.midplane_rule(r_max + 20.0 * d);
+        let mut worst = (0.0f64, 0.0f64);
+        // the basis' largest value (at B): the scale of its sums' rounding at every r
+        let scale = corner_rule
+            .basis(b)
+            .unwrap()
+            .iter()
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        for i in 0..=20 {
+            let r = b + (r_max - b) * i as f64 / 20.0;
+            let v = sum.eval(r).unwrap();
+            let s = rule.eval(r);
+            let slab_diff = (v[0] - s.value).abs();
+            assert!(slab_diff <= s.error + 1e-14, "r {r}: {slab_diff:e}");
+            let c = corner_rule.basis(r).unwrap();
+            let corner_diff = v[1..]
+                .iter()
+                .zip(&c)
+                .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+            assert!(
+                corner_diff <= 1e-13 * scale,
+                "r {r}: {corner_diff:e} of {scale:e}"
+            );
+            worst = (worst.0.max(slab_diff), worst.1.max(corner_diff / scale));
+        }
+        println!(
+            "B {b} D {d}: slab {:.1e} P, corner {:.1e} of scale",
+            worst.0, worst.1
+        );
+        assert!(sum.eval(r_max + 1e-9).is_none());
+    }
 }
