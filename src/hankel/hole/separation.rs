@@ -171,7 +171,7 @@ fn search(
         let abs_weights: Vec<f64> = weights.iter().map(|w| w.abs()).collect();
         let local_error = |l: &LocalMidplane| l.errors[0] + dot(&abs_weights, &l.errors[1..]);
         if local.as_ref().is_none_or(|l| l.lo != a || l.hi != c) {
-            let l = LocalMidplane::new(&at, a, c);
+            let l = LocalMidplane::new(at, a, c);
             evaluations += l.evaluations;
             local = Some(l);
         }
@@ -195,7 +195,7 @@ fn search(
                 break (x, half_width, slope);
             }
             let l = local.as_mut().expect("built above");
-            evaluations += l.refine(&at, |l| local_error(l) <= target);
+            evaluations += l.refine(at, |l| local_error(l) <= target);
         };
         let local = local.as_ref().expect("built above");
         // The rim's residual counts as the hole's: a rim near R_o converges by its own modes.
