@@ -33,7 +33,7 @@
 use super::corner::CornerMidplaneRule;
 use super::midplane_sum::MidplaneSum;
 use super::plate::dot;
-use super::rim::{rim_bound, RIM_SHARE, RIM_TRIAL};
+use super::rim::{rim_bound, worth_trying, RIM_SHARE};
 use super::{HoleInfo, HoleParams, HolePlate};
 use crate::error::positive;
 use crate::hankel::midplane::MidplaneRule;
@@ -81,7 +81,7 @@ pub fn single_plate_separation(
     }
     // A rim far enough from R_o to move it by at most RIM_SHARE of the tolerance: the
     // infinite plate to the rest of the tolerance, with the rim's bound added to its estimate.
-    if plate.hole_radius() > 0.0 && c - b >= RIM_TRIAL * d {
+    if plate.hole_radius() > 0.0 && c > b && worth_trying(c, b, d, hole.r_o_tolerance) {
         let trial = HoleParams {
             r_o_tolerance: (1.0 - RIM_SHARE) * hole.r_o_tolerance,
             ..*hole
