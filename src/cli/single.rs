@@ -251,8 +251,7 @@ fn run_hankel(
 ) -> anyhow::Result<Status> {
     let params = HoleParams {
         corner_terms: args.corner_terms,
-        r_o_tolerance: tolerance(args),
-        ..HoleParams::default()
+        ..HoleParams::for_tolerance(tolerance(args))
     };
     let search = SeparationParams {
         rel_tol: SeparationParams::default()
@@ -300,6 +299,7 @@ fn run_hankel(
             "hole_residual_max": hole.residual_max,
             "hole_residual_rms": hole.residual_rms,
             "rim_residual_max": hole.rim_residual_max,
+            "rim_bound": hole.rim_bound,
             "hole_condition": hole.condition,
             "hole_history": hole.history,
             "evaluations": sep.evaluations + hole.slab_evaluations,
@@ -334,7 +334,12 @@ fn run_hankel(
             "hole     = {} modes + {} corner exponents, residual traction max {:.2e} P, rms {:.2e} P, condition {:.1e}",
             hole.terms, hole.corner_terms, hole.residual_max, hole.residual_rms, hole.condition
         );
-        if args.c.is_some() {
+        if hole.rim_bound > 0.0 {
+            println!(
+                "rim      = not fitted: it moves R_o by at most {:.2e} {l} (included in ±)",
+                hole.rim_bound
+            );
+        } else if args.c.is_some() {
             println!(
                 "rim      = residual traction max {:.2e} P",
                 hole.rim_residual_max

@@ -117,11 +117,7 @@ pub fn hankel_params(tolerance: f64) -> (SeparationParams, HoleParams) {
         rel_tol: SeparationParams::default().rel_tol.max(1e-3 * tolerance),
         ..SeparationParams::default()
     };
-    let hole = HoleParams {
-        r_o_tolerance: tolerance,
-        ..HoleParams::default()
-    };
-    (search, hole)
+    (search, HoleParams::for_tolerance(tolerance))
 }
 
 /// What `method` resolves to for `scene`, and why.

@@ -11,6 +11,7 @@ mod hole_cli;
 mod hole_corner;
 mod hole_correction;
 mod hole_eigen;
+mod hole_fast;
 mod hole_profile;
 mod pair_cli;
 mod receding_contact;

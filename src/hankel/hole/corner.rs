@@ -294,6 +294,11 @@ impl CornerLoads {
         *self.panel_ends(r).last().expect("at least one panel end")
     }
 
+    /// The hole radius A the loads act inside.
+    pub fn radius(&self) -> f64 {
+        self.a
+    }
+
     /// Number of exponents (each gives 4 real fields).
     pub fn count(&self) -> usize {
         self.lams.len()
@@ -553,9 +558,21 @@ impl CornerLoads {
     /// (r_max + A) and 1.5/D, 20 points each, to ξ = 45/D where K, L_z ≤ 2.5(1 + t)e^(−t) are
     /// below 1e-17 of the load's size). A smaller r_max has fewer nodes.
     pub fn midplane_rule(&self, r_max: f64) -> CornerMidplaneRule {
-        let (a, d) = (self.a, self.d);
+        let nodes = self
+            .midplane_nodes(self.a + r_max)
+            .into_iter()
+            .map(|(xi, _, parts)| (xi, parts))
+            .collect();
+        CornerMidplaneRule { r_max, nodes }
+    }
+
+    /// The nodes of [`Self::midplane_rule`] with panels of at most five half-periods of the
+    /// frequency `span` (and 1.5/D): (ξ_i, w_i ξ_i, the weighted parts of every exponent).
+    #[allow(clippy::type_complexity)]
+    pub fn midplane_nodes(&self, span: f64) -> Vec<(f64, f64, Vec<(Complex64, Complex64)>)> {
+        let d = self.d;
         let x_end = 45.0 / d;
-        let h = (5.0 * PI / (a + r_max)).min(1.5 / d);
+        let h = (5.0 * PI / span).min(1.5 / d);
         let panels = (x_end / h).ceil() as usize;
         let rule = gauss_legendre(20);
         let mut nodes = Vec::with_capacity(panels * rule.len());
@@ -574,10 +591,10 @@ impl CornerLoads {
                     .into_iter()
                     .map(|(qn, qs)| (-wt * kp * qn, wt * ks * qs))
                     .collect();
-                nodes.push((xi, parts));
+                nodes.push((xi, wt, parts));
             }
         }
-        CornerMidplaneRule { r_max, nodes }
+        nodes
     }
 }
 

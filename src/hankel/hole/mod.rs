@@ -36,7 +36,9 @@
 //! (I₀, I₁(λ_k r), [`crate::numerics::bessel_i`]) and the uniform in-plane state σ_r = σ_θ join
 //! the unknowns, and the fit collocates on both cylinders. A rim changes the midplane σ_z only
 //! through the modes, ≈ e^(−2.1(C − R_o)/D): nothing for the report's C = 1.54 in, 3 % of R_o
-//! for a rim 1.3D beyond the load. The rim's corner is not enriched.
+//! for a rim 1.3D beyond the load. The rim's corner is not enriched. R_o alone does not fit a rim
+//! that cannot move it by a tenth of the tolerance asked ([`rim`]: Table 1's C = 1.54 in at the
+//! scene tolerances), and adds the bound of its effect to the estimate.
 //!
 //! **Error estimate.** R_o's estimate adds the slab quadrature's share, the slab data's
 //! ([`HoleInfo::slab_error`] divided by the slope: the fit cannot see an error in its own data)
@@ -69,7 +71,9 @@
 //! (M = 24–72, [`profile`]; 4–12 thousand ξ-nodes, 1.1–3.0 ms), 25–35 % to the corner fields'
 //! tractions, the rest to the fit (Householder QR), the residual and the root search on
 //! interpolants sized for the bracket. The direct route ([`SlabSampling::Direct`]: every fitted and
-//! checked height integrated) costs 9.3–18 ms.
+//! checked height integrated) costs 9.3–18 ms. At the scene tolerances, R_o alone with
+//! [`HoleParams::for_tolerance`]: 3.1 ms at 5e-4 and 3.6 ms at 1e-4 on Table 1 row 1 (its rim
+//! left unfitted, [`rim`]), 3.8–5.7 ms on A/D 1, B/A 2 (example 17).
 //!
 //! ```
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -90,15 +94,17 @@ pub mod corner;
 pub mod corner_quad;
 pub mod eigen;
 pub mod fit;
+pub mod midplane_sum;
 mod params;
 pub mod plate;
 pub mod profile;
+pub mod rim;
 mod separation;
 pub mod traction;
 
 // Former homes, kept so that old paths work.
 pub use crate::numerics::{bessel_i, bessel_k, bessel_nu, chebyshev};
-pub use params::{HoleInfo, HoleLevel, HoleParams, SlabSampling};
+pub use params::{HoleInfo, HoleLevel, HoleParams, SlabSampling, SLAB_SHARE};
 pub use plate::HolePlate;
 pub use profile::TractionProfile;
 pub use separation::single_plate_separation;

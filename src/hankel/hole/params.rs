@@ -59,6 +59,10 @@ pub struct HoleParams {
     pub corner_terms: usize,
 }
 
+/// [`HoleParams::for_tolerance`]: the slab's hole tractions to this fraction of R_o's
+/// relative tolerance.
+pub const SLAB_SHARE: f64 = 2e-3;
+
 /// How the slab's traction on the hole (and rim) is obtained at the fit's heights.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum SlabSampling {
@@ -87,6 +91,20 @@ impl Default for HoleParams {
 }
 
 impl HoleParams {
+    /// The defaults for R_o to the relative tolerance `tol` (what `single --method hankel` and
+    /// the scenes use): `r_o_tolerance` = tol, and the slab's hole tractions to
+    /// [`SLAB_SHARE`]·tol (within 1e-8..1e-5). The slab data's error enters R_o's estimate as
+    /// slab_tolerance·P/slope (see the [folder's docs](super)); with the slopes of Table 1 and
+    /// beyond (≥ 0.01 P/A at R_o ≥ 2A) that share is at most a tenth of the tolerance, while
+    /// a looser profile needs 30–60 % fewer ξ-nodes at tolerances 1e-4 and above (example 17).
+    pub fn for_tolerance(tol: f64) -> Self {
+        Self {
+            r_o_tolerance: tol,
+            slab_tolerance: (SLAB_SHARE * tol).clamp(1e-8, 1e-5),
+            ..Self::default()
+        }
+    }
+
     pub(super) fn check(&self) -> Result<(), InputError> {
         positive("hole residual target", self.residual_target)?;
         positive("hole slab tolerance", self.slab_tolerance)?;
@@ -152,6 +170,10 @@ pub struct HoleInfo {
     pub rim_residual_max: f64,
     /// Condition number of the column-scaled collocation matrix.
     pub condition: f64,
+    /// A finite rim left unfitted because it is too far from R_o to matter: the bound on its
+    /// effect on R_o ([`super::rim`], a length, included in R_o's estimate); 0 when the rim
+    /// was fitted or the plate is infinite.
+    pub rim_bound: f64,
     /// Error estimate of the slab's hole tractions, relative to P: the traction profile's
     /// (interpolation + samples), or with [`SlabSampling::Direct`] the largest quadrature
     /// estimate.

@@ -36,6 +36,7 @@
 use super::corner::{CornerLoads, CornerMidplaneRule, FieldComponent};
 use super::eigen::{lame_field, symmetric_roots, uniform_field, Mode, ModeField};
 use super::fit::{fit, heights, Boundary, Fit, HoleData};
+use super::midplane_sum::MidplaneSum;
 use super::profile::TractionProfile;
 use super::traction::hole_tractions;
 use super::{HoleInfo, HoleLevel, HoleParams, SlabSampling};
@@ -497,6 +498,14 @@ impl HolePlate {
     /// enrichment.
     pub fn corner_midplane_rule(&self, r_max: f64) -> Option<CornerMidplaneRule> {
         self.corner.as_ref().map(|c| c.midplane_rule(r_max))
+    }
+
+    /// The slab's midplane σ_z and the enrichment's midplane basis on one node set for radii
+    /// up to `r_max` ([`MidplaneSum`]); None without enrichment.
+    pub fn midplane_sum(&self, r_max: f64) -> Option<MidplaneSum> {
+        self.corner
+            .as_ref()
+            .map(|c| MidplaneSum::new(&self.slab, c, r_max))
     }
 
     /// The fitted real amplitudes of the enrichment's fields (4 per exponent; empty without
