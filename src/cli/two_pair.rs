@@ -15,6 +15,7 @@
 //! One receding-contact solve ([`boltzone::hankel::receding::pair`]): 0.1–0.2 s at B ≈ D,
 //! seconds at B ≈ 8 thicknesses of the thinner plate.
 
+use clap::ValueEnum;
 use super::exit::{sig, Status};
 use super::two_args::{Args, Interface};
 use boltzone::hankel::receding::{Pair, RecedingParams};
@@ -32,7 +33,11 @@ pub fn unsupported(args: &Args, why: &'static str) -> Option<(&'static str, Stri
         && args.e2.is_none_or(|e| e == args.e())
         && args.nu2.is_none_or(|n| n == g.nu);
     if !equal && !matches!(args.interface, Interface::Frictionless) {
-        return Some(("--interface", format!("{:?}", args.interface), why));
+        let name = args
+            .interface
+            .to_possible_value()
+            .map_or_else(String::new, |v| v.get_name().to_string());
+        return Some(("--interface", name, why));
     }
     let reach = "is beyond the Hankel route's reach without a hole (B + 2D of the thicker \
                  plate at most 64 thicknesses of the thinner); use --method fem";
