@@ -95,7 +95,7 @@ impl Setup {
                     (false, true) => weights.iter().zip(basis).map(|(w, b)| w * b).sum(),
                     (false, false) => return self.s0(s),
                 };
-                self.slab_mid.eval(s).value + self.bilateral.modes_midplane(s) + corner
+                self.slab_sigma_z(s) + self.bilateral.modes_midplane(s) + corner
             })
             .collect();
         // t-grid on [0, c]: panels resolving cos ξt up to the hole rule's end, and on the last

@@ -11,8 +11,9 @@
 //!
 //! # Cost
 //!
-//! Example 19 (`examples/19_two_plate_hankel.rs`): about 0.2 s per geometry (the slab's
-//! midplane curve 0.12 s, the corner table 0.07 s on Table 1 row 1), shared with the
+//! Example 19 (`examples/19_two_plate_hankel.rs`): about 0.2 s per geometry before they were
+//! cut to [A, B + 3D + tail] (the slab's midplane curve 0.12 s, the corner table 0.07 s on
+//! Table 1 row 1, over the whole reach), shared with the
 //! estimate's coarse setup ([`Setup::sharing`]); the hole rule, a few ms, per trial radius.
 //!
 //! ```
@@ -36,7 +37,7 @@ use crate::hankel::transform::LoadTransform;
 use crate::joint::{OuterRadius, SinglePlate};
 use rayon::prelude::*;
 use std::f64::consts::PI;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 /// The geometry's fixed parts: the bilateral plate, the correction basis, the hole's ξ-rule.
 pub(super) struct Setup {
@@ -47,7 +48,9 @@ pub(super) struct Setup {
     /// P, the mean pressure.
     pub(super) p_ref: f64,
     pub(super) bilateral: HolePlate,
+    /// The slab's midplane σ_z on [A, B + 3D + tail], and on [A, `r_max`] once needed.
     pub(super) slab_mid: Arc<MidplaneCurve>,
+    pub(super) slab_far: Arc<OnceLock<Option<MidplaneCurve>>>,
     pub(super) modes: Vec<Mode>,
     pub(super) corner: Option<CornerLoads>,
     /// Radius up to which the corner fields' midplane rule is built.
@@ -145,15 +148,21 @@ impl Setup {
         let b = load.outer();
         let tail = params.tail * d;
         let r_max = b + params.reach * d + tail + d;
+        // the curve and the corner table up to the radii of a search ending within 2D of B;
+        // the search's farther radii take the curve over the whole reach, built on first use
+        let r_near = (b + 2.0 * d + tail + d).min(r_max);
         let shared = shared.filter(|s| s.r_max == r_max && s.a == a && s.d == d);
-        let slab_mid = match shared {
-            Some(s) => Arc::clone(&s.slab_mid),
-            None => Arc::new(MidplaneCurve::new(
-                bilateral.slab(),
-                a,
-                r_max,
-                1e-12 * p_ref,
-            )?),
+        let (slab_mid, slab_far) = match shared {
+            Some(s) => (Arc::clone(&s.slab_mid), Arc::clone(&s.slab_far)),
+            None => (
+                Arc::new(MidplaneCurve::new(
+                    bilateral.slab(),
+                    a,
+                    r_near,
+                    1e-12 * p_ref,
+                )?),
+                Arc::new(OnceLock::new()),
+            ),
         };
         let modes: Vec<Mode> = symmetric_roots(n)
             .iter()
@@ -223,10 +232,10 @@ impl Setup {
         let corner_table = match same_corner {
             Some(s) => s.corner_table.clone(),
             None => corner.as_ref().map(|cl| {
-                let interp = PanelInterp::new(a, r_max, 0.5 * d);
+                let interp = PanelInterp::new(a, r_near, 0.5 * d);
                 let grid = interp.grid();
                 let rows =
-                    cl.midplane_basis_rows(r_max, grid.len(), |xi, row| grid.j0_row(xi, row));
+                    cl.midplane_basis_rows(r_near, grid.len(), |xi, row| grid.j0_row(xi, row));
                 Arc::new((interp, rows))
             }),
         };
@@ -239,6 +248,7 @@ impl Setup {
             p_ref,
             bilateral,
             slab_mid,
+            slab_far,
             modes,
             corner,
             r_max,
@@ -292,6 +302,23 @@ impl Setup {
 
     /// The bilateral plate's midplane σ_z.
     pub(super) fn s0(&self, r: f64) -> f64 {
-        self.slab_mid.eval(r).value + self.bilateral.correction_midplane(r)
+        self.slab_sigma_z(r) + self.bilateral.correction_midplane(r)
+    }
+
+    /// The slab's midplane σ_z at A ≤ r ≤ `r_max`: from the near curve, or beyond it from the
+    /// whole reach's, built on first use (NaN if that fails: [`MidplaneCurve::new`] refuses
+    /// only lengths beyond 40 000 D, far beyond B + reach + tail).
+    pub(super) fn slab_sigma_z(&self, r: f64) -> f64 {
+        let near = self.slab_mid.eval(r);
+        if near.error.is_finite() {
+            return near.value;
+        }
+        self.slab_far
+            .get_or_init(|| {
+                let tol = 1e-12 * self.p_ref;
+                MidplaneCurve::new(self.bilateral.slab(), self.a, self.r_max, tol).ok()
+            })
+            .as_ref()
+            .map_or(f64::NAN, |c| c.eval(r).value)
     }
 }
