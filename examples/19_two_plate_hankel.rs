@@ -16,11 +16,12 @@
 //! log₂(e_k/e_{k+1}) (element size halving per level).
 //!
 //! **What to expect** (measured 2026-11-24, load average 3–5 on the 2 cores): this route's
-//! estimates 3.0e-11…1.2e-6 R_o at 1.5–2.2 s of CPU per row with the default knobs (2.4 s
-//! before the Anderson iteration, the corner table and the reused solves); with the knobs for
-//! 1e-6 ([`HoledParams::for_tolerance`]) 1.1–1.4 s, within 1.1e-8 R_o of the defaults, estimates
-//! 3.8e-10…1.3e-6 (the last, (0.5, 1.3), honestly above 1e-6). Side by side on rows 1–2 (tight
-//! run): the route at 1e-6 1.41 and 1.35 s of CPU, the FE at --tol 1e-6 1.17 and 1.04 s — the
+//! estimates 3.0e-11…1.2e-6 R_o; with the knobs for 1e-6 ([`HoledParams::for_tolerance`])
+//! within 1.1e-8 R_o of the defaults, estimates 3.8e-10…1.3e-6 (the last, (0.5, 1.3), honestly
+//! above 1e-6). CPU per row, rows 1–2 (`19 2 1`, load 3.7): default knobs 1.06 and 1.11 s (1.5–2.2 s
+//! before the speed-ups of the route's module docs, 2.4 s before Anderson), knobs for 1e-6
+//! 0.66 and 0.70 s (1.1–1.4 s before); the FE at --tol 1e-6 in the same run 0.52 and 0.19 s,
+//! stopping with estimates 2.9e-5 and 7.7e-5 R_o (its |FE − H| 6.1e-7 and 1.7e-9 R_o). The
 //! issue's "20× faster than the FE" is not reached (module docs of the route: where the time
 //! goes). The FE at its
 //! default tolerance 0.05–0.2 s, low by 3e-5…2.5e-4 R_o, within its tolerance everywhere and

@@ -37,4 +37,5 @@ pub mod integral_j0;
 pub mod quadrature;
 pub mod random;
 pub mod root;
+pub mod secant;
 pub mod tanh_sinh;

@@ -20,7 +20,8 @@
 //! - as shipped (below the default tolerance the cautious estimate max(2|d₃|, |d₂|, |d₁|/2) and
 //!   a floor of 2e-5 of R_o, `contact::two_plate`, after random plates without a hole showed
 //!   a slow hump the levels cannot see): at 1e-4 all 100 converged (6–8 levels, FE 24 s in all,
-//!   218 s wall with the semi route), ratio median 0.02, p99 0.07, max 0.08; at 1e-5 no FE run
+//!   218 s wall with the semi route; 146 s after the semi route's speed-ups of this date, the
+//!   same figures), ratio median 0.02, p99 0.07, max 0.08; at 1e-5 no FE run
 //!   claims the tolerance (the floor is above it), so nothing is compared there.
 //!
 //! Before (same day, the cut face left free and its C⁻² error estimated from two coarse levels):

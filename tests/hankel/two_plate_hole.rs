@@ -270,7 +270,7 @@ fn agrees_with_the_fe_on_table1_first_row() {
 }
 
 #[test]
-#[ignore = "study (4 minutes CPU): A → 0 against the no-hole receding solver"]
+#[ignore = "study (4 s of CPU, measured 2026-11-24): A → 0 against the no-hole receding solver"]
 fn small_holes_approach_the_receding_solution() {
     // The holed route (bilateral holed plate + crack field + correction) against the receding
     // solver of the plate WITHOUT hole under the disk load (the Nyström core is shared; the

@@ -34,7 +34,9 @@ fn anderson_changes_nothing_but_the_count() {
     // (A/D, B/A) = (1, 1.3): the narrowest load of Table 1, the slowest plain iteration
     // (17 steps per radius). Both runs stop within rel_tol·D of their own root, and the roots
     // differ by the iterations' stopping error (φ(c) to 1e-12 of p̄(0)/c, a few 1e-13 of R_o):
-    // they agree within 2·rel_tol·D. Measured: 3e-13 relative, 8 steps instead of 17.
+    // they agree within 2·rel_tol·D. Measured: 3e-13 relative, 8 steps instead of 17 on a cold
+    // radius; with each radius warm-started, 52 steps instead of 105 over the search's radii
+    // and R_o 1.5e-14 in apart.
     let d = A;
     let plain = run(
         1.0,
@@ -53,11 +55,19 @@ fn anderson_changes_nothing_but_the_count() {
         plain.r_o,
         fast.r_o - plain.r_o
     );
+    // each radius starts from the nearest one's correction, so the last radii of the search
+    // take 2 steps either way: the count is over the whole search
+    println!(
+        "search iterations {} (Anderson) vs {} (plain); R_o differ by {:e}",
+        fast.info.search_iterations,
+        plain.info.search_iterations,
+        fast.r_o - plain.r_o
+    );
     assert!(
-        2 * fast.info.iterations <= plain.info.iterations + 1,
-        "iterations {} (Anderson) vs {} (plain): not about halved",
-        fast.info.iterations,
-        plain.info.iterations
+        2 * fast.info.search_iterations <= plain.info.search_iterations + fast.info.solves,
+        "search iterations {} (Anderson) vs {} (plain): not about halved",
+        fast.info.search_iterations,
+        plain.info.search_iterations
     );
 }
 

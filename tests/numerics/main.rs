@@ -5,4 +5,5 @@ mod bessel_ik;
 mod bessel_j;
 mod quadrature;
 mod root;
+mod secant;
 mod tanh_sinh;

@@ -12,14 +12,15 @@
 //!
 //! # Cost
 //!
-//! Most of the holed route's cost, about 0.1 s of CPU per contact radius on Table 1: the
+//! Most of the holed route's cost, about 70 ms of CPU per contact radius on Table 1 row 1: the
 //! cosine and J₀ tables of [`super::grid`] and the H_l weights, rebuilt for every radius (rows
-//! in parallel), and the Anderson-accelerated iteration; timed by example 19 (breakdown in
-//! [`super::holed`]).
+//! in parallel), and the Anderson-accelerated iteration (warm-started from a nearby radius's
+//! correction); timed by example 19 (breakdown in [`super::holed`]).
 
 use super::anderson::{pack, unpack, Anderson};
 use super::contact::RecedingError;
-use super::grid::{PanelGrid, PanelInterp};
+use super::endpoint::Endpoint;
+use super::grid::{dot, PanelGrid, PanelInterp};
 use super::holed_params::HoledParams;
 use super::holed_setup::{Crack, Setup};
 use super::system::{cos_m1, panels, Nystrom, XiRule};
@@ -42,13 +43,15 @@ fn j0_m1(x: f64) -> f64 {
 
 impl Setup {
     /// Solves the crack field and its hole correction for contact radius `c` with `n` Nyström
-    /// points, iterating l ← s₀ + σ_z^Z; and the contact pressure at `radii` (A ≤ r).
+    /// points, iterating l ← s₀ + σ_z^Z from the correction `start` (a nearby radius's, or
+    /// none); and the contact pressure at `radii` (A ≤ r).
     pub(super) fn crack(
         &self,
         c: f64,
         n: usize,
         params: &HoledParams,
         radii: &[f64],
+        start: Option<&Fit>,
     ) -> Result<Crack, RecedingError> {
         let d = self.d;
         let zero = LoadTransform::new(&FaceLoad::uniform(0.0, c, 0.0)?);
@@ -75,7 +78,7 @@ impl Setup {
                 .map(|&(s, _)| {
                     self.corner_table
                         .as_ref()
-                        .and_then(|(interp, rows)| interp.rows_at(rows, s))
+                        .and_then(|t| t.0.rows_at(&t.1, s))
                         .unwrap_or_else(|| cl.midplane_basis(s, self.r_max))
                 })
                 .collect(),
@@ -92,12 +95,13 @@ impl Setup {
                     (false, true) => weights.iter().zip(basis).map(|(w, b)| w * b).sum(),
                     (false, false) => return self.s0(s),
                 };
-                self.slab_mid.eval(s).value + self.bilateral.modes_midplane(s) + corner
+                self.slab_sigma_z(s) + self.bilateral.modes_midplane(s) + corner
             })
             .collect();
         // t-grid on [0, c]: panels resolving cos ξt up to the hole rule's end, and on the last
         // δ = min(c/2, D/2) t = c − u² (H_l ~ √(c − t) becomes smooth)
-        let xi_h = self.hole_xi.last().map_or(0.0, |x| x.0);
+        let hole = self.hole_rule(c);
+        let xi_h = hole.xi.last().map_or(0.0, |x| x.0);
         let delta = (0.5 * c).min(0.5 * d);
         let su = delta.sqrt();
         let t_grid = PanelGrid::new(0.0, c - delta, 4.5 * PI / xi_h);
@@ -130,8 +134,8 @@ impl Setup {
                 (cos, cosm1)
             })
             .unzip();
-        let hole_cosm1: Vec<Vec<f64>> = self
-            .hole_xi
+        let hole_cosm1: Vec<Vec<f64>> = hole
+            .xi
             .par_iter()
             .map(|h| {
                 let mut row = vec![0.0; nt];
@@ -156,18 +160,34 @@ impl Setup {
                 })
                 .unzip()
         };
-        let rule_j: Vec<(Vec<f64>, Vec<f64>)> = xi_r.par_iter().map(|&x| js(x)).collect();
-        let hole_low = self.hole_xi.partition_point(|h| h.0 <= self.xi_l);
-        let hole_j: Vec<Vec<f64>> = self.hole_xi[..hole_low]
-            .par_iter()
-            .map(|h| js(h.0).1)
-            .collect();
-        let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(a, b)| a * b).sum::<f64>();
+        // beyond ξ_l l̄ is its endpoint expansion on the rule too (its weights there are
+        // below 30e^(−28) of their peak), with J₀(ξc), J₁(ξc) once per radius
+        let rule_low = xi_r.partition_point(|&x| x <= self.xi_l);
+        let rule_j: Vec<(Vec<f64>, Vec<f64>)> =
+            xi_r[..rule_low].par_iter().map(|&x| js(x)).collect();
+        let hole_low = hole.xi.partition_point(|h| h.0 <= self.xi_l);
+        let bessel_c = |xi: &[f64]| -> Vec<(f64, f64)> {
+            xi.par_iter()
+                .map(|&x| (libm::j0(x * c), libm::j1(x * c)))
+                .collect()
+        };
+        let rule_jc = bessel_c(&xi_r[rule_low..]);
+        let hole_hi: Vec<f64> = hole.xi[hole_low..].iter().map(|h| h.0).collect();
+        let hole_jc = bessel_c(&hole_hi);
+        let hole_j: Vec<Vec<f64>> = hole.xi[..hole_low].par_iter().map(|h| js(h.0).1).collect();
         // H_l(t) = −(2/π)∫_c^{c+tail} l(s) s ds/√(s² − t²) = −(2/π)∫ l(√(t² + v²)) dv (v from
-        // √(c² − t²)): linear in l's node values, so one row of weights per t, reused by
-        // every iteration
+        // √(c² − t²); only where t is within a quarter s-panel of c, the rest on the s-rule):
+        // linear in l's node values, so one row of weights per t, reused by every iteration
         let ns = s_rule.len();
         let h_row = |t: f64| -> Vec<f64> {
+            if c - t >= 0.25 * lint.width {
+                // s² − t² vanishes a quarter panel or more before the first panel: the s-rule
+                // itself converges (Bernstein ellipse ρ ≥ 2.6, ρ⁻⁴⁰ < 2e-17)
+                return s_rule
+                    .iter()
+                    .map(|&(s, w)| -FRAC_2_PI * w * s / ((s - t) * (s + t)).sqrt())
+                    .collect();
+            }
             let v0 = ((c - t) * (c + t)).max(0.0).sqrt();
             let end = c + self.tail;
             let v1 = ((end - t) * (end + t)).sqrt();
@@ -183,7 +203,7 @@ impl Setup {
         };
         let h_rows: Vec<Vec<f64>> = t_rule.par_iter().map(|&(t, _)| h_row(t)).collect();
         let h_edge = h_row(c);
-        let mut fitted: Option<Fit> = None;
+        let mut fitted: Option<Fit> = start.filter(|f| f.modes.len() == self.modes.len()).cloned();
         let mut last = f64::NAN;
         let mut out = Crack {
             edge: f64::NAN,
@@ -191,6 +211,7 @@ impl Setup {
             crack_traction: 0.0,
             iterations: 0,
             pressure: Vec::new(),
+            fit: None,
         };
         let scale = self.p0 / c;
         // the last solve and the l and correction it was solved with (for the pressure)
@@ -211,6 +232,7 @@ impl Setup {
                 })
                 .collect();
             let l0: f64 = s_rule.iter().zip(&l).map(|(&(s, w), v)| w * s * v).sum();
+            let tail = Endpoint::new(&lint, &l, c);
             let hl: Vec<f64> = h_rows.iter().map(|row| dot(row, &l)).collect();
             let whl: Vec<f64> = t_rule.iter().zip(&hl).map(|(&(_, w), h)| w * h).collect();
             let hl_total: f64 = whl.iter().sum();
@@ -219,8 +241,14 @@ impl Setup {
             let mut beta = vec![0.0; m];
             for k in 0..m {
                 let (hc, hv) = (dot(&whl, &cos_t[k]), dot(&whl, &cosm1_t[k]));
-                let lbar = dot(&rule_j[k].0, &l);
-                let ltil = dot(&rule_j[k].1, &l);
+                let (lbar, ltil) = match rule_j.get(k) {
+                    Some((j, jm1)) => (dot(j, &l), dot(jm1, &l)),
+                    None => {
+                        let (j0, j1) = rule_jc[k - rule_low];
+                        let lbar = tail.transform(xi_r[k], j0, j1);
+                        (lbar, lbar - l0)
+                    }
+                };
                 alpha[k] = -a_r[k] * (lbar + hc);
                 beta[k] = -b_r[k] * (ltil + hv);
             }
@@ -239,37 +267,28 @@ impl Setup {
             out.edge = edge / scale;
             out.iterations = it;
             // the crack field's bottom load b = q + l, b̃(ξ) = b̄(ξ) − b̄(0), on the hole rule
-            let lc = lint.eval(&l, c);
-            let hstep = 1e-3 * lint.width;
-            let dl = (-3.0 * lc + 4.0 * lint.eval(&l, c + hstep) - lint.eval(&l, c + 2.0 * hstep))
-                / (2.0 * hstep);
-            // f = (s l′)′ = l′ + s l″ at c, l″ by the one-sided four-point difference
-            let h2 = 0.02 * lint.width;
-            let at = |j: f64| lint.eval(&l, c + j * h2);
-            let d2l = (2.0 * lc - 5.0 * at(1.0) + 4.0 * at(2.0) - at(3.0)) / (h2 * h2);
-            let fc = dl + c * d2l;
-            let btil: Vec<f64> = self
-                .hole_xi
+            let btil: Vec<f64> = hole
+                .xi
                 .par_iter()
                 .enumerate()
                 .map(|(k, &(xi, ..))| {
                     let q = dot(&wphi, &hole_cosm1[k]);
-                    let lt = if k < hole_low {
-                        dot(&hole_j[k], &l)
-                    } else {
-                        let x = xi * c;
-                        let (j0, j1) = (libm::j0(x), libm::j1(x));
-                        -lc * c * j1 / xi - dl * c * j0 / (xi * xi) + fc * j1 / (xi * xi * xi) - l0
+                    let lt = match hole_j.get(k) {
+                        Some(j) => dot(j, &l),
+                        None => {
+                            let (j0, j1) = hole_jc[k - hole_low];
+                            tail.transform(xi, j0, j1) - l0
+                        }
                     };
                     q + lt
                 })
                 .collect();
             let nz = self.z_cheb.len();
             let (mut sr, mut tau) = (vec![0.0; nz], vec![0.0; nz]);
-            for (k, &(_, w, j0, j1x, j1)) in self.hole_xi.iter().enumerate() {
+            for (k, &(_, w, j0, j1x, j1)) in hole.xi.iter().enumerate() {
                 let wb = w * btil[k];
                 for j in 0..nz {
-                    let kk = self.hole_kernels[k][j];
+                    let kk = hole.kernels[k][j];
                     sr[j] += wb * (kk[0] * j0 - kk[1] * j1x);
                     tau[j] += wb * kk[2] * j1;
                 }
@@ -319,6 +338,7 @@ impl Setup {
             }
             last = edge;
         }
+        out.fit = fitted;
         if let Some((sys, l, used)) = state.filter(|_| !radii.is_empty()) {
             out.pressure = radii
                 .iter()

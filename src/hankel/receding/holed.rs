@@ -30,7 +30,7 @@
 //! load). X's traction on the hole needs l's transform to ξ ≫ ξ_l; beyond ξ_l it is the
 //! endpoint expansion by parts, −l(c)cJ₁(ξc)/ξ − l′(c)cJ₀(ξc)/ξ² + (l′ + c l″)(c)J₁(ξc)/ξ³,
 //! exact to O(ξ^(−4.5)). The edge coefficient of the total is X's φ(c); R_o is its root, by the
-//! receding solver's scan and Brent search (module `holed_search`).
+//! receding solver's scan and a step-stopping inverse interpolation (module `holed_search`).
 //!
 //! **Error control.** R_o's estimate adds (a) the change from a run with ⌈3n/4⌉ Nyström points,
 //! (b) the change from a run with half the hole modes (the bilateral plate and Z), 2/3 of the
@@ -79,23 +79,42 @@
 //!
 //! # Cost
 //!
-//! Example 19 times Table 1 (CPU seconds of all threads, load 3–5 on the 2 cores): with the
-//! default knobs 1.6–2.1 s per geometry (2.4 s before the changes below), with
-//! [`HoledParams::for_tolerance`]`(1e-6)` 0.9–1.3 s; the FE at --tol 1e-6 takes 1.0–1.2 s on the
-//! same rows (rows 1–2, same run). The issue's 10 ms (20× faster than the FE) is far off: each
-//! geometry solves 11 trial contact radii (about 9 for the search, one per estimate variant) at
-//! about 0.1 s each, and each radius rebuilds its tables — cos ξt on t ∈ [0, c] for the Nyström
-//! rule (~900 ξ) and the hole rule (~2600 ξ, to e^(−13) at the lowest height), J₀(ξs) on
-//! s ∈ [c, c + tail] (~500 s), the H_l weights — by [`super::grid`] (addition theorem on equal
-//! panels, Hankel's expansion for J₀); measured by `perf` on the 1e-6 knobs: J₀ rows 21 %, sines
-//! and cosines 24 %, the H_l weights 15 %, the iteration's products 18 %. Computed once per
-//! geometry: the bilateral plate, the hole rule and its kernels, the corner fields' midplane
-//! table. What has been cut: the Anderson-accelerated iteration (17 → 8 steps per radius on the
+//! Measured 2026-11-24 on all twelve Table 1 rows with `boltzone two --method hankel --tol 1e-6`
+//! ([`HoledParams::for_tolerance`]`(1e-6)`), this branch's binary and main's before it, run by
+//! turns in one session (CPU of all threads by `perf stat`, load 2–4 on the 2 cores): 0.59–0.92 s
+//! per geometry against 1.23–1.83 s before (2.0–2.3×), R_o moved by ≤ 1.5e-10 R_o (estimates
+//! 3.8e-10 … 1.3e-6), 9–10 trial radii instead of 10–12. The FE at --tol 1e-6 beside it:
+//! example 19. The issue's 10 ms (20× faster than the FE) is still far off. Where the time goes
+//! now (row 1, one thread, temporary timers): per trial radius about 70 ms — J₀ rows of l's
+//! transform 15, cos rows of the Nyström rule 14, cos rows of the hole rule 8, H_l weights 8,
+//! per-radius rules and l's basis values 6, three crack iterations 20 — and once per geometry
+//! the slab's midplane curve over [A, B + reach + tail] (0.12 s) and the corner fields' table
+//! (0.07 s), about 30 % of the total. Both are now built up to B + 3D + tail only (the
+//! whole reach's curve on first use, by a radius beyond B + 3D; the corner fields directly
+//! there): a second run of all twelve rows by turns, at a higher load, gave 0.75–1.03 s against
+//! 1.56–2.33 s before (2.0–2.5×), R_o within 1.6e-10 R_o of main's; forcing every radius onto
+//! the far curve (a one-off build) moved R_o by ≤ 3.4e-12 R_o on rows 1 and 12.
+//!
+//! What was cut, in order: the Anderson-accelerated iteration (17 → 8 steps per radius on the
 //! narrowest load), the corner table (12 ms per radius), two solves per geometry (the search's
-//! last solve and the secant are reused), rayon over table rows and over the two variants.
-//! Next: tables independent of c (fixed panels in t and s with a partial panel at c; the
-//! full-panel rows then serve every radius, but hold 10⁷ entries per geometry) or a contact
-//! basis whose transforms are tabulated once.
+//! last solve and the secant are reused), rayon over table rows and over the two variants; then
+//! (this round) the H_l weights on the s-rule itself except within a quarter panel of c (60 →
+//! 15 ms per radius), l's transform on the Nyström rule beyond ξ_l by the endpoint expansion,
+//! J₀ by Horner's rule in Hankel's expansion instead of a term-by-term loop (45 → 15 ms), dot
+//! products in four partial sums, the hole rule built per radius for that c with panels up to
+//! 4/D beyond ξ_l (3240 → 1500 nodes on row 1: the scan's farthest radius no longer sets it),
+//! the search refined by step-stopping inverse interpolation instead of Brent (9 → 7 radii),
+//! each radius's iteration warm-started from the nearest radius's correction, and the
+//! estimate's half-terms setup sharing the midplane curve and corner table (0.15 → 0.01 s).
+//! Next: tables independent of c (fixed panels in t and s with a partial panel at c, a ξ-rule
+//! for a cap on c), so that only the partial panels are rebuilt per radius; the midplane curve
+//! built lazily up to the radii the search reaches; a contact basis whose transforms are
+//! tabulated once.
+//!
+//! Re-measured after this round: A → 0 (`small_holes_approach_the_receding_solution`) gives
+//! −8.255e-8, −1.973e-8, −4.965e-9 as before (the study in 2.5 s wall, 3.9 s CPU); the 10 × 10
+//! grid study against the FE at 1e-4 (`tests/hankel/grid_study.rs`) the same ratios (median
+//! 0.02, max 0.08) in 146 s instead of 218 s.
 //!
 //! ```no_run
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -132,6 +151,8 @@ pub struct HoledInfo {
     pub crack_traction: f64,
     /// Iterations of the last solve.
     pub iterations: usize,
+    /// Crack iterations over every radius of the search (not the estimate's runs).
+    pub search_iterations: usize,
     /// Contact radii tried (all runs).
     pub solves: usize,
     /// Wall-clock seconds.
@@ -189,6 +210,7 @@ pub fn two_plate_hole_pressure(
         bilateral_residual: setup.bilateral.info().residual_max,
         crack_traction: last.crack_traction,
         iterations: last.iterations,
+        search_iterations: found.iterations,
         solves: 0,
         seconds: 0.0,
     };

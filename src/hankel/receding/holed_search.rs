@@ -1,6 +1,8 @@
 //! The search for R_o of the holed two-plate model ([`super::holed`]) and its error estimate:
-//! the trial contact radii of module `crack` driven by the receding solver's scan and Brent
-//! search ([`super::search::root`]), every edge value kept so that none is computed twice.
+//! the trial contact radii of module `crack` bracketed by the receding solver's scan
+//! ([`super::search::root`]) and refined by inverse interpolation that stops on its step
+//! ([`crate::numerics::secant::refine`]), every edge value kept so that none is computed twice,
+//! each radius's crack iteration started from the correction of the nearest radius solved.
 //!
 //! - [`Setup::search`]: R_o, the solve at R_o (reused from the search when no pressure is asked
 //!   for) and the edge values (c, c·φ(c)/p̄(0)) the search computed;
@@ -19,14 +21,20 @@
 //! # Cost
 //!
 //! Two solves fewer per geometry than a fresh solve at R_o and a secant solve (13 → 11 on Table 1
-//! row 1); the variants' solves on two cores at once. Timed by example 19.
+//! row 1), and two more than Brent's method, whose last steps shrink the bracket around a root
+//! it already has (11 → 9: 3 scan points, 4 refinements, 2 variants); the warm start saves one
+//! crack iteration of three on the radii near R_o; the variants' solves on two cores at once,
+//! the half-terms variant's setup sharing the slab's midplane curve and the corner table
+//! ([`Setup::sharing`]). Timed by example 19.
 
 use super::contact::RecedingError;
 use super::holed_params::HoledParams;
 use super::holed_setup::{Crack, Setup};
 use super::search::{root, Scan};
+use crate::hankel::hole::fit::Fit;
 use crate::hankel::hole::HoleParams;
 use crate::joint::SinglePlate;
+use crate::numerics::secant::refine;
 
 /// What [`Setup::search`] found.
 pub(super) struct Found {
@@ -36,6 +44,8 @@ pub(super) struct Found {
     pub(super) last: Crack,
     /// Contact radii solved.
     pub(super) solves: usize,
+    /// Crack iterations over those radii.
+    pub(super) iterations: usize,
     /// Every edge value of the search, (c, c·φ(c)/p̄(0)).
     pub(super) edges: Vec<(f64, f64)>,
 }
@@ -52,26 +62,44 @@ impl Setup {
         at: &[f64],
     ) -> Result<Found, RecedingError> {
         let mut seen: Vec<(f64, Crack)> = Vec::new();
-        let mut edge = |c: f64| {
-            let k = self.crack(c, n, params, &[])?;
+        // each radius starts from the correction of the nearest one solved before
+        let nearest = |seen: &[(f64, Crack)], c: f64| -> Option<Fit> {
+            seen.iter()
+                .min_by(|x, y| (x.0 - c).abs().total_cmp(&(y.0 - c).abs()))
+                .and_then(|(_, k)| k.fit.clone())
+        };
+        let edge = |c: f64, seen: &mut Vec<(f64, Crack)>| {
+            let start = nearest(seen, c);
+            let k = self.crack(c, n, params, &[], start.as_ref())?;
             let e = k.edge;
             seen.push((c, k));
             Ok::<f64, RecedingError>(e)
         };
+        // the receding solver's scan for the bracket only (an infinite tolerance ends its
+        // Brent refinement before any evaluation), then refine from the scan's last points
         let scan = Scan {
             b,
             d: self.d,
             step: params.step * self.d,
             end: b + params.reach * self.d,
-            tol: params.rel_tol * self.d,
+            tol: f64::INFINITY,
             max_iterations: 100,
         };
-        let r_o = root(&mut edge, &scan, near)?.ok_or(RecedingError::NotFound {
+        root(&mut |c| edge(c, &mut seen), &scan, near)?.ok_or(RecedingError::NotFound {
             from: b,
             to: scan.end,
         })?;
+        let known: Vec<(f64, f64)> = seen.iter().map(|(c, k)| (*c, k.edge)).collect();
+        let r_o = refine(
+            &mut |c| edge(c, &mut seen),
+            &known,
+            params.rel_tol * self.d,
+            100,
+        )?
+        .x;
         let edges: Vec<(f64, f64)> = seen.iter().map(|(c, k)| (*c, k.edge)).collect();
         let mut solves = seen.len();
+        let mut iterations: usize = seen.iter().map(|(_, k)| k.iterations).sum();
         let reuse = seen.iter().position(|(c, _)| *c == r_o);
         let last = match reuse.filter(|_| at.is_empty()) {
             Some(i) => seen.swap_remove(i).1,
@@ -81,13 +109,16 @@ impl Setup {
                     .iter()
                     .map(|&x| fraction_radius(self.a, r_o, x))
                     .collect();
-                self.crack(r_o, n, params, &radii)?
+                let k = self.crack(r_o, n, params, &radii, nearest(&seen, r_o).as_ref())?;
+                iterations += k.iterations;
+                k
             }
         };
         Ok(Found {
             r_o,
             last,
             solves,
+            iterations,
             edges,
         })
     }
@@ -130,12 +161,18 @@ pub(super) fn estimate(
         Some(s) => (s, 0),
         None => {
             let h = 1e-3 * setup.d;
-            let up = setup.crack(r_o + h, params.nodes, params, &[])?.edge;
+            let warm = found.last.fit.as_ref();
+            let up = setup.crack(r_o + h, params.nodes, params, &[], warm)?.edge;
             ((up - found.last.edge) / h, 1)
         }
     };
+    // the fewer-nodes variant starts from the search's correction (same modes); the
+    // half-terms one has other modes and starts from none
     let variant = |setup: &Setup, p: &HoledParams| -> Result<(f64, usize), RecedingError> {
-        let step = -setup.crack(r_o, p.nodes, p, &[])?.edge / slope;
+        let step = -setup
+            .crack(r_o, p.nodes, p, &[], found.last.fit.as_ref())?
+            .edge
+            / slope;
         if step.is_finite() && step.abs() < 0.01 * setup.d {
             return Ok((r_o + step, 1));
         }
@@ -162,7 +199,7 @@ pub(super) fn estimate(
     };
     let (r1, r2) = rayon::join(
         || variant(setup, &fewer),
-        || Setup::new(plate, &half).and_then(|s| variant(&s, &half)),
+        || Setup::sharing(plate, &half, Some(setup)).and_then(|s| variant(&s, &half)),
     );
     let ((r1, s1), (r2, s2)) = (r1?, r2?);
     solves += s1 + s2;

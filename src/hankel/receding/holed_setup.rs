@@ -1,6 +1,7 @@
 //! The fixed parts of one geometry of the semi-analytic two-plate route with the hole
 //! ([`super::holed`]): the bilateral holed plate, the correction basis (hole modes, corner
-//! fields), the hole's ξ-rule and the tables that every trial contact radius reuses ([`Setup`]),
+//! fields), the tables that every trial contact radius reuses ([`Setup`]), the hole's ξ-rule
+//! for one radius ([`Setup::hole_rule`]),
 //! and one contact radius solved ([`Crack`]). The root search over the radius is
 //! [`super::holed_search`]; the public entry points and their record are [`super::holed`].
 //!
@@ -10,7 +11,10 @@
 //!
 //! # Cost
 //!
-//! Example 19 (`examples/19_two_plate_hankel.rs`): about 0.1 s per trial radius.
+//! Example 19 (`examples/19_two_plate_hankel.rs`): about 0.2 s per geometry before they were
+//! cut to [A, B + 3D + tail] (the slab's midplane curve 0.12 s, the corner table 0.07 s on
+//! Table 1 row 1, over the whole reach), shared with the
+//! estimate's coarse setup ([`Setup::sharing`]); the hole rule, a few ms, per trial radius.
 //!
 //! ```
 //! // Internal to the route; reached through its entry point:
@@ -26,12 +30,14 @@ use super::system::panels;
 use crate::error::InputError;
 use crate::hankel::hole::corner::CornerLoads;
 use crate::hankel::hole::eigen::{symmetric_roots, Mode};
-use crate::hankel::hole::fit::heights;
+use crate::hankel::hole::fit::{heights, Fit};
 use crate::hankel::hole::HolePlate;
 use crate::hankel::midplane::MidplaneCurve;
 use crate::hankel::transform::LoadTransform;
 use crate::joint::{OuterRadius, SinglePlate};
+use rayon::prelude::*;
 use std::f64::consts::PI;
+use std::sync::{Arc, OnceLock};
 
 /// The geometry's fixed parts: the bilateral plate, the correction basis, the hole's ξ-rule.
 pub(super) struct Setup {
@@ -42,7 +48,9 @@ pub(super) struct Setup {
     /// P, the mean pressure.
     pub(super) p_ref: f64,
     pub(super) bilateral: HolePlate,
-    pub(super) slab_mid: MidplaneCurve,
+    /// The slab's midplane σ_z on [A, B + 3D + tail], and on [A, `r_max`] once needed.
+    pub(super) slab_mid: Arc<MidplaneCurve>,
+    pub(super) slab_far: Arc<OnceLock<Option<MidplaneCurve>>>,
     pub(super) modes: Vec<Mode>,
     pub(super) corner: Option<CornerLoads>,
     /// Radius up to which the corner fields' midplane rule is built.
@@ -57,14 +65,23 @@ pub(super) struct Setup {
     pub(super) z_cheb: Vec<f64>,
     pub(super) interp_even: Vec<Vec<f64>>,
     pub(super) interp_odd: Vec<Vec<f64>>,
-    /// Hole ξ-rule: (ξ, w, J₀(ξA), J₁(ξA)/(ξA), J₁(ξA)) and kernels per Chebyshev height.
-    pub(super) hole_xi: Vec<(f64, f64, f64, f64, f64)>,
-    pub(super) hole_kernels: Vec<Vec<[f64; 3]>>,
+    /// Poisson's ratio.
+    pub(super) nu: f64,
+    /// The hole ξ-rule's end: e^(−ξ z_min) = e^(−`hole_decay`) at the lowest height.
+    pub(super) xi_h: f64,
     /// ξ beyond which l̄ is taken from its endpoint expansion.
     pub(super) xi_l: f64,
     /// The corner fields' midplane σ_z (the basis rows of [`CornerLoads::midplane_basis`]) on
     /// panels of D/2 over [A, r_max], interpolated by every trial radius.
-    pub(super) corner_table: Option<(PanelInterp, Vec<Vec<f64>>)>,
+    pub(super) corner_table: Option<Arc<(PanelInterp, Vec<Vec<f64>>)>>,
+}
+
+/// The hole's ξ-rule for one contact radius ([`Setup::hole_rule`]).
+pub(super) struct HoleRule {
+    /// (ξ, w, J₀(ξA), J₁(ξA)/(ξA), J₁(ξA)).
+    pub(super) xi: Vec<(f64, f64, f64, f64, f64)>,
+    /// The kernels (R₀, R₁, T) per node and Chebyshev height.
+    pub(super) kernels: Vec<Vec<[f64; 3]>>,
 }
 
 /// One contact radius solved.
@@ -76,10 +93,23 @@ pub(super) struct Crack {
     pub(super) iterations: usize,
     /// The contact pressure at the radii asked for.
     pub(super) pressure: Vec<f64>,
+    /// The hole correction's last fit (a warm start for a nearby radius).
+    pub(super) fit: Option<Fit>,
 }
 
 impl Setup {
     pub(super) fn new(plate: &SinglePlate, params: &HoledParams) -> Result<Self, RecedingError> {
+        Self::sharing(plate, params, None)
+    }
+
+    /// As [`Setup::new`], taking from `shared` (a setup of the same plate, e.g. the estimate's
+    /// finer run) the parts that do not depend on the knobs changed: the slab's midplane curve
+    /// (when the range is the same) and the corner table (when the corner terms are too).
+    pub(super) fn sharing(
+        plate: &SinglePlate,
+        params: &HoledParams,
+        shared: Option<&Setup>,
+    ) -> Result<Self, RecedingError> {
         let (a, d) = (plate.hole_radius(), plate.half_thickness());
         if a <= 0.0 {
             return Err(InputError::Parameter {
@@ -118,7 +148,22 @@ impl Setup {
         let b = load.outer();
         let tail = params.tail * d;
         let r_max = b + params.reach * d + tail + d;
-        let slab_mid = MidplaneCurve::new(bilateral.slab(), a, r_max, 1e-12 * p_ref)?;
+        // the curve and the corner table up to the radii of a search ending within 2D of B;
+        // the search's farther radii take the curve over the whole reach, built on first use
+        let r_near = (b + 2.0 * d + tail + d).min(r_max);
+        let shared = shared.filter(|s| s.r_max == r_max && s.a == a && s.d == d);
+        let (slab_mid, slab_far) = match shared {
+            Some(s) => (Arc::clone(&s.slab_mid), Arc::clone(&s.slab_far)),
+            None => (
+                Arc::new(MidplaneCurve::new(
+                    bilateral.slab(),
+                    a,
+                    r_near,
+                    1e-12 * p_ref,
+                )?),
+                Arc::new(OnceLock::new()),
+            ),
+        };
         let modes: Vec<Mode> = symmetric_roots(n)
             .iter()
             .map(|x| Mode::new(*x, a, d, nu, g))
@@ -180,45 +225,21 @@ impl Setup {
                 .collect()
         };
         let (interp_even, interp_odd) = (interp(false), interp(true));
-        // the hole ξ-rule: e^(−ξ z_min) < 2e-6 at its end; 20-point panels of 2.25 periods
-        // (Gauss–Legendre's error on them ≈ (e·ωh/80)^40 ≈ 2e-13) of cos ξ(r ± A) for the crack
-        // loads within c + 8D up to ξ_l, and of the contact edge c beyond (l's transform is
-        // its endpoint expansion there)
-        let z_min = z_cheb[m / 2 - 1];
-        let xi_l = params.xi_l / d;
-        let xi_max = (params.hole_decay / z_min).max(2.0 * xi_l);
-        let c_max = b + params.reach * d;
-        let width = |omega: f64| (4.5 * PI / omega).min(1.0 / d);
-        let mut rule = panels(0.0, xi_l, width(c_max + 8.0 * d + a));
-        rule.extend(panels(xi_l, xi_max, width(c_max + a + d)));
-        let hole_xi: Vec<(f64, f64, f64, f64, f64)> = rule
-            .into_iter()
-            .map(|(xi, w)| {
-                let x = xi * a;
-                let j1 = libm::j1(x);
-                (xi, w, libm::j0(x), j1 / x, j1)
-            })
-            .collect();
-        let hole_kernels = hole_xi
-            .iter()
-            .map(|&(xi, ..)| {
-                z_cheb
-                    .iter()
-                    .map(|&z| {
-                        let k = bottom_kernels(xi, d, z, nu);
-                        [k.r0, k.r1, k.t]
-                    })
-                    .collect()
-            })
-            .collect();
         // the corner fields are analytic in a strip of half-width ≈ D about the midplane's
         // r-axis (their corner is D away): 20-point panels of D/2 interpolate them to ~1e-18
-        let corner_table = corner.as_ref().map(|cl| {
-            let interp = PanelInterp::new(a, r_max, 0.5 * d);
-            let grid = interp.grid();
-            let rows = cl.midplane_basis_rows(r_max, grid.len(), |xi, row| grid.j0_row(xi, row));
-            (interp, rows)
-        });
+        let same_corner = shared
+            .filter(|s| s.corner.as_ref().map(|c| c.count()) == corner.as_ref().map(|c| c.count()));
+        let corner_table = match same_corner {
+            Some(s) => s.corner_table.clone(),
+            None => corner.as_ref().map(|cl| {
+                let interp = PanelInterp::new(a, r_near, 0.5 * d);
+                let grid = interp.grid();
+                let rows =
+                    cl.midplane_basis_rows(r_near, grid.len(), |xi, row| grid.j0_row(xi, row));
+                Arc::new((interp, rows))
+            }),
+        };
+        let xi_h = (params.hole_decay / z_cheb[m / 2 - 1]).max(2.0 * params.xi_l / d);
         Ok(Self {
             corner_table,
             a,
@@ -227,6 +248,7 @@ impl Setup {
             p_ref,
             bilateral,
             slab_mid,
+            slab_far,
             modes,
             corner,
             r_max,
@@ -236,14 +258,67 @@ impl Setup {
             z_cheb,
             interp_even,
             interp_odd,
-            hole_xi,
-            hole_kernels,
-            xi_l,
+            nu,
+            xi_h,
+            xi_l: params.xi_l / d,
         })
+    }
+
+    /// The hole ξ-rule for contact radius `c`: ends at ξ_h; 20-point panels of 2.25 periods
+    /// (Gauss–Legendre's error on them ≈ (e·ωh/80)^40 ≈ 2e-13) of cos ξ(r ± A) for the crack
+    /// loads within c + 8D up to ξ_l, and of the contact edge c beyond (l's transform is its
+    /// endpoint expansion there). Built per radius: a rule for the scan's farthest radius
+    /// would be 1.6 (below ξ_l) to 2.4 (beyond) times as dense near R_o on Table 1 row 1.
+    pub(super) fn hole_rule(&self, c: f64) -> HoleRule {
+        let (a, d) = (self.a, self.d);
+        let width = |omega: f64| (4.5 * PI / omega).min(1.0 / d);
+        let mut rule = panels(0.0, self.xi_l, width(c + 8.0 * d + a));
+        // beyond ξ_l the kernels are exponentials e^(−ξz), e^(−ξ(D − z)) times quadratics in ξ:
+        // no panel of 4/D resolves them worse than (e·4/80)^40 ≈ 1e-32
+        let far = (4.5 * PI / (c + a + d)).min(4.0 / d);
+        rule.extend(panels(self.xi_l, self.xi_h, far));
+        let xi: Vec<(f64, f64, f64, f64, f64)> = rule
+            .into_iter()
+            .map(|(xi, w)| {
+                let x = xi * a;
+                let j1 = libm::j1(x);
+                (xi, w, libm::j0(x), j1 / x, j1)
+            })
+            .collect();
+        let kernels = xi
+            .par_iter()
+            .map(|&(xi, ..)| {
+                self.z_cheb
+                    .iter()
+                    .map(|&z| {
+                        let k = bottom_kernels(xi, d, z, self.nu);
+                        [k.r0, k.r1, k.t]
+                    })
+                    .collect()
+            })
+            .collect();
+        HoleRule { xi, kernels }
     }
 
     /// The bilateral plate's midplane σ_z.
     pub(super) fn s0(&self, r: f64) -> f64 {
-        self.slab_mid.eval(r).value + self.bilateral.correction_midplane(r)
+        self.slab_sigma_z(r) + self.bilateral.correction_midplane(r)
+    }
+
+    /// The slab's midplane σ_z at A ≤ r ≤ `r_max`: from the near curve, or beyond it from the
+    /// whole reach's, built on first use (NaN if that fails: [`MidplaneCurve::new`] refuses
+    /// only lengths beyond 40 000 D, far beyond B + reach + tail).
+    pub(super) fn slab_sigma_z(&self, r: f64) -> f64 {
+        let near = self.slab_mid.eval(r);
+        if near.error.is_finite() {
+            return near.value;
+        }
+        self.slab_far
+            .get_or_init(|| {
+                let tol = 1e-12 * self.p_ref;
+                MidplaneCurve::new(self.bilateral.slab(), self.a, self.r_max, tol).ok()
+            })
+            .as_ref()
+            .map_or(f64::NAN, |c| c.eval(r).value)
     }
 }

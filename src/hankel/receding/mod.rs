@@ -37,6 +37,7 @@
 mod anderson;
 pub mod contact;
 mod crack;
+mod endpoint;
 pub mod grid;
 pub mod holed;
 mod holed_params;
