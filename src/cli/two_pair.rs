@@ -15,11 +15,11 @@
 //! One receding-contact solve ([`boltzone::hankel::receding::pair`]): 0.1–0.2 s at B ≈ D,
 //! seconds at B ≈ 8 thicknesses of the thinner plate.
 
-use clap::ValueEnum;
 use super::exit::{sig, Status};
 use super::two_args::{Args, Interface};
 use boltzone::hankel::receding::{Pair, RecedingParams};
 use boltzone::{FaceLoad, Material, Plate};
+use clap::ValueEnum;
 
 /// Points of the `--curve` (plus one).
 const CURVE_POINTS: usize = 100;
