@@ -34,6 +34,7 @@ mod table2;
 mod table_units;
 mod two;
 mod two_args;
+mod two_curve;
 mod two_files;
 mod two_hankel;
 mod two_pair;

@@ -59,35 +59,6 @@ pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> 
 /// Points of the `--curve` (plus one).
 const CURVE_POINTS: usize = 100;
 
-/// The interface curve in the FE's layout (r, p, g, τ): on A ≤ r ≤ R_o the gap is 0 and, the
-/// interface being frictionless, so is τ; `method` names the route in the notes, `r_o` is
-/// (R_o, its error).
-pub(super) fn curve_csv(
-    curve: &[(f64, f64)],
-    method: &str,
-    r_o: (f64, f64),
-    converged: bool,
-    args: &Args,
-) -> String {
-    let (l, st) = (args.units.length(), args.units.stress());
-    let notes = [
-        format!("method: {method}"),
-        "p = interface pressure (compression > 0), g = gap between the plates (0 on the \
-         contact zone), tau = interface shear (0: frictionless)"
-            .to_string(),
-        super::output::r_o_note_in(l, r_o.0, r_o.1, converged),
-    ];
-    let cols = [
-        format!("r [{l}]"),
-        format!("p [{st}]"),
-        format!("g [{l}]"),
-        format!("tau [{st}]"),
-    ];
-    let cols: Vec<&str> = cols.iter().map(String::as_str).collect();
-    let rows: Vec<Vec<f64>> = curve.iter().map(|&(r, q)| vec![r, q, 0.0, 0.0]).collect();
-    super::output::curve_csv_in(args.units.units, &cols, &notes, &rows)
-}
-
 /// Runs the Hankel route on checked arguments with bearing pressure `load`.
 pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Result<Status> {
     let g = &args.geom;
@@ -116,7 +87,10 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
         let method = "Hankel route with the hole (boltzone::hankel::receding::holed), \
                       interface A <= r <= R_o";
         let r_o = (out.r_o, out.info.r_o_error);
-        super::write_output(path, &curve_csv(&curve, method, r_o, converged, args))?;
+        super::write_output(
+            path,
+            &super::two_curve::curve_csv(&curve, method, r_o, converged, args),
+        )?;
     }
     if args.json {
         let mut v = serde_json::json!({

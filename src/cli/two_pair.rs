@@ -75,7 +75,7 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
             .collect();
         let method = "Hankel, receding contact of the two plates in series \
                       (boltzone::hankel::receding::Pair), interface 0 <= r <= R_o";
-        let text = super::two_hankel::curve_csv(&curve, method, (r_o, error), converged, args);
+        let text = super::two_curve::curve_csv(&curve, method, (r_o, error), converged, args);
         super::write_output(path, &text)?;
     }
     let i = &out.info;

@@ -118,7 +118,7 @@ impl Pair {
 
     /// The Nyström size of [`Self::receding_contact`] ([`Layer::basis_size`]): an error when the
     /// contact zone is too many thinner-plate thicknesses wide (B/D_min beyond about 50).
-    pub fn basis_size(&self, params: &RecedingParams) -> Result<usize, crate::InputError> {
+    pub fn basis_size(&self, params: &RecedingParams) -> Result<usize, crate::error::InputError> {
         self.layer.basis_size(params)
     }
 
