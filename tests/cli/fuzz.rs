@@ -127,10 +127,7 @@ fn argument_set(rng: &mut Rng) -> Vec<String> {
     }
     if command == "two" && rng.chance(0.25) {
         // the semi-analytic routes: with the hole (equal plates), without it (any pair)
-        args.extend([
-            "--method".into(),
-            rng.pick(&["hankel", "auto"]).to_string(),
-        ]);
+        args.extend(["--method".into(), rng.pick(&["hankel", "auto"]).to_string()]);
     }
     if command == "single" && rng.chance(0.4) {
         args.extend(["--method".into(), "hankel".into()]);
