@@ -8,8 +8,8 @@
 //! CI runs `FUZZ_RUNS` sets (default 200) on two threads; the full study of 10⁴ sets is
 //! `every_command_survives_ten_thousand_argument_sets` (ignored: ~10 min on two cores). Its last run
 //! (24 Nov 2026, with `two --method hankel|auto` added) found 10 runs over 30 s, all `two
-//! --method hankel` with a hole and B/D from 42 to 625: the semi-analytic route with the hole has
-//! no reach limit yet (the route without one refuses B + 2D beyond 64 thicknesses).
+//! --method hankel` with a hole and B/D from 42 to 625; that route now refuses B/D > 16 with exit
+//! 2 naming `--b` (its cost grows like (B/D)²: 18 s and 2.0 GB at 32).
 
 use std::io::Read;
 use std::process::{Command, Stdio};

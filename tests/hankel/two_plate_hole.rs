@@ -340,4 +340,15 @@ fn two_method_hankel_refuses_what_it_cannot_do() {
             "{err}"
         );
     }
+    // a load wider than the route's reach (B/D 17 > 16; the 10⁴ fuzz ran past 30 s from 42)
+    let args = [
+        "two", "--a", "0.1", "--b", "1.7", "--d", "0.1", "--method", "hankel",
+    ];
+    let out = crate::common::boltzone(&args);
+    assert_eq!(out.status.code(), Some(2), "{args:?}");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("--b = 1.7") && err.contains("--method fem"),
+        "{err}"
+    );
 }
