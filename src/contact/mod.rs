@@ -39,6 +39,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod cut;
 mod error;
 pub mod field;
 pub mod friction;
@@ -54,6 +55,7 @@ mod temperature;
 pub mod thermal;
 pub mod tie;
 pub mod two_plate;
+mod two_plate_level;
 
 pub use error::ContactError;
 pub use lcp::{solve_lcp, solve_lcp_from, Lcp, LcpInfo, LcpParams, LcpSolution};

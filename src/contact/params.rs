@@ -14,6 +14,7 @@
 //! None: the driver's cost is in `cargo bench --bench contact`.
 
 use super::lcp::LcpParams;
+use crate::error::InputError;
 use crate::fem::ElementKind;
 use serde::Serialize;
 
@@ -113,4 +114,44 @@ impl Default for TwoPlateParams {
             lcp: LcpParams::default(),
         }
     }
+}
+
+/// Checks the knobs of `p` (each message names the field and the value).
+pub(crate) fn check(p: &TwoPlateParams) -> Result<(), InputError> {
+    let bad = |field, value: f64, reason| {
+        Err(InputError::Parameter {
+            field,
+            value,
+            reason,
+        })
+    };
+    if !(p.tolerance > 0.0 && p.tolerance < 1.0) {
+        return bad(
+            "TwoPlateParams::tolerance",
+            p.tolerance,
+            "must lie in (0, 1)",
+        );
+    }
+    if !(p.coarse > 0.0 && p.coarse <= 1.0) {
+        return bad("TwoPlateParams::coarse", p.coarse, "must lie in (0, 1]");
+    }
+    if !(p.window > 0.0 && p.window.is_finite()) {
+        return bad("TwoPlateParams::window", p.window, "must be positive");
+    }
+    if p.min_levels < 1 || p.max_levels < p.min_levels || p.max_levels > 14 {
+        return bad(
+            "TwoPlateParams::max_levels",
+            p.max_levels as f64,
+            "need 1 ≤ min_levels ≤ max_levels ≤ 14",
+        );
+    }
+    if let Some(mu) = p.interface.friction_coefficient() {
+        if !(mu >= 0.0 && mu.is_finite()) {
+            return bad("TwoPlateParams::interface mu", mu, "must be finite and ≥ 0");
+        }
+    }
+    if let Loading::NutDisplacement(v) = p.loading {
+        crate::error::positive("nut displacement", v)?;
+    }
+    Ok(())
 }

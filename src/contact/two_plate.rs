@@ -55,51 +55,22 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use super::cut::{check_cut_allowed, cut_at, cut_error};
 use super::error::ContactError;
 pub use super::field::TwoPlateField;
 use super::field::UnitField;
 use super::level::{LevelSolution, MeshedJoint};
+use super::params::check;
 pub use super::params::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
-use super::refine::{mesh, solve_adaptive, MeshLayout, PreviousLevel};
-use super::separation::{estimate, NodalInterface, SeparationEstimate};
+use super::refine::{MeshLayout, PreviousLevel};
 use super::temperature::{JointTemperature, ScaledTemperature};
+pub use super::two_plate_level::TwoPlateLevel;
+use super::two_plate_level::{closed_pressure, solve_level_at, Level};
 use crate::error::InputError;
 use crate::joint::{Joint, OuterRadius, Plate};
 use crate::numerics::convergence::{cautious_level_estimate, fitted_rate, level_estimate};
 use serde::Serialize;
 use std::time::Instant;
-
-/// One mesh level of the study.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct TwoPlateLevel {
-    /// Element size at R_o.
-    pub h: f64,
-    /// Nodes of the mesh.
-    pub nodes: usize,
-    /// Reduced unknowns.
-    pub dofs: usize,
-    /// LCP unknowns (window points).
-    pub window: usize,
-    /// R_o on this level.
-    pub r_o: f64,
-    /// Spread of the R_o estimators on this level.
-    pub spread: f64,
-    /// Active-set iterations.
-    pub iterations: usize,
-    /// Active-set changes.
-    pub changes: usize,
-    /// Solves of the level (1 unless the tied set or the window had to be revised).
-    pub attempts: usize,
-    /// Whether the welded zone came from the report's rule (no Signorini solution found; see
-    /// [`super::lcp`]): then `residual` says how far the conditions are from holding.
-    pub report_rule: bool,
-    /// Relative KKT residual of the interface LCP ([`super::lcp::LcpInfo::residual`]).
-    pub residual: f64,
-    /// Assembly + factorization + load solve, seconds.
-    pub time_linear: f64,
-    /// Flexibility solves + LCP + recovery, seconds.
-    pub time_contact: f64,
-}
 
 /// The record of [`solve`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -302,136 +273,6 @@ pub(crate) fn solve_keeping_with(
     Ok((s, field))
 }
 
-/// Widest free annulus C − B meshed, in thicknesses of the thinner plate. The bending stiffness
-/// of a free annulus L long falls like (D/L)⁴ against the element stiffnesses: beyond
-/// L/D ≈ 10⁴ the stiffness matrix is numerically indefinite in f64, and already at 2000 the
-/// finest levels' R_o scattered by ±3e-5 relative (A = 0, B = D: the receding-contact value as
-/// reference), where at 500 they settle within 1e-5 of it.
-const C_MAX_OVER_D: f64 = 500.0;
-
-/// One solved mesh level and its R_o.
-struct Level {
-    model: MeshedJoint,
-    sol: LevelSolution,
-    est: SeparationEstimate,
-    record: TwoPlateLevel,
-}
-
-/// Solves the level of element size `h` at R_o, A and B on the plates cut at `g.c`.
-fn solve_level_at(
-    joint: &Joint,
-    g: &MeshLayout,
-    params: &TwoPlateParams,
-    h: f64,
-    prev: Option<&PreviousLevel>,
-) -> Result<Level, ContactError> {
-    let mut model = mesh(joint, g, params.element, h, prev.map(|p| p.r_o))?;
-    let thermal = g.thermal.map(|t| t.apply(&mut model)).transpose()?;
-    let nodes = model.mesh.n_nodes();
-    let (sol, window, attempts) = solve_adaptive(&model, joint, g, params, prev, thermal.as_ref())?;
-    let est = match separation(&sol) {
-        Some(est) => est,
-        // Closed out to the rim: full contact, R_o = C (an answer, not a failure).
-        None if sol.closed.last() == Some(&true) => SeparationEstimate {
-            r_o: g.c,
-            r_o_gap_far: None,
-            r_o_pressure: None,
-            last_contact: g.c,
-            first_open: g.c,
-            spread: 0.0,
-        },
-        None => return Err(ContactError::WindowExhausted { radius: g.c }),
-    };
-    let record = TwoPlateLevel {
-        h,
-        nodes,
-        dofs: sol.dofs,
-        window,
-        r_o: est.r_o,
-        spread: est.spread,
-        iterations: sol.lcp.iterations,
-        changes: sol.lcp.changes,
-        attempts,
-        report_rule: sol.lcp.prefix,
-        residual: sol.lcp.residual,
-        time_linear: sol.time_linear.as_secs_f64(),
-        time_contact: sol.time_contact.as_secs_f64(),
-    };
-    Ok(Level {
-        model,
-        sol,
-        est,
-        record,
-    })
-}
-
-/// Where to cut plates wider than the mesh can hold: at C itself when C ≤ B + [`C_MAX_OVER_D`]·D
-/// (meshed whole), else at C′ = min(10B + 10(D₁ + D₂), B + ½[`C_MAX_OVER_D`]·D) with the exact
-/// exterior of the free layer out to the rim C on the cut ([`crate::fem::exterior`]; returned
-/// as the rim, `f64::INFINITY` for infinite plates). The cut leaves out only the decaying
-/// Papkovich–Fadle modes ([`cut_error`]). A fixed edge or a temperature field needs the plate
-/// meshed whole: the exterior is that of a free rim at the reference temperature.
-///
-/// (Before, the cut face was left free and R_o carried an error ∝ C′⁻², estimated from two
-/// coarse levels at C′ and 2C′; on a 10 × 10 grid of infinite plates the FE then sat below the
-/// semi-analytic route by up to 1.6× its estimate at 1e-5: `tests/hankel/grid_study.rs`.)
-fn cut_at(g: &MeshLayout, c: f64) -> (f64, Option<f64>) {
-    let c_max = widest_meshed(g.b, g.d[0].min(g.d[1]));
-    if c <= c_max {
-        return (c, None);
-    }
-    let cut = (10.0 * g.b + 10.0 * (g.d[0] + g.d[1])).min(g.b + 0.5 * (c_max - g.b));
-    (cut, Some(c))
-}
-
-/// The widest plate meshed whole, B + [`C_MAX_OVER_D`]·D (D of the thinner plate).
-fn widest_meshed(b: f64, d_min: f64) -> f64 {
-    b + C_MAX_OVER_D * d_min
-}
-
-/// Refuses a plate that [`cut_at`] would cut when its outer edge is fixed or it carries
-/// temperatures (in the joint's own units, so that the message quotes them).
-fn check_cut_allowed(
-    joint: &Joint,
-    params: &TwoPlateParams,
-    thermal: bool,
-) -> Result<(), ContactError> {
-    let d = joint.upper().thickness().min(joint.lower().thickness());
-    let c = match joint.outer_radius() {
-        OuterRadius::Finite(c) => c,
-        OuterRadius::Infinite => f64::INFINITY,
-    };
-    if c <= widest_meshed(joint.load().outer(), d) {
-        return Ok(());
-    }
-    let reason = if params.edge == EdgeSupport::Fixed {
-        "a fixed edge is meshed whole: C must not exceed B + 500 D (D of the thinner plate)"
-    } else if thermal {
-        "plates with temperatures are meshed whole: C must not exceed B + 500 D (D of the thinner plate)"
-    } else {
-        return Ok(());
-    };
-    let field = if c.is_finite() {
-        "plate outer radius C"
-    } else {
-        "plate outer radius C (none given: an infinite plate)"
-    };
-    Err(InputError::Parameter {
-        field,
-        value: c,
-        reason,
-    }
-    .into())
-}
-
-/// The cut's error bound in R_o: the slowest Papkovich–Fadle mode left out decays like
-/// e^(−4.21 (C′ − R_o)/D) from the contact's edge to the cut ([`crate::fem::exterior`]), D the
-/// thicker plate; relative to R_o. Below 1e-40 at the cuts of [`cut_at`]; it grows only when
-/// R_o nears the cut.
-fn cut_error(cut: f64, r_o: f64, d_max: f64) -> f64 {
-    r_o * (-4.21 * (cut - r_o).max(0.0) / d_max).exp()
-}
-
 /// Tolerances below which R_o's level estimate is [`cautious_level_estimate`] (the default
 /// tolerance, 5e-4, and looser keep [`level_estimate`], whose bars held on Table 1 and on
 /// 200 random joints at 1e-3 and 1e-4: `examples/16_error_bars.rs`).
@@ -632,78 +473,4 @@ fn interpolate(x: &[f64], y: &[f64], t: f64) -> f64 {
     let i = x.partition_point(|&v| v <= t).clamp(1, n - 1);
     let s = (t - x[i - 1]) / (x[i] - x[i - 1]);
     y[i - 1] + s * (y[i] - y[i - 1])
-}
-
-fn check(p: &TwoPlateParams) -> Result<(), InputError> {
-    let bad = |field, value: f64, reason| {
-        Err(InputError::Parameter {
-            field,
-            value,
-            reason,
-        })
-    };
-    if !(p.tolerance > 0.0 && p.tolerance < 1.0) {
-        return bad(
-            "TwoPlateParams::tolerance",
-            p.tolerance,
-            "must lie in (0, 1)",
-        );
-    }
-    if !(p.coarse > 0.0 && p.coarse <= 1.0) {
-        return bad("TwoPlateParams::coarse", p.coarse, "must lie in (0, 1]");
-    }
-    if !(p.window > 0.0 && p.window.is_finite()) {
-        return bad("TwoPlateParams::window", p.window, "must be positive");
-    }
-    if p.min_levels < 1 || p.max_levels < p.min_levels || p.max_levels > 14 {
-        return bad(
-            "TwoPlateParams::max_levels",
-            p.max_levels as f64,
-            "need 1 ≤ min_levels ≤ max_levels ≤ 14",
-        );
-    }
-    if let Some(mu) = p.interface.friction_coefficient() {
-        if !(mu >= 0.0 && mu.is_finite()) {
-            return bad("TwoPlateParams::interface mu", mu, "must be finite and ≥ 0");
-        }
-    }
-    if let Loading::NutDisplacement(v) = p.loading {
-        crate::error::positive("nut displacement", v)?;
-    }
-    Ok(())
-}
-
-/// R_o of a level: from the gap's shape ([`estimate`]); where the welded zone came from the
-/// report's rule and the open side penetrates (no smooth separation to fit), the midpoint
-/// between the last closed and the first open node, ± half that interval (the report's own
-/// resolution).
-fn separation(sol: &LevelSolution) -> Option<SeparationEstimate> {
-    let p = closed_pressure(sol);
-    let est = estimate(&NodalInterface {
-        radius: &sol.radius,
-        pressure: &p,
-        gap: &sol.gap,
-    });
-    if est.is_some() || !sol.lcp.prefix {
-        return est;
-    }
-    let k = p.iter().rposition(|&x| x > 0.0)?;
-    let (r0, r1) = (sol.radius[k], *sol.radius.get(k + 1)?);
-    Some(SeparationEstimate {
-        r_o: 0.5 * (r0 + r1),
-        r_o_gap_far: None,
-        r_o_pressure: None,
-        last_contact: r0,
-        first_open: r1,
-        spread: 0.5 * (r1 - r0),
-    })
-}
-
-/// Pressure on closed nodes (at least the smallest positive number), 0 on open ones.
-fn closed_pressure(s: &LevelSolution) -> Vec<f64> {
-    s.pressure
-        .iter()
-        .zip(&s.closed)
-        .map(|(&p, &c)| if c { p.max(f64::MIN_POSITIVE) } else { 0.0 })
-        .collect()
 }

@@ -73,14 +73,18 @@ use super::element::ElementKind;
 use super::error::FemError;
 use super::loads::Loads;
 use super::mesh::{Mesh, PlateSpec};
+pub use super::midplane_crossing::{midplane_of, MidplaneNodes};
 use super::ordering::nested_dissection;
-use super::recover::{line_traction, reactions};
+pub use super::single_levels::{
+    coarse_radial_spacing, crossing_levels, level_spacings, CrossingLevels, LevelCrossing,
+    FASTEST_ESTIMATE_RATE, FIXED_GRADING_TIGHT, FIXED_GRADING_TOLERANCE, MAX_LEVELS,
+};
 use super::single_temperature::SingleTemperature;
 use super::solve::{Factorization, SolveParams};
-use super::spacing::{level_grading_below, Spacing, GRADING_FIXED_DOWN_TO};
+use super::spacing::Spacing;
 use super::thermal::Thermal;
 use crate::error::InputError;
-use crate::joint::{OuterRadius, SinglePlate};
+use crate::joint::SinglePlate;
 use crate::material::Material;
 pub use crate::numerics::convergence::level_estimate;
 use crate::value::meets;
@@ -187,110 +191,7 @@ pub struct SingleInfo {
     pub seconds: f64,
 }
 
-/// The midplane of one solved single-plate mesh.
-#[derive(Debug, Clone, PartialEq)]
-pub struct MidplaneNodes {
-    /// Radii of the midplane nodes.
-    pub r: Vec<f64>,
-    /// σ_z at those nodes (compression negative).
-    pub sigma_z: Vec<f64>,
-    /// Edge order (1 or 2) for interpolation.
-    pub order: usize,
-    /// Number of nodes of the mesh.
-    pub nodes: usize,
-    /// Number of equations.
-    pub dofs: usize,
-}
-
-/// The radial spacing of level 0 for `plate` (knots at the load's knots): the radial part of
-/// [`level_spacings`] at level 0.
-pub fn coarse_radial_spacing(
-    plate: &SinglePlate,
-    params: &SingleParams,
-) -> Result<Spacing, InputError> {
-    Ok(level_spacings(plate, params, 0, None)?.0)
-}
-
-/// The radial and axial spacings of refinement level `level` (module docs). Graded: element
-/// size `coarse_size`·D/2^level at A, the load's knots, B and `r_focus` (the previous level's
-/// R_o), growing by `growth` radially up to 4D and by `axial_growth` away from z = 0 and z = D
-/// up to D/2. Uniform: level 0's spacings (without `r_focus`) with every element split into
-/// 2^level. An infinite plate ends at C = B + 30D.
-pub fn level_spacings(
-    plate: &SinglePlate,
-    params: &SingleParams,
-    level: u32,
-    r_focus: Option<f64>,
-) -> Result<(Spacing, Spacing), InputError> {
-    crate::error::positive("coarse element size", params.coarse_size)?;
-    let refinement = params.refinement.for_element(params.kind);
-    if refinement == Refinement::Uniform && level > 0 {
-        let (r, z) = level_spacings(plate, params, 0, None)?;
-        let k = 1usize << level.min(20);
-        return Ok((r.refined(k), z.refined(k)));
-    }
-    let d = plate.half_thickness();
-    let (a, b) = (plate.hole_radius(), plate.load().outer());
-    let c = match plate.outer_radius() {
-        OuterRadius::Infinite => b + FAR_RIM * d,
-        OuterRadius::Finite(c) => c.min(b + FAR_RIM * d),
-    };
-    let h = params.coarse_size * d / 2f64.powi(level as i32);
-    let mut foci = vec![a, plate.load().inner(), b];
-    foci.extend(r_focus.filter(|&r| r > a && r < c));
-    // the growth ratios, and the largest axial size, shrink on the finest levels
-    // ([`level_grading`]) so that every part of the mesh is refined
-    let fixed = if params.tolerance < FIXED_GRADING_TOLERANCE {
-        FIXED_GRADING_TIGHT
-    } else {
-        GRADING_FIXED_DOWN_TO
-    };
-    let (growth, axial_growth, shrink) =
-        level_grading_below(h, d, params.growth, params.axial_growth, fixed);
-    let radial = Spacing::graded(a, c, plate.load().knots(), &foci, h, growth, 4.0 * d)?;
-    let axial = match refinement {
-        Refinement::Graded | Refinement::Auto => Spacing::graded(
-            0.0,
-            d,
-            &[],
-            &[0.0, d],
-            h,
-            axial_growth,
-            (0.5 * d * shrink).max(h),
-        )?,
-        Refinement::Uniform => {
-            Spacing::uniform(0.0, d, (1.0 / params.coarse_size).ceil() as usize)?
-        }
-    };
-    Ok((radial, axial))
-}
-
 pub use crate::joint::FAR_RIM;
-
-/// Most levels [`solve`] refines to meet a tolerance for its callers that do not choose
-/// (`single --levels`' default, the tables, scenes and figures): the finest has 2⁻⁷ of the
-/// first's element size at the foci. [`SingleParams::default`]'s 5 are the fixed study of
-/// [`single_plate_r_o`].
-pub const MAX_LEVELS: usize = 8;
-
-/// The tightest `tolerance` whose levels keep the fixed grading down to h = D/64
-/// ([`crate::fem::spacing::level_grading`]); tighter ones shrink it from h = D/8 on
-/// ([`FIXED_GRADING_TIGHT`]). The fixed grading leaves a floor of 1.2e-6 to 2.4e-6 of R_o that
-/// the level-to-level changes do not show: example 16 at `tolerance` 1e-5 found 15 of 355
-/// converged runs over their estimate (up to 1.71×, most stopping at level 5, the last fixed
-/// one); at 1e-4 none (at most 0.84 of it).
-pub const FIXED_GRADING_TOLERANCE: f64 = 1e-4;
-
-/// The shrink of the error estimate per level beyond which [`solve`] decides that a tolerance
-/// is out of reach and stops, not converged: twice the fastest seen (38×, from level 3 to 4;
-/// 2–15× elsewhere, on 15 geometries of example 16 over 8 levels with either grading), so that
-/// no reachable tolerance is given up. `table1 --tol 1e-320` solved every level of the finer
-/// tight-tolerance grading: 9.7 s and 266 MB, over the fuzz's 30 s under load.
-pub const FASTEST_ESTIMATE_RATE: f64 = 76.0;
-
-/// Element size, in D, below which a study tighter than [`FIXED_GRADING_TOLERANCE`] shrinks
-/// its grading: from level 3 on (h = D/16 with the default `coarse_size`).
-pub const FIXED_GRADING_TIGHT: f64 = 1.0 / 8.0;
 
 /// A solved half plate: mesh, supports, loads and nodal displacements (global frame).
 #[derive(Debug, Clone)]
@@ -433,149 +334,6 @@ pub fn solve_midplane_on(
     midplane_of(plate, &h)
 }
 
-/// The midplane σ_z of a solved half plate, recovered from the roller reactions.
-pub fn midplane_of(_plate: &SinglePlate, h: &HalfPlate) -> Result<MidplaneNodes, FemError> {
-    let kind = h.mesh.kind();
-    let mid = h.mesh.bottom(0);
-    let reac = reactions(&h.mesh, &h.materials, &h.u, &h.loads)?;
-    let rz: Vec<f64> = mid.iter().map(|&n| reac[n][1]).collect();
-    let t = line_traction(&h.mesh, &mid, &rz)?;
-    Ok(MidplaneNodes {
-        r: mid.iter().map(|&n| h.mesh.nodes()[n][0]).collect(),
-        sigma_z: t.iter().map(|t| -t).collect(),
-        order: kind.order(),
-        nodes: h.mesh.n_nodes(),
-        dofs: h.dofs.n_equations(),
-    })
-}
-
-impl MidplaneNodes {
-    /// The first radius ≥ `from` where σ_z goes from ≤ 0 to > 0, interpolated within the element
-    /// edge (linear or quadratic); None if σ_z never turns tensile.
-    pub fn first_tensile_crossing(&self, from: f64) -> Option<f64> {
-        let o = self.order;
-        let start = self
-            .r
-            .partition_point(|&r| r < from - 1e-12 * (1.0 + from.abs()));
-        let mut i = start - start % o; // the edge that contains `from`
-        if self.sigma_z.get(i).is_some_and(|&s| s > 0.0) {
-            return Some(self.r[i]); // already tensile where the search starts
-        }
-        while i + o < self.r.len() {
-            let (s0, s1) = (self.sigma_z[i], self.sigma_z[i + o]);
-            let mid = self.sigma_z[i + o / 2];
-            if s1 > 0.0 || mid > 0.0 {
-                return Some(if o == 1 {
-                    self.r[i] + (self.r[i + 1] - self.r[i]) * (-s0) / (s1 - s0)
-                } else {
-                    quadratic_root(self.r[i], self.r[i + 2], s0, mid, s1)
-                });
-            }
-            i += o;
-        }
-        None
-    }
-}
-
-/// The smallest root in [x0, x2] of the quadratic through (x0, f0), (mid, fm), (x2, f2), f0 ≤ 0.
-fn quadratic_root(x0: f64, x2: f64, f0: f64, fm: f64, f2: f64) -> f64 {
-    // in s ∈ [0, 1]: f = f0 + b s + a s², with f(1/2) = fm, f(1) = f2
-    let a = 2.0 * (f2 - 2.0 * fm + f0);
-    let b = f2 - f0 - a;
-    let s = if a.abs() < 1e-14 * (f0.abs() + fm.abs() + f2.abs()) {
-        -f0 / b
-    } else {
-        let disc = (b * b - 4.0 * a * f0).max(0.0).sqrt();
-        // numerically stable roots; pick the smallest one in [0, 1]
-        let q = -0.5 * (b + b.signum() * disc);
-        let mut roots = [q / a, f0 / q];
-        roots.sort_by(f64::total_cmp);
-        roots
-            .into_iter()
-            .find(|s| (-1e-12..=1.0 + 1e-12).contains(s))
-            .unwrap_or(0.5)
-    };
-    x0 + s.clamp(0.0, 1.0) * (x2 - x0)
-}
-
-/// The discrete crossing R_o of one mesh level, and that mesh's size.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LevelCrossing {
-    /// First upward zero of the recovered midplane σ_z beyond B on this mesh.
-    pub r_o: f64,
-    /// Nodes of the mesh.
-    pub nodes: usize,
-    /// Equations of the mesh.
-    pub dofs: usize,
-}
-
-/// The crossings of the refinement levels of the module docs (level l: element size
-/// `coarse_size`·D/2^l at the foci, graded toward the previous level's R_o): an endless
-/// iterator, so callers choose how many levels and when to stop ([`single_plate_r_o`] takes
-/// `params.levels`; the comparison module stops at a tolerance).
-pub struct CrossingLevels<'a> {
-    plate: &'a SinglePlate,
-    params: &'a SingleParams,
-    previous: Option<f64>,
-    level: u32,
-    /// Keep each level's solved half plate (for a field or curve output).
-    keep: bool,
-    last: Option<HalfPlate>,
-    temperature: Option<&'a SingleTemperature>,
-}
-
-/// Refinement levels of the single-plate model (see [`CrossingLevels`]).
-pub fn crossing_levels<'a>(
-    plate: &'a SinglePlate,
-    params: &'a SingleParams,
-) -> Result<CrossingLevels<'a>, FemError> {
-    level_spacings(plate, params, 0, None)?; // checks the parameters once
-    Ok(CrossingLevels {
-        plate,
-        params,
-        previous: None,
-        level: 0,
-        keep: false,
-        last: None,
-        temperature: None,
-    })
-}
-
-impl Iterator for CrossingLevels<'_> {
-    type Item = Result<LevelCrossing, FemError>;
-
-    fn next(&mut self) -> Option<Self::Item> {
-        let p = self.params;
-        let solved = level_spacings(self.plate, p, self.level, self.previous)
-            .map_err(FemError::from)
-            .and_then(|(radial, axial)| {
-                solve_half_plate_with(self.plate, p, &radial, &axial, self.temperature)
-            })
-            .and_then(|h| {
-                let m = midplane_of(self.plate, &h);
-                if self.keep {
-                    self.last = Some(h);
-                }
-                m
-            });
-        self.level += 1;
-        let level = solved.and_then(|m| {
-            let r_o =
-                m.first_tensile_crossing(self.plate.load().outer())
-                    .ok_or(FemError::Solver(
-                        "the midplane stress never turns tensile inside the plate".into(),
-                    ))?;
-            Ok(LevelCrossing {
-                r_o,
-                nodes: m.nodes,
-                dofs: m.dofs,
-            })
-        });
-        self.previous = level.as_ref().ok().map(|l| l.r_o);
-        Some(level)
-    }
-}
-
 /// R_o of the single plate refined to a tolerance: the result of [`solve`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct SingleSolution {
@@ -707,34 +465,6 @@ pub fn single_plate_r_o(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn mid(r: Vec<f64>, s: Vec<f64>, order: usize) -> MidplaneNodes {
-        MidplaneNodes {
-            r,
-            sigma_z: s,
-            order,
-            nodes: 0,
-            dofs: 0,
-        }
-    }
-
-    #[test]
-    fn crossing_is_interpolated_inside_the_edge() {
-        // σ = (r − 0.7)(r + 1): quadratic interpolation is exact, linear gives the chord's root
-        let r: Vec<f64> = (0..=10).map(|i| i as f64 * 0.1).collect();
-        let s: Vec<f64> = r.iter().map(|r| (r - 0.7) * (r + 1.0)).collect();
-        let q = mid(r.clone(), s.clone(), 2)
-            .first_tensile_crossing(0.2)
-            .unwrap();
-        assert!((q - 0.7).abs() < 1e-14, "{q}");
-        let l = mid(r, s, 1).first_tensile_crossing(0.2).unwrap();
-        assert!((l - 0.7).abs() < 1e-12, "{l}"); // 0.7 is a node: linear is exact there too
-                                                 // a crossing below `from` is ignored; never tensile: None
-        let r: Vec<f64> = (0..=4).map(|i| i as f64).collect();
-        let m = mid(r.clone(), vec![1.0, -1.0, -2.0, 1.0, 2.0], 1);
-        assert!((m.first_tensile_crossing(1.0).unwrap() - (2.0 + 2.0 / 3.0)).abs() < 1e-14);
-        assert_eq!(mid(r, vec![-1.0; 5], 1).first_tensile_crossing(0.0), None);
-    }
 
     #[test]
     fn auto_refinement_is_graded_for_q9_only() {
