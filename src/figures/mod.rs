@@ -44,6 +44,7 @@ pub mod draw;
 pub mod experiments;
 pub mod lap;
 pub mod pairs;
+mod pairs_report;
 pub mod single;
 pub mod slab;
 pub mod units;
