@@ -5,11 +5,12 @@
 //! tighter run.
 
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
+use boltzone::hankel::receding::holed::{two_plate_hole, HoledParams};
 use boltzone::hankel::receding::rim::{rim_contact, rim_contact_pressure, RimContact};
 use boltzone::hankel::receding::rim_bending::RimStates;
 use boltzone::hankel::receding::{Layer, RecedingParams};
 use boltzone::numerics::quadrature::gauss_legendre;
-use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate};
+use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate, SinglePlate};
 use std::f64::consts::PI;
 
 /// Hooke's law: [σ_r, σ_θ, σ_z, τ_rz] from (ε_r, ε_θ, ε_z, γ_rz).
@@ -346,4 +347,40 @@ fn agrees_with_the_fe_at_tight_tolerances() {
             );
         }
     }
+}
+
+/// Table 1's first row (A/D = 1, B/A = 3.1, A = D = 0.1 in), ν = 0.3, with outer radius `c`.
+fn row1(c: OuterRadius) -> SinglePlate {
+    let load = FaceLoad::uniform(0.1, 0.31, 1.0).unwrap();
+    SinglePlate::new(0.1, c, 0.1, Material::new(3.0e7, 0.3).unwrap(), load).unwrap()
+}
+
+#[test]
+fn holed_rim_converges_like_c_to_the_minus_two() {
+    // the holed route with C = 1.54, 3.08, 6.16 in on Table 1's first row: R_o(C) − R_o(∞)
+    // ∝ C⁻² (rate 2 + O((R_o/C)²)); the FE meshed to the same rims measured −2.653e-4,
+    // −6.758e-5, −1.671e-5 in (tests/hankel/two_plate_rim.rs, tol 1e-4, bars ≈ 7e-6 in)
+    let params = HoledParams::default();
+    let inf = two_plate_hole(&row1(OuterRadius::Infinite), &params).unwrap();
+    let fe = [-2.653e-4, -6.758e-5, -1.671e-5];
+    let mut diff = Vec::new();
+    for (k, c) in [1.54, 3.08, 6.16].into_iter().enumerate() {
+        let out = two_plate_hole(&row1(OuterRadius::Finite(c)), &params).unwrap();
+        let rim = out.info.rim.unwrap();
+        println!(
+            "C = {c} in: R_o = {:.10} in ± {:.1e}, minus R_o(∞) {:+.4e} in (FE {:+.4e}), β = {:.3e}, M(C) = {:.3e}, {:.2} s",
+            out.r_o,
+            out.info.r_o_error,
+            out.r_o - inf.r_o,
+            fe[k],
+            rim.curvature,
+            rim.rim_moment,
+            out.info.seconds
+        );
+        assert_eq!(rim.r_o_infinite, inf.r_o);
+        diff.push(out.r_o - inf.r_o);
+    }
+    let rates: Vec<f64> = diff.windows(2).map(|w| (w[0] / w[1]).log2()).collect();
+    println!("observed rates {rates:.4?}");
+    assert!((rates[1] - 2.0).abs() < (rates[0] - 2.0).abs() && (rates[0] - 2.0).abs() < 0.1);
 }

@@ -157,6 +157,9 @@ pub struct HoledInfo {
     pub solves: usize,
     /// Wall-clock seconds.
     pub seconds: f64,
+    /// With a finite outer radius C: the rim's terms (module `rim_holed`); `None` for C = ∞.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rim: Option<super::rim_holed::RimRecord>,
 }
 
 /// R_o and its record.
@@ -169,7 +172,8 @@ pub struct HoledContact {
 }
 
 /// R_o of two equal plates with a hole on a frictionless interface: `plate` is the single plate
-/// of the reflected picture (its half-thickness is one plate's thickness D). See the module docs.
+/// of the reflected picture (its half-thickness is one plate's thickness D). See the module docs;
+/// a finite outer radius C adds the rim's terms (module `rim_holed`), C = ∞ is unchanged.
 pub fn two_plate_hole(
     plate: &SinglePlate,
     params: &HoledParams,
@@ -192,6 +196,9 @@ pub fn two_plate_hole_pressure(
         }
         .into());
     }
+    if let crate::joint::OuterRadius::Finite(c) = plate.outer_radius() {
+        return super::rim_holed::finite_rim(plate, c, params, at);
+    }
     let start = Instant::now();
     let setup = Setup::new(plate, params)?;
     let b = plate.load().outer();
@@ -213,6 +220,7 @@ pub fn two_plate_hole_pressure(
         search_iterations: found.iterations,
         solves: 0,
         seconds: 0.0,
+        rim: None,
     };
     let mut solves = found.solves;
     if params.estimate {

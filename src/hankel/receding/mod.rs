@@ -48,8 +48,10 @@ mod holed_setup;
 pub mod layer;
 pub mod layer_field;
 pub mod pair;
+mod prescribed;
 pub mod rim;
 pub mod rim_bending;
+pub mod rim_holed;
 mod search;
 mod system;
 

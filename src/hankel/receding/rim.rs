@@ -21,9 +21,8 @@
 //! - S₂: the infinite plate with no load, its bottom prescribed to w = r²/2 (+ a rigid
 //!   translation) on r ≤ c and free beyond, zero net force: the same Fredholm equation with
 //!   the Abel-inverted displacement F(t) = (2G/(π(1−ν)))t² on its right-hand side
-//!   (A[F] = (G/(1−ν)) r²/2), solved as φ₂ = F + ψ with ψ smooth (module `system`'s
-//!   general right-hand side: α_m = −a_m∫F cos ξ_m t, β_m = −b_m∫F(cos ξ_m t − 1), closed
-//!   forms); its far-field moment M₂(C) by reciprocity;
+//!   (A[F] = (G/(1−ν)) r²/2), solved as φ₂ = F + ψ with ψ smooth (module `prescribed`);
+//!   its far-field moment M₂(C) by reciprocity;
 //! - M: the membrane state, which cancels N_∞(C) and touches neither the plane nor R_o.
 //!
 //! β = −M_∞(C)/(M_E(C) + M₂(C)) frees the rim of its moment; the shear resultant is zero by
@@ -60,6 +59,7 @@
 //! ```
 
 use super::contact::{nodes, RecedingError, RecedingParams};
+use super::prescribed::Prescribed;
 use super::rim_bending::RimStates;
 use super::search::{root, Scan};
 use super::system::{integrate, Nystrom, XiRule};
@@ -124,8 +124,8 @@ struct Rim {
     d: f64,
     c_outer: f64,
     states: RimStates,
-    /// 2G/(π(1 − ν)): F(t) = γt² per unit curvature.
-    gamma: f64,
+    /// S₂'s lift r²/2 as the Abel function F(t) = γt².
+    lift: Prescribed,
     transform: LoadTransform,
     /// p̄(0) = ∫p r dr and ∫p r³ dr.
     p0: f64,
@@ -133,40 +133,16 @@ struct Rim {
     quad_tol: f64,
 }
 
-/// ∫₀^c t² cos ξt dt and ∫₀^c t²(cos ξt − 1) dt (series below ξc = 1, closed form above).
-fn t2_transforms(xi: f64, c: f64) -> (f64, f64) {
-    let x = xi * c;
-    let c3 = c * c * c;
-    if x < 1.0 {
-        // Σ_{n≥1} (−1)ⁿ x²ⁿ/((2n)!(2n + 3)) c³: 12 terms reach 1e-30
-        let (mut term, mut sum) = (1.0, 0.0);
-        for n in 1..=12 {
-            let k = 2.0 * n as f64;
-            term *= -x * x / (k * (k - 1.0));
-            sum += term / (k + 3.0);
-        }
-        let v = c3 * sum;
-        (v + c3 / 3.0, v)
-    } else {
-        let (s, co) = x.sin_cos();
-        let full = c3 * (s / x + 2.0 * co / (x * x) - 2.0 * s / (x * x * x));
-        (full, full - c3 / 3.0)
-    }
-}
-
 impl Rim {
     fn trial(&self, c: f64, n: usize) -> Result<Trial, RecedingError> {
         let omega = 3.0 * c + self.transform.outer();
         let rule = XiRule::new(self.d, &self.transform, omega, self.quad_tol);
         let (xi, a, b) = rule.nodes();
-        let (mut alpha, mut beta) = (vec![0.0; xi.len()], vec![0.0; xi.len()]);
-        for k in 0..xi.len() {
-            let (fc, fv) = t2_transforms(xi[k], c);
-            alpha[k] = -a[k] * self.gamma * fc;
-            beta[k] = -b[k] * self.gamma * fv;
-        }
+        let f = self.lift.transforms(xi, c);
+        let alpha: Vec<f64> = a.iter().zip(&f).map(|(a, f)| -a * f.0).collect();
+        let beta: Vec<f64> = b.iter().zip(&f).map(|(b, f)| -b * f.1).collect();
         let singular = RecedingError::Singular { c };
-        let f_total = self.gamma * c * c * c / 3.0;
+        let f_total = self.lift.integral(c);
         let s2 = Nystrom::solve_general(rule.clone(), c, n, -f_total, &alpha, &beta)
             .ok_or(singular.clone())?;
         let s_inf = Nystrom::solve(rule, c, n, self.p0).ok_or(singular)?;
@@ -177,12 +153,12 @@ impl Rim {
             .far_field_log(second(&s_inf) - self.p_second, 0.0);
         let k2 = self
             .states
-            .far_field_log(second(&s2) + 0.4 * self.gamma * c.powi(5), 0.0);
+            .far_field_log(second(&s2) + 2.0 * self.lift.moment_t2(c), 0.0);
         let moment = self.states.log_moment(k_inf, self.c_outer);
         let m_t =
             self.states.bending_moment(self.c_outer) + self.states.log_moment(k2, self.c_outer);
         let beta = -moment / m_t;
-        let phi2 = self.gamma * c * c + s2.phi(c);
+        let phi2 = self.lift.value(c) + s2.phi(c);
         let edge = c * (s_inf.phi(c) + beta * phi2) / self.p0;
         Ok(Trial {
             edge,
@@ -193,16 +169,14 @@ impl Rim {
     }
 
     /// The contact pressure q(r) ≥ 0 of `trial` (at contact radius c): q_∞ + β(q_F + q_ψ),
-    /// with q_F(r) = γc²/√(c² − r²) − 2γ√(c² − r²) the pressure of φ = F = γt² (the formula of
-    /// [`super::contact`]); zero for r ≥ c.
+    /// q_F the pressure of F (module `prescribed`); zero for r ≥ c.
     fn pressure(&self, trial: &Trial, r: f64) -> f64 {
         let (s_inf, s2) = &trial.systems;
         let c = s_inf.radius();
         if r >= c {
             return 0.0;
         }
-        let len = ((c - r) * (c + r)).sqrt();
-        let q_f = self.gamma * (c * c / len - 2.0 * len);
+        let q_f = self.lift.pressure(r, c);
         s_inf.pressure(r, self.d) + trial.beta * (q_f + s2.pressure(r, self.d))
     }
 }
@@ -270,7 +244,7 @@ pub fn rim_contact_pressure(
         d,
         c_outer,
         states: RimStates::new(0.0, d, material)?,
-        gamma: 2.0 * material.shear_modulus() / (PI * (1.0 - material.poisson_ratio())),
+        lift: Prescribed::new(material.shear_modulus(), material.poisson_ratio(), 0.0),
         p0: transform.eval(0.0),
         transform,
         p_second,
