@@ -384,3 +384,18 @@ fn holed_rim_converges_like_c_to_the_minus_two() {
     println!("observed rates {rates:.4?}");
     assert!((rates[1] - 2.0).abs() < (rates[0] - 2.0).abs() && (rates[0] - 2.0).abs() < 0.1);
 }
+
+#[test]
+#[ignore = "timing probe"]
+fn timing_probe() {
+    use boltzone::hankel::receding::holed::two_plate_hole_pressure;
+    let params = HoledParams::default();
+    let p = row1(OuterRadius::Infinite);
+    let t = std::time::Instant::now();
+    let _ = two_plate_hole_pressure(&p, &params, &[]).unwrap();
+    println!("no radii {:.3}", t.elapsed().as_secs_f64());
+    let at: Vec<f64> = (0..32).map(|k| k as f64 / 32.0).collect();
+    let t = std::time::Instant::now();
+    let _ = two_plate_hole_pressure(&p, &params, &at).unwrap();
+    println!("32 radii {:.3}", t.elapsed().as_secs_f64());
+}

@@ -22,7 +22,8 @@
 //!
 //! **Error estimate**: the infinite route's estimate (Nyström points, hole terms, heights,
 //! root), plus the change of the finite-C R_o when both S_∞ and S₂ are solved with ⌈3n/4⌉
-//! Nyström points, plus the rim residue's D·e^(−4.21(C − R_o)/D) ([`super::rim`]).
+//! Nyström points (one Newton step from R_o, slope by a difference over 1e-3 D), plus the rim
+//! residue's D·e^(−4.21(C − R_o)/D) ([`super::rim`]).
 //!
 //! # Accuracy
 //!
@@ -207,17 +208,25 @@ pub(super) fn finite_rim(
         to: scan.end,
     };
     let mut solves = 0;
-    let mut search = |n: usize, near: f64| {
+    let r_o = {
         let mut edge = |c: f64| {
             solves += 1;
-            route.trial(c, n, &[]).map(|t| t.edge)
+            route.trial(c, params.nodes, &[]).map(|t| t.edge)
         };
-        root(&mut edge, &scan, Some(near))?.ok_or_else(|| not_found.clone())
+        root(&mut edge, &scan, Some(inf.r_o))?.ok_or(not_found)?
     };
-    let r_o = search(params.nodes, inf.r_o)?;
     let coarse_n = (3 * params.nodes).div_ceil(4).max(4);
+    // the coarse variant's R_o by one Newton step from R_o (the slope by a difference over
+    // 1e-3 D): its error ∝ the change squared, far below the change itself
     let coarse = if params.estimate {
-        search(coarse_n, r_o)?
+        let h = 1e-3 * d;
+        let (f0, f1) = (
+            route.trial(r_o, params.nodes, &[])?.edge,
+            route.trial(r_o + h, params.nodes, &[])?.edge,
+        );
+        let fc = route.trial(r_o, coarse_n, &[])?.edge;
+        solves += 3;
+        r_o - fc * h / (f1 - f0)
     } else {
         f64::NAN
     };
