@@ -5,7 +5,7 @@
 //! tighter run.
 
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
-use boltzone::hankel::receding::holed::{two_plate_hole, HoledParams};
+use boltzone::hankel::receding::holed::{two_plate_hole, two_plate_hole_pressure, HoledParams};
 use boltzone::hankel::receding::rim::{rim_contact, rim_contact_pressure, RimContact};
 use boltzone::hankel::receding::rim_bending::RimStates;
 use boltzone::hankel::receding::{Layer, RecedingParams};
@@ -356,6 +356,7 @@ fn row1(c: OuterRadius) -> SinglePlate {
 }
 
 #[test]
+#[ignore = "three rims of the holed route: about 40 s on the loaded 2 cores"]
 fn holed_rim_converges_like_c_to_the_minus_two() {
     // the holed route with C = 1.54, 3.08, 6.16 in on Table 1's first row: R_o(C) − R_o(∞)
     // ∝ C⁻² (rate 2 + O((R_o/C)²)); the FE meshed to the same rims measured −2.653e-4,
@@ -386,16 +387,64 @@ fn holed_rim_converges_like_c_to_the_minus_two() {
 }
 
 #[test]
-#[ignore = "timing probe"]
-fn timing_probe() {
-    use boltzone::hankel::receding::holed::two_plate_hole_pressure;
-    let params = HoledParams::default();
-    let p = row1(OuterRadius::Infinite);
-    let t = std::time::Instant::now();
-    let _ = two_plate_hole_pressure(&p, &params, &[]).unwrap();
-    println!("no radii {:.3}", t.elapsed().as_secs_f64());
-    let at: Vec<f64> = (0..32).map(|k| k as f64 / 32.0).collect();
-    let t = std::time::Instant::now();
-    let _ = two_plate_hole_pressure(&p, &params, &at).unwrap();
-    println!("32 radii {:.3}", t.elapsed().as_secs_f64());
+fn holed_rim_agrees_with_the_fe_and_balances_the_load() {
+    // Table 1's first row with the report's C = 1.54 in: the FE meshed to C at its default
+    // tolerance within both error bars, the infinite plate's R_o outside the FE's bar; and the
+    // interface pressure's force 2π∫q r dr (40-point Gauss–Legendre in u, r = R_o − (R_o − A)u²,
+    // from the pressure formula, not the constraint) against the load, within the hole's
+    // residual shear over the hole face (residual_max·P·2πAD, as for C = ∞) plus 1e-12
+    let plate = row1(OuterRadius::Finite(1.54));
+    let gl = gauss_legendre(40);
+    let at: Vec<f64> = gl
+        .iter()
+        .map(|&(x, _)| 1.0 - 0.25 * (1.0 + x) * (1.0 + x))
+        .collect();
+    let (h, q) = two_plate_hole_pressure(&plate, &HoledParams::default(), &at).unwrap();
+    let rim = h.info.rim.unwrap();
+    let (a, d) = (0.1, 0.1);
+    let force: f64 = gl
+        .iter()
+        .zip(&q)
+        .map(|(&(x, w), &(r, q))| {
+            let u = 0.5 * (1.0 + x);
+            2.0 * PI * 0.5 * w * q * r * 2.0 * (h.r_o - a) * u
+        })
+        .sum();
+    let applied = plate.load().total_force();
+    let bound = h.info.residual_max * 2.0 * PI * a * d / (PI * (0.31f64.powi(2) - a * a)) + 1e-12;
+    println!(
+        "contact force / load − 1 = {:.2e} (bound {bound:.1e})",
+        force / applied - 1.0
+    );
+    assert!((force / applied - 1.0).abs() < bound);
+    let joint = Joint::symmetric(0.1, 0.31, 0.1, Material::new(3.0e7, 0.3).unwrap())
+        .unwrap()
+        .with_outer_radius(OuterRadius::Finite(1.54))
+        .unwrap();
+    let fe = solve(&joint, &TwoPlateParams::default()).unwrap();
+    println!(
+        "C = 1.54 in: rim route {:.10} in ± {:.1e}, FE {:.8} in ± {:.1e}, FE − rim {:+.2e} in, rim − C=∞ {:+.4e} in",
+        h.r_o,
+        h.info.r_o_error,
+        fe.r_o,
+        fe.r_o_error,
+        fe.r_o - h.r_o,
+        h.r_o - rim.r_o_infinite
+    );
+    assert!((fe.r_o - h.r_o).abs() <= fe.r_o_error + h.info.r_o_error);
+    assert!((fe.r_o - rim.r_o_infinite).abs() > fe.r_o_error);
+}
+
+#[test]
+fn the_infinite_plate_does_not_take_the_rim() {
+    // C = ∞ keeps the route without a rim record, bit for bit: main's binary at the rim's
+    // branch point (bfbe020) gave 0.3524229816848435 in on this row at --tol 1e-6 (a regression
+    // value: to be renewed, with its reason, when the route itself changes)
+    let h = two_plate_hole(
+        &row1(OuterRadius::Infinite),
+        &HoledParams::for_tolerance(1e-6),
+    )
+    .unwrap();
+    assert!(h.info.rim.is_none());
+    assert_eq!(h.r_o, 0.3524229816848435);
 }

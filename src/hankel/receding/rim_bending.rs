@@ -33,10 +33,14 @@
 //!
 //! # Accuracy
 //!
-//! `tests/hankel/two_plate_rim_hankel.rs`: the states' equilibrium, face and hole conditions
-//! by central differences of the displacements through Hooke's law (`the_rim_states_are_exact`);
-//! the far-field moment against the moment of the FE-free route's own contact solution with a
-//! finite rim (`the_rim_moment_vanishes_at_the_rim`).
+//! `tests/hankel/two_plate_rim_hankel.rs`: the states' stresses, equilibrium, face and hole
+//! conditions by central differences of the displacements through Hooke's law
+//! (`the_rim_states_are_exact`, tolerances from the differences' truncation); the membrane
+//! state on the plane (`the_membrane_state_leaves_the_plane_alone`); the far-field coefficient
+//! at A = 0 against the Kirchhoff plate's biharmonic Green function ring-averaged
+//! (`the_far_field_is_the_kirchhoff_green_function`: 1e-12). The hole's log term (A > 0) is
+//! checked only through the routes: the holed rim against the FE meshed to C. A direct check
+//! of the moment at C from the stress field (σ_r at Gauss heights) is not done.
 //!
 //! # Cost
 //!

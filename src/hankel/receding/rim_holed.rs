@@ -162,7 +162,7 @@ pub(super) fn finite_rim(
     let (a, d) = (plate.hole_radius(), plate.half_thickness());
     let load = plate.load();
     let b = load.outer();
-    if !(c_outer > b + d) {
+    if c_outer.is_nan() || c_outer <= b + d {
         return Err(InputError::Parameter {
             field: "outer radius C",
             value: c_outer,
