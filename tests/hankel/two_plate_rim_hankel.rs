@@ -448,3 +448,25 @@ fn the_infinite_plate_does_not_take_the_rim() {
     assert!(h.info.rim.is_none());
     assert_eq!(h.r_o, 0.3524229816848435);
 }
+
+#[test]
+fn two_method_hankel_takes_a_rim() {
+    // `two --method hankel --c 1.54`: exit 0, the rim's record in the JSON, R_o below the
+    // infinite plate's by far more than its estimate (the FE comparison is the library test's)
+    let out = crate::common::boltzone(&[
+        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--c", "1.54", "--nu", "0.3", "--method",
+        "hankel", "--tol", "1e-6", "--json",
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v = crate::common::json_of(&out);
+    let rim = &v["hankel"]["rim"];
+    assert_eq!(rim["outer_radius"].as_f64(), Some(1.54));
+    let (r_o, err) = (v["r_o"].as_f64().unwrap(), v["r_o_error"].as_f64().unwrap());
+    assert!(v["converged"].as_bool().unwrap() && err < 1e-6 * r_o);
+    assert!(r_o < rim["r_o_infinite"].as_f64().unwrap() - 100.0 * err);
+}

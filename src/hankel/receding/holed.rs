@@ -77,6 +77,13 @@
 //! their estimates 3.8e-10 … 1.3e-6 R_o (over 1e-6, honestly not converged, on (0.5, 1.3) only);
 //! Anderson moves R_o by ≤ 3.7e-13 R_o (same file).
 //!
+//! **Finite rim C** (module `rim_holed`: the infinite plate plus the rim's bending correction,
+//! which the FE meshed to C measured as ∝ C⁻², `tests/hankel/two_plate_rim.rs`): on Table 1's
+//! first row R_o(C) − R_o(∞) = −2.6503e-4, −6.744e-5, −1.694e-5 in at C = 1.54, 3.08, 6.16 in
+//! (rates 1.97, 1.99; the FE at --tol 1e-4: −2.653e-4, −6.758e-5, −1.671e-5), and at
+//! C = 1.54 in on all twelve rows the FE meshed to C lies within its estimate (example 19's
+//! second table; `tests/hankel/two_plate_rim_hankel.rs`).
+//!
 //! # Cost
 //!
 //! Measured 2026-11-24 on all twelve Table 1 rows with `boltzone two --method hankel --tol 1e-6`
