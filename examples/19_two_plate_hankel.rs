@@ -36,6 +36,15 @@
 //! outer cut, not its mesh; |FE − H| (2.9e-6, 4.7e-6) is within its estimate (4.3e-6, 5.1e-6).
 //! t is wall-clock, cpu the CPU of all threads (state the load beside them).
 //!
+//! With the rim C = 1.54 in (second table, measured 2026-11-24, load 9–10 on the 2 cores): the
+//! rim moves R_o by −7.4e-4 … −9.6e-4 R_o (A/D = 1), −1.3e-3 … −1.5e-3 (0.75), −2.6e-3 … −2.8e-3
+//! (0.5); estimates 5.1e-11 … 1.2e-6 R_o (the infinite route's, on the same rows); 4.7–7.2 s of
+//! CPU per row (the infinite route's run included). The FE meshed to C at its default
+//! tolerance lies 1.7e-5 … 9.9e-5 R_o low, within its estimate on all twelve rows
+//! (|FE − H|/est 0.11–0.29); at --tol 1e-6 within 3.9e-7 … 4.6e-6 R_o on eight rows and
+//! within its estimate on all twelve (0.01–0.05), where on four narrow loads ((1, 1.3),
+//! (0.75, 1.3), (0.5, 2.2), (0.5, 1.3)) it stops with estimates 5e-4 … 4.7e-3 R_o.
+//!
 //! Run: `cargo run --release --example 19_two_plate_hankel [rows] [tight]` (rows: how many of
 //! Table 1's, default 12; tight = 1 adds the FE at --tol 1e-6, minutes per row).
 //!

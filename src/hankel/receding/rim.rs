@@ -21,7 +21,7 @@
 //! - S₂: the infinite plate with no load, its bottom prescribed to w = r²/2 (+ a rigid
 //!   translation) on r ≤ c and free beyond, zero net force: the same Fredholm equation with
 //!   the Abel-inverted displacement F(t) = (2G/(π(1−ν)))t² on its right-hand side
-//!   (A[F] = (G/(1−ν)) r²/2), solved as φ₂ = F + ψ with ψ smooth (module `prescribed`);
+//!   (A\[F\] = (G/(1−ν)) r²/2), solved as φ₂ = F + ψ with ψ smooth (module `prescribed`);
 //!   its far-field moment M₂(C) by reciprocity;
 //! - M: the membrane state, which cancels N_∞(C) and touches neither the plane nor R_o.
 //!
@@ -58,7 +58,7 @@
 //! use boltzone::hankel::receding::RecedingParams;
 //! use boltzone::hankel::receding::rim::rim_contact;
 //! let load = FaceLoad::uniform(0.0, 1.0, 1.0)?;
-//! let out = rim_contact(1.0, Material::unit(0.3)?, &load, 12.0, &RecedingParams::default(), 1e-6)?;
+//! let (out, _) = rim_contact(1.0, Material::unit(0.3)?, &load, 12.0, &RecedingParams::default(), 1e-6, &[])?;
 //! assert!(out.converged && out.r_o > 1.0 && out.curvature != 0.0);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
@@ -188,21 +188,9 @@ impl Rim {
 
 /// R_o of two equal plates without a hole, each `d` thick and ending at a free rim
 /// `c_outer`, of `material`, pressed by `load` (module docs); `converged` when the estimate
-/// is within `tolerance`·R_o.
+/// is within `tolerance`·R_o; and the contact pressure q(r) ≥ 0 (compression positive, the
+/// load's units) at each radius of `at` (0 ≤ r; zero beyond R_o): pairs (r, q).
 pub fn rim_contact(
-    d: f64,
-    material: Material,
-    load: &FaceLoad,
-    c_outer: f64,
-    params: &RecedingParams,
-    tolerance: f64,
-) -> Result<RimContact, RecedingError> {
-    rim_contact_pressure(d, material, load, c_outer, params, tolerance, &[]).map(|(out, _)| out)
-}
-
-/// [`rim_contact`] and the contact pressure q(r) ≥ 0 (compression positive, the load's units)
-/// at each radius of `at` (0 ≤ r; zero beyond R_o): pairs (r, q).
-pub fn rim_contact_pressure(
     d: f64,
     material: Material,
     load: &FaceLoad,

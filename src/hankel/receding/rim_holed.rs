@@ -32,8 +32,11 @@
 //!
 //! # Cost
 //!
-//! Two crack solves (with the pressure at 32 radii) per trial radius, about ten trial radii,
-//! and the infinite route first: example 19 times Table 1's column.
+//! Two crack solves (with the pressure at 32 radii) per trial radius, about ten trial radii
+//! and three for the estimate, after the infinite route's own run: 4.7–7.2 s of CPU per
+//! Table 1 row at load 9–10 on the 2 cores (example 19's second table), about 4–5× the
+//! infinite route alone; `two --method hankel --c 1.54 --tol 1e-6` on row 1: 8.7 s wall,
+//! 4.9 s user.
 //!
 //! ```no_run
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
