@@ -172,6 +172,74 @@ fn the_far_field_is_the_kirchhoff_green_function() {
     assert!((kirchhoff + k).abs() < 1e-12 * k.abs());
 }
 
+#[test]
+fn the_far_field_with_a_hole_is_the_kirchhoff_annular_plate() {
+    // A > 0: the Kirchhoff plate A ≤ r < ∞ with a free hole (M_r = Q_r = 0 at A), upward ring
+    // loads f₁ at s₁ and f₂ at s₂ (zero net force), solved as an ODE: w = Σ{1, r², ln r, r² ln r}
+    // per region, r² ln r's coefficient jumping by F/(8πD_f) at a ring of force F (so 0 inside,
+    // free hole), w, w′, w″ continuous at the rings, no r² beyond (no bending at infinity), a
+    // translation fixed: its far field w = c₃ ln r against far_field_log (u_z = −k ln r), whose
+    // k ln r term frees the hole; agreement to rounding of the 7 × 7 solve
+    use nalgebra::{DMatrix, DVector};
+    let (a, d, nu) = (0.1, 0.1, 0.3);
+    let m = Material::new(3.0e7, nu).unwrap();
+    let s = RimStates::new(a, d, m).unwrap();
+    let d_f = m.shear_modulus() * d.powi(3) / (6.0 * (1.0 - nu));
+    let (s1, s2, f1) = (0.2, 0.5, 1.0);
+    let f2 = -f1 * s1 / s2;
+    let b4 = 2.0 * PI * s1 * f1 / (8.0 * PI * d_f);
+    // value, first and second derivative of r², ln r, r² ln r, 1
+    let basis = |r: f64| -> [[f64; 3]; 4] {
+        [
+            [r * r, 2.0 * r, 2.0],
+            [r.ln(), 1.0 / r, -1.0 / (r * r)],
+            [r * r * r.ln(), 2.0 * r * r.ln() + r, 2.0 * r.ln() + 3.0],
+            [1.0, 0.0, 0.0],
+        ]
+    };
+    // unknowns [a₂, a₃, b₁, b₂, b₃, c₁, c₃]
+    let mut mat = DMatrix::<f64>::zeros(7, 7);
+    let mut rhs = DVector::<f64>::zeros(7);
+    let h = basis(a);
+    mat[(0, 0)] = h[0][2] + nu * h[0][1] / a;
+    mat[(0, 1)] = h[1][2] + nu * h[1][1] / a;
+    let (p1, p2) = (basis(s1), basis(s2));
+    for j in 0..3 {
+        // inner − middle at s₁
+        let row = 1 + j;
+        mat[(row, 0)] = p1[0][j];
+        mat[(row, 1)] = p1[1][j];
+        mat[(row, 2)] = -p1[3][j];
+        mat[(row, 3)] = -p1[0][j];
+        mat[(row, 4)] = -p1[1][j];
+        rhs[row] = b4 * p1[2][j];
+        // middle − outer at s₂
+        let row = 4 + j;
+        mat[(row, 2)] = p2[3][j];
+        mat[(row, 3)] = p2[0][j];
+        mat[(row, 4)] = p2[1][j];
+        mat[(row, 5)] = -p2[3][j];
+        mat[(row, 6)] = -p2[1][j];
+        rhs[row] = -b4 * p2[2][j];
+    }
+    let x = mat.lu().solve(&rhs).unwrap();
+    let second = f1 * s1.powi(3) + f2 * s2.powi(3);
+    let log = f1 * s1 * s1.ln() + f2 * s2 * s2.ln();
+    let k = s.far_field_log(second, log);
+    let without_hole = RimStates::new(0.0, d, m)
+        .unwrap()
+        .far_field_log(second, 0.0);
+    println!(
+        "annular Kirchhoff c₃ = {:.12e}, reciprocity −k = {:.12e} (without the hole's term {:.3e})",
+        x[6], -k, -without_hole
+    );
+    assert!((x[6] + k).abs() < 1e-10 * k.abs());
+    assert!(
+        (without_hole - k).abs() > 1e-3 * k.abs(),
+        "the hole's term is not tested"
+    );
+}
+
 /// R_o of the infinite solid plate (the receding solver).
 fn infinite(load: &FaceLoad) -> f64 {
     Layer::new(1.0, Material::unit(0.3).unwrap(), load.clone())
