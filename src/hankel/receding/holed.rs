@@ -82,7 +82,7 @@
 //! first row R_o(C) − R_o(∞) = −2.6503e-4, −6.744e-5, −1.694e-5 in at C = 1.54, 3.08, 6.16 in
 //! (rates 1.97, 1.99; the FE at --tol 1e-4: −2.653e-4, −6.758e-5, −1.671e-5), and at
 //! C = 1.54 in on all twelve rows the FE meshed to C lies within its estimate (example 19's
-//! second table; `tests/hankel/two_plate_rim_hankel.rs`).
+//! second table; `tests/hankel/two_plate_rim_holed.rs`).
 //!
 //! # Cost
 //!

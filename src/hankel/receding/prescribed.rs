@@ -19,8 +19,9 @@
 //!
 //! # Accuracy
 //!
-//! Through the routes that use it: `tests/hankel/two_plate_rim_hankel.rs` (equilibrium of the
-//! pressure, the FE at finite C).
+//! Through the routes that use it: `tests/hankel/two_plate_rim_hankel.rs` and
+//! `tests/hankel/two_plate_rim_holed.rs` (equilibrium of the pressure from q_F's closed form,
+//! the FE meshed to C).
 //!
 //! # Cost
 //!
