@@ -2,7 +2,9 @@
 //! over them is module `holed_search`): the crack field's Fredholm equation with a bottom load,
 //! its traction on the hole at Chebyshev heights, the hole correction's fit, the iteration
 //! l ← s₀ + σ_z^Z (derivation in [`super::holed`], Anderson-accelerated, module `anderson`) and
-//! the contact pressure, with the quadrature helpers they share.
+//! the contact pressure, with the quadrature helpers they share; with a prescribed lift of the
+//! contact zone instead of the load ([`Setup::crack_with`], module `prescribed`) the finite
+//! rim's correction S₂ ([`super::rim_holed`]).
 //!
 //! # Accuracy
 //!
