@@ -1,7 +1,8 @@
-//! Table 1's two-plate column (C = ∞) by the semi-analytic route with the hole
+//! Table 1's two-plate column (C = ∞, and the report's C = 1.54 in by the rim's bending
+//! correction, [`rim_table`]) by the semi-analytic route with the hole
 //! ([`boltzone::hankel::receding::holed`]) beside the finite elements (default tolerance and,
-//! in the full run, 1e-6) and the report's values (its own FE, at C = 1.54 in: not the same
-//! plate, shown for scale); and the FE's R_o error level by level
+//! in the full run, 1e-6; meshed to C for the second table) and the report's values (its own
+//! FE, at C = 1.54 in); and the FE's R_o error level by level
 //! against this route, with its observed rate — the convergence study the FE never had.
 //!
 //! **Problem.** Two equal plates D thick, hole A = 0.1, uniform pressure on A ≤ r ≤ B,
@@ -35,6 +36,15 @@
 //! outer cut, not its mesh; |FE − H| (2.9e-6, 4.7e-6) is within its estimate (4.3e-6, 5.1e-6).
 //! t is wall-clock, cpu the CPU of all threads (state the load beside them).
 //!
+//! With the rim C = 1.54 in (second table, measured 2026-11-24, load 9–10 on the 2 cores): the
+//! rim moves R_o by −7.4e-4 … −9.6e-4 R_o (A/D = 1), −1.3e-3 … −1.5e-3 (0.75), −2.6e-3 … −2.8e-3
+//! (0.5); estimates 5.1e-11 … 1.2e-6 R_o (the infinite route's, on the same rows); 4.7–7.2 s of
+//! CPU per row (the infinite route's run included). The FE meshed to C at its default
+//! tolerance lies 1.7e-5 … 9.9e-5 R_o low, within its estimate on all twelve rows
+//! (|FE − H|/est 0.11–0.29); at --tol 1e-6 within 3.9e-7 … 4.6e-6 R_o on eight rows and
+//! within its estimate on all twelve (0.01–0.05), where on four narrow loads ((1, 1.3),
+//! (0.75, 1.3), (0.5, 2.2), (0.5, 1.3)) it stops with estimates 5e-4 … 4.7e-3 R_o.
+//!
 //! Run: `cargo run --release --example 19_two_plate_hankel [rows] [tight]` (rows: how many of
 //! Table 1's, default 12; tight = 1 adds the FE at --tol 1e-6, minutes per row).
 //!
@@ -52,12 +62,14 @@ const A: f64 = boltzone::reference::TABLE1_HOLE_RADIUS;
 pub fn main() -> anyhow::Result<()> {
     if std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1") {
         run(1, false)?;
+        rim_table(1, false)?;
         return Ok(());
     }
     let mut args = std::env::args().skip(1);
     let rows: usize = args.next().map(|s| s.parse()).transpose()?.unwrap_or(12);
     let tight = args.next().is_some_and(|s| s == "1");
     run(rows, tight)?;
+    rim_table(rows, tight)?;
     Ok(())
 }
 
@@ -247,4 +259,91 @@ pub fn run(rows: usize, tight: bool) -> anyhow::Result<Vec<Row>> {
         println!("{line}");
     }
     Ok(out)
+}
+
+/// The report's outer radius (inches).
+const C: f64 = 1.54;
+
+/// Table 1's two-plate column with the report's rim C = 1.54 in (C/A = 15.4): this route with
+/// the rim's bending correction (`hankel::receding::rim_holed`) beside its C = ∞, the FE meshed
+/// to C (default tolerance and, with `tight`, 1e-6) and the report's values. Fails if the FE at
+/// its default tolerance is not within its estimate plus this route's of this route's R_o.
+pub fn rim_table(rows: usize, tight: bool) -> anyhow::Result<()> {
+    println!(
+        "\nTable 1, two plates, C = {C} in: R_o/A by the Hankel route with the rim (estimate \
+         relative to R_o; minus its C = ∞ relative to R_o), the FE meshed to C (default \
+         tolerance{}) and the report; cpu: CPU seconds of all threads",
+        if tight { " and 1e-6" } else { "" }
+    );
+    println!(
+        "{:>5} {:>5} {:>6} | {:>14} {:>8} {:>10} {:>7} | {:>11} {:>8} {:>10} {:>9}{}",
+        "A/D",
+        "B/A",
+        "report",
+        "Hankel R_o/A",
+        "est",
+        "(C−∞)/R_o",
+        "cpu [s]",
+        "FE R_o/A",
+        "est",
+        "(FE−H)/R_o",
+        "|FE−H|/est",
+        if tight {
+            "  | FE 1e-6 R_o/A      est (FE−H)/R_o |FE−H|/est"
+        } else {
+            ""
+        }
+    );
+    for row in boltzone::reference::table1().iter().take(rows) {
+        let (ad, ba, report) = (row.a_over_d, row.b_over_a, row.two);
+        let load = FaceLoad::uniform(A, A * ba, 1.0)?;
+        let mat = Material::new(3.0e7, 0.3)?;
+        let plate = SinglePlate::new(A, OuterRadius::Finite(C), A / ad, mat, load)?;
+        let (h, cpu) = cpu_timed(|| two_plate_hole(&plate, &HoledParams::default()));
+        let h = h?;
+        let inf = h.info.rim.map_or(f64::NAN, |r| r.r_o_infinite);
+        let fe_at = |tolerance: f64| -> anyhow::Result<TwoPlateSolution> {
+            let joint = Joint::symmetric(A, A * ba, A / ad, mat)?
+                .with_outer_radius(OuterRadius::Finite(C))?;
+            let params = TwoPlateParams {
+                tolerance,
+                ..TwoPlateParams::default()
+            };
+            Ok(solve(&joint, &params)?)
+        };
+        let f = fe_at(TwoPlateParams::default().tolerance)?;
+        let rel = |x: f64| x / h.r_o;
+        let mut line = format!(
+            "{ad:>5} {ba:>5} {report:>6} | {:>14.10} {:>8.1e} {:>+10.3e} {:>7.2} | {:>11.7} {:>8.1e} {:>+10.1e} {:>9.2}",
+            h.r_o / A,
+            rel(h.info.r_o_error),
+            rel(h.r_o - inf),
+            cpu,
+            f.r_o / A,
+            rel(f.r_o_error),
+            rel(f.r_o - h.r_o),
+            (f.r_o - h.r_o).abs() / f.r_o_error
+        );
+        if tight {
+            let t = fe_at(1e-6)?;
+            line += &format!(
+                "  | {:>11.8} {:>8.1e} {:>+10.1e} {:>9.2}",
+                t.r_o / A,
+                rel(t.r_o_error),
+                rel(t.r_o - h.r_o),
+                (t.r_o - h.r_o).abs() / t.r_o_error
+            );
+        }
+        println!("{line}");
+        if (f.r_o - h.r_o).abs() > f.r_o_error + h.info.r_o_error {
+            anyhow::bail!(
+                "row ({ad}, {ba}), C = {C}: FE {} ± {} and Hankel {} ± {} disagree",
+                f.r_o,
+                f.r_o_error,
+                h.r_o,
+                h.info.r_o_error
+            );
+        }
+    }
+    Ok(())
 }

@@ -1,6 +1,7 @@
 //! `boltzone two --method hankel|auto`: the two-plate model with the hole by the semi-analytic
 //! route ([`boltzone::hankel::receding::holed`]): equal plates, frictionless (exact for equal
-//! plates), infinite, pressed by a pressure profile; R_o with its error estimate, and with
+//! plates), infinite or with a free rim --c (beyond B + D: the rim's bending correction of
+//! `hankel::receding::rim_holed`), pressed by a pressure profile; R_o with its error estimate, and with
 //! `--curve` the interface pressure on A ≤ r ≤ R_o in the FE's CSV layout.
 //!
 //! # Accuracy
@@ -56,7 +57,17 @@ pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> 
         ));
     }
     if let Some(c) = args.c {
-        return Some(("--c", c.to_string(), why));
+        if g.a <= 0.0 {
+            return Some(("--c", c.to_string(), why));
+        }
+        if c <= g.b + g.d {
+            return Some((
+                "--c",
+                c.to_string(),
+                "must exceed --b by more than --d for the Hankel route's finite rim (its rim \
+                 residue decays over C - R_o); use --method fem",
+            ));
+        }
     }
     if let Some(n) = args.nut_displacement {
         return Some(("--nut-displacement", n.to_string(), why));
@@ -78,7 +89,7 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
     let g = &args.geom;
     let plate = SinglePlate::new(
         g.a,
-        OuterRadius::Infinite,
+        args.c.map_or(OuterRadius::Infinite, OuterRadius::Finite),
         g.d,
         Material::new(args.e(), g.nu)?,
         load,
@@ -143,6 +154,15 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
             out.info.solves,
             out.info.seconds
         );
+        if let Some(rim) = out.info.rim {
+            println!(
+                "rim C = {} {l}: R_o - R_o(C = inf) = {:+.4e} {l} (bending correction; its \
+                 self-equilibrated residue bounded by {:.1e} {l}, included)",
+                sig(rim.outer_radius, 10),
+                out.r_o - rim.r_o_infinite,
+                rim.decay_bound
+            );
+        }
     }
     Ok(Status::from_converged(converged))
 }

@@ -1,6 +1,7 @@
 //! The two-plate model by the semi-analytic route with the hole
-//! ([`crate::hankel::receding::holed`]) for a scene: where it applies (two equal, infinite
-//! plates with a hole, pressed by a pressure; R_o and the interface pressure only), what keeps
+//! ([`crate::hankel::receding::holed`]) for a scene: where it applies (two equal plates with a
+//! hole, infinite or with a rim C beyond B + D, pressed by a pressure; R_o and the interface
+//! pressure only), what keeps
 //! a scene from it (the first blocking key), and its answer in the scene's units.
 //!
 //! `method = "hankel"` asks for it; `method = "auto"` takes it, as `boltzone two --method auto`
@@ -35,7 +36,7 @@ use super::error::SceneError;
 use super::file::{Model, Scene};
 use super::solution::{InterfaceCurve, Solution};
 use crate::hankel::receding::holed::{two_plate_hole_pressure, HoledParams};
-use crate::joint::{Joint, OuterRadius};
+use crate::joint::Joint;
 
 /// `method = "auto"` (and `two --method auto`) takes this route only below this tolerance:
 /// above it the FE is several times faster and its estimate held on Table 1 and on a 10 × 10 grid
@@ -69,9 +70,11 @@ pub fn blocker(scene: &Scene) -> Option<(&'static str, &'static str)> {
             "the route needs a hole (without one the receding-contact solution applies)",
         ),
         (
-            scene.joint.outer_radius.is_some(),
+            scene.joint.outer_radius.is_some_and(|c| {
+                c <= scene.load.outer_radius + scene.plates.first().map_or(0.0, |p| p.thickness)
+            }),
             "joint.outer_radius",
-            "the route solves infinite plates (omit outer_radius)",
+            "the route's finite rim needs C beyond B by more than D (or omit outer_radius)",
         ),
         (
             scene.load.nut_displacement.is_some(),
@@ -113,11 +116,10 @@ pub fn solve(
 ) -> Result<(), SceneError> {
     let plate = joint
         .single_plate_substitute()
-        .filter(|p| p.outer_radius() == OuterRadius::Infinite)
         .ok_or_else(|| SceneError::Invalid {
             key: "plates".into(),
             line: 1,
-            reason: "the Hankel route needs two equal infinite plates".into(),
+            reason: "the Hankel route needs two equal plates".into(),
         })?;
     let at: Vec<f64> = if scene.outputs.interface_pressure.is_some() {
         (0..=CURVE_POINTS)

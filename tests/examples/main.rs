@@ -210,6 +210,8 @@ fn ex19_two_plate_hankel() {
     let rows = ex19::run(1, false).unwrap();
     assert_eq!(rows.len(), 1);
     assert!(rows[0].hankel.info.r_o_error < 1e-8 * rows[0].hankel.r_o);
+    // and with the report's rim C = 1.54 in against the FE meshed to C (fails itself likewise)
+    ex19::rim_table(1, false).unwrap();
 }
 
 #[allow(dead_code)]

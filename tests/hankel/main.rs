@@ -26,3 +26,5 @@ mod two_plate_hole;
 mod two_plate_hole_fast;
 mod two_plate_hole_pressure;
 mod two_plate_rim;
+mod two_plate_rim_hankel;
+mod two_plate_rim_holed;

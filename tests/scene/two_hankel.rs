@@ -74,14 +74,17 @@ fn auto_takes_the_route_only_below_3e_5_where_it_applies() {
     let pick = |text: &str| boltzone::scene::run::pick(&Scene::parse(text).unwrap()).0;
     assert_eq!(pick(&scene("auto", 1e-6, "")), Method::Hankel);
     assert_eq!(pick(&scene("auto", 1e-4, "")), Method::Fem);
+    // a finite rim beyond B + D takes the route (its rim correction); one within D does not
     let finite = scene("auto", 1e-6, "[joint]\nouter_radius = 1.54\n");
-    assert_eq!(pick(&finite), Method::Fem);
+    assert_eq!(pick(&finite), Method::Hankel);
+    let close = scene("auto", 1e-6, "[joint]\nouter_radius = 0.35\n");
+    assert_eq!(pick(&close), Method::Fem);
 }
 
 #[test]
 fn keys_that_keep_a_scene_from_the_route_are_named_with_their_line() {
     for (extra, key) in [
-        ("[joint]\nouter_radius = 1.54\n", "joint.outer_radius"),
+        ("[joint]\nouter_radius = 0.35\n", "joint.outer_radius"),
         ("[outputs]\nfield = \"f.vtu\"\n", "outputs.field"),
         (
             "[[plates]]\nthickness = 0.2\nmaterial = { E = 2e11, nu = 0.3 }\n",

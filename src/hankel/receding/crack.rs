@@ -2,7 +2,9 @@
 //! over them is module `holed_search`): the crack field's Fredholm equation with a bottom load,
 //! its traction on the hole at Chebyshev heights, the hole correction's fit, the iteration
 //! l ← s₀ + σ_z^Z (derivation in [`super::holed`], Anderson-accelerated, module `anderson`) and
-//! the contact pressure, with the quadrature helpers they share.
+//! the contact pressure, with the quadrature helpers they share; with a prescribed lift of the
+//! contact zone instead of the load ([`Setup::crack_with`], module `prescribed`) the finite
+//! rim's correction S₂ ([`super::rim_holed`]).
 //!
 //! # Accuracy
 //!
@@ -23,6 +25,7 @@ use super::endpoint::Endpoint;
 use super::grid::{dot, PanelGrid, PanelInterp};
 use super::holed_params::HoledParams;
 use super::holed_setup::{Crack, Setup};
+use super::prescribed::Prescribed;
 use super::system::{cos_m1, panels, Nystrom, XiRule};
 use crate::hankel::hole::fit::{fit, Boundary, Fit, HoleData};
 use crate::hankel::transform::LoadTransform;
@@ -52,6 +55,20 @@ impl Setup {
         params: &HoledParams,
         radii: &[f64],
         start: Option<&Fit>,
+    ) -> Result<Crack, RecedingError> {
+        self.crack_with(c, n, params, radii, start, None)
+    }
+
+    /// [`Self::crack`], or with `lift` the unloaded plate (no bilateral part) whose bottom is
+    /// lifted by `lift` on the contact zone: the rim's S₂ ([`super::rim_holed`]).
+    pub(super) fn crack_with(
+        &self,
+        c: f64,
+        n: usize,
+        params: &HoledParams,
+        radii: &[f64],
+        start: Option<&Fit>,
+        lift: Option<&Prescribed>,
     ) -> Result<Crack, RecedingError> {
         let d = self.d;
         let zero = LoadTransform::new(&FaceLoad::uniform(0.0, c, 0.0)?);
@@ -98,9 +115,20 @@ impl Setup {
                 self.slab_sigma_z(s) + self.bilateral.modes_midplane(s) + corner
             })
             .collect();
+        // the lifted plate carries no load: no bilateral part, and the lift's Abel function F
+        // joins φ as a known part (module `prescribed`)
+        let s0 = if lift.is_some() {
+            vec![0.0; s0.len()]
+        } else {
+            s0
+        };
+        let f_rule = lift.map(|f| f.transforms(&xi_r, c));
+        let (f_total, f_edge) = lift.map_or((0.0, 0.0), |f| (f.integral(c), f.value(c)));
         // t-grid on [0, c]: panels resolving cos ξt up to the hole rule's end, and on the last
         // δ = min(c/2, D/2) t = c − u² (H_l ~ √(c − t) becomes smooth)
         let hole = self.hole_rule(c);
+        let f_hole =
+            lift.map(|f| f.transforms(&hole.xi.iter().map(|h| h.0).collect::<Vec<_>>(), c));
         let xi_h = hole.xi.last().map_or(0.0, |x| x.0);
         let delta = (0.5 * c).min(0.5 * d);
         let su = delta.sqrt();
@@ -251,9 +279,14 @@ impl Setup {
                 };
                 alpha[k] = -a_r[k] * (lbar + hc);
                 beta[k] = -b_r[k] * (ltil + hv);
+                if let Some(f) = &f_rule {
+                    alpha[k] -= a_r[k] * f[k].0;
+                    beta[k] -= b_r[k] * f[k].1;
+                }
             }
-            let sys = Nystrom::solve_general(rule.clone(), c, n, -l0 - hl_total, &alpha, &beta)
-                .ok_or(RecedingError::Singular { c })?;
+            let sys =
+                Nystrom::solve_general(rule.clone(), c, n, -l0 - hl_total - f_total, &alpha, &beta)
+                    .ok_or(RecedingError::Singular { c })?;
             let (c0, g, h) = sys.series();
             // φ = ψ + H_l, ψ(t) = C₀ + Σ_k [g_k (cos ξ_k t − 1) − h_k cos ξ_k t]
             let mut phi: Vec<f64> = hl.iter().map(|h| c0 + h).collect();
@@ -263,7 +296,7 @@ impl Setup {
                 }
             }
             let wphi: Vec<f64> = t_rule.iter().zip(&phi).map(|(&(_, w), p)| w * p).collect();
-            let edge = sys.phi(c) + dot(&h_edge, &l);
+            let edge = sys.phi(c) + dot(&h_edge, &l) + f_edge;
             out.edge = edge / scale;
             out.iterations = it;
             // the crack field's bottom load b = q + l, b̃(ξ) = b̄(ξ) − b̄(0), on the hole rule
@@ -280,7 +313,7 @@ impl Setup {
                             tail.transform(xi, j0, j1) - l0
                         }
                     };
-                    q + lt
+                    q + lt + f_hole.as_ref().map_or(0.0, |f| f[k].1)
                 })
                 .collect();
             let nz = self.z_cheb.len();
@@ -342,7 +375,7 @@ impl Setup {
         if let Some((sys, l, used)) = state.filter(|_| !radii.is_empty()) {
             out.pressure = radii
                 .iter()
-                .map(|&r| self.pressure_at(r, &sys, &l, &lint, used.as_ref()))
+                .map(|&r| self.pressure_at(r, &sys, &l, &lint, used.as_ref(), lift))
                 .collect();
         }
         Ok(out)
@@ -362,6 +395,7 @@ impl Setup {
         l: &[f64],
         lint: &PanelInterp,
         fit: Option<&Fit>,
+        lift: Option<&Prescribed>,
     ) -> f64 {
         let c = sys.radius();
         if r >= c {
@@ -394,7 +428,10 @@ impl Setup {
                 .sum();
             m + corner.iter().zip(&f.extra).map(|(b, x)| b * x).sum::<f64>()
         });
-        sys.pressure(r, self.d) + q_h - (self.s0(r) + z)
+        match lift {
+            Some(f) => sys.pressure(r, self.d) + q_h - z + f.pressure(r, c),
+            None => sys.pressure(r, self.d) + q_h - (self.s0(r) + z),
+        }
     }
 
     /// The correction cancelling `data` on the hole (collocation on every other height).

@@ -77,6 +77,13 @@
 //! their estimates 3.8e-10 … 1.3e-6 R_o (over 1e-6, honestly not converged, on (0.5, 1.3) only);
 //! Anderson moves R_o by ≤ 3.7e-13 R_o (same file).
 //!
+//! **Finite rim C** (module `rim_holed`: the infinite plate plus the rim's bending correction,
+//! which the FE meshed to C measured as ∝ C⁻², `tests/hankel/two_plate_rim.rs`): on Table 1's
+//! first row R_o(C) − R_o(∞) = −2.6503e-4, −6.744e-5, −1.694e-5 in at C = 1.54, 3.08, 6.16 in
+//! (rates 1.97, 1.99; the FE at --tol 1e-4: −2.653e-4, −6.758e-5, −1.671e-5), and at
+//! C = 1.54 in on all twelve rows the FE meshed to C lies within its estimate (example 19's
+//! second table; `tests/hankel/two_plate_rim_holed.rs`).
+//!
 //! # Cost
 //!
 //! Measured 2026-11-24 on all twelve Table 1 rows with `boltzone two --method hankel --tol 1e-6`
@@ -157,6 +164,9 @@ pub struct HoledInfo {
     pub solves: usize,
     /// Wall-clock seconds.
     pub seconds: f64,
+    /// With a finite outer radius C: the rim's terms (module `rim_holed`); `None` for C = ∞.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rim: Option<super::rim_holed::RimRecord>,
 }
 
 /// R_o and its record.
@@ -169,7 +179,8 @@ pub struct HoledContact {
 }
 
 /// R_o of two equal plates with a hole on a frictionless interface: `plate` is the single plate
-/// of the reflected picture (its half-thickness is one plate's thickness D). See the module docs.
+/// of the reflected picture (its half-thickness is one plate's thickness D). See the module docs;
+/// a finite outer radius C adds the rim's terms (module `rim_holed`), C = ∞ is unchanged.
 pub fn two_plate_hole(
     plate: &SinglePlate,
     params: &HoledParams,
@@ -192,6 +203,9 @@ pub fn two_plate_hole_pressure(
         }
         .into());
     }
+    if let crate::joint::OuterRadius::Finite(c) = plate.outer_radius() {
+        return super::rim_holed::finite_rim(plate, c, params, at);
+    }
     let start = Instant::now();
     let setup = Setup::new(plate, params)?;
     let b = plate.load().outer();
@@ -213,6 +227,7 @@ pub fn two_plate_hole_pressure(
         search_iterations: found.iterations,
         solves: 0,
         seconds: 0.0,
+        rim: None,
     };
     let mut solves = found.solves;
     if params.estimate {

@@ -9,6 +9,8 @@
 //! - [`layer_field`]: the layer's stresses at any height under a bottom (or top) pressure;
 //! - [`holed`]: the two-plate model with the hole (bilateral holed plate + crack field + its
 //!   hole correction, iterated); `crack`: one trial contact radius of it;
+//! - [`rim_bending`]: the exact non-decaying states (membrane, bending) and the far field by
+//!   reciprocity; [`rim`]: the finite rim r = C of the plate without a hole;
 //! - [`grid`]: cosine and J₀ rows over equal Gauss panels, the holed route's tables;
 //! - [`contact`]: the solver ([`Layer::receding_contact`]) and its results (derivation,
 //!   accuracy and cost there).
@@ -46,6 +48,10 @@ mod holed_setup;
 pub mod layer;
 pub mod layer_field;
 pub mod pair;
+mod prescribed;
+pub mod rim;
+pub mod rim_bending;
+pub mod rim_holed;
 mod search;
 mod system;
 
