@@ -91,6 +91,7 @@
 //! ```
 
 pub mod corner;
+mod corner_midplane;
 pub mod corner_quad;
 pub mod eigen;
 pub mod fit;
