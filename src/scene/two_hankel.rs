@@ -35,6 +35,7 @@ use super::error::SceneError;
 use super::file::{Model, Scene};
 use super::solution::{InterfaceCurve, Solution};
 use crate::hankel::receding::holed::{two_plate_hole_pressure, HoledParams};
+use crate::hankel::receding::MAX_B_OVER_D;
 use crate::joint::{Joint, OuterRadius};
 
 /// `method = "auto"` (and `two --method auto`) takes this route only below this tolerance:
@@ -72,6 +73,15 @@ pub fn blocker(scene: &Scene) -> Option<(&'static str, &'static str)> {
             scene.joint.outer_radius.is_some(),
             "joint.outer_radius",
             "the route solves infinite plates (omit outer_radius)",
+        ),
+        (
+            scene
+                .plates
+                .first()
+                .is_some_and(|p| scene.load.outer_radius > MAX_B_OVER_D * p.thickness),
+            "load.outer_radius",
+            "the route takes loads up to 16 plate thicknesses wide (its cost grows like (B/D)²: \
+             4.7 s and 0.6 GB at 16)",
         ),
         (
             scene.load.nut_displacement.is_some(),

@@ -25,4 +25,5 @@ mod transform;
 mod two_plate_hole;
 mod two_plate_hole_fast;
 mod two_plate_hole_pressure;
+mod two_plate_hole_reach;
 mod two_plate_rim;

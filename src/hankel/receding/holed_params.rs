@@ -19,6 +19,14 @@
 
 use crate::hankel::hole::HoleParams;
 
+/// Widest load B/D (load's outer radius over one plate's thickness) that the route takes: its
+/// cost grows like (B/D)² (measured on A = D, release: 1.8 s and 0.2 GB at B/D = 8, 4.7 s and
+/// 0.6 GB at 16, 18 s and 2.0 GB at 32; the 10⁴ fuzz of `tests/cli/fuzz.rs` had runs over 30 s
+/// from B/D = 42). Wider loads are refused by the entry point as bad input naming the ratio
+/// (`tests/hankel/two_plate_hole_reach.rs`); `two --method auto` and a scene's `method = "auto"`
+/// take the finite elements there.
+pub const MAX_B_OVER_D: f64 = 16.0;
+
 /// Knobs of [`two_plate_hole`](super::holed::two_plate_hole).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HoledParams {

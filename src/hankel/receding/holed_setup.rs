@@ -127,6 +127,16 @@ impl Setup {
             }
             .into());
         }
+        let b_over_d = plate.load().outer() / d;
+        if b_over_d > super::holed_params::MAX_B_OVER_D {
+            return Err(InputError::Parameter {
+                field: "load outer radius over plate thickness B/D",
+                value: b_over_d,
+                reason: "at most 16 for the holed two-plate route (its cost grows like (B/D)²: \
+                         4.7 s and 0.6 GB at 16); use the finite elements",
+            }
+            .into());
+        }
         if params.heights < 4 || params.heights % 2 == 1 || params.heights > 128 {
             return Err(InputError::Parameter {
                 field: "Chebyshev heights",
