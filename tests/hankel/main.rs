@@ -26,4 +26,5 @@ mod two_plate_hole;
 mod two_plate_hole_fast;
 mod two_plate_hole_pressure;
 mod two_plate_hole_reach;
+mod two_plate_hole_tiers;
 mod two_plate_rim;

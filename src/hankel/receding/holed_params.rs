@@ -33,7 +33,8 @@ pub struct HoledParams {
     /// The hole correction: modes N (`terms`, default 16 here) and corner terms, for both the
     /// bilateral plate and the crack field's correction.
     pub hole: HoleParams,
-    /// Nyström points on [0, c] (default 24).
+    /// Nyström points on [0, c] (default 24) for loads out to B = 3.5D, proportionally more
+    /// for wider ones.
     pub nodes: usize,
     /// Chebyshev heights on [−D, D] at which the crack field's hole traction is integrated
     /// (default 18; even).
@@ -94,26 +95,50 @@ impl Default for HoledParams {
 
 impl HoledParams {
     /// Knobs for R_o to a relative tolerance `tol`, the estimate covering every knob but the
-    /// tail: for `tol` ≥ 1e-6, 16 Nyström points, ξ_l = 28/D, a tail of 12D (l ~ e^(−2.1(r−c)/D):
-    /// 10D moved R_o by 1.5e-9 R_o on Table 1 row 1, 12D by ~2e-11), root and iteration
-    /// tolerances 1e-9 (of D; of p̄(0)/c), and the estimate's coarse variant also at 2/3 of ξ_l;
-    /// tighter, the defaults with ξ_l varied as well. Checked against a run finer in every knob
-    /// by `tests/hankel/two_plate_hole_fast.rs`.
+    /// tail and the hole rule's end, the coarse variant also at 2/3 of ξ_l. Tighter than 1e-6,
+    /// the defaults; from 1e-6 (up to 1e-5), 16 Nyström points, ξ_l = 28/D, a tail of 12D
+    /// (l ~ e^(−2.1(r−c)/D): 10D moved R_o by 1.5e-9 R_o on Table 1 row 1, 12D by ~2e-11), root
+    /// and iteration tolerances 1e-9 (of D; of p̄(0)/c). Looser, one tier per decade, each
+    /// chosen by its run on Table 1's twelve rows (ν = 0.3; largest estimate there, error
+    /// against ξ_l = 70/D and the defaults, CPU per row at load ≈ 3):
+    ///
+    /// | from | nodes | heights | modes | ξ_l·D | tail/D | root, iteration | `hole_decay` | estimate | error | CPU |
+    /// |------|-------|---------|-------|-------|--------|-----------------|--------------|----------|-------|-----|
+    /// | 1e-5 | 10 | 16 | 12 | 18 | 9 | 1e-7 | 10 | 6.9e-7 | 9.0e-8 | 0.31–0.47 s |
+    /// | 1e-4 | 8 | 12 | 8 | 12 | 7 | 1e-5 | 8 | 2.7e-5 | 2.1e-6 | 0.19–0.32 s |
+    /// | 1e-3 | 6 | 10 | 6 | 10 | 6 | 1e-4 | 8 | 2.0e-4 | 5.7e-5 | 0.16–0.30 s |
+    ///
+    /// (1e-6: 1.3e-6, 1.0e-8, 0.55–0.82 s.) The estimate's honesty over random geometries:
+    /// `tests/hankel/two_plate_hole_tiers.rs`.
     pub fn for_tolerance(tol: f64) -> Self {
         let base = Self {
             vary_xi_l: true,
             ..Self::default()
         };
-        if tol < 1e-6 {
-            return base;
-        }
-        Self {
-            nodes: 16,
-            rel_tol: 1e-9,
-            iteration_tol: 1e-9,
-            xi_l: 28.0,
-            tail: 12.0,
-            ..base
+        // (from tol, nodes, heights, modes, ξ_l·D, tail/D, root and iteration tolerance,
+        // hole_decay), loosest first
+        let tiers: [(f64, usize, usize, usize, f64, f64, f64, f64); 4] = [
+            (1e-3, 6, 10, 6, 10.0, 6.0, 1e-4, 8.0),
+            (1e-4, 8, 12, 8, 12.0, 7.0, 1e-5, 8.0),
+            (1e-5, 10, 16, 12, 18.0, 9.0, 1e-7, 10.0),
+            (1e-6, 16, 18, 16, 28.0, 12.0, 1e-9, 13.0),
+        ];
+        match tiers.iter().find(|t| tol >= t.0) {
+            None => base,
+            Some(&(_, nodes, heights, modes, xi_l, tail, root, hole_decay)) => Self {
+                hole: HoleParams {
+                    terms: Some(modes),
+                    ..base.hole
+                },
+                nodes,
+                heights,
+                rel_tol: root,
+                iteration_tol: root,
+                xi_l,
+                tail,
+                hole_decay,
+                ..base
+            },
         }
     }
 }

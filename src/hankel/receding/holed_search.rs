@@ -51,7 +51,8 @@ pub(super) struct Found {
 }
 
 impl Setup {
-    /// R_o with `n` Nyström points (bracketing `near` first) and the contact pressure at
+    /// R_o with `n` Nyström points ([`Setup::nodes_for`]: more for wide loads; bracketing
+    /// `near` first) and the contact pressure at
     /// r = A + x(R_o − A) for x in `at`.
     pub(super) fn search(
         &self,
@@ -61,6 +62,7 @@ impl Setup {
         near: Option<f64>,
         at: &[f64],
     ) -> Result<Found, RecedingError> {
+        let n = self.nodes_for(n);
         let mut seen: Vec<(f64, Crack)> = Vec::new();
         // each radius starts from the correction of the nearest one solved before
         let nearest = |seen: &[(f64, Crack)], c: f64| -> Option<Fit> {
@@ -162,7 +164,8 @@ pub(super) fn estimate(
         None => {
             let h = 1e-3 * setup.d;
             let warm = found.last.fit.as_ref();
-            let up = setup.crack(r_o + h, params.nodes, params, &[], warm)?.edge;
+            let n = setup.nodes_for(params.nodes);
+            let up = setup.crack(r_o + h, n, params, &[], warm)?.edge;
             ((up - found.last.edge) / h, 1)
         }
     };
@@ -170,7 +173,13 @@ pub(super) fn estimate(
     // half-terms one has other modes and starts from none
     let variant = |setup: &Setup, p: &HoledParams| -> Result<(f64, usize), RecedingError> {
         let step = -setup
-            .crack(r_o, p.nodes, p, &[], found.last.fit.as_ref())?
+            .crack(
+                r_o,
+                setup.nodes_for(p.nodes),
+                p,
+                &[],
+                found.last.fit.as_ref(),
+            )?
             .edge
             / slope;
         if step.is_finite() && step.abs() < 0.01 * setup.d {
