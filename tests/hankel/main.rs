@@ -16,6 +16,7 @@ mod hole_profile;
 mod pair_cli;
 mod receding_contact;
 mod receding_grid;
+mod receding_grid_j0;
 mod receding_kernels;
 mod receding_pair;
 mod separation;
