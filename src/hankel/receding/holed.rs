@@ -116,6 +116,18 @@
 //! grid study against the FE at 1e-4 (`tests/hankel/grid_study.rs`) the same ratios (median
 //! 0.02, max 0.08) in 146 s instead of 218 s.
 //!
+//! Cost that follows the tolerance: [`HoledParams::for_tolerance`] has tiers from 1e-3, 1e-4,
+//! 1e-5 (fewer nodes, heights, modes, a lower ξ_l, a shorter tail, looser root and iteration
+//! tolerances), and J₀ below 25 comes from a table ([`super::grid`]). All twelve Table 1 rows
+//! by `boltzone two --method hankel --tol T`, this branch's binary and main's by turns in one
+//! session (CPU user + sys, load 4–7): T = 1e-3 0.14–0.22 s per row against 0.65–1.02 s (4.3×
+//! in total), 1e-4 0.16–0.27 s (3.4×), 1e-5 0.29–0.55 s (1.9×), 1e-6 0.51–0.82 s against
+//! 0.61–0.90 s (1.15×, R_o moved ≤ 6.3e-12 R_o, the same estimates); 7–9 trial radii at 1e-3.
+//! Every row converged at 1e-3 … 1e-5 (estimates ≤ 2.0e-4, 2.7e-5, 6.9e-7 R_o), within its
+//! estimate of main's R_o. The issue's 10 ms is still 14× off at 1e-3: per radius the tables
+//! of l's transform and the Nyström and hole rules, once per geometry the bilateral plate,
+//! the midplane curve and the corner table (about a third at the loose tiers).
+//!
 //! ```no_run
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 //! use boltzone::hankel::receding::holed::{two_plate_hole, HoledParams};

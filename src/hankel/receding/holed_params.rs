@@ -5,7 +5,8 @@
 //!
 //! What each knob buys is measured in [`super::holed`]'s docs; the knobs for 1e-6 against a run
 //! finer in every knob: `tests/hankel/two_plate_hole_fast.rs`
-//! (`knobs_for_1e6_are_within_their_estimate_of_a_finer_run`).
+//! (`knobs_for_1e6_are_within_their_estimate_of_a_finer_run`); every tier against a run at
+//! 1e-9 on random geometries: `tests/hankel/two_plate_hole_tiers.rs`.
 //!
 //! # Cost
 //!
