@@ -100,33 +100,26 @@ impl HoledParams {
     /// the defaults; from 1e-6 (up to 1e-5), 16 Nyström points, ξ_l = 28/D, a tail of 12D
     /// (l ~ e^(−2.1(r−c)/D): 10D moved R_o by 1.5e-9 R_o on Table 1 row 1, 12D by ~2e-11), root
     /// and iteration tolerances 1e-9 (of D; of p̄(0)/c). Looser, one tier per decade, each
-    /// chosen by its run on Table 1's twelve rows (ν = 0.3; largest estimate there, error
-    /// against ξ_l = 70/D and the defaults, CPU per row at load ≈ 3):
+    /// chosen by its run on Table 1's twelve rows (ν = 0.3; largest estimate there relative to
+    /// R_o, largest error against the defaults at ξ_l = 70/D, CPU per row of `boltzone two
+    /// --method hankel`, load 4–7):
     ///
     /// | from | nodes | heights | modes | ξ_l·D | tail/D | root, iteration | `hole_decay` | estimate | error | CPU |
     /// |------|-------|---------|-------|-------|--------|-----------------|--------------|----------|-------|-----|
-    /// | 1e-5 | 10 | 16 | 12 | 18 | 9 | 1e-7 | 10 | 6.9e-7 | 9.0e-8 | 0.31–0.47 s |
-    /// | 1e-4 | 8 | 12 | 8 | 12 | 7 | 1e-5 | 8 | 2.7e-5 | 2.1e-6 | 0.19–0.32 s |
-    /// | 1e-3 | 6 | 10 | 6 | 10 | 6 | 1e-4 | 8 | 2.0e-4 | 5.7e-5 | 0.16–0.30 s |
+    /// | 1e-5 | 10 | 16 | 12 | 18 | 9 | 1e-7 | 10 | 6.9e-7 | 9.0e-8 | 0.29–0.55 s |
+    /// | 1e-4 | 8 | 12 | 8 | 12 | 7 | 1e-5 | 8 | 2.7e-5 | 2.1e-6 | 0.16–0.27 s |
+    /// | 1e-3 | 6 | 10 | 6 | 10 | 6 | 1e-4 | 8 | 2.0e-4 | 5.7e-5 | 0.14–0.22 s |
     ///
-    /// (1e-6: 1.3e-6, 1.0e-8, 0.55–0.82 s.) The estimate's honesty over random geometries:
+    /// (1e-6: 1.3e-6, 1.0e-8, 0.51–0.82 s.) The estimate's honesty over random geometries:
     /// `tests/hankel/two_plate_hole_tiers.rs`.
     pub fn for_tolerance(tol: f64) -> Self {
         let base = Self {
             vary_xi_l: true,
             ..Self::default()
         };
-        // (from tol, nodes, heights, modes, ξ_l·D, tail/D, root and iteration tolerance,
-        // hole_decay), loosest first
-        let tiers: [(f64, usize, usize, usize, f64, f64, f64, f64); 4] = [
-            (1e-3, 6, 10, 6, 10.0, 6.0, 1e-4, 8.0),
-            (1e-4, 8, 12, 8, 12.0, 7.0, 1e-5, 8.0),
-            (1e-5, 10, 16, 12, 18.0, 9.0, 1e-7, 10.0),
-            (1e-6, 16, 18, 16, 28.0, 12.0, 1e-9, 13.0),
-        ];
-        match tiers.iter().find(|t| tol >= t.0) {
-            None => base,
-            Some(&(_, nodes, heights, modes, xi_l, tail, root, hole_decay)) => Self {
+        let tier = |from, nodes, heights, modes, xi_l, tail, root: f64, hole_decay| Tier {
+            from,
+            params: Self {
                 hole: HoleParams {
                     terms: Some(modes),
                     ..base.hole
@@ -140,6 +133,24 @@ impl HoledParams {
                 hole_decay,
                 ..base
             },
-        }
+        };
+        // (from, nodes, heights, modes, ξ_l·D, tail/D, root and iteration tolerance,
+        // hole_decay), loosest first
+        let tiers = [
+            tier(1e-3, 6, 10, 6, 10.0, 6.0, 1e-4, 8.0),
+            tier(1e-4, 8, 12, 8, 12.0, 7.0, 1e-5, 8.0),
+            tier(1e-5, 10, 16, 12, 18.0, 9.0, 1e-7, 10.0),
+            tier(1e-6, 16, 18, 16, 28.0, 12.0, 1e-9, 13.0),
+        ];
+        tiers
+            .iter()
+            .find(|t| tol >= t.from)
+            .map_or(base, |t| t.params)
     }
+}
+
+/// One tier of [`HoledParams::for_tolerance`]: its knobs, for tolerances from `from` up.
+struct Tier {
+    from: f64,
+    params: HoledParams,
 }
