@@ -7,7 +7,6 @@ use boltzone::hankel::receding::holed::{two_plate_hole, HoledParams};
 use boltzone::hankel::receding::MAX_B_OVER_D;
 use boltzone::scene::{two_hankel, Scene};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
-use std::process::Command;
 
 /// Table 1's hole and plate (A = D = 0.1) with a uniform load out to `b`.
 fn plate(b: f64) -> SinglePlate {
@@ -59,16 +58,13 @@ fn a_scene_asking_for_the_route_beyond_its_reach_is_refused_by_key() {
     // the command: exit 2 naming the key, before computing
     let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("holed_reach_scene");
     std::fs::create_dir_all(&dir).unwrap();
-    std::fs::write(dir.join("s.toml"), scene("hankel", 1e-6, 1.7)).unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_boltzone"))
-        .args(["solve", "s.toml"])
-        .current_dir(&dir)
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{err}");
+    let path = dir.join("s.toml");
+    std::fs::write(&path, scene("hankel", 1e-6, 1.7)).unwrap();
+    let out = crate::common::boltzone(&["solve", path.to_str().unwrap()]);
+    let text = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{text}");
     assert!(
-        err.contains("load.outer_radius") && err.contains("line 7"),
-        "{err}"
+        text.contains("load.outer_radius") && text.contains("line 7"),
+        "{text}"
     );
 }
