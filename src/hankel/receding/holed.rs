@@ -123,6 +123,8 @@
 //! session (CPU user + sys, load 4–7): T = 1e-3 0.14–0.22 s per row against 0.65–1.02 s (4.3×
 //! in total), 1e-4 0.16–0.27 s (3.4×), 1e-5 0.29–0.55 s (1.9×), 1e-6 0.51–0.82 s against
 //! 0.61–0.90 s (1.15×, R_o moved ≤ 6.3e-12 R_o, the same estimates); 7–9 trial radii at 1e-3.
+//! A second run by turns at load 2: 4.4×, 3.4×, 2.0×, 1.08× (0.13–0.22 s per row at 1e-3,
+//! 0.50–0.84 s at 1e-6 against main's 0.56–0.82 s).
 //! Every row converged at 1e-3 … 1e-5 (estimates ≤ 2.0e-4, 2.7e-5, 6.9e-7 R_o), within its
 //! estimate of main's R_o. The 10 ms is still 14× off at 1e-3: per radius the tables
 //! of l's transform and the Nyström and hole rules, once per geometry the bilateral plate,
