@@ -11,7 +11,7 @@
 //! # Cost
 //!
 //! The holed route's with the knobs for --tol ([`HoledParams::for_tolerance`]), per Table 1
-//! geometry: 0.14–0.22 s of CPU at --tol 1e-3, 0.51–0.82 s at 1e-6; timed by example 19.
+//! geometry: 0.10–0.15 s of CPU at --tol 1e-3, 0.43–0.78 s at 1e-6; timed by example 19.
 
 use super::exit::{sig, Status};
 use super::two_args::Args;

@@ -29,8 +29,8 @@
 //!
 //! # Cost
 //!
-//! One semi-analytic solve, 0.14–0.22 s of CPU per Table 1 geometry at a tolerance of 1e-3,
-//! 0.5–0.8 s at 1e-6 (example 19); the curve adds one evaluation per point.
+//! One semi-analytic solve, 0.10–0.15 s of CPU per Table 1 geometry at a tolerance of 1e-3,
+//! 0.43–0.78 s at 1e-6 (example 19); the curve adds one evaluation per point.
 
 use super::error::SceneError;
 use super::file::{Model, Scene};

@@ -100,17 +100,18 @@ impl HoledParams {
     /// the defaults; from 1e-6 (up to 1e-5), 16 Nyström points, ξ_l = 28/D, a tail of 12D
     /// (l ~ e^(−2.1(r−c)/D): 10D moved R_o by 1.5e-9 R_o on Table 1 row 1, 12D by ~2e-11), root
     /// and iteration tolerances 1e-9 (of D; of p̄(0)/c). Looser, one tier per decade, each
-    /// chosen by its run on Table 1's twelve rows (ν = 0.3; largest estimate there relative to
-    /// R_o, largest error against the defaults at ξ_l = 70/D, CPU per row of `boltzone two
-    /// --method hankel`, load 4–7):
+    /// chosen by its run on Table 1's twelve rows. Measured on those rows (ν = 0.3) by
+    /// `boltzone two --method hankel`, by turns with main's binary (load 2.6–3.3): the largest
+    /// estimate and |R_o − main's R_o at the knobs for 1e-6| relative to R_o, CPU per row:
     ///
-    /// | from | nodes | heights | modes | ξ_l·D | tail/D | root, iteration | `hole_decay` | estimate | error | CPU |
-    /// |------|-------|---------|-------|-------|--------|-----------------|--------------|----------|-------|-----|
-    /// | 1e-5 | 10 | 16 | 12 | 18 | 9 | 1e-7 | 10 | 6.9e-7 | 9.0e-8 | 0.29–0.55 s |
-    /// | 1e-4 | 8 | 12 | 8 | 12 | 7 | 1e-5 | 8 | 2.7e-5 | 2.1e-6 | 0.16–0.27 s |
-    /// | 1e-3 | 6 | 10 | 6 | 10 | 6 | 1e-4 | 8 | 2.0e-4 | 5.7e-5 | 0.14–0.22 s |
+    /// | from | nodes | heights | modes | ξ_l·D | tail/D | root, iteration | `hole_decay` | estimate | difference | CPU |
+    /// |------|-------|---------|-------|-------|--------|-----------------|--------------|----------|------------|-----|
+    /// | 1e-5 | 10 | 16 | 12 | 18 | 9 | 1e-7 | 10 | 6.9e-7 | 9.4e-8 | 0.25–0.41 s |
+    /// | 1e-4 | 8 | 12 | 8 | 12 | 7 | 1e-5 | 8 | 3.7e-5 | 6.2e-6 | 0.14–0.26 s |
+    /// | 1e-3 | 6 | 10 | 6 | 10 | 6 | 1e-4 | 8 | 2.1e-4 | 4.0e-5 | 0.10–0.15 s |
     ///
-    /// (1e-6: 1.3e-6, 1.0e-8, 0.51–0.82 s.) The estimate's honesty over random geometries:
+    /// (1e-6: 1.3e-6, 3.2e-10, 0.43–0.78 s; main 0.61–1.02 s.) The estimate's honesty over
+    /// random geometries:
     /// `tests/hankel/two_plate_hole_tiers.rs`.
     pub fn for_tolerance(tol: f64) -> Self {
         let base = Self {

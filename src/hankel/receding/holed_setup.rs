@@ -15,8 +15,9 @@
 //! cut to [A, B + 3D + tail] (the slab's midplane curve 0.12 s, the corner table 0.07 s on
 //! Table 1 row 1, over the whole reach), shared with the
 //! estimate's coarse setup ([`Setup::sharing`]); the hole rule, a few ms, per trial radius.
-//! At the knobs for 1e-3 the setup is about a third of the route's 0.14–0.22 s per Table 1
-//! row (profile: the bilateral plate, the midplane curve, the corner table).
+//! At the knobs for 1e-3 the setup is about a fifth of the route's 0.10–0.15 s per Table 1
+//! row (profile, (0.5, 1.6): 17 % in `Setup::sharing`, of which the bilateral plate 6 %, the
+//! midplane curve 5 %).
 //!
 //! ```
 //! // Internal to the route; reached through its entry point:
