@@ -36,10 +36,10 @@
 //! t is wall-clock, cpu the CPU of all threads (state the load beside them). The last table:
 //! the route at the knobs for 1e-3, 1e-4, 1e-5 ([`HoledParams::for_tolerance`]'s tiers) beside
 //! 1e-6, each tier's R_o checked within its estimate (plus the default's) of the default run.
-//! Measured (all twelve rows, load 4): CPU per row 0.10–0.16 s at 1e-3, 0.14–0.25 s at 1e-4,
-//! 0.20–0.34 s at 1e-5, 0.38–0.66 s at 1e-6; estimates ≤ 2.1e-4, 3.7e-5, 6.9e-7, 1.3e-6 of
-//! R_o; each tier's distance from the default run at most 0.28, 0.41, 0.91 of its estimate
-//! (0.91: 1e-5 on (0.75, 1.3), 1.0e-7 against 1.1e-7).
+//! Measured (all twelve rows, load 3.3): CPU per row 0.10–0.16 s at 1e-3, 0.13–0.17 s at
+//! 1e-4, 0.25–0.37 s at 1e-5, 0.41–0.64 s at 1e-6; estimates ≤ 2.1e-4, 3.7e-5, 9.0e-7, 1.3e-6
+//! of R_o; each tier's distance from the default run at most 0.28, 0.41, 0.10 of its estimate
+//! (the 1e-5 tier's first knobs came to 0.91 on (0.75, 1.3): 1.0e-7 against 1.1e-7).
 //!
 //! Run: `cargo run --release --example 19_two_plate_hankel [rows] [tight]` (rows: how many of
 //! Table 1's, default 12; tight = 1 adds the FE at --tol 1e-6, minutes per row).

@@ -125,9 +125,10 @@
 //! (4.3× in total), 1e-4 3.4×, 1e-5 1.9×, 1e-6 1.15× (R_o moved ≤ 6.3e-12 R_o, the same
 //! estimates); again at load 2: 4.4×, 3.4×, 2.0×, 1.08×. With the scan's start too (load
 //! 2.6–3.3; 7–8 radii instead of 9–10 at 1e-6, 5–7 at 1e-3): 1e-3 0.10–0.15 s per row against
-//! main's 0.61–0.90 s (5.8×), 1e-4 0.14–0.26 s (4.0×), 1e-5 0.25–0.41 s (2.2×), 1e-6
+//! main's 0.61–0.90 s (5.8×), 1e-4 0.14–0.26 s (4.0×), 1e-5 0.25–0.41 s (2.2×; with the
+//! tier's final, finer knobs 0.38–0.58 s against 0.75–0.94 s, 1.8×, at load 1.7), 1e-6
 //! 0.43–0.78 s against 0.61–1.02 s (1.25×; R_o moved ≤ 3.2e-10 R_o, estimates 3.8e-10 …
-//! 1.3e-6 as before); every row converged at 1e-3 … 1e-5 (estimates ≤ 2.1e-4, 3.7e-5, 6.9e-7
+//! 1.3e-6 as before); every row converged at 1e-3 … 1e-5 (estimates ≤ 2.1e-4, 3.7e-5, 9.0e-7
 //! R_o) and lies within its estimate of main's R_o. The 10 ms is still 10× off at
 //! 1e-3: per radius the tables of l's transform and the Nyström and hole rules, once per
 //! geometry the bilateral plate, the midplane curve and the corner table (17 % of the CPU at
