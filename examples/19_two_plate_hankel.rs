@@ -34,7 +34,13 @@
 //! 6.7, 5.6, 4.7e-6 (row 2), below this route, about the FE's own estimate of its cut of the
 //! infinite plate (at 20.4 and 16.8 in: 3.0e-6 and 4.2e-6 of R_o): the FE's floor there is its
 //! outer cut, not its mesh; |FE − H| (2.9e-6, 4.7e-6) is within its estimate (4.3e-6, 5.1e-6).
-//! t is wall-clock, cpu the CPU of all threads (state the load beside them).
+//! t is wall-clock, cpu the CPU of all threads (state the load beside them). The last table:
+//! the route at the knobs for 1e-3, 1e-4, 1e-5 ([`HoledParams::for_tolerance`]'s tiers) beside
+//! 1e-6, each tier's R_o checked within its estimate (plus the default's) of the default run.
+//! Measured (all twelve rows, load 3.3): CPU per row 0.10–0.16 s at 1e-3, 0.13–0.17 s at
+//! 1e-4, 0.25–0.37 s at 1e-5, 0.41–0.64 s at 1e-6; estimates ≤ 2.1e-4, 3.7e-5, 9.0e-7, 1.3e-6
+//! of R_o; each tier's distance from the default run at most 0.28, 0.41, 0.10 of its estimate
+//! (the 1e-5 tier's first knobs came to 0.91 on (0.75, 1.3): 1.0e-7 against 1.1e-7).
 //!
 //! With the rim C = 1.54 in (second table, measured 2026-11-24, load 9–10 on the 2 cores): the
 //! rim moves R_o by −7.4e-4 … −9.6e-4 R_o (A/D = 1), −1.3e-3 … −1.5e-3 (0.75), −2.6e-3 … −2.8e-3
@@ -231,6 +237,7 @@ pub fn run(rows: usize, tight: bool) -> anyhow::Result<Vec<Row>> {
             fe_tight: ft,
         });
     }
+    tiers(&out)?;
     println!("\nThe FE's R_o level by level against the Hankel route (error relative to R_o; rate = log2 of successive ratios):");
     for row in &out {
         let (ad, ba, _) = row.geometry;
@@ -344,6 +351,53 @@ pub fn rim_table(rows: usize, tight: bool) -> anyhow::Result<()> {
                 h.info.r_o_error
             );
         }
+    }
+    Ok(())
+}
+
+/// The route's cost by tolerance ([`HoledParams::for_tolerance`]'s tiers) on the rows run: CPU
+/// seconds, the estimate and |R_o − default's R_o|, both relative to R_o; fails if a tier's R_o
+/// is not within its estimate plus the default run's.
+fn tiers(rows: &[Row]) -> anyhow::Result<()> {
+    const TOLS: [f64; 3] = [1e-3, 1e-4, 1e-5];
+    println!(
+        "\nThe Hankel route by tolerance: cpu [s], estimate, |R_o − default|, relative to R_o"
+    );
+    for row in rows {
+        let (ad, ba, _) = row.geometry;
+        let plate = SinglePlate::new(
+            A,
+            OuterRadius::Infinite,
+            A / ad,
+            Material::new(3.0e7, 0.3)?,
+            FaceLoad::uniform(A, A * ba, 1.0)?,
+        )?;
+        let mut line = format!("{ad:>5} {ba:>5}");
+        for tol in TOLS {
+            let (h, cpu) = cpu_timed(|| two_plate_hole(&plate, &HoledParams::for_tolerance(tol)));
+            let h = h?;
+            let diff = (h.r_o - row.hankel.r_o).abs();
+            if diff > h.info.r_o_error + row.hankel.info.r_o_error {
+                anyhow::bail!(
+                    "row ({ad}, {ba}), tol {tol:e}: R_o {} ± {} vs default {}",
+                    h.r_o,
+                    h.info.r_o_error,
+                    row.hankel.r_o
+                );
+            }
+            let r = row.hankel.r_o;
+            line += &format!(
+                "  | {tol:.0e}: {cpu:.3} {:.1e} {:.1e}",
+                h.info.r_o_error / r,
+                diff / r
+            );
+        }
+        line += &format!(
+            "  | 1e-6: {:.3} {:.1e}",
+            row.cpu.1,
+            row.fast.info.r_o_error / row.hankel.r_o
+        );
+        println!("{line}");
     }
     Ok(())
 }

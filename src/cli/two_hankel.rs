@@ -11,18 +11,14 @@
 //!
 //! # Cost
 //!
-//! The holed route's with the knobs for --tol ([`HoledParams::for_tolerance`]): about 1 s of
-//! CPU per geometry at --tol 1e-6 or looser (Table 1), timed by example 19.
+//! The holed route's with the knobs for --tol ([`HoledParams::for_tolerance`]), per Table 1
+//! geometry: 0.10–0.15 s of CPU at --tol 1e-3, 0.43–0.78 s at 1e-6; timed by example 19.
 
 use super::exit::{sig, Status};
 use super::two_args::Args;
 use boltzone::hankel::receding::holed::{two_plate_hole_pressure, HoledParams};
+use boltzone::hankel::receding::MAX_B_OVER_D;
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
-
-/// Widest load B/D that the route with the hole takes (measured on A = D, release: 1.8 s and
-/// 0.2 GB at B/D = 8, 4.7 s and 0.6 GB at 16, 18 s and 2.0 GB at 32; the 10⁴ fuzz of
-/// `tests/cli/fuzz.rs` had runs over 30 s from B/D = 42).
-const HOLED_REACH: f64 = 16.0;
 
 /// Why the Hankel route does not apply to these arguments: (flag, value, reason).
 pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> {
@@ -47,7 +43,7 @@ pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> 
     if refusal.is_some() {
         return refusal;
     }
-    if g.a > 0.0 && g.b > HOLED_REACH * g.d {
+    if g.a > 0.0 && g.b > MAX_B_OVER_D * g.d {
         return Some((
             "--b",
             g.b.to_string(),

@@ -103,16 +103,22 @@ fn holed_rim_agrees_with_the_fe_and_balances_the_load() {
 
 #[test]
 fn the_infinite_plate_does_not_take_the_rim() {
-    // C = ∞ keeps the route without a rim record, bit for bit: main's binary at the rim's
-    // branch point (bfbe020) gave 0.3524229816848435 in on this row at --tol 1e-6 (a regression
-    // value: to be renewed, with its reason, when the route itself changes)
-    let h = two_plate_hole(
-        &row1(OuterRadius::Infinite),
-        &HoledParams::for_tolerance(1e-6),
-    )
-    .unwrap();
+    // C = ∞ keeps the route without a rim record, and its R_o lies within its estimate (plus
+    // the reference's) of the same route run with the finer default knobs
+    let plate = row1(OuterRadius::Infinite);
+    let h = two_plate_hole(&plate, &HoledParams::for_tolerance(1e-6)).unwrap();
     assert!(h.info.rim.is_none());
-    assert_eq!(h.r_o, 0.3524229816848435);
+    let fine = two_plate_hole(&plate, &HoledParams::default()).unwrap();
+    assert!(fine.info.rim.is_none());
+    let gap = (h.r_o - fine.r_o).abs();
+    assert!(
+        gap <= h.info.r_o_error + fine.info.r_o_error,
+        "{} ± {} against {} ± {}",
+        h.r_o,
+        h.info.r_o_error,
+        fine.r_o,
+        fine.info.r_o_error
+    );
 }
 
 #[test]

@@ -27,6 +27,7 @@ use super::holed_params::HoledParams;
 use super::holed_setup::{Crack, Setup};
 use super::prescribed::Prescribed;
 use super::system::{cos_m1, panels, Nystrom, XiRule};
+use crate::hankel::hole::eigen::Mode;
 use crate::hankel::hole::fit::{fit, Boundary, Fit, HoleData};
 use crate::hankel::transform::LoadTransform;
 use crate::load::FaceLoad;
@@ -86,7 +87,14 @@ impl Setup {
             .collect();
         let mode_mid: Vec<Vec<num_complex::Complex64>> = s_rule
             .iter()
-            .map(|&(s, _)| self.modes.iter().map(|m| m.midplane_sigma_z(s)).collect())
+            .map(|&(s, _)| {
+                // a mode below 1e-20 here (times an amplitude of order P) adds nothing
+                let value = |m: &Mode| match m.midplane_bound(s) < 1e-20 {
+                    true => num_complex::Complex64::ZERO,
+                    false => m.midplane_sigma_z(s),
+                };
+                self.modes.iter().map(value).collect()
+            })
             .collect();
         let corner_mid: Vec<Vec<f64>> = match &self.corner {
             None => vec![Vec::new(); s_rule.len()],

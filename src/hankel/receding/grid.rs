@@ -18,7 +18,11 @@
 //! summed to k = 18 by Horner's rule (at x = 25 the first term dropped is 1.5e-17; the smallest,
 //! near k = 2x, is ~e^(−50)),
 //! with cos(x − π/4) = (cos x + sin x)/√2, sin(x − π/4) = (sin x − cos x)/√2 from the addition
-//! theorem; below 25, [`libm::j0`].
+//! theorem; from 2 to 25 (where [`libm::j0`] calls sin and cos), from a table built once: on each unit interval [k, k + 1) the
+//! interpolant of degree 12 at 13 Chebyshev points of [`libm::j0`], summed by Clenshaw's
+//! recurrence (its error ≤ h¹³/(2¹²·13!)·max|J₀⁽¹³⁾| ≤ 5e-18 for h = ½, |J₀⁽ⁿ⁾| ≤ 1, below
+//! the rounding of libm's values, which the interpolation carries with a Lebesgue constant
+//! under 2.5); below 2, [`libm::j0`].
 //!
 //! # Accuracy
 //!
@@ -29,7 +33,11 @@
 //!
 //! One sin/cos pair per panel and per offset, a few multiplications per entry, and for J₀ the
 //! 18 terms of the series by Horner's rule (about 3× faster than summing term by term to a
-//! threshold: the J₀ rows of the holed route fell from 45 to 15 ms per radius); [`dot`], the
+//! threshold: the J₀ rows of the holed route fell from 45 to 15 ms per radius); from 2 to 25
+//! the table's 12 steps of Clenshaw's recurrence instead of libm's sin, cos and rational
+//! approximations (libm's J₀ was 19 % of the holed route's CPU at the knobs for 1e-3, under 2 %
+//! after; Table 1 at those knobs 1.82–1.90 s instead of 2.16–2.76 s for all twelve rows, by
+//! turns at load 8, R_o unchanged to the 10 digits printed); [`dot`], the
 //! rows' products with a vector, in four partial sums. The holed route's timing: example 19.
 //!
 //! ```
@@ -159,8 +167,10 @@ impl PanelGrid {
         let nodes = &self.nodes;
         self.for_each(xi, |i, c, s, _| {
             let x = xi * nodes[i];
-            out[i] = if x < ASYMPTOTIC_FROM {
+            out[i] = if x < TABLE_FROM {
                 libm::j0(x)
+            } else if x < ASYMPTOTIC_FROM {
+                j0_table(x)
             } else {
                 j0_asymptotic(x, c, s)
             };
@@ -188,6 +198,52 @@ pub fn dot(x: &[f64], y: &[f64]) -> f64 {
         }
     }
     (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
+}
+
+/// Where the table of J₀ takes over from [`libm::j0`] (whose rational approximation below 2
+/// is fast and, near J₀ = 1, a few ulp more accurate than the table).
+const TABLE_FROM: f64 = 2.0;
+
+/// Chebyshev points (and coefficients) per unit interval of the table of J₀ on [0, 25).
+const CHEB: usize = 13;
+
+/// J₀ on [k, k + 1) for k = 0 … 24: the coefficients of its interpolant of degree 12 in
+/// Chebyshev polynomials of 2(x − k) − 1, from [`libm::j0`] at the 13 Chebyshev points.
+static J0_TABLE: std::sync::OnceLock<Vec<[f64; CHEB]>> = std::sync::OnceLock::new();
+
+/// J₀(x) for 0 ≤ x < 25 from [`J0_TABLE`] by Clenshaw's recurrence (module docs).
+fn j0_table(x: f64) -> f64 {
+    let table = J0_TABLE.get_or_init(|| {
+        let n = CHEB as f64;
+        let theta = |j: usize| PI * (j as f64 + 0.5) / n;
+        (0..ASYMPTOTIC_FROM as usize)
+            .map(|k| {
+                let f: Vec<f64> = (0..CHEB)
+                    .map(|j| libm::j0(k as f64 + 0.5 + 0.5 * theta(j).cos()))
+                    .collect();
+                let mut c = [0.0; CHEB];
+                for (m, cm) in c.iter_mut().enumerate() {
+                    let sum: f64 = f
+                        .iter()
+                        .enumerate()
+                        .map(|(j, v)| v * (m as f64 * theta(j)).cos())
+                        .sum();
+                    *cm = sum * if m == 0 { 1.0 } else { 2.0 } / n;
+                }
+                c
+            })
+            .collect()
+    });
+    let k = (x.max(0.0) as usize).min(table.len() - 1);
+    let t = 2.0 * (x - k as f64) - 1.0;
+    let c = &table[k];
+    let (mut b1, mut b2) = (0.0, 0.0);
+    for &cm in c[1..].iter().rev() {
+        let b0 = 2.0 * t * b1 - b2 + cm;
+        b2 = b1;
+        b1 = b0;
+    }
+    t * b1 - b2 + c[0]
 }
 
 /// Terms of the asymptotic series kept: a_k/x^k for k ≤ 18 (at x = 25 the first dropped, k = 19,

@@ -123,6 +123,24 @@
 //! grid study against the FE at 1e-4 (`tests/hankel/grid_study.rs`) the same ratios (median
 //! 0.02, max 0.08) in 146 s instead of 218 s.
 //!
+//! Cost that follows the tolerance: [`HoledParams::for_tolerance`] has tiers from 1e-3, 1e-4,
+//! 1e-5 (fewer nodes, heights, modes, a lower ξ_l, a shorter tail, looser root and iteration
+//! tolerances), J₀ below 25 comes from a table ([`super::grid`]), and the scan starts at
+//! B + 0.45D (module `holed_search`). All twelve Table 1 rows by `boltzone two --method
+//! hankel --tol T`, this branch's binary and main's by turns in one session (CPU user + sys):
+//! after the tiers and the table (load 4–7), T = 1e-3 0.14–0.22 s per row against 0.65–1.02 s
+//! (4.3× in total), 1e-4 3.4×, 1e-5 1.9×, 1e-6 1.15× (R_o moved ≤ 6.3e-12 R_o, the same
+//! estimates); again at load 2: 4.4×, 3.4×, 2.0×, 1.08×. With the scan's start too (load
+//! 2.6–3.3; 7–8 radii instead of 9–10 at 1e-6, 5–7 at 1e-3): 1e-3 0.10–0.15 s per row against
+//! main's 0.61–0.90 s (5.8×), 1e-4 0.14–0.26 s (4.0×), 1e-5 0.25–0.41 s (2.2×; with the
+//! tier's final, finer knobs 0.38–0.58 s against 0.75–0.94 s, 1.8×, at load 1.7), 1e-6
+//! 0.43–0.78 s against 0.61–1.02 s (1.25×; R_o moved ≤ 3.2e-10 R_o, estimates 3.8e-10 …
+//! 1.3e-6 as before); every row converged at 1e-3 … 1e-5 (estimates ≤ 2.1e-4, 3.7e-5, 9.0e-7
+//! R_o) and lies within its estimate of main's R_o. The issue's 10 ms is still 10× off at
+//! 1e-3: per radius the tables of l's transform and the Nyström and hole rules, once per
+//! geometry the bilateral plate, the midplane curve and the corner table (17 % of the CPU at
+//! the knobs for 1e-3 on (0.5, 1.6), by profile).
+//!
 //! ```no_run
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 //! use boltzone::hankel::receding::holed::{two_plate_hole, HoledParams};

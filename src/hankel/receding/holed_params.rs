@@ -5,7 +5,8 @@
 //!
 //! What each knob buys is measured in [`super::holed`]'s docs; the knobs for 1e-6 against a run
 //! finer in every knob: `tests/hankel/two_plate_hole_fast.rs`
-//! (`knobs_for_1e6_are_within_their_estimate_of_a_finer_run`).
+//! (`knobs_for_1e6_are_within_their_estimate_of_a_finer_run`); every tier against a run at
+//! 1e-9 on random geometries: `tests/hankel/two_plate_hole_tiers.rs`.
 //!
 //! # Cost
 //!
@@ -19,13 +20,22 @@
 
 use crate::hankel::hole::HoleParams;
 
+/// Widest load B/D (load's outer radius over one plate's thickness) that the route takes: its
+/// cost grows like (B/D)² (measured on A = D, release: 1.8 s and 0.2 GB at B/D = 8, 4.7 s and
+/// 0.6 GB at 16, 18 s and 2.0 GB at 32; the 10⁴ fuzz of `tests/cli/fuzz.rs` had runs over 30 s
+/// from B/D = 42). Wider loads are refused by the entry point as bad input naming the ratio
+/// (`tests/hankel/two_plate_hole_reach.rs`); `two --method auto` and a scene's `method = "auto"`
+/// take the finite elements there.
+pub const MAX_B_OVER_D: f64 = 16.0;
+
 /// Knobs of [`two_plate_hole`](super::holed::two_plate_hole).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HoledParams {
     /// The hole correction: modes N (`terms`, default 16 here) and corner terms, for both the
     /// bilateral plate and the crack field's correction.
     pub hole: HoleParams,
-    /// Nyström points on [0, c] (default 24).
+    /// Nyström points on [0, c] (default 24) for loads out to B = 3.5D, proportionally more
+    /// for wider ones.
     pub nodes: usize,
     /// Chebyshev heights on [−D, D] at which the crack field's hole traction is integrated
     /// (default 18; even).
@@ -86,26 +96,64 @@ impl Default for HoledParams {
 
 impl HoledParams {
     /// Knobs for R_o to a relative tolerance `tol`, the estimate covering every knob but the
-    /// tail: for `tol` ≥ 1e-6, 16 Nyström points, ξ_l = 28/D, a tail of 12D (l ~ e^(−2.1(r−c)/D):
-    /// 10D moved R_o by 1.5e-9 R_o on Table 1 row 1, 12D by ~2e-11), root and iteration
-    /// tolerances 1e-9 (of D; of p̄(0)/c), and the estimate's coarse variant also at 2/3 of ξ_l;
-    /// tighter, the defaults with ξ_l varied as well. Checked against a run finer in every knob
-    /// by `tests/hankel/two_plate_hole_fast.rs`.
+    /// tail and the hole rule's end, the coarse variant also at 2/3 of ξ_l. Tighter than 1e-6,
+    /// the defaults; from 1e-6 (up to 1e-5), 16 Nyström points, ξ_l = 28/D, a tail of 12D
+    /// (l ~ e^(−2.1(r−c)/D): 10D moved R_o by 1.5e-9 R_o on Table 1 row 1, 12D by ~2e-11), root
+    /// and iteration tolerances 1e-9 (of D; of p̄(0)/c). Looser, one tier per decade, each
+    /// chosen by its run on Table 1's twelve rows. Measured on those rows (ν = 0.3) by
+    /// `boltzone two --method hankel`, by turns with main's binary (load 2.6–3.3): the largest
+    /// estimate and |R_o − main's R_o at the knobs for 1e-6| relative to R_o, CPU per row:
+    ///
+    /// | from | nodes | heights | modes | ξ_l·D | tail/D | root, iteration | `hole_decay` | estimate | difference | CPU |
+    /// |------|-------|---------|-------|-------|--------|-----------------|--------------|----------|------------|-----|
+    /// | 1e-5 | 10 | 18 | 16 | 22 | 10 | 1e-7 | 10 | 9.0e-7 | 5.5e-8 | 0.38–0.58 s |
+    /// | 1e-4 | 8 | 12 | 8 | 12 | 7 | 1e-5 | 8 | 3.7e-5 | 6.2e-6 | 0.14–0.26 s |
+    /// | 1e-3 | 6 | 10 | 6 | 10 | 6 | 1e-4 | 8 | 2.1e-4 | 4.0e-5 | 0.10–0.15 s |
+    ///
+    /// (1e-6: 1.3e-6, 3.2e-10, 0.43–0.78 s; main 0.61–1.02 s. The 1e-5 row by its own run at
+    /// load 1.7, main 0.75–0.94 s: its first choice, 12 modes, 16 heights, ξ_l = 18/D, tail 9D,
+    /// came within 0.91 of its estimate on (0.75, 1.3).) The estimate's honesty over random
+    /// geometries:
+    /// `tests/hankel/two_plate_hole_tiers.rs`.
     pub fn for_tolerance(tol: f64) -> Self {
         let base = Self {
             vary_xi_l: true,
             ..Self::default()
         };
-        if tol < 1e-6 {
-            return base;
-        }
-        Self {
-            nodes: 16,
-            rel_tol: 1e-9,
-            iteration_tol: 1e-9,
-            xi_l: 28.0,
-            tail: 12.0,
-            ..base
-        }
+        let tier = |from, nodes, heights, modes, xi_l, tail, root: f64, hole_decay| Tier {
+            from,
+            params: Self {
+                hole: HoleParams {
+                    terms: Some(modes),
+                    ..base.hole
+                },
+                nodes,
+                heights,
+                rel_tol: root,
+                iteration_tol: root,
+                xi_l,
+                tail,
+                hole_decay,
+                ..base
+            },
+        };
+        // (from, nodes, heights, modes, ξ_l·D, tail/D, root and iteration tolerance,
+        // hole_decay), loosest first
+        let tiers = [
+            tier(1e-3, 6, 10, 6, 10.0, 6.0, 1e-4, 8.0),
+            tier(1e-4, 8, 12, 8, 12.0, 7.0, 1e-5, 8.0),
+            tier(1e-5, 10, 18, 16, 22.0, 10.0, 1e-7, 10.0),
+            tier(1e-6, 16, 18, 16, 28.0, 12.0, 1e-9, 13.0),
+        ];
+        tiers
+            .iter()
+            .find(|t| tol >= t.from)
+            .map_or(base, |t| t.params)
     }
+}
+
+/// One tier of [`HoledParams::for_tolerance`]: its knobs, for tolerances from `from` up.
+struct Tier {
+    from: f64,
+    params: HoledParams,
 }

@@ -15,6 +15,9 @@
 //! cut to [A, B + 3D + tail] (the slab's midplane curve 0.12 s, the corner table 0.07 s on
 //! Table 1 row 1, over the whole reach), shared with the
 //! estimate's coarse setup ([`Setup::sharing`]); the hole rule, a few ms, per trial radius.
+//! At the knobs for 1e-3 the setup is about a fifth of the route's 0.10–0.15 s per Table 1
+//! row (profile, (0.5, 1.6): 17 % in `Setup::sharing`, of which the bilateral plate 6 %, the
+//! midplane curve 5 %).
 //!
 //! ```
 //! // Internal to the route; reached through its entry point:
@@ -38,6 +41,9 @@ use crate::joint::{OuterRadius, SinglePlate};
 use rayon::prelude::*;
 use std::f64::consts::PI;
 use std::sync::{Arc, OnceLock};
+
+/// The load's outer radius, in D, up to which the Nyström points are not scaled.
+const NODES_SPAN: f64 = 3.5;
 
 /// The geometry's fixed parts: the bilateral plate, the correction basis, the hole's ξ-rule.
 pub(super) struct Setup {
@@ -67,6 +73,8 @@ pub(super) struct Setup {
     pub(super) interp_odd: Vec<Vec<f64>>,
     /// Poisson's ratio.
     pub(super) nu: f64,
+    /// The Nyström points' factor for this load, max(1, B/(3.5D)) ([`Setup::nodes_for`]).
+    pub(super) node_scale: f64,
     /// The hole ξ-rule's end: e^(−ξ z_min) = e^(−`hole_decay`) at the lowest height.
     pub(super) xi_h: f64,
     /// ξ beyond which l̄ is taken from its endpoint expansion.
@@ -124,6 +132,16 @@ impl Setup {
                 field: "outer radius C",
                 value: f64::NAN,
                 reason: "the holed two-plate route supports infinite plates only so far",
+            }
+            .into());
+        }
+        let b_over_d = plate.load().outer() / d;
+        if b_over_d > super::holed_params::MAX_B_OVER_D {
+            return Err(InputError::Parameter {
+                field: "load outer radius over plate thickness B/D",
+                value: b_over_d,
+                reason: "at most 16 for the holed two-plate route (its cost grows like (B/D)²: \
+                         4.7 s and 0.6 GB at 16); use the finite elements",
             }
             .into());
         }
@@ -259,6 +277,7 @@ impl Setup {
             interp_even,
             interp_odd,
             nu,
+            node_scale: (b / (NODES_SPAN * d)).max(1.0),
             xi_h,
             xi_l: params.xi_l / d,
         })
@@ -298,6 +317,15 @@ impl Setup {
             })
             .collect();
         HoleRule { xi, kernels }
+    }
+
+    /// The Nyström points on [0, c] for `n` asked: `n` for loads out to B = 3.5D (all of
+    /// Table 1, whose R_o ≤ 3.7D), proportionally more beyond, since the crack field varies on
+    /// the scale D and the contact zone spans c/D of it. On (A/D, B/A, ν) = (2.5, 3.5, 0.1)
+    /// (B/D = 8.75) the fewer-nodes variant moved R_o by 2e-3, 2e-4, 3e-5 of R_o at 6, 8, 10
+    /// points, by 2e-6, 5e-8, 9e-10 at 15, 20, 25.
+    pub(super) fn nodes_for(&self, n: usize) -> usize {
+        (n as f64 * self.node_scale).ceil() as usize
     }
 
     /// The bilateral plate's midplane σ_z.

@@ -59,4 +59,5 @@ pub use contact::{
     contact_radius, nodes, ContactSolution, Layer, RecedingContact, RecedingError, RecedingInfo,
     RecedingParams,
 };
+pub use holed_params::MAX_B_OVER_D;
 pub use pair::Pair;
