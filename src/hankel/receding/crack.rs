@@ -3,7 +3,7 @@
 //! its traction on the hole at Chebyshev heights, the hole correction's fit, the iteration
 //! l ← s₀ + σ_z^Z (derivation in [`super::holed`], Anderson-accelerated, module `anderson`) and
 //! the contact pressure, with the quadrature helpers they share; with a prescribed lift of the
-//! contact zone instead of the load ([`Setup::crack_with`], module `prescribed`) the finite
+//! contact zone instead of the load ([`Setup::crack`], module `prescribed`) the finite
 //! rim's correction S₂ ([`super::rim_holed`]).
 //!
 //! # Accuracy
@@ -48,21 +48,10 @@ fn j0_m1(x: f64) -> f64 {
 impl Setup {
     /// Solves the crack field and its hole correction for contact radius `c` with `n` Nyström
     /// points, iterating l ← s₀ + σ_z^Z from the correction `start` (a nearby radius's, or
-    /// none); and the contact pressure at `radii` (A ≤ r).
+    /// none); and the contact pressure at `radii` (A ≤ r). With `lift`, the unloaded plate (no
+    /// bilateral part) whose bottom is lifted by `lift` on the contact zone: the rim's S₂
+    /// ([`super::rim_holed`]).
     pub(super) fn crack(
-        &self,
-        c: f64,
-        n: usize,
-        params: &HoledParams,
-        radii: &[f64],
-        start: Option<&Fit>,
-    ) -> Result<Crack, RecedingError> {
-        self.crack_with(c, n, params, radii, start, None)
-    }
-
-    /// [`Self::crack`], or with `lift` the unloaded plate (no bilateral part) whose bottom is
-    /// lifted by `lift` on the contact zone: the rim's S₂ ([`super::rim_holed`]).
-    pub(super) fn crack_with(
         &self,
         c: f64,
         n: usize,

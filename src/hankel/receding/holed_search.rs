@@ -78,7 +78,7 @@ impl Setup {
         };
         let edge = |c: f64, seen: &mut Vec<(f64, Crack)>| {
             let start = nearest(seen, c);
-            let k = self.crack(c, n, params, &[], start.as_ref())?;
+            let k = self.crack(c, n, params, &[], start.as_ref(), None)?;
             let e = k.edge;
             seen.push((c, k));
             Ok::<f64, RecedingError>(e)
@@ -119,7 +119,7 @@ impl Setup {
                     .iter()
                     .map(|&x| fraction_radius(self.a, r_o, x))
                     .collect();
-                let k = self.crack(r_o, n, params, &radii, nearest(&seen, r_o).as_ref())?;
+                let k = self.crack(r_o, n, params, &radii, nearest(&seen, r_o).as_ref(), None)?;
                 iterations += k.iterations;
                 k
             }
@@ -173,7 +173,7 @@ pub(super) fn estimate(
             let h = 1e-3 * setup.d;
             let warm = found.last.fit.as_ref();
             let n = setup.nodes_for(params.nodes);
-            let up = setup.crack(r_o + h, n, params, &[], warm)?.edge;
+            let up = setup.crack(r_o + h, n, params, &[], warm, None)?.edge;
             ((up - found.last.edge) / h, 1)
         }
     };
@@ -187,6 +187,7 @@ pub(super) fn estimate(
                 p,
                 &[],
                 found.last.fit.as_ref(),
+                None,
             )?
             .edge
             / slope;

@@ -121,10 +121,12 @@ impl Route<'_> {
             .collect();
         radii.extend_from_slice(extra);
         let (w1, w2) = self.warm.borrow().clone();
-        let k1 = self.setup.crack(c, n, self.params, &radii, w1.as_ref())?;
+        let k1 = self
+            .setup
+            .crack(c, n, self.params, &radii, w1.as_ref(), None)?;
         let k2 = self
             .setup
-            .crack_with(c, n, self.params, &radii, w2.as_ref(), Some(&self.lift))?;
+            .crack(c, n, self.params, &radii, w2.as_ref(), Some(&self.lift))?;
         *self.warm.borrow_mut() = (k1.fit.clone(), k2.fit.clone());
         let moments = |q: &[f64]| {
             self.quad
