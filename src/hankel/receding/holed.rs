@@ -153,48 +153,9 @@
 
 use super::contact::RecedingError;
 pub use super::holed_params::HoledParams;
-use super::holed_search::{estimate, fraction_radius};
-use super::holed_setup::Setup;
+pub use super::holed_record::{HoledContact, HoledInfo};
 use crate::error::InputError;
 use crate::joint::SinglePlate;
-use std::time::Instant;
-
-/// What [`two_plate_hole`] did and how well.
-#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
-pub struct HoledInfo {
-    /// Estimated absolute error of R_o (see the module docs).
-    pub r_o_error: f64,
-    /// R_o with ⌈3n/4⌉ Nyström points (NaN when not estimated).
-    pub r_o_fewer_nodes: f64,
-    /// R_o with half the hole modes and 2/3 of the Chebyshev heights (NaN when not estimated).
-    pub r_o_half_terms: f64,
-    /// Largest residual traction of crack field + its correction on the hole, relative to P.
-    pub residual_max: f64,
-    /// The bilateral plate's residual traction on the hole, relative to P.
-    pub bilateral_residual: f64,
-    /// Largest crack-field traction on the hole before correction, relative to P.
-    pub crack_traction: f64,
-    /// Iterations of the last solve.
-    pub iterations: usize,
-    /// Crack iterations over every radius of the search (not the estimate's runs).
-    pub search_iterations: usize,
-    /// Contact radii tried (all runs).
-    pub solves: usize,
-    /// Wall-clock seconds.
-    pub seconds: f64,
-    /// With a finite outer radius C: the rim's terms (module `rim_holed`); `None` for C = ∞.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub rim: Option<super::rim_holed::RimRecord>,
-}
-
-/// R_o and its record.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct HoledContact {
-    /// The separation radius R_o.
-    pub r_o: f64,
-    /// Error estimate and cost.
-    pub info: HoledInfo,
-}
 
 /// R_o of two equal plates with a hole on a frictionless interface: `plate` is the single plate
 /// of the reflected picture (its half-thickness is one plate's thickness D). See the module docs;
@@ -224,38 +185,5 @@ pub fn two_plate_hole_pressure(
     if let crate::joint::OuterRadius::Finite(c) = plate.outer_radius() {
         return super::rim_holed::finite_rim(plate, c, params, at);
     }
-    let start = Instant::now();
-    let setup = Setup::new(plate, params)?;
-    let b = plate.load().outer();
-    let found = setup.search(b, params.nodes, params, None, at)?;
-    let (r_o, last) = (found.r_o, &found.last);
-    let curve: Vec<(f64, f64)> = at
-        .iter()
-        .map(|&x| fraction_radius(setup.a, r_o, x))
-        .zip(last.pressure.iter().copied())
-        .collect();
-    let mut info = HoledInfo {
-        r_o_error: params.rel_tol * setup.d,
-        r_o_fewer_nodes: f64::NAN,
-        r_o_half_terms: f64::NAN,
-        residual_max: last.residual,
-        bilateral_residual: setup.bilateral.info().residual_max,
-        crack_traction: last.crack_traction,
-        iterations: last.iterations,
-        search_iterations: found.iterations,
-        solves: 0,
-        seconds: 0.0,
-        rim: None,
-    };
-    let mut solves = found.solves;
-    if params.estimate {
-        let ((r1, r2), s) = estimate(&setup, plate, params, &found)?;
-        solves += s;
-        info.r_o_fewer_nodes = r1;
-        info.r_o_half_terms = r2;
-        info.r_o_error += (r1 - r_o).abs() + (r2 - r_o).abs();
-    }
-    info.solves = solves;
-    info.seconds = start.elapsed().as_secs_f64();
-    Ok((HoledContact { r_o, info }, curve))
+    super::holed_infinite::solve(plate, params, at)
 }

@@ -56,7 +56,10 @@
 //! ```
 
 use super::contact::RecedingError;
-use super::holed::{two_plate_hole_pressure, HoledContact, HoledParams};
+use super::holed_infinite;
+use super::holed_params::HoledParams;
+use super::holed_record::HoledContact;
+pub use super::holed_record::RimRecord;
 use super::holed_search::fraction_radius;
 use super::holed_setup::Setup;
 use super::prescribed::Prescribed;
@@ -69,26 +72,6 @@ use crate::joint::{OuterRadius, SinglePlate};
 use crate::numerics::quadrature::gauss_legendre;
 use std::cell::RefCell;
 use std::time::Instant;
-
-/// The rim's part of the record of [`super::holed::two_plate_hole`] with a finite C.
-#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
-pub struct RimRecord {
-    /// The outer radius C.
-    pub outer_radius: f64,
-    /// R_o of the infinite plate (the same route with C = ∞).
-    pub r_o_infinite: f64,
-    /// β: curvature of the rim's bending state (1/length, the load's units over G).
-    pub curvature: f64,
-    /// M_r(C) of the infinite plate's far field (force·length per length).
-    pub rim_moment: f64,
-    /// N_r(C) of the infinite plate's far field (force per length), cancelled by the membrane
-    /// state.
-    pub rim_force: f64,
-    /// D·e^(−4.21(C − R_o)/D), included in the estimate.
-    pub decay_bound: f64,
-    /// The finite-C R_o with ⌈3n/4⌉ Nyström points.
-    pub r_o_fewer_nodes: f64,
-}
 
 /// One trial radius of the holed rim route.
 struct Trial {
@@ -163,7 +146,7 @@ impl Route<'_> {
     }
 }
 
-/// [`two_plate_hole_pressure`] for a plate whose outer radius is `c_outer` (module docs).
+/// [`super::holed::two_plate_hole_pressure`] for a plate whose outer radius is `c_outer` (module docs).
 pub(super) fn finite_rim(
     plate: &SinglePlate,
     c_outer: f64,
@@ -183,7 +166,7 @@ pub(super) fn finite_rim(
         .into());
     }
     let infinite = SinglePlate::new(a, OuterRadius::Infinite, d, plate.material(), load.clone())?;
-    let (inf, _) = two_plate_hole_pressure(&infinite, params, &[])?;
+    let (inf, _) = holed_infinite::solve(&infinite, params, &[])?;
     let mat = plate.material();
     let states = RimStates::new(a, d, mat)?;
     let gl = gauss_legendre(20);

@@ -1,0 +1,70 @@
+//! The infinite plate of the semi-analytic two-plate route with the hole ([`super::holed`]):
+//! the geometry's setup, the search for R_o over trial contact radii (module `holed_search`),
+//! the error estimate's variant runs and the interface pressure at the radii asked for. The
+//! finite rim (module `rim_holed`) starts from it.
+//!
+//! # Accuracy
+//!
+//! As [`super::holed`]: `tests/hankel/two_plate_hole.rs`, `tests/hankel/two_plate_hole_fast.rs`,
+//! `tests/hankel/two_plate_hole_tiers.rs`.
+//!
+//! # Cost
+//!
+//! The route's whole cost at C = ∞ (example 19).
+//!
+//! ```
+//! // Internal to the route; reached through its entry point:
+//! use boltzone::hankel::receding::holed::{two_plate_hole, HoledParams};
+//! let _ = (two_plate_hole, HoledParams::default());
+//! ```
+
+use super::contact::RecedingError;
+use super::holed_params::HoledParams;
+use super::holed_record::{HoledContact, HoledInfo};
+use super::holed_search::{estimate, fraction_radius};
+use super::holed_setup::Setup;
+use crate::joint::SinglePlate;
+use std::time::Instant;
+
+/// R_o of the infinite `plate` and the pressure at the fractions `at` of [A, R_o] (checked by
+/// the caller): [`super::holed::two_plate_hole_pressure`] at C = ∞.
+pub(super) fn solve(
+    plate: &SinglePlate,
+    params: &HoledParams,
+    at: &[f64],
+) -> Result<(HoledContact, Vec<(f64, f64)>), RecedingError> {
+    let start = Instant::now();
+    let setup = Setup::new(plate, params)?;
+    let b = plate.load().outer();
+    let found = setup.search(b, params.nodes, params, None, at)?;
+    let (r_o, last) = (found.r_o, &found.last);
+    let curve: Vec<(f64, f64)> = at
+        .iter()
+        .map(|&x| fraction_radius(setup.a, r_o, x))
+        .zip(last.pressure.iter().copied())
+        .collect();
+    let mut info = HoledInfo {
+        r_o_error: params.rel_tol * setup.d,
+        r_o_fewer_nodes: f64::NAN,
+        r_o_half_terms: f64::NAN,
+        residual_max: last.residual,
+        bilateral_residual: setup.bilateral.info().residual_max,
+        crack_traction: last.crack_traction,
+        iterations: last.iterations,
+        search_iterations: found.iterations,
+        solves: 0,
+        seconds: 0.0,
+        rim: None,
+    };
+    let mut solves = found.solves;
+    if params.estimate {
+        let ((r1, r2), s) = estimate(&setup, plate, params, &found)?;
+        solves += s;
+        info.r_o_fewer_nodes = r1;
+        info.r_o_half_terms = r2;
+        info.r_o_error += (r1 - r_o).abs() + (r2 - r_o).abs();
+    }
+    info.solves = solves;
+    info.seconds = start.elapsed().as_secs_f64();
+    Ok((HoledContact { r_o, info }, curve))
+}
