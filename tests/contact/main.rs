@@ -9,4 +9,5 @@ mod lcp;
 mod receding_vs_fe;
 mod separation;
 mod thermal;
+mod tighter_tolerance;
 mod two_plate;
