@@ -37,7 +37,7 @@ use super::error::SceneError;
 use super::file::{Model, Scene};
 use super::solution::{InterfaceCurve, Solution};
 use crate::hankel::receding::holed::{two_plate_hole_pressure, HoledParams};
-use crate::hankel::receding::MAX_B_OVER_D;
+use crate::hankel::receding::{MAX_B_OVER_D, MAX_B_OVER_D_RIM};
 use crate::joint::Joint;
 
 /// `method = "auto"` (and `two --method auto`) takes this route only below this tolerance:
@@ -86,6 +86,16 @@ pub fn blocker(scene: &Scene) -> Option<(&'static str, &'static str)> {
             "load.outer_radius",
             "the route takes loads up to 16 plate thicknesses wide (its cost grows like (B/D)²: \
              4.7 s and 0.6 GB at 16)",
+        ),
+        (
+            scene.joint.outer_radius.is_some()
+                && scene
+                    .plates
+                    .first()
+                    .is_some_and(|p| scene.load.outer_radius > MAX_B_OVER_D_RIM * p.thickness),
+            "load.outer_radius",
+            "with a finite joint.outer_radius the route takes loads up to 8 plate thicknesses \
+             wide (the rim's cost grows like (B/D)²: 10.5 s at 8)",
         ),
         (
             scene.load.nut_displacement.is_some(),

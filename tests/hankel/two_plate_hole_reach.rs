@@ -4,7 +4,7 @@
 //! `load.outer_radius` and its line; `method = "auto"` takes the finite elements there.
 
 use boltzone::hankel::receding::holed::{two_plate_hole, HoledParams};
-use boltzone::hankel::receding::MAX_B_OVER_D;
+use boltzone::hankel::receding::{MAX_B_OVER_D, MAX_B_OVER_D_RIM};
 use boltzone::scene::{two_hankel, Scene};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
@@ -67,4 +67,49 @@ fn a_scene_asking_for_the_route_beyond_its_reach_is_refused_by_key() {
         text.contains("load.outer_radius") && text.contains("line 7"),
         "{text}"
     );
+}
+
+#[test]
+fn a_rim_halves_the_reach_in_the_library_the_cli_and_the_scene() {
+    // with a finite rim C the route costs 2–5× the infinite plate's: B/D ≤ 8
+    // (`MAX_B_OVER_D_RIM`); the infinite plate keeps its 16
+    assert_eq!(MAX_B_OVER_D_RIM, 8.0);
+    let mat = Material::new(3.0e7, 0.3).unwrap();
+    let rimmed = SinglePlate::new(
+        0.1,
+        OuterRadius::Finite(3.0),
+        0.1,
+        mat,
+        FaceLoad::uniform(0.1, 0.85, 1.0).unwrap(),
+    )
+    .unwrap();
+    let start = std::time::Instant::now();
+    let err = two_plate_hole(&rimmed, &HoledParams::for_tolerance(1e-3)).unwrap_err();
+    assert!(err.is_input(), "{err}");
+    assert!(err.to_string().contains("8.5"), "{err}");
+    assert!(
+        start.elapsed().as_secs_f64() < 0.5,
+        "refused before computing"
+    );
+    // the CLI names --b and exits 2; auto takes the finite elements (exit 0 or 3, not 2)
+    let args = |method: &str| {
+        crate::common::boltzone(&[
+            "two", "--a", "0.1", "--b", "0.85", "--d", "0.1", "--c", "3", "--method", method,
+            "--tol", "1e-2",
+        ])
+    };
+    let out = args("hankel");
+    let text = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{text}");
+    assert!(text.contains("--b") && text.contains("rim"), "{text}");
+    assert_ne!(args("auto").status.code(), Some(2));
+    // the scene: refused by key with a rim, taken by auto's FE
+    let with_rim = |method: &str| {
+        scene(method, 1e-6, 0.85).replace("[hole]", "[joint]\nouter_radius = 3.0\n[hole]")
+    };
+    let err = Scene::parse(&with_rim("hankel")).unwrap_err();
+    assert!(err.to_string().contains("load.outer_radius"), "{err}");
+    assert!(!two_hankel::auto_takes(
+        &Scene::parse(&with_rim("auto")).unwrap()
+    ));
 }

@@ -28,6 +28,13 @@ use crate::hankel::hole::HoleParams;
 /// take the finite elements there.
 pub const MAX_B_OVER_D: f64 = 16.0;
 
+/// Widest load B/D that the route takes with a finite rim C (module `rim_holed`), whose cost is
+/// 2–5× the infinite plate's: measured (release, A = D, C = 30D, with a CI build beside it)
+/// 2.2, 3.9, 6.6 s of CPU at B/D = 4, 6, 8 and --tol 1e-4, 4.1, 6.6, 10.5 s at 1e-6; 17 s at
+/// B/D = 11 and 35 s at 16 (over the fuzz's 30 s). Wider loads with a rim are refused as bad
+/// input naming the ratio; `auto` takes the finite elements there.
+pub const MAX_B_OVER_D_RIM: f64 = 8.0;
+
 /// Knobs of [`two_plate_hole`](super::holed::two_plate_hole).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HoledParams {

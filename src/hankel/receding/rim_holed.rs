@@ -57,7 +57,7 @@
 
 use super::contact::RecedingError;
 use super::holed_infinite;
-use super::holed_params::HoledParams;
+use super::holed_params::{HoledParams, MAX_B_OVER_D_RIM};
 use super::holed_record::HoledContact;
 pub use super::holed_record::RimRecord;
 use super::holed_search::fraction_radius;
@@ -162,6 +162,14 @@ pub(super) fn finite_rim(
             field: "outer radius C",
             value: c_outer,
             reason: "beyond the load's outer radius B by more than D for the semi-analytic rim",
+        }
+        .into());
+    }
+    if b > MAX_B_OVER_D_RIM * d {
+        return Err(InputError::Parameter {
+            field: "load outer radius B over plate thickness D (semi-analytic route with a rim)",
+            value: b / d,
+            reason: "at most 8 with a finite rim C (the cost grows like (B/D)²: 10.5 s at 8)",
         }
         .into());
     }
