@@ -17,7 +17,7 @@
 use super::exit::{sig, Status};
 use super::two_args::Args;
 use boltzone::hankel::receding::holed::{two_plate_hole_pressure, HoledParams};
-use boltzone::hankel::receding::{MAX_B_OVER_D, MAX_B_OVER_D_RIM};
+use boltzone::hankel::receding::{MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
 /// Why the Hankel route does not apply to these arguments: (flag, value, reason).
@@ -42,6 +42,15 @@ pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> 
     };
     if refusal.is_some() {
         return refusal;
+    }
+    if g.a > 0.0 && g.a < MIN_A_OVER_D * g.d {
+        return Some((
+            "--a",
+            g.a.to_string(),
+            "is below the Hankel route's smallest hole (A at least 0.04 plate thicknesses: \
+             smaller holes left residual tractions of 1e1-1e4 P on the hole); use --method fem \
+             or --a 0 (the receding contact, within A² of it)",
+        ));
     }
     if g.a > 0.0 && g.b > MAX_B_OVER_D * g.d {
         return Some((
@@ -161,7 +170,7 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
         );
         if let Some(rim) = out.info.rim {
             println!(
-                "rim C = {} {l}: R_o - R_o(C = inf) = {:+.4e} {l} (bending correction; its \
+                "rim C = {} {l}: R_o - R_o(infinite plate) = {:+.4e} {l} (bending correction; its \
                  self-equilibrated residue bounded by {:.1e} {l}, included)",
                 sig(rim.outer_radius, 10),
                 out.r_o - rim.r_o_infinite,

@@ -37,7 +37,7 @@ use super::error::SceneError;
 use super::file::{Model, Scene};
 use super::solution::{InterfaceCurve, Solution};
 use crate::hankel::receding::holed::{two_plate_hole_pressure, HoledParams};
-use crate::hankel::receding::{MAX_B_OVER_D, MAX_B_OVER_D_RIM};
+use crate::hankel::receding::{MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
 use crate::joint::Joint;
 
 /// `method = "auto"` (and `two --method auto`) takes this route only below this tolerance:
@@ -86,6 +86,16 @@ pub fn blocker(scene: &Scene) -> Option<(&'static str, &'static str)> {
             "load.outer_radius",
             "the route takes loads up to 16 plate thicknesses wide (its cost grows like (B/D)²: \
              4.7 s and 0.6 GB at 16)",
+        ),
+        (
+            scene.hole.radius > 0.0
+                && scene
+                    .plates
+                    .first()
+                    .is_some_and(|p| scene.hole.radius < MIN_A_OVER_D * p.thickness),
+            "hole.radius",
+            "the route takes holes of at least 0.04 plate thicknesses (smaller ones left \
+             residual tractions of 1e1-1e4 P on the hole)",
         ),
         (
             scene.joint.outer_radius.is_some()

@@ -4,7 +4,7 @@
 //! `load.outer_radius` and its line; `method = "auto"` takes the finite elements there.
 
 use boltzone::hankel::receding::holed::{two_plate_hole, HoledParams};
-use boltzone::hankel::receding::{MAX_B_OVER_D, MAX_B_OVER_D_RIM};
+use boltzone::hankel::receding::{MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
 use boltzone::scene::{two_hankel, Scene};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
@@ -112,4 +112,37 @@ fn a_rim_halves_the_reach_in_the_library_the_cli_and_the_scene() {
     assert!(!two_hankel::auto_takes(
         &Scene::parse(&with_rim("auto")).unwrap()
     ));
+}
+
+#[test]
+fn holes_below_the_smallest_validated_are_refused() {
+    // A/D = 0.001 (the 10⁴ fuzz: residual tractions of 1e1–1e4 P on the hole, and over 30 s
+    // with a rim): refused at once as input naming A/D; the CLI names --a, auto takes the FE
+    assert_eq!(MIN_A_OVER_D, 0.04);
+    let tiny = SinglePlate::new(
+        0.001,
+        OuterRadius::Infinite,
+        1.0,
+        Material::new(3.0e7, 0.3).unwrap(),
+        FaceLoad::uniform(0.001, 0.5, 1.0).unwrap(),
+    )
+    .unwrap();
+    let err = two_plate_hole(&tiny, &HoledParams::for_tolerance(1e-3)).unwrap_err();
+    assert!(err.is_input() && err.to_string().contains("A/D"), "{err}");
+    let args = |method: &str| {
+        crate::common::boltzone(&[
+            "two", "--a", "0.001", "--b", "0.5", "--d", "1", "--method", method, "--tol", "1e-2",
+        ])
+    };
+    let out = args("hankel");
+    let text = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{text}");
+    assert!(text.contains("--a"), "{text}");
+    assert_ne!(args("auto").status.code(), Some(2));
+    // the scene: refused by key
+    let s = scene("hankel", 1e-3, 0.5)
+        .replace("radius = 0.1", "radius = 0.001")
+        .replace("thickness = 0.1", "thickness = 1.0");
+    let err = Scene::parse(&s).unwrap_err();
+    assert!(err.to_string().contains("hole.radius"), "{err}");
 }
