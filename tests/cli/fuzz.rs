@@ -9,7 +9,12 @@
 //! `every_command_survives_ten_thousand_argument_sets` (ignored: ~10 min on two cores). Its last run
 //! (24 Nov 2026, with `two --method hankel|auto` added) found 10 runs over 30 s, all `two
 //! --method hankel` with a hole and B/D from 42 to 625; that route now refuses B/D > 16 with exit
-//! 2 naming `--b` (its cost grows like (B/D)²: 18 s and 2.0 GB at 32).
+//! 2 naming `--b` (its cost grows like (B/D)²: 18 s and 2.0 GB at 32). The next (24 Nov 2026,
+//! after the Hankel route gained the finite rim `--c`; 902 s, codes 4805/81/4971/140) found 9
+//! texts "R_o(C = inf)" read as an infinity (now "R_o(infinite plate)") and 3 runs over 30 s,
+//! all `two --method hankel --c` with holes of A/D 0.001–0.005, where the route left residual
+//! tractions of 1e1–1e4 P: holes below A/D = 0.04 are now refused (exit 2 naming `--a`), and a
+//! rim beyond B/D = 8. Not re-run since.
 
 use std::io::Read;
 use std::process::{Command, Stdio};
