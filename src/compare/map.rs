@@ -25,7 +25,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::{compare_all, CompareError, CompareParams, Comparison, Geometry};
+use super::{compare_all, CompareError, CompareParams, Comparison, Geometry, Method};
 use crate::error::{positive, InputError};
 use std::time::Instant;
 
@@ -44,6 +44,8 @@ pub struct MapParams {
     pub nu: f64,
     /// Relative tolerance of each R_o (default 1e-3).
     pub tolerance: f64,
+    /// How each model's R_o is computed (default [`Method::Fem`]; [`super::route`]).
+    pub method: Method,
 }
 
 impl Default for MapParams {
@@ -55,6 +57,7 @@ impl Default for MapParams {
             c_over_a: 15.4,
             nu: 0.3,
             tolerance: 1e-3,
+            method: Method::Fem,
         }
     }
 }
@@ -104,26 +107,67 @@ impl DesignMap {
         })
     }
 
-    /// The map as CSV, one line per point (columns of [`super::table1::CSV_HEADER`] without the
-    /// report's).
+    /// The points whose models ran by `route`: (single plate, two plates).
+    pub fn count(&self, route: super::Route) -> (usize, usize) {
+        self.points.iter().fold((0, 0), |(s, t), p| {
+            (
+                s + usize::from(p.single_method == route),
+                t + usize::from(p.two_method == route),
+            )
+        })
+    }
+
+    /// The map as CSV, one line per point: the columns of [`super::table1::CSV_HEADER`] without
+    /// the report's, then each model's method (`fem` or `hankel`) and whether its R_o met the
+    /// tolerance (`single_method,single_converged,two_method,two_converged`).
     pub fn csv(&self) -> String {
         let header = super::table1::CSV_HEADER
             .split(',')
             .take_while(|h| !h.starts_with("report"))
             .collect::<Vec<_>>()
             .join(",");
-        let mut s = format!("{header}\n");
+        let mut s = format!("{header},{METHOD_COLUMNS}\n");
         for p in &self.points {
-            s += &super::table1::csv_fields(p);
-            s.push('\n');
+            s += &format!(
+                "{},{},{},{},{}\n",
+                super::table1::csv_fields(p),
+                p.single_method.as_str(),
+                p.single.converged,
+                p.two_method.as_str(),
+                p.two.converged
+            );
         }
         s
     }
 }
 
-/// Computes the map (module docs); `tick` is called once per finished point.
-pub fn compute(params: &MapParams, tick: &(dyn Fn() + Sync)) -> Result<DesignMap, CompareError> {
-    let start = Instant::now();
+/// The map CSV's last columns: which method produced each model's R_o, and whether it met
+/// the tolerance.
+pub const METHOD_COLUMNS: &str = "single_method,single_converged,two_method,two_converged";
+
+/// With [`Method::Hankel`], the first point of the map beyond the two-plate Hankel route's
+/// reach ([`super::two_hankel_reach`]) as [`CompareError::OutOfReach`] naming the point; [`compute`]
+/// checks it before computing any point. Ok for the other methods and when every point is in
+/// reach (the single plate's route has no reach limit).
+pub fn check_reach(params: &MapParams) -> Result<(), CompareError> {
+    let geometries = geometries(params)?;
+    if params.method != Method::Hankel {
+        return Ok(());
+    }
+    for g in geometries {
+        if let Err(reason) = super::two_hankel_reach(&g) {
+            return Err(CompareError::OutOfReach {
+                geometry: g.label(),
+                model: "two-plate",
+                reason,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The map's geometries, row-major (checked).
+fn geometries(params: &MapParams) -> Result<Vec<Geometry>, CompareError> {
     positive("hole radius A", params.a)?;
     positive("C/A", params.c_over_a)?;
     if params.a_over_d.is_empty() || params.b_over_a.is_empty() {
@@ -146,8 +190,17 @@ pub fn compute(params: &MapParams, tick: &(dyn Fn() + Sync)) -> Result<DesignMap
             )?);
         }
     }
+    Ok(geometries)
+}
+
+/// Computes the map (module docs); `tick` is called once per finished point.
+pub fn compute(params: &MapParams, tick: &(dyn Fn() + Sync)) -> Result<DesignMap, CompareError> {
+    let start = Instant::now();
+    check_reach(params)?;
+    let geometries = geometries(params)?;
     let cp = CompareParams {
         tolerance: params.tolerance,
+        method: params.method,
         ..CompareParams::default()
     };
     let points = compare_all(&geometries, &cp, tick)
