@@ -3,18 +3,25 @@
 //! A/D ∈ [0.2, 5] × B/A ∈ [1.1, 5], 40 × 40, logarithmically spaced), at fixed C/A (default
 //! Table 1's 15.4) and ν (0.3). Each point is one [`super::compare`], run in parallel with
 //! rayon; each model's R_o meets the relative tolerance `tolerance` (default 1e-3 = 0.1 %) by its
-//! own error estimate, which the CSV carries beside each value.
+//! own error estimate, which the CSV carries beside each value with the method that produced it
+//! and whether it converged. [`MapParams::method`] picks the method ([`super::route`]): the finite
+//! elements (default), the Hankel routes (refused, before any point is computed, when a point
+//! is beyond the two-plate route's reach: [`check_reach`]) or `auto`.
 //!
 //! # Accuracy
 //!
 //! Each point's R_o to the tolerance by its own estimate (example 13 checks the estimates against
 //! references 50 times tighter); the map is smooth and monotone and equals Table 1 at its points
-//! (`tests/compare/map.rs`, `tests/compare/tables.rs`).
+//! (`tests/compare/map.rs`, `tests/compare/tables.rs`). By the Hankel routes the values agree with
+//! the FE's within the sum of both estimates (`tests/compare/map_method.rs`; example 13's `map`
+//! mode: at most 0.40 (single) and 0.34 (two plates) of it on a 6 × 6 map at 1e-3).
 //!
 //! # Cost
 //!
-//! About 30 ms of CPU per point at 1e-3 (the default 40 × 40 map: 48 s of CPU); example 13
-//! times both models point by point against the error they achieve.
+//! About 30 ms of CPU per point at 1e-3 by the FE (the default 40 × 40 map: 48 s of CPU); example
+//! 13 times both models point by point against the error they achieve. By `auto` the two-plate
+//! Hankel route with the rim dominates: 0.96–3.7 s of CPU per point at 1e-3, growing with B/D
+//! (6 × 6 map: 56 s of CPU against the FE's 1.4 s; example 13, `map` mode).
 //!
 //! ```
 //! use boltzone::compare::map::{compute, log_spaced, MapParams};

@@ -28,8 +28,10 @@
 //! # Cost
 //!
 //! Example 13 (per point and per map, by method). At 1e-3 the FE takes ~10 ms (single) and
-//! ~26 ms (two plates) of CPU per point; the Hankel single plate 3–80 ms, the Hankel two plates
-//! with the rim 1–7 s.
+//! ~26 ms (two plates) of CPU per point, the Hankel single plate about 10 ms, the Hankel two
+//! plates with the rim 0.96 s (B/D ≤ 1) to 3.7 s (4 < B/D ≤ 8) on average over a 6 × 6 map;
+//! where that route does not converge (the map's A/D = 0.2 row, C − B < 3D) `auto` spends
+//! ~1.4 s on it before taking the FE.
 //!
 //! ```
 //! use boltzone::compare::{two_hankel_reach, Geometry, Method};
@@ -118,6 +120,20 @@ pub(super) struct ModelResult {
     pub model: &'static str,
 }
 
+/// A Hankel route's outcome under `method`: kept by [`Method::Hankel`] (its failure as the
+/// comparison's error, `error`), kept by `auto` only when it converged (else None: the FE).
+fn keep<E>(
+    method: Method,
+    outcome: Result<ModelResult, E>,
+    error: impl FnOnce(E) -> CompareError,
+) -> Result<Option<ModelResult>, CompareError> {
+    match outcome {
+        Ok(r) if method == Method::Hankel || r.value.converged => Ok(Some(r)),
+        Err(e) if method == Method::Hankel => Err(error(e)),
+        _ => Ok(None),
+    }
+}
+
 /// The single plate's R_o by `method` at relative tolerance `tol` (module docs).
 pub(super) fn single(g: &Geometry, method: Method, tol: f64) -> Result<ModelResult, CompareError> {
     let plate = g.single_plate(OuterRadius::Finite(g.c))?;
@@ -127,26 +143,19 @@ pub(super) fn single(g: &Geometry, method: Method, tol: f64) -> Result<ModelResu
             rel_tol: SeparationParams::default().rel_tol.max(1e-3 * tol),
             ..Default::default()
         };
-        match single_plate_separation(&plate, &sep, &hole) {
-            Ok((s, h)) => {
-                let value = Value::with_tolerance(s.r_o, s.r_o_error, tol);
-                if method == Method::Hankel || value.converged {
-                    return Ok(ModelResult {
-                        value,
-                        route: Route::Hankel,
-                        levels: h.history.len(),
-                        dofs: 0,
-                        model: "single plate, Hankel route with the hole",
-                    });
-                }
-            }
-            Err(source) if method == Method::Hankel => {
-                return Err(CompareError::Hankel {
-                    geometry: g.label(),
-                    source,
-                })
-            }
-            Err(_) => {}
+        let outcome = single_plate_separation(&plate, &sep, &hole).map(|(s, h)| ModelResult {
+            value: Value::with_tolerance(s.r_o, s.r_o_error, tol),
+            route: Route::Hankel,
+            levels: h.history.len(),
+            dofs: 0,
+            model: "single plate, Hankel route with the hole",
+        });
+        let error = |source| CompareError::Hankel {
+            geometry: g.label(),
+            source,
+        };
+        if let Some(r) = keep(method, outcome, error)? {
+            return Ok(r);
         }
     }
     let (value, FemStudy { levels, dofs }) =
@@ -175,26 +184,20 @@ pub(super) fn two(g: &Geometry, method: Method, tol: f64) -> Result<ModelResult,
     }
     if method != Method::Fem && reach.is_ok() {
         let plate = g.single_plate(OuterRadius::Finite(g.c))?;
-        match two_plate_hole(&plate, &HoledParams::for_tolerance(tol)) {
-            Ok(out) => {
-                let value = Value::with_tolerance(out.r_o, out.info.r_o_error, tol);
-                if method == Method::Hankel || value.converged {
-                    return Ok(ModelResult {
-                        value,
-                        route: Route::Hankel,
-                        levels: out.info.solves,
-                        dofs: 0,
-                        model: "two plates, Hankel route with the hole and rim",
-                    });
-                }
-            }
-            Err(source) if method == Method::Hankel => {
-                return Err(CompareError::TwoHankel {
-                    geometry: g.label(),
-                    source,
-                })
-            }
-            Err(_) => {}
+        let outcome =
+            two_plate_hole(&plate, &HoledParams::for_tolerance(tol)).map(|out| ModelResult {
+                value: Value::with_tolerance(out.r_o, out.info.r_o_error, tol),
+                route: Route::Hankel,
+                levels: out.info.solves,
+                dofs: 0,
+                model: "two plates, Hankel route with the hole and rim",
+            });
+        let error = |source| CompareError::TwoHankel {
+            geometry: g.label(),
+            source,
+        };
+        if let Some(r) = keep(method, outcome, error)? {
+            return Ok(r);
         }
     }
     let params = TwoPlateParams {

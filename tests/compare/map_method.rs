@@ -98,15 +98,17 @@ fn auto_takes_the_fem_where_the_two_plate_route_does_not_converge() {
     assert!(c.two.converged && c.two.error <= 1e-3 * c.two.value);
 }
 
-fn boltzone(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_boltzone"))
-        .args(args)
-        .output()
-        .expect("runs")
+/// `boltzone args` run in `dir`.
+fn boltzone_in(dir: &std::path::Path, args: &[&str]) -> std::process::Output {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_boltzone"));
+    cmd.current_dir(dir).args(args).output().expect("runs")
 }
 
 #[test]
 fn map_method_flag_is_named_and_auto_says_which_method_ran() {
+    let dir = std::env::temp_dir().join(format!("boltzone_map_method_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let boltzone = |args: &[&str]| boltzone_in(&dir, args);
     let o = boltzone(&["map", "--method", "galerkin"]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--method"));
@@ -120,24 +122,17 @@ fn map_method_flag_is_named_and_auto_says_which_method_ran() {
         "{err}"
     );
     // README's command
-    let dir = std::env::temp_dir().join(format!("boltzone_map_method_{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let csv = dir.join("map_auto.csv");
-    let o = Command::new(env!("CARGO_BIN_EXE_boltzone"))
-        .current_dir(&dir)
-        .args([
-            "map",
-            "--method",
-            "auto",
-            "--a-over-d",
-            "1,5",
-            "--b-over-a",
-            "2.2",
-            "--csv",
-            "map_auto.csv",
-        ])
-        .output()
-        .unwrap();
+    let o = boltzone(&[
+        "map",
+        "--method",
+        "auto",
+        "--a-over-d",
+        "1,5",
+        "--b-over-a",
+        "2.2",
+        "--csv",
+        "map_auto.csv",
+    ]);
     assert_eq!(
         o.status.code(),
         Some(0),
@@ -149,7 +144,7 @@ fn map_method_flag_is_named_and_auto_says_which_method_ran() {
         out.contains("two plates hankel at 1, fem at 1 of 2 points"),
         "{out}"
     );
-    let text = std::fs::read_to_string(&csv).unwrap();
+    let text = std::fs::read_to_string(dir.join("map_auto.csv")).unwrap();
     assert_eq!(column(&text, "single_method"), ["hankel", "hankel"]);
     assert_eq!(column(&text, "two_method"), ["hankel", "fem"]);
     std::fs::remove_dir_all(&dir).unwrap();
