@@ -243,42 +243,21 @@ fn process_cpu_seconds() -> Option<f64> {
     Some(ticks / 100.0)
 }
 
-/// One map by one method, timed.
-#[derive(Debug, Clone)]
-pub struct MapRun {
-    /// The method asked.
-    pub method: Method,
-    /// The map.
-    pub map: DesignMap,
-    /// Wall-clock seconds.
-    pub wall: f64,
-    /// CPU seconds of the process (NaN where /proc is missing).
-    pub cpu: f64,
-}
-
-/// What [`by_method`] measured.
-#[derive(Debug, Clone)]
-pub struct MethodStudy {
-    /// The FE map and the auto map.
-    pub runs: [MapRun; 2],
-    /// Largest |FE − Hankel| / (e_FE + e_Hankel) over the points where a model ran by both
-    /// routes: (single plate, two plates); 0 where none did.
-    pub worst_ratio: (f64, f64),
-}
-
 /// Computes the map over `a_over_d` × `b_over_a` by the FE and by `auto`, prints times, the
 /// agreement of the two routes and where the time goes (with `per_point`, each point of the
 /// auto map again, one at a time, timed by the process's CPU: the Hankel routes use rayon
 /// inside, so a thread's clock misses part of their work); fails if an FE–Hankel difference
-/// exceeds the sum of the two estimates or a converged value's estimate exceeds `tol`.
+/// exceeds the sum of the two estimates or a converged value's estimate exceeds `tol`. Returns
+/// the largest |FE − Hankel| / (e_FE + e_Hankel) of each model (single, two plates; 0 where no
+/// point ran by both routes).
 pub fn by_method(
     a_over_d: &[f64],
     b_over_a: &[f64],
     tol: f64,
     per_point: bool,
-) -> anyhow::Result<MethodStudy> {
+) -> anyhow::Result<(f64, f64)> {
     let threads = rayon::current_num_threads();
-    let mut runs = Vec::new();
+    let mut maps = Vec::new();
     for method in [Method::Fem, Method::Auto] {
         let params = MapParams {
             a_over_d: a_over_d.to_vec(),
@@ -312,17 +291,10 @@ pub fn by_method(
         }
         let unconverged = map.points.iter().filter(|c| !c.converged()).count();
         println!("  points not converged: {unconverged} of {n}");
-        runs.push(MapRun {
-            method,
-            map,
-            wall,
-            cpu,
-        });
+        maps.push(map);
     }
-    let [fem, auto]: [MapRun; 2] = runs
-        .try_into()
-        .map_err(|_| anyhow::anyhow!("two runs expected"))?;
-    let worst_ratio = agreement(&fem.map, &auto.map)?;
+    let (fem, auto) = (&maps[0], &maps[1]);
+    let worst_ratio = agreement(fem, auto)?;
     if per_point {
         let cp = CompareParams {
             tolerance: tol,
@@ -330,7 +302,7 @@ pub fn by_method(
             ..CompareParams::default()
         };
         let mut cpu = Vec::new();
-        for c in &auto.map.points {
+        for c in &auto.points {
             let c0 = process_cpu_seconds();
             compare(&c.geometry, &cp)?;
             cpu.push(match (c0, process_cpu_seconds()) {
@@ -338,12 +310,9 @@ pub fn by_method(
                 _ => c.info.seconds,
             });
         }
-        time_breakdown(&auto.map, &cpu, threads);
+        time_breakdown(auto, &cpu, threads);
     }
-    Ok(MethodStudy {
-        runs: [fem, auto],
-        worst_ratio,
-    })
+    Ok(worst_ratio)
 }
 
 /// |FE − Hankel| / (e_FE + e_Hankel) for each model where the auto map took the Hankel route;

@@ -14,14 +14,15 @@
 //! references 50 times tighter); the map is smooth and monotone and equals Table 1 at its points
 //! (`tests/compare/map.rs`, `tests/compare/tables.rs`). By the Hankel routes the values agree with
 //! the FE's within the sum of both estimates (`tests/compare/map_method.rs`; example 13's `map`
-//! mode: at most 0.40 (single) and 0.34 (two plates) of it on a 6 × 6 map at 1e-3).
+//! mode: at most 0.58 (single) and 0.55 (two plates) of it on a 10 × 10 map at 1e-3).
 //!
 //! # Cost
 //!
 //! About 30 ms of CPU per point at 1e-3 by the FE (the default 40 × 40 map: 48 s of CPU); example
 //! 13 times both models point by point against the error they achieve. By `auto` the two-plate
-//! Hankel route with the rim dominates: 0.96–3.7 s of CPU per point at 1e-3, growing with B/D
-//! (6 × 6 map: 56 s of CPU against the FE's 1.4 s; example 13, `map` mode).
+//! Hankel route with the rim dominates: 1.1–3.2 s of CPU per point at 1e-3, growing with B/D
+//! (10 × 10 map: 143 s of CPU against the FE's 3.7 s, so about 2,400 s for 40 × 40; example 13,
+//! `map` mode, and [`super::route`] for where the time goes).
 //!
 //! ```
 //! use boltzone::compare::map::{compute, log_spaced, MapParams};

@@ -27,11 +27,13 @@
 //!
 //! # Cost
 //!
-//! Example 13 (per point and per map, by method). At 1e-3 the FE takes ~10 ms (single) and
-//! ~26 ms (two plates) of CPU per point, the Hankel single plate about 10 ms, the Hankel two
-//! plates with the rim 0.96 s (B/D ≤ 1) to 3.7 s (4 < B/D ≤ 8) on average over a 6 × 6 map;
-//! where that route does not converge (the map's A/D = 0.2 row, C − B < 3D) `auto` spends
-//! ~1.4 s on it before taking the FE.
+//! Example 13 (per point and per map, by method; `map 10` at 1e-3, each point alone, CPU of
+//! the process). The FE takes ~10 ms (single) and ~26 ms (two plates) per point; the Hankel single
+//! plate about 10 ms (1 % of the auto map); the Hankel two plates with the rim 1.1 s (B/D ≤ 2),
+//! 1.5 s (2–4) and 3.2 s (4–8) on average — 77 % of the auto map. Where that route returns an
+//! estimate above the tolerance `auto` has paid for it before taking the FE: 18 of 100 points at
+//! 1e-3 (15 on the A/D = 0.2 and 0.29 rows, whose rim lies within 4.4D of B, 3 near B/D = 8), with
+//! estimates of 1.0e-3 to 5.3e-3 R_o there (0.39 R_o at A/D 0.2, B/A 1.1), another 23 % of the map.
 //!
 //! ```
 //! use boltzone::compare::{two_hankel_reach, Geometry, Method};
