@@ -34,11 +34,11 @@
 //! estimate above the tolerance `auto` has paid for it before taking the FE: 18 of 100 points at
 //! 1e-3 (15 on the A/D = 0.2 and 0.29 rows, whose rim lies within 4.4D of B, 3 near B/D = 8), with
 //! estimates of 1.0e-3 to 5.3e-3 R_o there (0.39 R_o at A/D 0.2, B/A 1.1), another 23 % of the map.
-//! The rim is most of it: `two --method hankel --tol 1e-3` with C = 15.4A tried 25 contact radii
-//! where the infinite plate tried 7, and took 5–12× its CPU (four points) (1.0 s against 0.19 s at A/D 1.2,
-//! B/A 1.1; 4.6 s against 0.39 s at A/D 1.7, B/A 4.2, where the rim's estimate also missed 1e-3);
-//! R_o(C) − R_o(∞) was −5e-5 to −8e-4 of R_o on those points, up to the size of the tolerance, so
-//! the rim cannot simply be left out at 1e-3.
+//! The rim is most of it: on four points `two --method hankel --tol 1e-3` with C = 15.4A tried 25
+//! contact radii where the infinite plate tried 7, and took 5–12× its CPU (1.0 s against 0.19 s
+//! at A/D 1.2, B/A 1.1; 4.6 s against 0.39 s at A/D 1.7, B/A 4.2, where the rim's estimate also
+//! missed 1e-3); R_o(C) − R_o(∞) was −5e-5 to −8e-4 of R_o there, up to the size of the
+//! tolerance, so the rim cannot simply be left out at 1e-3.
 //!
 //! ```
 //! use boltzone::compare::{two_hankel_reach, Geometry, Method};
