@@ -154,8 +154,8 @@ impl DesignMap {
 pub const METHOD_COLUMNS: &str = "single_method,single_converged,two_method,two_converged";
 
 /// With [`Method::Hankel`], the first point of the map beyond the two-plate Hankel route's
-/// reach ([`super::two_hankel_reach`]) as [`CompareError::OutOfReach`] naming the point; [`compute`]
-/// checks it before computing any point. Ok for the other methods and when every point is in
+/// reach ([`super::two_hankel_reach`]) as [`CompareError::OutOfReach`] naming the point;
+/// [`compute`] checks it before computing any point. Ok for the other methods and when every point is in
 /// reach (the single plate's route has no reach limit).
 pub fn check_reach(params: &MapParams) -> Result<(), CompareError> {
     let geometries = geometries(params)?;
