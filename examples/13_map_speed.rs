@@ -18,11 +18,25 @@
 //! over A/D ∈ [0.2, 5] × B/A ∈ [1.1, 5] plus Table 1's twelve geometries (default n = 6,
 //! tolerance 1e-3).
 //!
-//! Builds on: examples 03 and 04 (the two models, timed over the map).
+//! **By method** (`cargo run --release --example 13_map_speed map [n] [tolerance]`, default
+//! n = 6): the n × n map computed as `boltzone map` does (rayon over points), once by the FE
+//! (`--method fem`) and once by `--method auto` (each model's Hankel route where it applies
+//! and converges, [`boltzone::compare::route`]), each timed by wall clock and by the process's
+//! CPU (user + system, /proc/self/stat). Where a model ran by both routes it prints the
+//! largest |FE − Hankel| / (e_FE + e_Hankel), which must not exceed 1 (the example fails
+//! otherwise), and every point's estimate against the tolerance; then where the time goes:
+//! each route's seconds per point (in-thread wall clock) by A/D row and by B/D, the slowest
+//! points, and the schedule's efficiency CPU/(wall × threads). `--method hankel` itself refuses
+//! the full map (its B/D > 8 points): the auto run's Hankel points are its answers there.
+//! Quick mode (`BOLTZONE_QUICK=1`) runs the per-point study on five points and this one on a
+//! 3 × 1 map (A/D 0.5, 1, 5 at B/A 2.2: the last is beyond the two-plate route's B/D = 8).
+//!
+//! Builds on: examples 03 and 04 (the two models, timed over the map) and 19 (the two-plate
+//! Hankel route).
 
-use boltzone::compare::map::log_spaced;
+use boltzone::compare::map::{compute, log_spaced, DesignMap, MapParams};
 use boltzone::compare::single::single_fem;
-use boltzone::compare::Geometry;
+use boltzone::compare::{compare, CompareParams, Comparison, Geometry, Method, Route, Value};
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
 use boltzone::OuterRadius;
 use std::time::Instant;
@@ -64,9 +78,17 @@ pub const QUICK_POINTS: [(f64, f64); 5] =
 
 pub fn main() -> anyhow::Result<()> {
     if std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1") {
-        return run(&QUICK_POINTS, 1e-3).map(|runs| summary(&runs, 1e-3));
+        summary(&run(&QUICK_POINTS, 1e-3)?, 1e-3);
+        return by_method(&[0.5, 1.0, 5.0], &[2.2], 1e-3, false).map(|_| ());
     }
-    let mut args = std::env::args().skip(1);
+    let mut args = std::env::args().skip(1).peekable();
+    if args.peek().is_some_and(|a| a == "map") {
+        args.next();
+        let n: usize = args.next().map(|s| s.parse()).transpose()?.unwrap_or(6);
+        let tol: f64 = args.next().map(|s| s.parse()).transpose()?.unwrap_or(1e-3);
+        let axes = (log_spaced(0.2, 5.0, n), log_spaced(1.1, 5.0, n));
+        return by_method(&axes.0, &axes.1, tol, true).map(|_| ());
+    }
     let n: usize = args.next().map(|s| s.parse()).transpose()?.unwrap_or(6);
     let tol: f64 = args.next().map(|s| s.parse()).transpose()?.unwrap_or(1e-3);
     let mut points = Vec::new();
@@ -208,4 +230,200 @@ pub fn summary(runs: &[PointRun], tol: f64) {
              actual ≤ {worst_actual:.1e} (tolerance {tol:e})"
         );
     }
+}
+
+/// The process's CPU seconds, user + system of all threads (Linux, /proc/self/stat in clock
+/// ticks of 1/100 s), or None.
+fn process_cpu_seconds() -> Option<f64> {
+    let s = std::fs::read_to_string("/proc/self/stat").ok()?;
+    // fields after the command name in parentheses: state is field 3, utime 14, stime 15
+    let rest = &s[s.rfind(')')? + 2..];
+    let f: Vec<&str> = rest.split_whitespace().collect();
+    let ticks = f.get(11)?.parse::<f64>().ok()? + f.get(12)?.parse::<f64>().ok()?;
+    Some(ticks / 100.0)
+}
+
+/// Computes the map over `a_over_d` × `b_over_a` by the FE and by `auto`, prints times, the
+/// agreement of the two routes and where the time goes (with `per_point`, each point of the
+/// auto map again, one at a time, timed by the process's CPU: the Hankel routes use rayon
+/// inside, so a thread's clock misses part of their work); fails if an FE–Hankel difference
+/// exceeds the sum of the two estimates or a converged value's estimate exceeds `tol`. Returns
+/// the largest |FE − Hankel| / (e_FE + e_Hankel) of each model (single, two plates; 0 where no
+/// point ran by both routes).
+pub fn by_method(
+    a_over_d: &[f64],
+    b_over_a: &[f64],
+    tol: f64,
+    per_point: bool,
+) -> anyhow::Result<(f64, f64)> {
+    let threads = rayon::current_num_threads();
+    let mut maps = Vec::new();
+    for method in [Method::Fem, Method::Auto] {
+        let params = MapParams {
+            a_over_d: a_over_d.to_vec(),
+            b_over_a: b_over_a.to_vec(),
+            tolerance: tol,
+            method,
+            ..MapParams::default()
+        };
+        let (c0, w0) = (process_cpu_seconds(), Instant::now());
+        let map = compute(&params, &|| ())?;
+        let wall = w0.elapsed().as_secs_f64();
+        let cpu = match (c0, process_cpu_seconds()) {
+            (Some(a), Some(b)) => b - a,
+            _ => f64::NAN,
+        };
+        let ((sh, th), n) = (map.count(Route::Hankel), map.points.len());
+        println!(
+            "map {} x {} by {method:?} at {tol:e}: wall {wall:.2} s, CPU {cpu:.2} s on {threads} \
+             threads (efficiency CPU/(wall x threads) {:.2}); Hankel at {sh} (single) and {th} \
+             (two plates) of {n} points",
+            a_over_d.len(),
+            b_over_a.len(),
+            cpu / (wall * threads as f64)
+        );
+        for (k, c) in map.points.iter().enumerate() {
+            for (name, v) in [("single", c.single), ("two-plate", c.two)] {
+                if v.converged && v.error > tol * v.value {
+                    anyhow::bail!("{name} at point {k}: estimate {:e} > tolerance", v.error);
+                }
+            }
+        }
+        let unconverged = map.points.iter().filter(|c| !c.converged()).count();
+        println!("  points not converged: {unconverged} of {n}");
+        maps.push(map);
+    }
+    let (fem, auto) = (&maps[0], &maps[1]);
+    let worst_ratio = agreement(fem, auto)?;
+    if per_point {
+        let cp = CompareParams {
+            tolerance: tol,
+            method: Method::Auto,
+            ..CompareParams::default()
+        };
+        let mut cpu = Vec::new();
+        for c in &auto.points {
+            let c0 = process_cpu_seconds();
+            compare(&c.geometry, &cp)?;
+            cpu.push(match (c0, process_cpu_seconds()) {
+                (Some(a), Some(b)) => b - a,
+                _ => c.info.seconds,
+            });
+        }
+        time_breakdown(auto, &cpu, threads);
+    }
+    Ok(worst_ratio)
+}
+
+/// |FE − Hankel| / (e_FE + e_Hankel) for each model where the auto map took the Hankel route;
+/// prints the largest and fails above 1.
+fn agreement(fem: &DesignMap, auto: &DesignMap) -> anyhow::Result<(f64, f64)> {
+    type Pick = fn(&Comparison) -> (Value, Route);
+    let models: [(&str, Pick); 2] = [
+        ("single plate", |c| (c.single, c.single_method)),
+        ("two plates", |c| (c.two, c.two_method)),
+    ];
+    let mut worst = [0.0; 2];
+    for (m, (name, pick)) in models.iter().enumerate() {
+        let mut at = None;
+        let mut largest_estimate: f64 = 0.0;
+        for (f, a) in fem.points.iter().zip(&auto.points) {
+            let ((vf, _), (va, route)) = (pick(f), pick(a));
+            if route != Route::Hankel {
+                continue;
+            }
+            largest_estimate = largest_estimate.max(va.error / va.value);
+            let ratio = (vf.value - va.value).abs() / (vf.error + va.error);
+            if ratio > worst[m] {
+                worst[m] = ratio;
+                at = Some((
+                    a.geometry.a_over_d(),
+                    a.geometry.b_over_a(),
+                    a.over_a(vf),
+                    a.over_a(va),
+                ));
+            }
+        }
+        match at {
+            Some((ad, ba, vf, va)) => println!(
+                "{name}: largest |FE - Hankel|/(e_FE + e_Hankel) = {:.3} at A/D {ad:.3}, B/A \
+                 {ba:.3} (R_o/A FE {:.6} ± {:.1e}, Hankel {:.6} ± {:.1e}); largest Hankel \
+                 estimate {largest_estimate:.1e} of R_o",
+                worst[m], vf.value, vf.error, va.value, va.error
+            ),
+            None => println!("{name}: no point ran by the Hankel route"),
+        }
+        if worst[m] > 1.0 {
+            anyhow::bail!("{name}: FE and Hankel differ by more than their two estimates");
+        }
+    }
+    Ok((worst[0], worst[1]))
+}
+
+/// Where the auto map's time goes: `cpu[k]` is point k's CPU seconds run alone (both models);
+/// split between the models by their in-thread wall-clock shares. Per route, and for the
+/// two-plate Hankel route by A/D row and by B/D band; the slowest point against an even share.
+fn time_breakdown(map: &DesignMap, cpu: &[f64], threads: usize) {
+    let share = |c: &Comparison| c.info.seconds_two / (c.info.seconds_single + c.info.seconds_two);
+    let mut parts = [0.0; 4]; // single hankel, single fem, two hankel, two fem
+    for (c, &t) in map.points.iter().zip(cpu) {
+        parts[usize::from(c.single_method == Route::Fem)] += t * (1.0 - share(c));
+        parts[2 + usize::from(c.two_method == Route::Fem)] += t * share(c);
+    }
+    let sum: f64 = cpu.iter().sum();
+    println!("  CPU per point, each point alone: {sum:.2} s in all");
+    let names = [
+        "single plate, hankel",
+        "single plate, fem",
+        "two plates, hankel",
+        "two plates, fem",
+    ];
+    for (name, s) in names.iter().zip(parts) {
+        println!("  {name}: {s:.2} s of CPU ({:.0} %)", 100.0 * s / sum);
+    }
+    println!(
+        "  CPU seconds per point (both models) by A/D row, B/A increasing; * = two plates by fem:"
+    );
+    let nb = map.b_over_a.len();
+    for (i, ad) in map.a_over_d.iter().enumerate() {
+        let cells: Vec<String> = (i * nb..(i + 1) * nb)
+            .map(|k| {
+                let mark = if map.points[k].two_method == Route::Fem {
+                    "*"
+                } else {
+                    " "
+                };
+                format!("{:6.2}{mark}", cpu[k])
+            })
+            .collect();
+        println!("    A/D {ad:6.3}: {}", cells.join(" "));
+    }
+    let mut bands = [(0.0, 0usize); 4];
+    for (c, &t) in map.points.iter().zip(cpu) {
+        if c.two_method == Route::Hankel {
+            let bd = c.geometry.b / c.geometry.d;
+            let k = [1.0, 2.0, 4.0].iter().filter(|&&x| bd > x).count();
+            bands[k].0 += t * share(c);
+            bands[k].1 += 1;
+        }
+    }
+    for (k, name) in ["B/D <= 1", "1 < B/D <= 2", "2 < B/D <= 4", "4 < B/D <= 8"]
+        .iter()
+        .enumerate()
+    {
+        if bands[k].1 > 0 {
+            println!(
+                "    two plates by Hankel, {name}: {:.2} s of CPU per point over {} points",
+                bands[k].0 / bands[k].1 as f64,
+                bands[k].1
+            );
+        }
+    }
+    let longest = cpu.iter().copied().fold(0.0, f64::max);
+    println!(
+        "  longest point {longest:.2} s of CPU; an even share of the sum over {threads} threads \
+         {:.2} s; the parallel run's wall {:.2} s",
+        sum / threads as f64,
+        map.seconds
+    );
 }

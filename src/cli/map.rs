@@ -1,11 +1,14 @@
 //! `boltzone map`: the design map of [`boltzone::compare::map`] over A/D × B/A, as CSV and as
 //! heat maps (SVG or PNG): R_o/A of both models, the substitution's discrepancy, and the 45° and
-//! VDI rules' errors against the two-plate answer.
+//! VDI rules' errors against the two-plate answer; `--method fem|hankel|auto` picks how each
+//! model's R_o is computed ([`boltzone::compare::route`]) and the CSV says which method
+//! produced each value.
 //!
 //! # Accuracy
 //!
 //! No numerics of its own (`boltzone::compare::map`): `tests/compare/cli.rs`
-//! (`map_writes_csv_and_figures`, `map_takes_your_own_points`, `bad_arguments_are_named`).
+//! (`map_writes_csv_and_figures`, `map_takes_your_own_points`, `bad_arguments_are_named`) and
+//! `tests/compare/map_method.rs` (`--method`).
 //!
 //! # Cost
 //!
@@ -13,7 +16,8 @@
 
 use super::exit::Status;
 use super::{check, progress, write_output};
-use boltzone::compare::map::{compute, log_spaced, DesignMap, MapParams};
+use boltzone::compare::map::{check_reach, compute, log_spaced, DesignMap, MapParams};
+use boltzone::compare::{Method, Route};
 use boltzone::plot::{write_figure, HeatMapFigure, HeatPanel};
 use std::path::PathBuf;
 
@@ -45,6 +49,33 @@ pub struct Args {
     /// Draw the map as PNG to FILE.
     #[arg(long, value_name = "FILE")]
     png: Option<PathBuf>,
+    /// How each model's R_o is computed: fem (finite elements), hankel (the semi-analytic
+    /// routes with the rim; refuses a point beyond the two-plate route's reach: B/D > 8,
+    /// A/D < 0.04 or C ≤ B + D) or auto (hankel where it applies and converges, else fem).
+    /// The CSV says which method produced each value.
+    #[arg(long, value_enum, default_value_t = MethodArg::Fem)]
+    method: MethodArg,
+}
+
+/// Values of `--method`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum MethodArg {
+    /// Finite elements for both models.
+    Fem,
+    /// The Hankel routes for both models.
+    Hankel,
+    /// Hankel where it applies and converges, else fem.
+    Auto,
+}
+
+impl From<MethodArg> for Method {
+    fn from(m: MethodArg) -> Self {
+        match m {
+            MethodArg::Fem => Method::Fem,
+            MethodArg::Hankel => Method::Hankel,
+            MethodArg::Auto => Method::Auto,
+        }
+    }
 }
 
 /// Runs `boltzone map`.
@@ -114,8 +145,12 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         b_over_a: axis(&args.b_over_a, 1.1, 5.0),
         c_over_a: args.c_over_a,
         tolerance: args.tol,
+        method: args.method.into(),
         ..MapParams::default()
     };
+    if let Err(e) = check_reach(&params) {
+        return super::exit::usage("--method", "hankel", &e.to_string());
+    }
     let bar = progress(
         (params.a_over_d.len() * params.b_over_a.len()) as u64,
         "map",
@@ -150,6 +185,17 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let (d0, d1) = range(&|c| c.discrepancy_percent.value);
     let (r0, r1) = range(&|c| c.rules[0].error_percent.value);
     println!("single-plate discrepancy {d0:.1} .. {d1:.1} %; 45° rule error {r0:.1} .. {r1:.1} %");
+    let n = map.points.len();
+    let ((sh, th), (sf, tf)) = (map.count(Route::Hankel), map.count(Route::Fem));
+    println!(
+        "methods (--method {}): single plate hankel at {sh}, fem at {sf} of {n} points; \
+         two plates hankel at {th}, fem at {tf} of {n} points",
+        match args.method {
+            MethodArg::Fem => "fem",
+            MethodArg::Hankel => "hankel",
+            MethodArg::Auto => "auto",
+        }
+    );
     if let Some(p) = &args.csv {
         write_output(p, &map.csv())?;
     }

@@ -19,8 +19,8 @@
 //! assert_eq!(show(Value::exact(1.5), 2), "1.50 ± 0.0e0");
 //! ```
 
+use super::route::{self, Method, Route};
 use super::{single, CompareError, Geometry};
-use crate::contact::two_plate::{solve as solve_two, TwoPlateParams};
 use crate::error::positive;
 use crate::joint::OuterRadius;
 use crate::rules;
@@ -39,6 +39,8 @@ pub struct CompareParams {
     pub hankel_check: bool,
     /// Half-angle of the extra cone rule, degrees (default 30).
     pub cone_degrees: f64,
+    /// How each model's R_o is computed (default [`Method::Fem`]; [`super::route`]).
+    pub method: Method,
 }
 
 impl Default for CompareParams {
@@ -47,6 +49,7 @@ impl Default for CompareParams {
             tolerance: 5e-4,
             hankel_check: false,
             cone_degrees: 30.0,
+            method: Method::Fem,
         }
     }
 }
@@ -69,11 +72,12 @@ pub struct RuleResult {
 /// Timings and sizes of one comparison.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CompareInfo {
-    /// Equations of the finest single-plate FE mesh.
+    /// Equations of the finest single-plate FE mesh (0 by the Hankel route).
     pub single_dofs: usize,
-    /// FE refinement levels of the single plate.
+    /// FE refinement levels of the single plate (by the Hankel route: the hole's mode counts
+    /// tried).
     pub single_levels: usize,
-    /// Mesh levels of the two-plate model.
+    /// Mesh levels of the two-plate model (by the Hankel route: the contact radii tried).
     pub two_levels: usize,
     /// Which two-plate model ran.
     pub two_model: &'static str,
@@ -92,12 +96,16 @@ pub struct CompareInfo {
 pub struct Comparison {
     /// The geometry.
     pub geometry: Geometry,
-    /// Single-plate R_o (FE, finite C).
+    /// Single-plate R_o (finite C; by the method in `single_method`).
     pub single: Value,
+    /// The method that computed `single`.
+    pub single_method: Route,
     /// Single-plate R_o by Hankel transforms (infinite plate), if asked for.
     pub single_hankel: Option<Value>,
-    /// Two-plate R_o.
+    /// Two-plate R_o (finite C; by the method in `two_method`).
     pub two: Value,
+    /// The method that computed `two`.
+    pub two_method: Route,
     /// (R_single − R_two)/R_two·100.
     pub discrepancy_percent: Value,
     /// Contact-area discrepancy (X_single − X_two)/X_two·100, X = R_o² − A².
@@ -155,12 +163,8 @@ pub fn compare(g: &Geometry, params: &CompareParams) -> Result<Comparison, Compa
     let g = Geometry::new(g.a, g.b, g.d, g.c, g.nu)?;
     positive("comparison tolerance", params.tolerance)?;
     let label = || g.label();
-    let plate = g.single_plate(OuterRadius::Finite(g.c))?;
-    let (single, fem) =
-        single::single_fem(&plate, params.tolerance).map_err(|source| CompareError::Single {
-            geometry: label(),
-            source,
-        })?;
+    let one = route::single(&g, params.method, params.tolerance)?;
+    let single = one.value;
     let seconds_single = start.elapsed().as_secs_f64();
     let t = Instant::now();
     let single_hankel = if params.hankel_check {
@@ -178,19 +182,8 @@ pub fn compare(g: &Geometry, params: &CompareParams) -> Result<Comparison, Compa
     };
     let seconds_hankel = t.elapsed().as_secs_f64();
     let t = Instant::now();
-    let two_params = TwoPlateParams {
-        tolerance: params.tolerance,
-        ..Default::default()
-    };
-    let sol = solve_two(&g.joint()?, &two_params).map_err(|source| CompareError::Two {
-        geometry: label(),
-        source,
-    })?;
-    let two = Value {
-        value: sol.r_o,
-        error: sol.r_o_error,
-        converged: sol.converged,
-    };
+    let pair = route::two(&g, params.method, params.tolerance)?;
+    let two = pair.value;
     let seconds_two = t.elapsed().as_secs_f64();
     let rule = |name, cone: rules::ConeRadius| RuleResult {
         name,
@@ -210,16 +203,18 @@ pub fn compare(g: &Geometry, params: &CompareParams) -> Result<Comparison, Compa
     Ok(Comparison {
         geometry: g,
         single,
+        single_method: one.route,
         single_hankel,
         two,
+        two_method: pair.route,
         discrepancy_percent: percent_difference(single, two),
         area_discrepancy_percent: percent_difference(area(single, g.a), area(two, g.a)),
         rules,
         info: CompareInfo {
-            single_dofs: fem.dofs,
-            single_levels: fem.levels,
-            two_levels: sol.info.levels.len(),
-            two_model: sol.info.model,
+            single_dofs: one.dofs,
+            single_levels: one.levels,
+            two_levels: pair.levels,
+            two_model: pair.model,
             seconds_single,
             seconds_hankel,
             seconds_two,

@@ -1,5 +1,5 @@
-//! The error of a comparison ([`CompareError`]): an input error, or the failure of one of the
-//! three models, naming the geometry it failed on.
+//! The error of a comparison ([`CompareError`]): an input error, a point beyond a Hankel
+//! route's reach, or the failure of one of the models, naming the geometry it failed on.
 //!
 //! # Accuracy
 //!
@@ -18,6 +18,7 @@
 use crate::contact::ContactError;
 use crate::error::InputError;
 use crate::fem::FemError;
+use crate::hankel::receding::RecedingError;
 use crate::hankel::separation::SeparationError;
 
 /// Failures of a comparison; each names the geometry it failed on.
@@ -42,6 +43,24 @@ pub enum CompareError {
         /// What failed.
         source: SeparationError,
     },
+    /// The two-plate Hankel route failed (`Method::Hankel`).
+    #[error("two-plate Hankel route at {geometry}: {source}")]
+    TwoHankel {
+        /// The geometry.
+        geometry: String,
+        /// What failed.
+        source: RecedingError,
+    },
+    /// `Method::Hankel` asked of a point beyond a Hankel route's reach (bad input).
+    #[error("{model} model at {geometry}: {reason}; use the method fem or auto")]
+    OutOfReach {
+        /// The geometry.
+        geometry: String,
+        /// Which model ("two-plate").
+        model: &'static str,
+        /// Which limit the point breaks, with its value.
+        reason: String,
+    },
     /// The two-plate contact model failed.
     #[error("two-plate model at {geometry}: {source}")]
     Two {
@@ -60,6 +79,8 @@ impl CompareError {
             Self::Single { source, .. } => source.is_input(),
             Self::Hankel { source, .. } => source.is_input(),
             Self::Two { source, .. } => source.is_input(),
+            Self::TwoHankel { source, .. } => source.is_input(),
+            Self::OutOfReach { .. } => true,
         }
     }
 }

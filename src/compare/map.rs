@@ -3,18 +3,26 @@
 //! A/D ∈ [0.2, 5] × B/A ∈ [1.1, 5], 40 × 40, logarithmically spaced), at fixed C/A (default
 //! Table 1's 15.4) and ν (0.3). Each point is one [`super::compare`], run in parallel with
 //! rayon; each model's R_o meets the relative tolerance `tolerance` (default 1e-3 = 0.1 %) by its
-//! own error estimate, which the CSV carries beside each value.
+//! own error estimate, which the CSV carries beside each value with the method that produced it
+//! and whether it converged. [`MapParams::method`] picks the method ([`super::route`]): the finite
+//! elements (default), the Hankel routes (refused, before any point is computed, when a point
+//! is beyond the two-plate route's reach: [`check_reach`]) or `auto`.
 //!
 //! # Accuracy
 //!
 //! Each point's R_o to the tolerance by its own estimate (example 13 checks the estimates against
 //! references 50 times tighter); the map is smooth and monotone and equals Table 1 at its points
-//! (`tests/compare/map.rs`, `tests/compare/tables.rs`).
+//! (`tests/compare/map.rs`, `tests/compare/tables.rs`). By the Hankel routes the values agree with
+//! the FE's within the sum of both estimates (`tests/compare/map_method.rs`; example 13's `map`
+//! mode: at most 0.58 (single) and 0.55 (two plates) of it on a 10 × 10 map at 1e-3).
 //!
 //! # Cost
 //!
-//! About 30 ms of CPU per point at 1e-3 (the default 40 × 40 map: 48 s of CPU); example 13
-//! times both models point by point against the error they achieve.
+//! About 30 ms of CPU per point at 1e-3 by the FE (the default 40 × 40 map: 48 s of CPU); example
+//! 13 times both models point by point against the error they achieve. By `auto` the two-plate
+//! Hankel route with the rim dominates: 1.1–3.2 s of CPU per point at 1e-3, growing with B/D
+//! (10 × 10 map: 143 s of CPU against the FE's 3.7 s, so about 2,400 s for 40 × 40; example 13,
+//! `map` mode, and [`super::route`] for where the time goes).
 //!
 //! ```
 //! use boltzone::compare::map::{compute, log_spaced, MapParams};
@@ -25,7 +33,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::{compare_all, CompareError, CompareParams, Comparison, Geometry};
+use super::{compare_all, CompareError, CompareParams, Comparison, Geometry, Method};
 use crate::error::{positive, InputError};
 use std::time::Instant;
 
@@ -44,6 +52,8 @@ pub struct MapParams {
     pub nu: f64,
     /// Relative tolerance of each R_o (default 1e-3).
     pub tolerance: f64,
+    /// How each model's R_o is computed (default [`Method::Fem`]; [`super::route`]).
+    pub method: Method,
 }
 
 impl Default for MapParams {
@@ -55,6 +65,7 @@ impl Default for MapParams {
             c_over_a: 15.4,
             nu: 0.3,
             tolerance: 1e-3,
+            method: Method::Fem,
         }
     }
 }
@@ -104,26 +115,67 @@ impl DesignMap {
         })
     }
 
-    /// The map as CSV, one line per point (columns of [`super::table1::CSV_HEADER`] without the
-    /// report's).
+    /// The points whose models ran by `route`: (single plate, two plates).
+    pub fn count(&self, route: super::Route) -> (usize, usize) {
+        self.points.iter().fold((0, 0), |(s, t), p| {
+            (
+                s + usize::from(p.single_method == route),
+                t + usize::from(p.two_method == route),
+            )
+        })
+    }
+
+    /// The map as CSV, one line per point: the columns of [`super::table1::CSV_HEADER`] without
+    /// the report's, then each model's method (`fem` or `hankel`) and whether its R_o met the
+    /// tolerance (`single_method,single_converged,two_method,two_converged`).
     pub fn csv(&self) -> String {
         let header = super::table1::CSV_HEADER
             .split(',')
             .take_while(|h| !h.starts_with("report"))
             .collect::<Vec<_>>()
             .join(",");
-        let mut s = format!("{header}\n");
+        let mut s = format!("{header},{METHOD_COLUMNS}\n");
         for p in &self.points {
-            s += &super::table1::csv_fields(p);
-            s.push('\n');
+            s += &format!(
+                "{},{},{},{},{}\n",
+                super::table1::csv_fields(p),
+                p.single_method.as_str(),
+                p.single.converged,
+                p.two_method.as_str(),
+                p.two.converged
+            );
         }
         s
     }
 }
 
-/// Computes the map (module docs); `tick` is called once per finished point.
-pub fn compute(params: &MapParams, tick: &(dyn Fn() + Sync)) -> Result<DesignMap, CompareError> {
-    let start = Instant::now();
+/// The map CSV's last columns: which method produced each model's R_o, and whether it met
+/// the tolerance.
+pub const METHOD_COLUMNS: &str = "single_method,single_converged,two_method,two_converged";
+
+/// With [`Method::Hankel`], the first point of the map beyond the two-plate Hankel route's
+/// reach ([`super::two_hankel_reach`]) as [`CompareError::OutOfReach`] naming the point;
+/// [`compute`] checks it before computing any point. Ok for the other methods and when every point is in
+/// reach (the single plate's route has no reach limit).
+pub fn check_reach(params: &MapParams) -> Result<(), CompareError> {
+    let geometries = geometries(params)?;
+    if params.method != Method::Hankel {
+        return Ok(());
+    }
+    for g in geometries {
+        if let Err(reason) = super::two_hankel_reach(&g) {
+            return Err(CompareError::OutOfReach {
+                geometry: g.label(),
+                model: "two-plate",
+                reason,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The map's geometries, row-major (checked).
+fn geometries(params: &MapParams) -> Result<Vec<Geometry>, CompareError> {
     positive("hole radius A", params.a)?;
     positive("C/A", params.c_over_a)?;
     if params.a_over_d.is_empty() || params.b_over_a.is_empty() {
@@ -146,8 +198,17 @@ pub fn compute(params: &MapParams, tick: &(dyn Fn() + Sync)) -> Result<DesignMap
             )?);
         }
     }
+    Ok(geometries)
+}
+
+/// Computes the map (module docs); `tick` is called once per finished point.
+pub fn compute(params: &MapParams, tick: &(dyn Fn() + Sync)) -> Result<DesignMap, CompareError> {
+    let start = Instant::now();
+    check_reach(params)?;
+    let geometries = geometries(params)?;
     let cp = CompareParams {
         tolerance: params.tolerance,
+        method: params.method,
         ..CompareParams::default()
     };
     let points = compare_all(&geometries, &cp, tick)

@@ -11,6 +11,10 @@
 //!   ([`single::single_hankel`], [`crate::hankel::hole`]) as an independent second method;
 //! - R_o of the **two-plate model** (one plate on a frictionless rigid plane, unilateral contact;
 //!   [`crate::contact::two_plate`]);
+//! - with [`CompareParams::method`] other than the default FE, either model by its
+//!   semi-analytic Hankel route on the same finite rim C ([`route`]: [`Method::Hankel`], or
+//!   [`Method::Auto`] where the route applies and converges); each value records its method
+//!   ([`Route`]);
 //! - the report's **discrepancy** (R_single − R_two)/R_two·100 (Table 1's last column) and the
 //!   discrepancy in **contact area** π(R_o² − A²): (X_single − X_two)/X_two·100, X = R_o² − A²;
 //! - the **rules of thumb** ([`crate::rules`]): Rötscher's 45° cone R = B + D, the VDI 2230
@@ -45,6 +49,7 @@ mod comparison;
 mod error;
 mod geometry;
 pub mod map;
+pub mod route;
 pub mod single;
 pub mod table1;
 pub mod table2;
@@ -56,3 +61,4 @@ pub use comparison::{
 };
 pub use error::CompareError;
 pub use geometry::Geometry;
+pub use route::{two_hankel_reach, Method, Route};

@@ -51,6 +51,7 @@ mod ex12;
 #[allow(dead_code)]
 #[path = "../../examples/13_map_speed.rs"]
 mod ex13;
+mod ex13_map;
 #[allow(dead_code)]
 #[path = "../../examples/14_hole_speed.rs"]
 mod ex14;
