@@ -51,7 +51,9 @@ pub struct Args {
     png: Option<PathBuf>,
     /// How each model's R_o is computed: fem (finite elements), hankel (the semi-analytic
     /// routes with the rim; refuses a point beyond the two-plate route's reach: B/D > 8,
-    /// A/D < 0.04 or C ≤ B + D) or auto (hankel where it applies and converges, else fem).
+    /// A/D < 0.04 or C ≤ B + D) or auto (hankel for the single plate; for two plates only
+    /// below --tol 3e-5 and where it applies, as `two --method auto`; fem where hankel does
+    /// not converge).
     /// The CSV says which method produced each value.
     #[arg(long, value_enum, default_value_t = MethodArg::Fem)]
     method: MethodArg,

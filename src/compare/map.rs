@@ -6,7 +6,8 @@
 //! own error estimate, which the CSV carries beside each value with the method that produced it
 //! and whether it converged. [`MapParams::method`] picks the method ([`super::route`]): the finite
 //! elements (default), the Hankel routes (refused, before any point is computed, when a point
-//! is beyond the two-plate route's reach: [`check_reach`]) or `auto`.
+//! is beyond the two-plate route's reach: [`check_reach`]) or `auto` (the single plate's Hankel
+//! route; the two plates' only below a tolerance of 3e-5, [`super::two_takes_hankel`]).
 //!
 //! # Accuracy
 //!
@@ -19,10 +20,12 @@
 //! # Cost
 //!
 //! About 30 ms of CPU per point at 1e-3 by the FE (the default 40 × 40 map: 48 s of CPU); example
-//! 13 times both models point by point against the error they achieve. By `auto` the two-plate
-//! Hankel route with the rim dominates: 1.1–3.2 s of CPU per point at 1e-3, growing with B/D
-//! (10 × 10 map: 143 s of CPU against the FE's 3.7 s, so about 2,400 s for 40 × 40; example 13,
-//! `map` mode, and [`super::route`] for where the time goes).
+//! 13 times both models point by point against the error they achieve. By `hankel` the
+//! two-plate route with the rim dominates: 1.1–3.2 s of CPU per point at 1e-3, growing with B/D
+//! (10 × 10 map, every two-plate point by that route where it reaches: 143 s of CPU against the
+//! FE's 3.7 s, so about 2,400 s for 40 × 40; example 13, `map` mode, and [`super::route`] for
+//! where the time goes); that is why `auto` takes it only below 3e-5, where the FE cannot claim
+//! the tolerance.
 //!
 //! ```
 //! use boltzone::compare::map::{compute, log_spaced, MapParams};

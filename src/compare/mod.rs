@@ -61,4 +61,4 @@ pub use comparison::{
 };
 pub use error::CompareError;
 pub use geometry::Geometry;
-pub use route::{two_hankel_reach, Method, Route};
+pub use route::{two_hankel_reach, two_takes_hankel, Method, Route};

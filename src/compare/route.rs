@@ -14,9 +14,12 @@
 //!   `rim_holed`) and [`HoledParams::for_tolerance`]. Its reach ([`two_hankel_reach`]): A/D ≥
 //!   [`MIN_A_OVER_D`], B/D ≤ [`MAX_B_OVER_D_RIM`] (a finite rim), C > B + D.
 //!
-//! [`Method::Auto`] takes a model's Hankel route where it applies — decided up front by the
-//! reach above — and falls back to the FE when that route fails or returns an estimate above
-//! the tolerance (`converged = false`). [`Method::Hankel`] refuses a point out of reach as bad
+//! [`Method::Auto`] takes the single plate's Hankel route, and the two plates' Hankel route
+//! where it applies — decided up front by the reach above — and below a tolerance of
+//! [`AUTO_BELOW`] (3e-5), as `two --method auto` and a scene's `method = "auto"` do
+//! ([`two_takes_hankel`]: above it the FE is several times faster and claims the tolerance);
+//! it falls back to the FE when a Hankel route fails or returns an estimate above the tolerance
+//! (`converged = false`). [`Method::Hankel`] refuses a point out of reach as bad
 //! input naming the point ([`super::CompareError::OutOfReach`]) and keeps a not-converged
 //! answer, flagged. R_o in the geometry's length unit; compression negative throughout.
 //!
@@ -55,7 +58,7 @@ use super::{CompareError, Geometry};
 use crate::contact::two_plate::{solve as solve_two, TwoPlateParams};
 use crate::hankel::hole::{single_plate_separation, HoleParams};
 use crate::hankel::receding::holed::{two_plate_hole, HoledParams};
-use crate::hankel::receding::{MAX_B_OVER_D_RIM, MIN_A_OVER_D};
+use crate::hankel::receding::{AUTO_BELOW, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
 use crate::hankel::separation::SeparationParams;
 use crate::joint::OuterRadius;
 use crate::value::Value;
@@ -179,6 +182,18 @@ pub(super) fn single(g: &Geometry, method: Method, tol: f64) -> Result<ModelResu
     })
 }
 
+/// Whether `method` tries the two-plate Hankel route at tolerance `tol` on a point it reaches
+/// (`in_reach`) or not: `hankel` always (a point out of reach is refused before), `auto` within
+/// reach and below [`AUTO_BELOW`], as `two --method auto` and a scene's `method = "auto"` (above
+/// it the FE is faster and claims the tolerance), `fem` never.
+pub fn two_takes_hankel(method: Method, tol: f64, in_reach: bool) -> bool {
+    match method {
+        Method::Fem => false,
+        Method::Hankel => true,
+        Method::Auto => in_reach && tol < AUTO_BELOW,
+    }
+}
+
 /// The two-plate R_o by `method` at relative tolerance `tol` (module docs).
 pub(super) fn two(g: &Geometry, method: Method, tol: f64) -> Result<ModelResult, CompareError> {
     let reach = two_hankel_reach(g);
@@ -189,7 +204,7 @@ pub(super) fn two(g: &Geometry, method: Method, tol: f64) -> Result<ModelResult,
             reason: reason.clone(),
         });
     }
-    if method != Method::Fem && reach.is_ok() {
+    if two_takes_hankel(method, tol, reach.is_ok()) {
         let plate = g.single_plate(OuterRadius::Finite(g.c))?;
         let outcome =
             two_plate_hole(&plate, &HoledParams::for_tolerance(tol)).map(|out| ModelResult {

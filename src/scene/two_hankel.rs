@@ -40,12 +40,9 @@ use crate::hankel::receding::holed::{two_plate_hole_pressure, HoledParams};
 use crate::hankel::receding::{MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
 use crate::joint::Joint;
 
-/// `method = "auto"` (and `two --method auto`) takes this route only below this tolerance:
-/// above it the FE is several times faster and its estimate held on Table 1 and on a 10 × 10 grid
-/// at 1e-4 (`tests/hankel/grid_study.rs`); every FE estimate carries 2e-5 of R_o (the slow
-/// component its levels cannot show, `contact::two_plate`), so below 3e-5 it would need its
-/// level estimate under 1e-5 and at 2e-5 it cannot claim the tolerance at all.
-pub const AUTO_BELOW: f64 = 3e-5;
+/// `method = "auto"` takes this route only below this tolerance (its reasons where it is
+/// defined, beside the route's other limits).
+pub use crate::hankel::receding::AUTO_BELOW;
 
 /// Points of the interface curve (plus one), denser toward R_o where q ~ √(R_o − r).
 const CURVE_POINTS: usize = 100;

@@ -43,6 +43,14 @@ pub const MIN_A_OVER_D: f64 = 0.04;
 /// input naming the ratio; `auto` takes the finite elements there.
 pub const MAX_B_OVER_D_RIM: f64 = 8.0;
 
+/// `auto` (`two --method auto`, a scene's `method = "auto"`, `map --method auto`) takes this
+/// route for two plates only below this tolerance: above it the FE is several times faster and
+/// its estimate held on Table 1 and on a 10 × 10 grid at 1e-4 (`tests/hankel/grid_study.rs`);
+/// every FE estimate carries 2e-5 of R_o (the slow component its levels cannot show,
+/// `contact::two_plate`), so below 3e-5 it would need its level estimate under 1e-5 and at 2e-5
+/// it cannot claim the tolerance at all.
+pub const AUTO_BELOW: f64 = 3e-5;
+
 /// Knobs of [`two_plate_hole`](super::holed::two_plate_hole).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HoledParams {

@@ -61,5 +61,5 @@ pub use contact::{
     contact_radius, nodes, ContactSolution, Layer, RecedingContact, RecedingError, RecedingInfo,
     RecedingParams,
 };
-pub use holed_params::{MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
+pub use holed_params::{AUTO_BELOW, MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
 pub use pair::Pair;
