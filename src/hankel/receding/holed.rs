@@ -117,8 +117,9 @@
 //! at x ≥ 50 and 100 and without the unused cos − 1 (1.02× on all twelve rows: noise).
 //!
 //! **This round** (module `crack`): the Nyström ξ-rule's panels up to 2/D wide instead of
-//! 1/D where the cosines of ω = 3c allow it (c < πD; with the tail cut below, 840 → 380 nodes on (1, 1.3) at 1e-6, by the rule's formula; the layer
-//! kernels' poles lie ≥ 4.2/D off the real axis), its tail cut at 1e-3 of the iteration
+//! 1/D where the cosines of ω = 3c allow it (c < πD; with the tail cut below, 840 → 380
+//! nodes on (1, 1.3) at 1e-6, by the rule's formula; the layer kernels' poles lie ≥ 4.2/D
+//! off the real axis), its tail cut at 1e-3 of the iteration
 //! tolerance (1e-15 … 1e-8) instead of 1e-15 at every tier; the t-rule's graded cap at c
 //! one uniform panel long instead of min(c, D)/2 (220 → 80 nodes on (1, 1.3): its nodes are a
 //! column of every cosine table), their cos and cos − 1 from one `sin_cos`. Earlier rounds
