@@ -14,10 +14,11 @@
 //!
 //! # Cost
 //!
-//! Most of the holed route's cost, about 70 ms of CPU per contact radius on Table 1 row 1: the
-//! cosine and J₀ tables of [`super::grid`] and the H_l weights, rebuilt for every radius (rows
-//! in parallel), and the Anderson-accelerated iteration (warm-started from a nearby radius's
-//! correction); timed by example 19 (breakdown in [`super::holed`]).
+//! Most of the holed route's cost: per contact radius the cosine and J₀ tables of
+//! [`super::grid`] and the H_l weights, rebuilt for every radius (rows in parallel; 50–60 ms of
+//! 60–100 ms on (1, 1.3) at 1e-6, one thread, before the wider Nyström panels and the shorter
+//! graded cap), then 5–7 Anderson-accelerated iterations (warm-started from a nearby radius's
+//! correction); timed by example 19 (breakdown and sizes in [`super::holed`]'s Cost).
 
 use super::anderson::{pack, unpack, Anderson};
 use super::contact::RecedingError;
@@ -25,6 +26,7 @@ use super::endpoint::Endpoint;
 use super::grid::{dot, PanelGrid, PanelInterp};
 use super::holed_params::HoledParams;
 use super::holed_setup::{Crack, Setup};
+use super::layer::Stack;
 use super::prescribed::Prescribed;
 use super::system::{cos_m1, panels, Nystrom, XiRule};
 use crate::hankel::hole::eigen::Mode;
@@ -33,6 +35,13 @@ use crate::hankel::transform::LoadTransform;
 use crate::load::FaceLoad;
 use rayon::prelude::*;
 use std::f64::consts::{FRAC_2_PI, PI};
+
+/// (cos x, cos x − 1) from one `sin_cos`: cos x − 1 = −sin²x/(1 + cos x) without cancellation
+/// where cos x > 0, and directly where cos x ≤ 0 (then |cos x − 1| ≥ 1).
+fn cos_and_m1(x: f64) -> (f64, f64) {
+    let (s, c) = x.sin_cos();
+    (c, if c > 0.0 { -s * s / (1.0 + c) } else { c - 1.0 })
+}
 
 /// J₀(x) − 1 without cancellation at small x.
 fn j0_m1(x: f64) -> f64 {
@@ -62,7 +71,12 @@ impl Setup {
     ) -> Result<Crack, RecedingError> {
         let d = self.d;
         let zero = LoadTransform::new(&FaceLoad::uniform(0.0, c, 0.0)?);
-        let rule = XiRule::new(d, &zero, 3.0 * c, 1e-15);
+        // the Nyström ξ-rule: panels up to 2/D wide where the cosines (ω = 3c) allow (the layer
+        // kernels' poles off ξ = 0, zeros of sinh x ± x at x = ξD, lie ≥ 4.2/D off the real
+        // axis: Bernstein ρ ≥ 8.5 on a panel of 2/D, ρ⁻⁴⁰ < 1e-37), its tail cut at 1e-3 of
+        // the iteration tolerance (1e-15 … 1e-8)
+        let tail_tol = (1e-3 * params.iteration_tol).clamp(1e-15, 1e-8);
+        let rule = XiRule::capped(&Stack::single(d), &zero, 3.0 * c, tail_tol, 2.0);
         let (xi_r, a_r, b_r) = rule.nodes();
         let (xi_r, a_r, b_r) = (xi_r.to_vec(), a_r.to_vec(), b_r.to_vec());
         // l on Gauss panels of [c, c + tail] resolving J₀(ξs) up to ξ_l (2.25 periods per panel)
@@ -127,9 +141,14 @@ impl Setup {
         let f_hole =
             lift.map(|f| f.transforms(&hole.xi.iter().map(|h| h.0).collect::<Vec<_>>(), c));
         let xi_h = hole.xi.last().map_or(0.0, |x| x.0);
-        let delta = (0.5 * c).min(0.5 * d);
+        // the uniform panels (of h = 4.5π/ξ_h) stop δ = min(c/2, D/2, h) short of c: H_l's
+        // branch point at c lies a panel or more beyond their end (Bernstein ρ ≥ 3 + √8,
+        // ρ⁻⁴⁰ < 1e-30), and the graded cap is as short as that allows (its nodes cost two
+        // table entries per row of every table)
+        let t_width = 4.5 * PI / xi_h;
+        let delta = (0.5 * c).min(0.5 * d).min(t_width);
         let su = delta.sqrt();
-        let t_grid = PanelGrid::new(0.0, c - delta, 4.5 * PI / xi_h);
+        let t_grid = PanelGrid::new(0.0, c - delta, t_width);
         let graded: Vec<(f64, f64)> =
             panels(0.0, su, (4.5 * PI / (2.0 * xi_h * su)).min(0.25 * su))
                 .into_iter()
@@ -153,8 +172,7 @@ impl Setup {
                 let (mut cos, mut cosm1) = (vec![0.0; nt], vec![0.0; nt]);
                 t_grid.cos_rows(x, &mut cos[..nf], &mut cosm1[..nf]);
                 for (i, &(t, _)) in graded.iter().enumerate() {
-                    cos[nf + i] = (x * t).cos();
-                    cosm1[nf + i] = cos_m1(x * t);
+                    (cos[nf + i], cosm1[nf + i]) = cos_and_m1(x * t);
                 }
                 (cos, cosm1)
             })

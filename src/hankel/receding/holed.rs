@@ -86,60 +86,61 @@
 //!
 //! # Cost
 //!
-//! Measured 2026-11-24 on all twelve Table 1 rows with `boltzone two --method hankel --tol 1e-6`
-//! ([`HoledParams::for_tolerance`]`(1e-6)`), this branch's binary and main's before it, run by
-//! turns in one session (CPU of all threads by `perf stat`, load 2–4 on the 2 cores): 0.59–0.92 s
-//! per geometry against 1.23–1.83 s before (2.0–2.3×), R_o moved by ≤ 1.5e-10 R_o (estimates
-//! 3.8e-10 … 1.3e-6), 9–10 trial radii instead of 10–12. The FE at --tol 1e-6 beside it:
-//! example 19. The issue's 10 ms (20× faster than the FE) is still far off. Where the time goes
-//! now (row 1, one thread, temporary timers): per trial radius about 70 ms — J₀ rows of l's
-//! transform 15, cos rows of the Nyström rule 14, cos rows of the hole rule 8, H_l weights 8,
-//! per-radius rules and l's basis values 6, three crack iterations 20 — and once per geometry
-//! the slab's midplane curve over [A, B + reach + tail] (0.12 s) and the corner fields' table
-//! (0.07 s), about 30 % of the total. Both are now built up to B + 3D + tail only (the
-//! whole reach's curve on first use, by a radius beyond B + 3D; the corner fields directly
-//! there): a second run of all twelve rows by turns, at a higher load, gave 0.75–1.03 s against
-//! 1.56–2.33 s before (2.0–2.5×), R_o within 1.6e-10 R_o of main's; forcing every radius onto
-//! the far curve (a one-off build) moved R_o by ≤ 3.4e-12 R_o on rows 1 and 12.
+//! Measured 2026-11-24 on all twelve Table 1 rows by `boltzone two --method hankel --tol T`
+//! ([`HoledParams::for_tolerance`]), this branch's binary and main's by turns in one session,
+//! two rounds, the median CPU (user + sys) per row, load 7–9 on the 2 cores:
 //!
-//! What was cut, in order: the Anderson-accelerated iteration (17 → 8 steps per radius on the
-//! narrowest load), the corner table (12 ms per radius), two solves per geometry (the search's
-//! last solve and the secant are reused), rayon over table rows and over the two variants; then
-//! (this round) the H_l weights on the s-rule itself except within a quarter panel of c (60 →
-//! 15 ms per radius), l's transform on the Nyström rule beyond ξ_l by the endpoint expansion,
-//! J₀ by Horner's rule in Hankel's expansion instead of a term-by-term loop (45 → 15 ms), dot
-//! products in four partial sums, the hole rule built per radius for that c with panels up to
-//! 4/D beyond ξ_l (3240 → 1500 nodes on row 1: the scan's farthest radius no longer sets it),
-//! the search refined by step-stopping inverse interpolation instead of Brent (9 → 7 radii),
-//! each radius's iteration warm-started from the nearest radius's correction, and the
-//! estimate's half-terms setup sharing the midplane curve and corner table (0.15 → 0.01 s).
-//! Next: tables independent of c (fixed panels in t and s with a partial panel at c, a ξ-rule
-//! for a cap on c), so that only the partial panels are rebuilt per radius; the midplane curve
-//! built lazily up to the radii the search reaches; a contact basis whose transforms are
-//! tabulated once.
+//! | T | CPU per row | main's | in total | R_o moved (of R_o) | estimates (of R_o) |
+//! |---|-------------|--------|----------|--------------------|--------------------|
+//! | 1e-6 | 0.31–0.60 s | 0.41–0.68 s | 1.40× | ≤ 4.6e-12 | 3.8e-10 … 1.3e-6, unchanged |
+//! | 1e-3 | 0.07–0.13 s | 0.10–0.15 s | 1.32× | ≤ 3.2e-10 | 6.1e-5 … 2.1e-4, unchanged |
 //!
-//! Re-measured after this round: A → 0 (`small_holes_approach_the_receding_solution`) gives
-//! −8.255e-8, −1.973e-8, −4.965e-9 as before (the study in 2.5 s wall, 3.9 s CPU); the 10 × 10
-//! grid study against the FE at 1e-4 (`tests/hankel/grid_study.rs`) the same ratios (median
-//! 0.02, max 0.08) in 146 s instead of 218 s.
+//! The gain is largest on the narrow loads (1.7× on (1, 1.3)) and least on (1, 3.1) (1.1×),
+//! where R_o ≥ πD already set the Nyström ξ-rule's panels. The FE (`--method fem --tol 1e-6`,
+//! same rows, same session, right after): 0.48–1.14 s per row, 1.0–3.5× this route's, not the
+//! issue's 20×; it stops at its 2e-5 floor (estimates 2.7e-5 … 3.9e-5 R_o, `converged`
+//! false) with R_o 4e-7 … 1.6e-6 R_o above this route's. The issue's 10 ms at 1e-6 is still
+//! 30–60× off.
 //!
-//! Cost that follows the tolerance: [`HoledParams::for_tolerance`] has tiers from 1e-3, 1e-4,
-//! 1e-5 (fewer nodes, heights, modes, a lower ξ_l, a shorter tail, looser root and iteration
-//! tolerances), J₀ below 25 comes from a table ([`super::grid`]), and the scan starts at
-//! B + 0.45D (module `holed_search`). All twelve Table 1 rows by `boltzone two --method
-//! hankel --tol T`, this branch's binary and main's by turns in one session (CPU user + sys):
-//! after the tiers and the table (load 4–7), T = 1e-3 0.14–0.22 s per row against 0.65–1.02 s
-//! (4.3× in total), 1e-4 3.4×, 1e-5 1.9×, 1e-6 1.15× (R_o moved ≤ 6.3e-12 R_o, the same
-//! estimates); again at load 2: 4.4×, 3.4×, 2.0×, 1.08×. With the scan's start too (load
-//! 2.6–3.3; 7–8 radii instead of 9–10 at 1e-6, 5–7 at 1e-3): 1e-3 0.10–0.15 s per row against
-//! main's 0.61–0.90 s (5.8×), 1e-4 0.14–0.26 s (4.0×), 1e-5 0.25–0.41 s (2.2×; with the
-//! tier's final, finer knobs 0.38–0.58 s against 0.75–0.94 s, 1.8×, at load 1.7), 1e-6
-//! 0.43–0.78 s against 0.61–1.02 s (1.25×; R_o moved ≤ 3.2e-10 R_o, estimates 3.8e-10 …
-//! 1.3e-6 as before); every row converged at 1e-3 … 1e-5 (estimates ≤ 2.1e-4, 3.7e-5, 9.0e-7
-//! R_o) and lies within its estimate of main's R_o. The issue's 10 ms is still 10× off at
-//! 1e-3: per radius the tables of l's transform and the Nyström and hole rules, once per
-//! geometry the bilateral plate, the midplane curve and the corner table (17 % of the CPU at
-//! the knobs for 1e-3 on (0.5, 1.6), by profile).
+//! **Where the time goes** (row (1, 1.3) at 1e-6, one thread, temporary timers, before this
+//! round): 6 search radii (2 to bracket from B + 0.45D, 4 of inverse interpolation) and 2 for
+//! the estimate's variants, each 60–100 ms: 50–60 ms of tables, then 5–7 crack iterations
+//! (2 on the radius at R_o). The tables' sizes: the Nyström ξ-rule 840 nodes (570 below ξ_l),
+//! the t-rule 420, l's s-rule 500, the hole's ξ-rule 1200 (560 below ξ_l): J₀ rows of
+//! (570 + 560) × 500, cosine tables of 840 × 420 twice and 1200 × 420. Per geometry besides:
+//! the bilateral holed plate, the slab's midplane curve up to B + 3D + tail and the corner
+//! table (about a fifth of the CPU at 1e-3). The iteration count did not move with Anderson's
+//! depth 6 or 10 instead of 3, nor with each radius started from the correction extrapolated
+//! linearly from its two nearest radii (counts identical on (1, 1.3), (1, 2.2), (0.5, 1.3)).
+//! Tried and left out: the Nyström rule's ω = 2c instead of 3c (4–14 % on the three rows with
+//! B/A = 3.1 only, R_o unchanged to 1e-15); the J₀ rows' asymptotic series cut to fewer terms
+//! at x ≥ 50 and 100 and without the unused cos − 1 (1.02× on all twelve rows: noise).
+//!
+//! **This round** (module `crack`): the Nyström ξ-rule's panels up to 2/D wide instead of
+//! 1/D where the cosines of ω = 3c allow it (c < πD; with the tail cut below, 840 → 380
+//! nodes on (1, 1.3) at 1e-6, by the rule's formula; the layer kernels' poles lie ≥ 4.2/D
+//! off the real axis), its tail cut at 1e-3 of the iteration
+//! tolerance (1e-15 … 1e-8) instead of 1e-15 at every tier; the t-rule's graded cap at c
+//! one uniform panel long instead of min(c, D)/2 (220 → 80 nodes on (1, 1.3): its nodes are a
+//! column of every cosine table), their cos and cos − 1 from one `sin_cos`. Earlier rounds
+//! (2.5× in total): the Anderson-accelerated iteration, the corner table, rayon over table rows
+//! and the two variants, H_l's weights on the s-rule away from c, l's transform beyond ξ_l by
+//! its endpoint expansion, J₀ by Horner's rule and a Chebyshev table ([`super::grid`]), the
+//! hole rule built per radius, the search by step-stopping inverse interpolation from
+//! B + 0.45D, each radius warm-started, the variants sharing the setup, the tolerance tiers.
+//!
+//! **Next** (structural; not done): the hole's part of every iteration through tables
+//! independent of c — its σ_r, τ_rz at the Chebyshev heights per unit Abel function at t
+//! (∫ (cos ξt − 1)·kernel dξ, tabulated in t once per geometry on panels of half the t-rule's
+//! width, interpolated at each radius's t-rule) and per unit ring load at s (the same with
+//! J₀(ξs) − 1, which needs no ξ_l cutoff); this removes the 1200-row hole tables and the hole
+//! rule per radius. Likewise the Nyström ξ-rule fixed for the geometry (its ω from the search's
+//! largest c) with the J₀ rows of l's transform on fixed s-panels, only the partial panel at
+//! c rebuilt; and fewer radii (a predictor of R_o, Newton with the edge coefficient's slope).
+//!
+//! Re-measured after earlier rounds: A → 0 (`small_holes_approach_the_receding_solution`)
+//! −8.255e-8, −1.973e-8, −4.965e-9; the 10 × 10 grid study against the FE at 1e-4
+//! (`tests/hankel/grid_study.rs`) median ratio 0.02, max 0.08, in 146 s.
 //!
 //! ```no_run
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
