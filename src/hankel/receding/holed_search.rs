@@ -165,6 +165,14 @@ pub(super) fn estimate(
     found: &Found,
 ) -> Result<((f64, f64), usize), RecedingError> {
     let (r_o, b) = (found.r_o, plate.load().outer());
+    if !(params.coarse_modes > 0.0 && params.coarse_modes < 1.0) {
+        return Err(crate::error::InputError::Parameter {
+            field: "holed coarse_modes",
+            value: params.coarse_modes,
+            reason: "a fraction of the hole modes strictly between 0 and 1",
+        }
+        .into());
+    }
     // each variant's R_o by one Newton step from R_o: its change is ~1e-6 D or less, where the
     // step's error, ∝ the change squared, is far below it; a larger change gets the search
     let (slope, mut solves) = match secant_slope(found, setup.d) {
@@ -204,7 +212,7 @@ pub(super) fn estimate(
     };
     let half = HoledParams {
         hole: HoleParams {
-            terms: Some((setup.modes.len() / 2).max(1)),
+            terms: Some(((setup.modes.len() as f64 * params.coarse_modes) as usize).max(1)),
             ..params.hole
         },
         heights: (params.heights / 3 * 2).max(4),
