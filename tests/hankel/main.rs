@@ -27,6 +27,7 @@ mod two_plate_hole;
 mod two_plate_hole_fast;
 mod two_plate_hole_pressure;
 mod two_plate_hole_reach;
+mod two_plate_hole_tier8;
 mod two_plate_hole_tiers;
 mod two_plate_rim;
 mod two_plate_rim_hankel;
