@@ -1,6 +1,7 @@
 //! The tiers of `HoledParams::for_tolerance` (1e-3, 1e-4, 1e-5, 1e-6) held to their estimates:
-//! each run's R_o against a run of the same route at 1e-9 (the default knobs, ξ_l varied; its
-//! own estimate ~1e-10 R_o, added to the bound), over random geometries (the survey, ignored:
+//! each run's R_o against a run of the same route at 1e-9 (the knobs of the tier for 1e-8,
+//! `two_plate_hole_tier8.rs`; before that tier, the default knobs with ξ_l varied; its own
+//! estimate added to the bound), over random geometries (the survey, ignored:
 //! A/D 0.3–3, B/A 1.1–4, ν 0–0.45, all within the route's reach B/D ≤ 16) and on two of them in
 //! CI. The error must never exceed the estimate, so that a run claiming `converged`
 //! (estimate ≤ tol·R_o) is within its tolerance.

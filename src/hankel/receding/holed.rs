@@ -33,16 +33,16 @@
 //! receding solver's scan and a step-stopping inverse interpolation (module `holed_search`).
 //!
 //! **Error control.** R_o's estimate adds (a) the change from a run with ⌈3n/4⌉ Nyström points,
-//! (b) the change from a run with half the hole modes (the bilateral plate and Z; 3/4 of them
-//! in [`HoledParams::for_tolerance`]'s tier for 1e-8, [`HoledParams::coarse_modes`], whose N
-//! doubles until the bilateral residual is 5e-7 P, where the modes converge regularly and the
-//! change from half of them overstates the error 10–10³×),
-//! 2/3 of the heights and, with [`HoledParams::vary_xi_l`], 2/3 of ξ_l, (c) the root tolerance; the
+//! (b) the change from a run with half the hole modes (the bilateral plate and Z), 2/3 of the
+//! heights and, with [`HoledParams::vary_xi_l`], 2/3 of ξ_l, (c) the root tolerance; the
 //! residual traction on the hole is measured on the fit's check heights. Each variant's R_o is
 //! one Newton step from R_o (slope: a secant through two of the search's edge values), its error
 //! ∝ the change squared (≤ 1e-6 D: negligible; as full searches to 2e-12 D on Table 1 row 1); a
 //! change beyond 0.01 D gets the full search. [`HoledParams::for_tolerance`] picks the knobs for
-//! a tolerance.
+//! a tolerance. Its tier for 1e-8 changes (b): N doubles from 32 until the bilateral residual
+//! is 5e-7 P, where the modes converge regularly and the change from N/2 overstates the error
+//! 10–10³×; the variants take 3/4 of the modes ([`HoledParams::coarse_modes`]), 2/3 of the
+//! heights and 2/3 of ξ_l each alone ([`HoledParams::split_variants`]), their changes added.
 //!
 //! # Accuracy
 //!
