@@ -30,5 +30,6 @@ mod two_plate_hole_reach;
 mod two_plate_hole_tier8;
 mod two_plate_hole_tiers;
 mod two_plate_rim;
+mod two_plate_rim_decay;
 mod two_plate_rim_hankel;
 mod two_plate_rim_holed;

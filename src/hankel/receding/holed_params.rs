@@ -168,8 +168,9 @@ impl HoledParams {
     /// error (+1.1e-10 R_o from 55 to 80/D) half cancelled in the one coarse variant by the
     /// modes' and heights' changes: the tier coarsens each alone
     /// ([`HoledParams::split_variants`]: two more solves) and takes the hole rule to e^(−18)
-    /// (13 left 1e-11 … 1.4e-10 R_o that no variant sees). The survey over random geometries:
-    /// the same file.
+    /// (13 left 1e-11 … 1.4e-10 R_o that no variant sees). The survey over 30 random
+    /// geometries (same file, 992 s at load ~10): every error within its estimate (at most
+    /// 0.54 of it, on (0.347, 1.29, 0.238)), estimates ≤ 6.4e-9 R_o, all 30 converged.
     pub fn for_tolerance(tol: f64) -> Self {
         let base = Self {
             vary_xi_l: true,
