@@ -170,7 +170,11 @@ impl HoledParams {
     /// ([`HoledParams::split_variants`]: two more solves) and takes the hole rule to e^(−18)
     /// (13 left 1e-11 … 1.4e-10 R_o that no variant sees). The survey over 30 random
     /// geometries (same file, 992 s at load ~10): every error within its estimate (at most
-    /// 0.54 of it, on (0.347, 1.29, 0.238)), estimates ≤ 6.4e-9 R_o, all 30 converged.
+    /// 0.54 of it, on (0.347, 1.29, 0.238)), estimates ≤ 6.4e-9 R_o, all 30 converged. Its
+    /// cost at the route's reach (`two --method hankel --tol 1e-8`, A = D, load ~10): B/D = 16
+    /// 19.5 s of CPU (37 s wall), with a rim at B/D = 8, C = 30D 28 s, against the 4.7 s and
+    /// 10.5 s quoted at [`MAX_B_OVER_D`] and [`MAX_B_OVER_D_RIM`] (lower tiers, lower load):
+    /// near the CLI fuzz's 30 s.
     pub fn for_tolerance(tol: f64) -> Self {
         let base = Self {
             vary_xi_l: true,
