@@ -12,7 +12,8 @@
 //! # Cost
 //!
 //! The holed route's with the knobs for --tol ([`HoledParams::for_tolerance`]), per Table 1
-//! geometry: 0.10–0.15 s of CPU at --tol 1e-3, 0.43–0.78 s at 1e-6; timed by example 19.
+//! geometry: 0.10–0.15 s of CPU at --tol 1e-3, 0.43–0.78 s at 1e-6, 1.4–2.2 s at 1e-8 (every
+//! row converged there; load 9–12); timed by example 19.
 
 use super::exit::{sig, Status};
 use super::two_args::Args;

@@ -1,6 +1,7 @@
 //! The tiers of `HoledParams::for_tolerance` (1e-3, 1e-4, 1e-5, 1e-6) held to their estimates:
-//! each run's R_o against a run of the same route at 1e-9 (the default knobs, ξ_l varied; its
-//! own estimate ~1e-10 R_o, added to the bound), over random geometries (the survey, ignored:
+//! each run's R_o against a run of the same route at 1e-9 (the knobs of the tier for 1e-8,
+//! `two_plate_hole_tier8.rs`; before that tier, the default knobs with ξ_l varied; its own
+//! estimate added to the bound), over random geometries (the survey, ignored:
 //! A/D 0.3–3, B/A 1.1–4, ν 0–0.45, all within the route's reach B/D ≤ 16) and on two of them in
 //! CI. The error must never exceed the estimate, so that a run claiming `converged`
 //! (estimate ≤ tol·R_o) is within its tolerance.
@@ -15,6 +16,11 @@ const TIERS: [f64; 4] = [1e-3, 1e-4, 1e-5, 1e-6];
 
 /// One geometry (A/D, B/A, ν) by the knobs for `tol`.
 fn run(g: (f64, f64, f64), tol: f64) -> HoledContact {
+    run_with(g, &HoledParams::for_tolerance(tol))
+}
+
+/// One geometry (A/D, B/A, ν), A = 0.1, uniform load, by the knobs `params`.
+pub(crate) fn run_with(g: (f64, f64, f64), params: &HoledParams) -> HoledContact {
     let (a_over_d, b_over_a, nu) = g;
     let plate = SinglePlate::new(
         A,
@@ -24,7 +30,7 @@ fn run(g: (f64, f64, f64), tol: f64) -> HoledContact {
         FaceLoad::uniform(A, b_over_a * A, 1.0).unwrap(),
     )
     .unwrap();
-    two_plate_hole(&plate, &HoledParams::for_tolerance(tol)).unwrap()
+    two_plate_hole(&plate, params).unwrap()
 }
 
 /// Each tier's (error, estimate, claims converged) on `g`, all relative to R_o, after checking
@@ -65,8 +71,9 @@ fn two_geometries_are_within_every_tiers_estimate() {
     }
 }
 
-/// A small xorshift generator (the survey's geometries, reproducible).
-struct Rng(u64);
+/// A small xorshift generator (the survey's geometries, reproducible; also the survey of
+/// `two_plate_hole_tier8.rs`).
+pub(crate) struct Rng(pub(crate) u64);
 
 impl Rng {
     fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
@@ -75,6 +82,24 @@ impl Rng {
         self.0 ^= self.0 << 17;
         lo + (hi - lo) * (self.0 >> 11) as f64 / (1u64 << 53) as f64
     }
+
+    /// A survey geometry (A/D, B/A, ν): A/D in 0.3–3 and B/A in 1.1–4 log-uniform (B/D ≤ 12,
+    /// within the route's reach of 16), ν uniform in 0–0.45.
+    pub(crate) fn geometry(&mut self) -> (f64, f64, f64) {
+        (
+            self.uniform(0.3f64.ln(), 3f64.ln()).exp(),
+            self.uniform(1.1f64.ln(), 4f64.ln()).exp(),
+            self.uniform(0.0, 0.45),
+        )
+    }
+}
+
+/// The survey's size: SURVEY_N, else `default`.
+pub(crate) fn survey_n(default: usize) -> usize {
+    std::env::var("SURVEY_N")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(default)
 }
 
 /// Measured (SURVEY_N = 40, 141 s, with the scan from B + 0.45D and the final 1e-5 tier): the
@@ -88,20 +113,12 @@ impl Rng {
 #[test]
 #[ignore = "survey: about 2.5 s per geometry (SURVEY_N, default 40)"]
 fn random_geometries_are_within_every_tiers_estimate() {
-    let n: usize = std::env::var("SURVEY_N")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(40);
+    let n = survey_n(40);
     let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
     // per tier: largest error/estimate, largest estimate, runs claiming convergence
     let mut worst = [(0.0f64, 0.0f64, 0usize); 4];
     for _ in 0..n {
-        // A/D and B/A log-uniform; B/D ≤ 3·4 = 12 < 16, within the route's reach
-        let g = (
-            rng.uniform(0.3f64.ln(), 3f64.ln()).exp(),
-            rng.uniform(1.1f64.ln(), 4f64.ln()).exp(),
-            rng.uniform(0.0, 0.45),
-        );
+        let g = rng.geometry();
         let rows = check(g);
         let line: Vec<String> = rows
             .iter()

@@ -39,7 +39,10 @@
 //! one Newton step from R_o (slope: a secant through two of the search's edge values), its error
 //! ∝ the change squared (≤ 1e-6 D: negligible; as full searches to 2e-12 D on Table 1 row 1); a
 //! change beyond 0.01 D gets the full search. [`HoledParams::for_tolerance`] picks the knobs for
-//! a tolerance.
+//! a tolerance. Its tier for 1e-8 changes (b): N doubles from 32 until the bilateral residual
+//! is 5e-7 P, where the modes converge regularly and the change from N/2 overstates the error
+//! 10–10³×; the variants take 3/4 of the modes ([`HoledParams::coarse_modes`]), 2/3 of the
+//! heights and 2/3 of ξ_l each alone ([`HoledParams::split_variants`]), their changes added.
 //!
 //! # Accuracy
 //!
@@ -83,6 +86,15 @@
 //! (rates 1.97, 1.99; the FE at --tol 1e-4: −2.653e-4, −6.758e-5, −1.671e-5), and at
 //! C = 1.54 in on all twelve rows the FE meshed to C lies within its estimate (example 19's
 //! second table; `tests/hankel/two_plate_rim_holed.rs`).
+//!
+//! **To 1e-8** ([`HoledParams::for_tolerance`]`(1e-8)`, its choice measured there): on
+//! (0.5, 1.3), the row the 1e-6 knobs left at 1.3e-6, R_o moves by 1.65e-6, 5.1e-8, 1.6e-10
+//! R_o from 8, 16, 32 hole modes to 64 and by ≤ 1.3e-9 under every other knob: the 1e-6
+//! estimate was the N/2 variant's pessimism over a 5e-8 error. At the tier all twelve rows
+//! estimate 7.2e-12 … 4.8e-9 R_o at C = ∞ (example 19), and its estimate holds against a run
+//! finer in every knob on (0.5, 1.3) (error 1.2e-10, estimate 4.8e-9 R_o) and over random
+//! geometries (`tests/hankel/two_plate_hole_tier8.rs`: 30 of 30 within, error at most 0.54 of the
+//! estimate, estimates ≤ 6.4e-9 R_o, every one converged at 1e-8).
 //!
 //! # Cost
 //!

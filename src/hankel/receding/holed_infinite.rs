@@ -35,6 +35,20 @@ pub(super) fn solve(
 ) -> Result<(HoledContact, Vec<(f64, f64)>), RecedingError> {
     let start = Instant::now();
     let setup = Setup::new(plate, params)?;
+    let (mut out, curve) = solve_on(&setup, plate, params, at)?;
+    out.info.seconds = start.elapsed().as_secs_f64();
+    Ok((out, curve))
+}
+
+/// As [`solve`] on a `setup` built for `plate` and `params` (module `rim_holed` shares it with
+/// the rim's solves); `seconds` counts from this call, not the setup's.
+pub(super) fn solve_on(
+    setup: &Setup,
+    plate: &SinglePlate,
+    params: &HoledParams,
+    at: &[f64],
+) -> Result<(HoledContact, Vec<(f64, f64)>), RecedingError> {
+    let start = Instant::now();
     let b = plate.load().outer();
     let found = setup.search(b, params.nodes, params, None, at)?;
     let (r_o, last) = (found.r_o, &found.last);
@@ -58,11 +72,11 @@ pub(super) fn solve(
     };
     let mut solves = found.solves;
     if params.estimate {
-        let ((r1, r2), s) = estimate(&setup, plate, params, &found)?;
+        let ((r1, r2), spread, s) = estimate(setup, plate, params, &found)?;
         solves += s;
         info.r_o_fewer_nodes = r1;
         info.r_o_half_terms = r2;
-        info.r_o_error += (r1 - r_o).abs() + (r2 - r_o).abs();
+        info.r_o_error += (r1 - r_o).abs() + spread;
     }
     info.solves = solves;
     info.seconds = start.elapsed().as_secs_f64();

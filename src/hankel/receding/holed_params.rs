@@ -91,6 +91,14 @@ pub struct HoledParams {
     /// Depth of the Anderson acceleration of the crack iteration (default 3; 0: the plain
     /// iteration), module `anderson`.
     pub anderson: usize,
+    /// The fraction of the hole modes N that the estimate's coarse variant keeps (default 0.5;
+    /// 0.75 in [`HoledParams::for_tolerance`]'s tier for 1e-8, where the modes' convergence is
+    /// regular and the change from N/2 is 10–300 times the error: module docs there).
+    pub coarse_modes: f64,
+    /// Whether the estimate coarsens the modes, the heights and ξ_l in separate variants and
+    /// adds their changes (default false: one variant, cheaper; true in the tier for 1e-8,
+    /// where their changes, each ~1e-10 R_o, were seen to cancel).
+    pub split_variants: bool,
 }
 
 impl Default for HoledParams {
@@ -113,14 +121,19 @@ impl Default for HoledParams {
             vary_xi_l: false,
             hole_decay: 13.0,
             anderson: 3,
+            coarse_modes: 0.5,
+            split_variants: false,
         }
     }
 }
 
 impl HoledParams {
     /// Knobs for R_o to a relative tolerance `tol`, the estimate covering every knob but the
-    /// tail and the hole rule's end, the coarse variant also at 2/3 of ξ_l. Tighter than 1e-6,
-    /// the defaults; from 1e-6 (up to 1e-5), 16 Nyström points, ξ_l = 28/D, a tail of 12D
+    /// tail and the hole rule's end, the coarse variant also at 2/3 of ξ_l. From 1e-8 (up to
+    /// 1e-6; tighter tolerances take these knobs too, the route's reach), hole modes doubled
+    /// from 32 until the bilateral plate's residual is 5e-7 P (at most 128), 28 heights,
+    /// ξ_l = 55/D, `hole_decay` 18 and the coarse variants apart, the modes' at 3/4 (below). From 1e-6 (up to
+    /// 1e-5), 16 Nyström points, ξ_l = 28/D, a tail of 12D
     /// (l ~ e^(−2.1(r−c)/D): 10D moved R_o by 1.5e-9 R_o on Table 1 row 1, 12D by ~2e-11), root
     /// and iteration tolerances 1e-9 (of D; of p̄(0)/c). Looser, one tier per decade, each
     /// chosen by its run on Table 1's twelve rows. Measured on those rows (ν = 0.3) by
@@ -138,18 +151,60 @@ impl HoledParams {
     /// came within 0.91 of its estimate on (0.75, 1.3).) The estimate's honesty over random
     /// geometries:
     /// `tests/hankel/two_plate_hole_tiers.rs`.
+    ///
+    /// The tier for 1e-8 (24 Nyström points, tail 14D, root 1e-11, iteration 1e-11), chosen by measurement on Table 1's five rows whose 1e-6 estimates were
+    /// over 1e-8 ((1, 1.3), (0.75, 1.6), (0.75, 1.3), (0.5, 1.6), (0.5, 1.3)), each knob alone
+    /// against a run with 64 modes, 36 heights, ξ_l = 80/D, tail 20D, 32 points: what limits
+    /// them is the hole modes N (the bilateral plate's and the correction's). On (0.5, 1.3),
+    /// the other knobs the defaults, R_o minus its value at N = 64 is −1.65e-6, +9.4e-8,
+    /// +5.1e-8, −3.2e-9, +1.6e-10, −2e-12 of R_o at N = 8, 12, 16, 24, 32, 48 (bilateral residual
+    /// 9e-5 … 2.5e-8 P): irregular below N = 24, then falling fast; 18 → 26 or 36 heights,
+    /// 18 → 48 points and a tail of 20D each moved it by ≤ 4.3e-10 R_o, ξ_l 40 → 70/D by 1.3e-9.
+    /// So the N/2 variant of the 1e-6 knobs (16 → 8 modes: 1.6e-6 R_o) overstated the error
+    /// (5.1e-8) 30×, and on (1, 1.3) (16 modes, error 1.4e-10) about 10³×. With 32 modes the
+    /// five rows lie within 2.1e-10 R_o of the finer run, and the 3/4 variant (24 modes, 18
+    /// heights, ξ_l = 36.7/D) moves R_o by 8.5e-10 … 4.7e-9 R_o, 9–24× the error; all twelve
+    /// rows estimate 4.4e-12 … 4.7e-9 R_o (1.0–2.4 s wall per row at load 7). With 32 modes
+    /// always, the survey of `tests/hankel/two_plate_hole_tier8.rs` found on its third random
+    /// geometry, (A/D, B/A, ν) = (0.347, 1.29, 0.238), a plate 2.9A thick, an error of 3.5e-9
+    /// R_o against an estimate of 4.0e-10: there 32 modes leave 2.5e-6 P on the hole (on
+    /// Table 1 at most 3.0e-7 P, on (0.5, 1.3)) and R_o moved +3.9e-9, −1.6e-10 R_o from 32 to 48
+    /// to 64 modes, while the 3/4 variant (24 modes) moved it by 1.8e-10. Hence N doubles until the
+    /// bilateral residual is 5e-7 P: 64 modes there (4.9e-8 P), error 8e-11 against an
+    /// estimate of 4.1e-10 R_o; Table 1 keeps 32 on every row. The survey's next eleven
+    /// geometries held (error/estimate ≤ 0.82) but that 0.82, on (0.82, 1.48, 0.32), was ξ_l's
+    /// error (+1.1e-10 R_o from 55 to 80/D) half cancelled in the one coarse variant by the
+    /// modes' and heights' changes: the tier coarsens each alone
+    /// ([`HoledParams::split_variants`]: two more solves) and takes the hole rule to e^(−18)
+    /// (13 left 1e-11 … 1.4e-10 R_o that no variant sees). The survey over 30 random
+    /// geometries (same file, 992 s at load ~10): every error within its estimate (at most
+    /// 0.54 of it, on (0.347, 1.29, 0.238)), estimates ≤ 6.4e-9 R_o, all 30 converged. Its
+    /// cost at the route's reach (`two --method hankel --tol 1e-8`, A = D, load ~10): B/D = 16
+    /// 19.5 s of CPU (37 s wall), with a rim at B/D = 8, C = 30D 28 s, against the 4.7 s and
+    /// 10.5 s quoted at [`MAX_B_OVER_D`] and [`MAX_B_OVER_D_RIM`] (lower tiers, lower load):
+    /// near the CLI fuzz's 30 s.
     pub fn for_tolerance(tol: f64) -> Self {
         let base = Self {
             vary_xi_l: true,
             ..Self::default()
         };
-        let tier = |from, nodes, heights, modes, xi_l, tail, root: f64, hole_decay| Tier {
+        let fixed = |n| HoleParams {
+            terms: Some(n),
+            ..base.hole
+        };
+        // N doubled from 32 until the bilateral plate's residual is 5e-7 P: the variant at 3/4
+        // of N is honest only where the modes converge regularly (the docs above)
+        let adaptive = HoleParams {
+            terms: None,
+            start_terms: 32,
+            max_terms: 128,
+            residual_target: 5e-7,
+            ..base.hole
+        };
+        let tier = |from, nodes, heights, hole, xi_l, tail, root: f64, hole_decay, coarse| Tier {
             from,
             params: Self {
-                hole: HoleParams {
-                    terms: Some(modes),
-                    ..base.hole
-                },
+                hole,
                 nodes,
                 heights,
                 rel_tol: root,
@@ -157,21 +212,28 @@ impl HoledParams {
                 xi_l,
                 tail,
                 hole_decay,
+                coarse_modes: coarse,
+                // the tier for 1e-8 only
+                split_variants: from < 1e-6,
                 ..base
             },
         };
         // (from, nodes, heights, modes, ξ_l·D, tail/D, root and iteration tolerance,
-        // hole_decay), loosest first
+        // hole_decay, the coarse variant's share of the modes), loosest first
         let tiers = [
-            tier(1e-3, 6, 10, 6, 10.0, 6.0, 1e-4, 8.0),
-            tier(1e-4, 8, 12, 8, 12.0, 7.0, 1e-5, 8.0),
-            tier(1e-5, 10, 18, 16, 22.0, 10.0, 1e-7, 10.0),
-            tier(1e-6, 16, 18, 16, 28.0, 12.0, 1e-9, 13.0),
+            tier(1e-3, 6, 10, fixed(6), 10.0, 6.0, 1e-4, 8.0, 0.5),
+            tier(1e-4, 8, 12, fixed(8), 12.0, 7.0, 1e-5, 8.0, 0.5),
+            tier(1e-5, 10, 18, fixed(16), 22.0, 10.0, 1e-7, 10.0, 0.5),
+            tier(1e-6, 16, 18, fixed(16), 28.0, 12.0, 1e-9, 13.0, 0.5),
+            tier(1e-8, 24, 28, adaptive, 55.0, 14.0, 1e-11, 18.0, 0.75),
         ];
+        // tighter than the tightest tier: its knobs (the route's reach; the estimate says
+        // what was reached)
+        let tightest = tiers[tiers.len() - 1].params;
         tiers
             .iter()
             .find(|t| tol >= t.from)
-            .map_or(base, |t| t.params)
+            .map_or(tightest, |t| t.params)
     }
 }
 

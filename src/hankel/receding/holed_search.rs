@@ -157,17 +157,28 @@ fn secant_slope(found: &Found, d: f64) -> Option<f64> {
 }
 
 /// The variants' R_o (⌈3n/4⌉ points; half the modes and 2/3 of the heights) and the solves
-/// they took: ((R_o fewer nodes, R_o half terms), solves).
+/// they took: ((R_o fewer nodes, R_o half terms), the coarse variants' spread, solves). With
+/// [`HoledParams::split_variants`] the half-terms variant coarsens the modes only and two more
+/// coarsen the heights and ξ_l alone, the spread the sum of their |changes|; without, the
+/// spread is the one variant's |change|.
 pub(super) fn estimate(
     setup: &Setup,
     plate: &SinglePlate,
     params: &HoledParams,
     found: &Found,
-) -> Result<((f64, f64), usize), RecedingError> {
+) -> Result<((f64, f64), f64, usize), RecedingError> {
     let (r_o, b) = (found.r_o, plate.load().outer());
+    if !(params.coarse_modes > 0.0 && params.coarse_modes < 1.0) {
+        return Err(crate::error::InputError::Parameter {
+            field: "holed coarse_modes",
+            value: params.coarse_modes,
+            reason: "a fraction of the hole modes strictly between 0 and 1",
+        }
+        .into());
+    }
     // each variant's R_o by one Newton step from R_o: its change is ~1e-6 D or less, where the
     // step's error, ∝ the change squared, is far below it; a larger change gets the search
-    let (slope, mut solves) = match secant_slope(found, setup.d) {
+    let (slope, solves) = match secant_slope(found, setup.d) {
         Some(s) => (s, 0),
         None => {
             let h = 1e-3 * setup.d;
@@ -204,7 +215,7 @@ pub(super) fn estimate(
     };
     let half = HoledParams {
         hole: HoleParams {
-            terms: Some((setup.modes.len() / 2).max(1)),
+            terms: Some(((setup.modes.len() as f64 * params.coarse_modes) as usize).max(1)),
             ..params.hole
         },
         heights: (params.heights / 3 * 2).max(4),
@@ -215,11 +226,32 @@ pub(super) fn estimate(
         },
         ..*params
     };
-    let (r1, r2) = rayon::join(
-        || variant(setup, &fewer),
-        || Setup::sharing(plate, &half, Some(setup)).and_then(|s| variant(&s, &half)),
+    let coarse =
+        |p: &HoledParams| Setup::sharing(plate, p, Some(setup)).and_then(|s| variant(&s, p));
+    if !params.split_variants {
+        let (r1, r2) = rayon::join(|| variant(setup, &fewer), || coarse(&half));
+        let ((r1, s1), (r2, s2)) = (r1?, r2?);
+        return Ok(((r1, r2), (r2 - r_o).abs(), solves + s1 + s2));
+    }
+    // each coarsening alone: in one variant their changes can cancel (measured: ξ_l's +1.1e-10
+    // R_o against the modes' and heights' on (A/D, B/A, ν) = (0.82, 1.48, 0.32))
+    let modes = HoledParams {
+        hole: half.hole,
+        ..*params
+    };
+    let heights = HoledParams {
+        heights: half.heights,
+        ..*params
+    };
+    let xi = HoledParams {
+        xi_l: half.xi_l,
+        ..*params
+    };
+    let ((r1, r2), (r3, r4)) = rayon::join(
+        || rayon::join(|| variant(setup, &fewer), || coarse(&modes)),
+        || rayon::join(|| coarse(&heights), || coarse(&xi)),
     );
-    let ((r1, s1), (r2, s2)) = (r1?, r2?);
-    solves += s1 + s2;
-    Ok(((r1, r2), solves))
+    let ((r1, s1), (r2, s2), (r3, s3), (r4, s4)) = (r1?, r2?, r3?, r4?);
+    let spread = (r2 - r_o).abs() + (r3 - r_o).abs() + (r4 - r_o).abs();
+    Ok(((r1, r2), spread, solves + s1 + s2 + s3 + s4))
 }

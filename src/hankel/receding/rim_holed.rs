@@ -23,7 +23,13 @@
 //! **Error estimate**: the infinite route's estimate (Nyström points, hole terms, heights,
 //! root), plus the change of the finite-C R_o when both S_∞ and S₂ are solved with ⌈3n/4⌉
 //! Nyström points (one Newton step from R_o, slope by a difference over 1e-3 D), plus the rim
-//! residue's D·e^(−4.21(C − R_o)/D) ([`super::rim`]).
+//! residue's D·e^(−4.21(C − R_o)/D) ([`super::rim`]). That bound, against the FE meshed to C
+//! at --tol 1e-5 on (A/D, B/A) = (1, 2.2) (`tests/hankel/two_plate_rim_decay.rs`, ignored):
+//! at C − R_o = 0.6, 1.0, 1.5, 2.0 D, |FE − this| = 3.7e-4, 2.3e-5, 9.2e-7, 7.7e-7 D against
+//! bounds 6.9e-2, 1.3e-2, 1.6e-3, 2.0e-4 D (the FE's estimate 8.5e-5 D), and on (0.5, 1.6) at
+//! 0.6D 3.8e-4 D against 6.4e-2 D (the FE's estimate 3.9e-5 D): where the FE resolves
+//! the residue's shift (0.6D) it is at most 0.005 of the bound, beyond 1D within the FE's own
+//! error. The constant is safe there by two orders, not measured as sharp.
 //!
 //! # Accuracy
 //!
@@ -40,10 +46,15 @@
 //! # Cost
 //!
 //! Two crack solves (with the pressure at 32 radii) per trial radius, about ten trial radii
-//! and three for the estimate, after the infinite route's own run: 4.7–7.2 s of CPU per
-//! Table 1 row at load 9–10 on the 2 cores (example 19's second table), about 4–5× the
-//! infinite route alone; `two --method hankel --c 1.54 --tol 1e-6` on row 1: 8.7 s wall,
-//! 4.9 s user.
+//! and three for the estimate, after the infinite route's own run on the same setup (the
+//! bilateral plate, the midplane curve, the corner table: built once). `two --method hankel
+//! --c 1.54 --tol 1e-6` on Table 1's rows but (0.5, 1.3), by turns with main's binary at load
+//! 8–12: 2.7–3.8 s of CPU (user + sys) per row against 3.1–5.9 s with the setup built twice,
+//! 33 s against 40 s in all (−18 %), R_o and its estimate unchanged to the digit. Raising the
+//! Chebyshev heights by 14/9 with a rim (as a second implementation with another S₂ did,
+//! where S₂'s log lift needed them) was measured too and not kept: on those rows it moved R_o
+//! by ≤ 1.3e-9 R_o and the estimates both ways (1.3e-7 → 1.3e-8 R_o on (1, 1.3), 3.9e-8 →
+//! 1.9e-7 on (0.75, 1.3), within 20 % elsewhere) for 10–20 % more CPU.
 //!
 //! ```no_run
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -174,7 +185,9 @@ pub(super) fn finite_rim(
         .into());
     }
     let infinite = SinglePlate::new(a, OuterRadius::Infinite, d, plate.material(), load.clone())?;
-    let (inf, _) = holed_infinite::solve(&infinite, params, &[])?;
+    // one setup for the infinite plate's R_o, which brackets the search, and the rim's solves
+    let setup = Setup::new(&infinite, params)?;
+    let (inf, _) = holed_infinite::solve_on(&setup, &infinite, params, &[])?;
     let mat = plate.material();
     let states = RimStates::new(a, d, mat)?;
     let gl = gauss_legendre(20);
@@ -186,7 +199,7 @@ pub(super) fn finite_rim(
         })
     });
     let route = Route {
-        setup: Setup::new(&infinite, params)?,
+        setup,
         states,
         lift: Prescribed::new(mat.shear_modulus(), mat.poisson_ratio(), states.log_ratio()),
         c_outer,
