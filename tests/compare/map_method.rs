@@ -74,7 +74,11 @@ fn auto_takes_the_two_plate_route_only_within_reach_and_below_3e_5() {
         (Method::Hankel, 1e-3, true, true),
         (Method::Fem, 1e-5, true, false),
     ] {
-        assert_eq!(two_takes_hankel(method, tol, in_reach), takes, "{method:?} {tol}");
+        assert_eq!(
+            two_takes_hankel(method, tol, in_reach),
+            takes,
+            "{method:?} {tol}"
+        );
     }
     // (A/D 5, B/A 2.2): B/D = 11 > 8 with the rim; (A/D 1, B/A 2.2) with C/A = 3: C = 3A is
     // within one plate thickness of B + D = 3.2A (and beyond R_o ≈ 2.6A). The single plate's

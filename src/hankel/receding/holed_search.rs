@@ -144,16 +144,15 @@ pub(super) fn fraction_radius(a: f64, r_o: f64, x: f64) -> f64 {
     }
 }
 
-/// The slope of the edge coefficient at R_o: a secant through the edge value at R_o and the
-/// nearest other one of the search between 10⁻⁵D and 10⁻²D away; `None` when there is none.
-fn secant_slope(found: &Found, d: f64) -> Option<f64> {
-    let r_o = found.r_o;
-    let near = found
-        .edges
+/// The slope of the edge coefficient at R_o, whose edge value is `at_r_o`: a secant through
+/// it and the nearest other edge value of `edges` (c, f(c)) between 10⁻⁵D and 10⁻²D away;
+/// `None` when there is none.
+pub(super) fn secant_slope(edges: &[(f64, f64)], r_o: f64, at_r_o: f64, d: f64) -> Option<f64> {
+    let near = edges
         .iter()
         .filter(|(c, _)| (1e-5 * d..=1e-2 * d).contains(&(c - r_o).abs()))
         .min_by(|x, y| (x.0 - r_o).abs().total_cmp(&(y.0 - r_o).abs()))?;
-    Some((near.1 - found.last.edge) / (near.0 - r_o))
+    Some((near.1 - at_r_o) / (near.0 - r_o))
 }
 
 /// The variants' R_o (⌈3n/4⌉ points; half the modes and 2/3 of the heights) and the solves
@@ -178,7 +177,7 @@ pub(super) fn estimate(
     }
     // each variant's R_o by one Newton step from R_o: its change is ~1e-6 D or less, where the
     // step's error, ∝ the change squared, is far below it; a larger change gets the search
-    let (slope, solves) = match secant_slope(found, setup.d) {
+    let (slope, solves) = match secant_slope(&found.edges, found.r_o, found.last.edge, setup.d) {
         Some(s) => (s, 0),
         None => {
             let h = 1e-3 * setup.d;

@@ -18,11 +18,13 @@
 //! ([`RimStates::far_field_log`]: ∫(q − p)(r²/2 + k ln r) r dr over [A, c], by 32-point
 //! Gauss–Legendre in u with r = c − (c − A)u², smooth for the √ or 1/√ edge), and
 //! β = −M_∞(C)/(M_E(C) + M₂(C)). R_o is the root of the total edge coefficient
-//! φ_∞(c) + βφ₂(c), bracketed about the infinite plate's R_o and refined by Brent's method.
+//! φ_∞(c) + βφ₂(c), bracketed about the infinite plate's R_o and refined by step-stopping
+//! inverse interpolation ([`crate::numerics::secant::refine`], as the infinite route).
 //!
 //! **Error estimate**: the infinite route's estimate (Nyström points, hole terms, heights,
 //! root), plus the change of the finite-C R_o when both S_∞ and S₂ are solved with ⌈3n/4⌉
-//! Nyström points (one Newton step from R_o, slope by a difference over 1e-3 D), plus the rim
+//! Nyström points (one Newton step from R_o, the slope a secant through the search's edge
+//! values within 1e-5…1e-2 D of R_o, else a difference over 1e-3 D), plus the rim
 //! residue's D·e^(−4.21(C − R_o)/D) ([`super::rim`]). That bound, against the FE meshed to C
 //! at --tol 1e-5 on (A/D, B/A) = (1, 2.2) (`tests/hankel/two_plate_rim_decay.rs`, ignored):
 //! at C − R_o = 0.6, 1.0, 1.5, 2.0 D, |FE − this| = 3.7e-4, 2.3e-5, 9.2e-7, 7.7e-7 D against
@@ -71,7 +73,7 @@ use super::holed_infinite;
 use super::holed_params::{HoledParams, MAX_B_OVER_D_RIM};
 use super::holed_record::HoledContact;
 pub use super::holed_record::RimRecord;
-use super::holed_search::fraction_radius;
+use super::holed_search::{fraction_radius, secant_slope};
 use super::holed_setup::Setup;
 use super::prescribed::Prescribed;
 use super::rim::PAPKOVICH_DECAY;
@@ -81,6 +83,7 @@ use crate::error::InputError;
 use crate::hankel::hole::fit::Fit;
 use crate::joint::{OuterRadius, SinglePlate};
 use crate::numerics::quadrature::gauss_legendre;
+use crate::numerics::secant::refine;
 use std::cell::RefCell;
 use std::time::Instant;
 
@@ -223,31 +226,58 @@ pub(super) fn finite_rim(
         from: b,
         to: scan.end,
     };
-    let mut solves = 0;
-    let r_o = {
-        let mut edge = |c: f64| {
-            solves += 1;
-            route.trial(c, params.nodes, &[]).map(|t| t.edge)
-        };
-        root(&mut edge, &scan, Some(inf.r_o))?.ok_or(not_found)?
+    // bracketed about the infinite plate's R_o by the receding solver's scan (its Brent
+    // refinement ended at once by an infinite tolerance), then refined by the infinite route's
+    // step-stopping inverse interpolation: Brent's method to the root tolerance took 10–12 steps
+    // on this edge coefficient, which is rough at that scale (its crack iterations stop at their
+    // own tolerance), 25–28 solves per geometry at every tolerance
+    // Nyström points as the infinite route's (more for loads beyond B = 3.5D): with
+    // `params.nodes` alone, B/D = 8 at --tol 1e-3 put R_o 2.4e-3 R_o off the 1e-6 tier's
+    let (nodes, coarse_n) = (
+        route.setup.nodes_for(params.nodes),
+        route.setup.nodes_for((3 * params.nodes).div_ceil(4).max(4)),
+    );
+    let edge = |c: f64, seen: &mut Vec<(f64, f64)>| -> Result<f64, RecedingError> {
+        let e = route.trial(c, nodes, &[])?.edge;
+        seen.push((c, e));
+        Ok(e)
     };
-    let coarse_n = (3 * params.nodes).div_ceil(4).max(4);
-    // the coarse variant's R_o by one Newton step from R_o (the slope by a difference over
-    // 1e-3 D): its error ∝ the change squared, far below the change itself
+    let mut seen = Vec::new();
+    let bracket = Scan {
+        tol: f64::INFINITY,
+        ..scan
+    };
+    root(&mut |c| edge(c, &mut seen), &bracket, Some(inf.r_o))?.ok_or(not_found)?;
+    let known = seen.clone();
+    let r_o = refine(&mut |c| edge(c, &mut seen), &known, params.rel_tol * d, 100)?.x;
+    let mut solves = seen.len();
+    // the coarse variant's R_o by one Newton step from R_o, the slope a secant through two of
+    // the search's edge values (or a difference over 1e-3 D): its error ∝ the change squared,
+    // far below the change itself
     let coarse = if params.estimate {
-        let h = 1e-3 * d;
-        let (f0, f1) = (
-            route.trial(r_o, params.nodes, &[])?.edge,
-            route.trial(r_o + h, params.nodes, &[])?.edge,
-        );
+        let f0 = match seen.iter().find(|p| p.0 == r_o) {
+            Some(p) => p.1,
+            None => {
+                solves += 1;
+                route.trial(r_o, nodes, &[])?.edge
+            }
+        };
+        let slope = match secant_slope(&seen, r_o, f0, d) {
+            Some(s) => s,
+            None => {
+                let h = 1e-3 * d;
+                solves += 1;
+                (route.trial(r_o + h, nodes, &[])?.edge - f0) / h
+            }
+        };
         let fc = route.trial(r_o, coarse_n, &[])?.edge;
-        solves += 3;
-        r_o - fc * h / (f1 - f0)
+        solves += 1;
+        r_o - fc / slope
     } else {
         f64::NAN
     };
     let radii: Vec<f64> = at.iter().map(|&x| fraction_radius(a, r_o, x)).collect();
-    let last = route.trial(r_o, params.nodes, &radii)?;
+    let last = route.trial(r_o, nodes, &radii)?;
     let decay_bound = d * (-PAPKOVICH_DECAY * (c_outer - r_o) / d).exp();
     let mut info = inf.info;
     info.r_o_error += decay_bound

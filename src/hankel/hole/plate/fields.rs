@@ -106,7 +106,7 @@ impl HolePlate {
     }
 
     /// The modes' part of [`Self::correction_midplane`] (modes whose share is bounded below
-    /// 1e-18 P there are skipped: [`Mode::midplane_bound`]).
+    /// 1e-18 P there are skipped: [`Mode::midplane_bound`](super::super::eigen::Mode::midplane_bound)).
     pub fn modes_midplane(&self, r: f64) -> f64 {
         let negligible = 1e-18 * self.p_ref;
         self.fit.as_ref().map_or(0.0, |f| {
@@ -120,7 +120,7 @@ impl HolePlate {
     }
 
     /// The corner enrichment's midplane σ_z(r, 0) field by field, 4 real values per exponent
-    /// ([`CornerLoads::midplane_basis`]; empty without enrichment): they do not depend on N,
+    /// ([`CornerLoads::midplane_basis`](super::super::corner::CornerLoads::midplane_basis); empty without enrichment): they do not depend on N,
     /// so a caller scanning r at every N may keep them. The enrichment's σ_z is their dot
     /// product with [`Self::corner_weights`].
     pub fn corner_midplane_basis(&self, r: f64) -> Vec<f64> {
@@ -130,7 +130,7 @@ impl HolePlate {
     }
 
     /// A node set for [`Self::corner_midplane_basis`]-values at radii up to `r_max`
-    /// ([`CornerLoads::midplane_rule`]: fewer nodes for a smaller `r_max`); None without
+    /// ([`CornerLoads::midplane_rule`](super::super::corner::CornerLoads::midplane_rule): fewer nodes for a smaller `r_max`); None without
     /// enrichment.
     pub fn corner_midplane_rule(&self, r_max: f64) -> Option<CornerMidplaneRule> {
         self.corner.as_ref().map(|c| c.midplane_rule(r_max))
