@@ -16,7 +16,11 @@
 //! texts "R_o(C = inf)" read as an infinity (now "R_o(infinite plate)") and 3 runs over 30 s,
 //! all `two --method hankel --c` with holes of A/D 0.001–0.005, where the route left residual
 //! tractions of 1e1–1e4 P: holes below A/D = 0.04 are now refused (exit 2 naming `--a`), and a
-//! rim beyond B/D = 8. Not re-run since.
+//! rim beyond B/D = 8. Re-run (25 Nov 2026, 1487 s on two threads beside other work): passed,
+//! codes 4796/76/4992/136, slowest 14.5 s of CPU; the run before it, against a 30 s wall limit
+//! at load ~10, had counted 36 `table1`/`table2 --tol 1e-320` runs (7.5–9 s of CPU each on one
+//! thread, as at 1e-5) and two B/D = 8 rims at --tol 1.4e-4 (11 s of CPU, 25 trial radii: the
+//! rim's search, since made the infinite route's) over the limit, hence the CPU clock.
 
 use std::io::Read;
 use std::process::{Command, Stdio};
