@@ -29,10 +29,7 @@ const CURVE_POINTS: usize = 100;
 /// between unequal plates, or a load wider than the route's basis reaches.
 pub fn unsupported(args: &Args, why: &'static str) -> Option<(&'static str, String, &'static str)> {
     let g = &args.geom;
-    let equal = args.d2.is_none_or(|d| d == g.d)
-        && args.e2.is_none_or(|e| e == args.e())
-        && args.nu2.is_none_or(|n| n == g.nu);
-    if !equal && !matches!(args.interface, Interface::Frictionless) {
+    if !equal_plates(args) && !matches!(args.interface, Interface::Frictionless) {
         let name = args
             .interface
             .to_possible_value()
@@ -50,6 +47,14 @@ pub fn unsupported(args: &Args, why: &'static str) -> Option<(&'static str, Stri
         pair.basis_size(&RecedingParams::default()).ok()
     };
     fits().is_none().then(|| ("--b", g.b.to_string(), reach))
+}
+
+/// Whether the lower plate's --d2, --e2, --nu2 (where given) equal the upper plate's.
+pub fn equal_plates(args: &Args) -> bool {
+    let g = &args.geom;
+    args.d2.is_none_or(|d| d == g.d)
+        && args.e2.is_none_or(|e| e == args.e())
+        && args.nu2.is_none_or(|n| n == g.nu)
 }
 
 /// Runs the route on checked arguments with bearing pressure `load`.
