@@ -24,9 +24,6 @@ use boltzone::hankel::receding::rim::rim_contact;
 use boltzone::hankel::receding::{Pair, RecedingParams};
 use boltzone::{FaceLoad, Material, Plate};
 
-/// Points of the `--curve` (plus one).
-const CURVE_POINTS: usize = 100;
-
 /// Runs the route on checked arguments (equal plates, `--a 0`, `--c` beyond B + D: checked by
 /// [`super::two_hankel::unsupported`]) with bearing pressure `load`.
 pub fn run(
@@ -49,9 +46,7 @@ pub fn run(
     let (r_o, error) = (out.r_o, out.info.r_o_error);
     let converged = error <= args.tol * r_o;
     if let Some(path) = &args.out.curve {
-        let at: Vec<f64> = (0..=CURVE_POINTS)
-            .map(|k| r_o * (1.0 - (1.0 - k as f64 / CURVE_POINTS as f64).powi(2)))
-            .collect();
+        let at = super::two_pair::curve_radii(r_o);
         let (_, curve) =
             rim_contact(g.d, material, &load, c, &params, args.tol, &at).map_err(beyond)?;
         let method = "Hankel, receding contact with the rim's bending correction \
@@ -62,16 +57,7 @@ pub fn run(
     let i = &out.info;
     let l = args.units.length();
     if !args.json {
-        let note = if converged {
-            ""
-        } else {
-            "  NOT converged to --tol (exit 3)"
-        };
-        println!(
-            "R_o = {} ± {error:.1e} {l}   (2R_o = {} {l}){note}",
-            sig(r_o, 10),
-            sig(2.0 * r_o, 10),
-        );
+        super::two_pair::print_r_o(args, r_o, error, converged);
         println!(
             "method: Hankel (receding contact with the rim's bending correction, no hole); {} \
              Nystrom points, {} systems solved; {:.3} s",
@@ -88,31 +74,21 @@ pub fn run(
         );
         return Ok(Status::from_converged(converged));
     }
-    let mut v = serde_json::json!({
-        "method": "hankel",
-        "r_o": r_o,
-        "r_o_error": error,
-        "converged": converged,
-        "tolerance": args.tol,
-        "interface": "frictionless (receding contact of two equal plates, no hole, rim C)",
-        "hankel": {
-            "nodes": i.nodes,
-            "solves": i.solves,
-            "r_o_coarse": i.r_o_coarse,
-            "rim": {
-                "outer_radius": c,
-                "r_o_infinite": infinite.r_o,
-                "curvature": out.curvature,
-                "rim_moment": out.rim_moment,
-                "rim_force": out.rim_force,
-                "decay_bound": i.decay_bound,
-                "r_o_fewer_nodes": i.r_o_coarse,
-            },
+    let hankel = serde_json::json!({
+        "nodes": i.nodes,
+        "solves": i.solves,
+        "r_o_coarse": i.r_o_coarse,
+        "rim": {
+            "outer_radius": c,
+            "r_o_infinite": infinite.r_o,
+            "curvature": out.curvature,
+            "rim_moment": out.rim_moment,
+            "rim_force": out.rim_force,
+            "decay_bound": i.decay_bound,
+            "r_o_fewer_nodes": i.r_o_coarse,
         },
-        "seconds": start.elapsed().as_secs_f64(),
-        "units": args.units.units.name(),
     });
-    super::output::stamp(&mut v, &args.inputs()?, start)?;
-    super::print_json(&v)?;
-    Ok(Status::from_converged(converged))
+    let interface = "frictionless (receding contact of two equal plates, no hole, rim C)";
+    let result = (r_o, error, converged, start.elapsed().as_secs_f64());
+    super::two_pair::print_json(args, start, result, interface, hankel)
 }

@@ -146,3 +146,44 @@ fn a_tolerance_beyond_reach_exits_3_with_the_result() {
     assert_eq!(v["converged"], false);
     assert!(v["r_o"].as_f64().unwrap() > 1.0);
 }
+
+#[test]
+fn the_curve_carries_the_load() {
+    // ∫q r dr over [0, R_o] = ∫p r dr = B²/2 (P = 1, B = 1): equilibrium of the interface,
+    // by the trapezoid rule on the curve's points and on every other one (the difference is
+    // the quadrature's error scale)
+    let dir = std::env::temp_dir().join(format!("boltzone-rim-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("rim.csv");
+    let r = go(&[
+        "--method",
+        "hankel",
+        "--c",
+        "5",
+        "--curve",
+        path.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let points: Vec<(f64, f64)> = text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with('r'))
+        .map(|l| {
+            let mut f = l.split(',').map(|x| x.parse::<f64>().unwrap());
+            (f.next().unwrap(), f.next().unwrap())
+        })
+        .collect();
+    let trapezoid = |step: usize| -> f64 {
+        let p: Vec<&(f64, f64)> = points.iter().step_by(step).collect();
+        p.windows(2)
+            .map(|w| 0.5 * (w[1].0 - w[0].0) * (w[0].1 * w[0].0 + w[1].1 * w[1].0))
+            .sum()
+    };
+    let (fine, coarse) = (trapezoid(1), trapezoid(2));
+    println!("∫q r dr = {fine:.6} (every other point {coarse:.6}), load 0.5");
+    assert!(
+        (fine - 0.5).abs() <= (fine - coarse).abs(),
+        "{fine} {coarse}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
