@@ -102,6 +102,11 @@ fn json_keys_and_text_line_are_the_holed_rims() {
         k
     };
     assert_eq!(keys(&v["hankel"]["rim"]), keys(&holed["hankel"]["rim"]));
+    // auto below 3e-5 takes this route (above it the FE: agrees_with_the_fe_meshed_to_the_rim)
+    let (h, _, auto) = r_o("auto", Some("5"), "1e-6");
+    assert_eq!(auto["method"], "hankel");
+    assert_eq!(auto["hankel"]["rim"]["outer_radius"].as_f64(), Some(5.0));
+    assert_eq!(Some(h), r_o("hankel", Some("5"), "1e-6").2["r_o"].as_f64());
     let text = go(&["--method", "hankel", "--c", "5"]);
     assert_eq!(text.code, Some(0), "{}", text.stderr);
     assert!(
