@@ -38,6 +38,7 @@ mod two_curve;
 mod two_files;
 mod two_hankel;
 mod two_pair;
+mod two_rim;
 
 pub use command::{run, Cli};
 use print::{print_json, progress, write_output};

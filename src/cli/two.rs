@@ -148,6 +148,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
                 && super::two_hankel::unsupported(&args).is_none()
         }
     };
+    if let (true, Some(c)) = (hankel && args.geom.a <= 0.0, args.c) {
+        return super::two_rim::run(&args, c, load, start);
+    }
     if hankel && args.geom.a <= 0.0 {
         return super::two_pair::run(&args, load, start);
     }

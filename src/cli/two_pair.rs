@@ -29,10 +29,7 @@ const CURVE_POINTS: usize = 100;
 /// between unequal plates, or a load wider than the route's basis reaches.
 pub fn unsupported(args: &Args, why: &'static str) -> Option<(&'static str, String, &'static str)> {
     let g = &args.geom;
-    let equal = args.d2.is_none_or(|d| d == g.d)
-        && args.e2.is_none_or(|e| e == args.e())
-        && args.nu2.is_none_or(|n| n == g.nu);
-    if !equal && !matches!(args.interface, Interface::Frictionless) {
+    if !equal_plates(args) && !matches!(args.interface, Interface::Frictionless) {
         let name = args
             .interface
             .to_possible_value()
@@ -52,6 +49,36 @@ pub fn unsupported(args: &Args, why: &'static str) -> Option<(&'static str, Stri
     fits().is_none().then(|| ("--b", g.b.to_string(), reach))
 }
 
+/// Whether the lower plate's --d2, --e2, --nu2 (where given) equal the upper plate's.
+pub fn equal_plates(args: &Args) -> bool {
+    let g = &args.geom;
+    args.d2.is_none_or(|d| d == g.d)
+        && args.e2.is_none_or(|e| e == args.e())
+        && args.nu2.is_none_or(|n| n == g.nu)
+}
+
+/// The `--curve`'s radii on [0, R_o], denser toward R_o (q ~ √(R_o − r)).
+pub fn curve_radii(r_o: f64) -> Vec<f64> {
+    (0..=CURVE_POINTS)
+        .map(|k| r_o * (1.0 - (1.0 - k as f64 / CURVE_POINTS as f64).powi(2)))
+        .collect()
+}
+
+/// The text output's first line: R_o, its estimate, 2R_o, in the length unit.
+pub fn print_r_o(args: &Args, r_o: f64, error: f64, converged: bool) {
+    let l = args.units.length();
+    let note = if converged {
+        ""
+    } else {
+        "  NOT converged to --tol (exit 3)"
+    };
+    println!(
+        "R_o = {} ± {error:.1e} {l}   (2R_o = {} {l}){note}",
+        sig(r_o, 10),
+        sig(2.0 * r_o, 10),
+    );
+}
+
 /// Runs the route on checked arguments with bearing pressure `load`.
 pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Result<Status> {
     let g = &args.geom;
@@ -69,8 +96,8 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
     let (r_o, error) = (out.r_o, out.info.r_o_error);
     let converged = error <= args.tol * r_o;
     if let Some(path) = &args.out.curve {
-        let curve: Vec<(f64, f64)> = (0..=CURVE_POINTS)
-            .map(|k| r_o * (1.0 - (1.0 - k as f64 / CURVE_POINTS as f64).powi(2)))
+        let curve: Vec<(f64, f64)> = curve_radii(r_o)
+            .into_iter()
             .map(|r| (r, out.solution.pressure(r)))
             .collect();
         let method = "Hankel, receding contact of the two plates in series \
@@ -80,17 +107,7 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
     }
     let i = &out.info;
     if !args.json {
-        let l = args.units.length();
-        let note = if converged {
-            ""
-        } else {
-            "  NOT converged to --tol (exit 3)"
-        };
-        println!(
-            "R_o = {} ± {error:.1e} {l}   (2R_o = {} {l}){note}",
-            sig(r_o, 10),
-            sig(2.0 * r_o, 10),
-        );
+        print_r_o(args, r_o, error, converged);
         println!(
             "method: Hankel (receding contact of the two plates in series, no hole); {} Nystrom \
              points, {} systems solved; {:.3} s",
@@ -98,22 +115,38 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
         );
         return Ok(Status::from_converged(converged));
     }
+    let hankel = serde_json::json!({
+        "nodes": i.nodes,
+        "xi_nodes": i.xi_nodes,
+        "solves": i.solves,
+        "r_o_coarse": i.r_o_coarse,
+        "min_pressure": i.min_pressure,
+        "min_gap": i.min_gap,
+    });
+    let interface = "frictionless (receding contact of the two plates, no hole)";
+    let result = (r_o, error, converged, i.seconds);
+    print_json(args, start, result, interface, hankel)
+}
+
+/// Prints the JSON record of a no-hole Hankel run: `result` = (R_o, its estimate, converged,
+/// seconds), `hankel` the route's record; the exit status by `converged`.
+pub fn print_json(
+    args: &Args,
+    start: std::time::Instant,
+    result: (f64, f64, bool, f64),
+    interface: &str,
+    hankel: serde_json::Value,
+) -> anyhow::Result<Status> {
+    let (r_o, error, converged, seconds) = result;
     let mut v = serde_json::json!({
         "method": "hankel",
         "r_o": r_o,
         "r_o_error": error,
         "converged": converged,
         "tolerance": args.tol,
-        "interface": "frictionless (receding contact of the two plates, no hole)",
-        "hankel": {
-            "nodes": i.nodes,
-            "xi_nodes": i.xi_nodes,
-            "solves": i.solves,
-            "r_o_coarse": i.r_o_coarse,
-            "min_pressure": i.min_pressure,
-            "min_gap": i.min_gap,
-        },
-        "seconds": i.seconds,
+        "interface": interface,
+        "hankel": hankel,
+        "seconds": seconds,
         "units": args.units.units.name(),
     });
     super::output::stamp(&mut v, &args.inputs()?, start)?;

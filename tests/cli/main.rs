@@ -6,5 +6,6 @@ mod fuzz;
 mod out_of_reach;
 mod readme;
 mod regressions;
+mod rim_no_hole;
 mod thin_plates;
 mod tour;

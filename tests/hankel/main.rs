@@ -22,6 +22,7 @@ mod receding_pair;
 mod separation;
 mod shear_kernels;
 mod slab;
+mod small_hole_residual;
 mod transform;
 mod two_plate_hole;
 mod two_plate_hole_fast;
