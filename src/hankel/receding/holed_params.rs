@@ -38,8 +38,9 @@ pub const MAX_B_OVER_D: f64 = 16.0;
 /// in every knob) the hole's residual traction grows smoothly toward 0.04 (B/D = 1, knobs for
 /// 1e-6: 1.6e-8, 2.5e-8, 4.2e-8, 1.4e-7, 7.3e-7, 2.5e-6 P; for 1e-8 at most 3.2e-8 P) and every
 /// error is within its estimate (at most 0.47 of it); at the limit the CI check
-/// `at_the_smallest_hole_the_estimate_covers_a_finer_run`. With a rim the estimate misses the
-/// Chebyshev heights at every A/D, not a small-hole effect (module `rim_holed`).
+/// `at_the_smallest_hole_the_estimate_covers_a_finer_run`. With a rim the estimate missed the
+/// Chebyshev heights at every A/D, not a small-hole effect, until it gained their variant
+/// (module `rim_holed`).
 pub const MIN_A_OVER_D: f64 = 0.04;
 
 /// Widest load B/D that the route takes with a finite rim C (module `rim_holed`), whose cost is
