@@ -34,4 +34,5 @@ mod two_plate_rim;
 mod two_plate_rim_decay;
 mod two_plate_rim_hankel;
 mod two_plate_rim_holed;
+mod two_plate_rim_survey;
 mod two_plate_rim_wide;

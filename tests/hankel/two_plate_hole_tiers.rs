@@ -76,7 +76,7 @@ fn two_geometries_are_within_every_tiers_estimate() {
 pub(crate) struct Rng(pub(crate) u64);
 
 impl Rng {
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+    pub(crate) fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
         self.0 ^= self.0 << 13;
         self.0 ^= self.0 >> 7;
         self.0 ^= self.0 << 17;
