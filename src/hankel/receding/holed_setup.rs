@@ -34,7 +34,7 @@ use crate::error::InputError;
 use crate::hankel::hole::corner::CornerLoads;
 use crate::hankel::hole::eigen::{symmetric_roots, Mode};
 use crate::hankel::hole::fit::{heights, Fit};
-use crate::hankel::hole::HolePlate;
+use crate::hankel::hole::{HoleParams, HolePlate};
 use crate::hankel::midplane::MidplaneCurve;
 use crate::hankel::transform::LoadTransform;
 use crate::joint::{OuterRadius, SinglePlate};
@@ -54,6 +54,8 @@ pub(super) struct Setup {
     /// P, the mean pressure.
     pub(super) p_ref: f64,
     pub(super) bilateral: HolePlate,
+    /// The hole knobs `bilateral` was solved with.
+    pub(super) hole: HoleParams,
     /// The slab's midplane σ_z on [A, B + 3D + tail], and on [A, `r_max`] once needed.
     pub(super) slab_mid: Arc<MidplaneCurve>,
     pub(super) slab_far: Arc<OnceLock<Option<MidplaneCurve>>>,
@@ -172,7 +174,12 @@ impl Setup {
         let g = mat.shear_modulus();
         let load = plate.load();
         let p_ref = load.mean_pressure().abs().max(f64::MIN_POSITIVE);
-        let bilateral = HolePlate::new(plate, &params.hole)?;
+        // a setup of the same plate with the same hole knobs (a variant changing only the
+        // heights, ξ_l or the Nyström points) has the same bilateral plate: not solved again
+        let bilateral = match shared.filter(|s| s.hole == params.hole && s.a == a && s.d == d) {
+            Some(s) => s.bilateral.clone(),
+            None => HolePlate::new(plate, &params.hole)?,
+        };
         let n = bilateral.info().terms;
         let b = load.outer();
         let tail = params.tail * d;
@@ -276,6 +283,7 @@ impl Setup {
             p0: LoadTransform::new(load).eval(0.0),
             p_ref,
             bilateral,
+            hole: params.hole,
             slab_mid,
             slab_far,
             modes,
