@@ -125,11 +125,11 @@ pub fn pick(scene: &Scene) -> (Method, &'static str) {
     match (scene.model, scene.method) {
         (Model::TwoPlate, Method::Hankel) => (
             Method::Hankel,
-            "semi-analytic two plates with the hole (asked): R_o and the interface pressure",
+            "semi-analytic two plates (asked; with a hole, or the receding contact without one): R_o and the interface pressure",
         ),
         (Model::TwoPlate, Method::Auto) if super::two_hankel::auto_takes(scene) => (
             Method::Hankel,
-            "semi-analytic two plates with the hole: below a tolerance of 3e-5 the FE cannot claim it",
+            "semi-analytic two plates (with a hole, or the receding contact without one): below a tolerance of 3e-5 the FE cannot claim it",
         ),
         (Model::TwoPlate, _) => (
             Method::Fem,

@@ -16,6 +16,7 @@ mod joint_units;
 mod temperature;
 mod thermal_single;
 mod two_hankel;
+mod two_hankel_no_hole;
 mod units;
 
 use std::path::PathBuf;

@@ -91,31 +91,39 @@ fn keys_that_keep_a_scene_from_the_route_are_named_with_their_line() {
             "plates",
         ),
     ] {
-        let text = scene("hankel", 1e-4, extra);
-        match Scene::parse(&text) {
-            Err(SceneError::Invalid {
-                key: k,
-                line,
-                reason,
-            }) => {
-                assert_eq!(k, key, "{reason}");
-                // the key's line: its field after its table's header
-                if let Some((table, field)) = key.split_once('.') {
-                    let lines: Vec<&str> = text.lines().collect();
-                    let header = lines.iter().position(|l| *l == format!("[{table}]"));
-                    let want = header
-                        .and_then(|h| (h + 1..lines.len()).find(|&i| lines[i].starts_with(field)));
-                    assert_eq!(Some(line), want.map(|i| i + 1), "{key}: {reason}");
-                }
-                assert!(reason.contains("hankel"), "{reason}");
-            }
-            other => panic!("{key}: expected a located error, got {other:?}"),
-        }
+        located(&scene("hankel", 1e-4, extra), key);
     }
-    // no hole: the receding-contact solution is the route, not this one
-    let text = scene("hankel", 1e-4, "").replace("radius = 0.1", "radius = 0.0");
-    assert!(matches!(
-        Scene::parse(&text),
-        Err(SceneError::Invalid { key, .. }) if key == "hole.radius"
-    ));
+    // a hole below 0.04 D (without one, hole.radius = 0, the receding contact is the route:
+    // tests/scene/two_hankel_no_hole.rs)
+    located(
+        &scene("hankel", 1e-4, "").replace("radius = 0.1", "radius = 0.003"),
+        "hole.radius",
+    );
+}
+
+/// Asserts that parsing `text` fails naming `key` on the line where the key is written (for
+/// a dotted key, its field after its table's header), with a reason that names the method
+/// and points to another.
+pub fn located(text: &str, key: &str) {
+    match Scene::parse(text) {
+        Err(SceneError::Invalid {
+            key: k,
+            line,
+            reason,
+        }) => {
+            assert_eq!(k, key, "{reason}");
+            if let Some((table, field)) = key.split_once('.') {
+                let lines: Vec<&str> = text.lines().collect();
+                let header = lines.iter().position(|l| *l == format!("[{table}]"));
+                let want = header
+                    .and_then(|h| (h + 1..lines.len()).find(|&i| lines[i].starts_with(field)));
+                assert_eq!(Some(line), want.map(|i| i + 1), "{key}: {reason}");
+            }
+            assert!(
+                reason.contains("hankel") && reason.contains("\"fem\""),
+                "{reason}"
+            );
+        }
+        other => panic!("{key}: expected a located error, got {other:?}"),
+    }
 }
