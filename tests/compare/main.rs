@@ -3,6 +3,7 @@
 
 mod cli;
 mod map;
+mod map_fallback;
 mod map_method;
 mod reference;
 mod table_units;

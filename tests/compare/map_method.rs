@@ -7,7 +7,7 @@ use boltzone::compare::map::{check_reach, compute, MapParams, METHOD_COLUMNS};
 use boltzone::compare::{two_hankel_reach, CompareError, Comparison, Method, Route, Value};
 use std::process::Command;
 
-fn map(a_over_d: &[f64], b_over_a: &[f64], c_over_a: f64, method: Method) -> MapParams {
+pub fn map(a_over_d: &[f64], b_over_a: &[f64], c_over_a: f64, method: Method) -> MapParams {
     MapParams {
         a_over_d: a_over_d.to_vec(),
         b_over_a: b_over_a.to_vec(),
@@ -19,7 +19,7 @@ fn map(a_over_d: &[f64], b_over_a: &[f64], c_over_a: f64, method: Method) -> Map
 }
 
 /// The CSV's column `name` for every point.
-fn column(csv: &str, name: &str) -> Vec<String> {
+pub fn column(csv: &str, name: &str) -> Vec<String> {
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     let k = header.iter().position(|h| *h == name).unwrap();
