@@ -19,6 +19,7 @@ mod receding_grid;
 mod receding_grid_j0;
 mod receding_kernels;
 mod receding_pair;
+mod rim_moment_fields;
 mod separation;
 mod shear_kernels;
 mod slab;
