@@ -9,7 +9,7 @@
 //! a two-point Gauss–Legendre rule through the thickness integrates M_r = ∫σ_r ζ dz and
 //! N_r = ∫σ_r dz exactly. σ_r at the two Gauss heights is the layer's Hankel field
 //! (`layer_field`: top kernels × p̄ + bottom kernels × q̄, σ_r = ∫[R₀J₀(ξr) − R₁J₁(ξr)/(ξr)]dξ)
-//! with p̄ = PB J₁(ξB)/ξ and q̄(ξ) = ∫q J₀(ξr) r dr by composite Gauss in s, r = R_o(1 − s²)
+//! with p̄ = PB J₁(ξB)/ξ and q̄(ξ) = ∫q J₀(ξr) r dr by Gauss–Legendre in s, r = R_o(1 − s²)
 //! (q ~ √(R_o − r) is smooth in s). Betti's side: M_r = −GD³k_S/(6r²) with
 //! k_S = −(3(1−ν)/(GD³))·½∫(q − p)r³dr (`RimStates::far_field_log`, `log_moment`) and
 //! N_r = −νPD/(2πr²) with P the total force (`far_field_force`).
@@ -26,33 +26,29 @@ const B: f64 = 1.0;
 const P: f64 = 1.0;
 const NU: f64 = 0.3;
 
-/// Composite 16-point Gauss–Legendre (node, weight) on [a, b] in `panels` equal panels.
-fn composite(a: f64, b: f64, panels: usize) -> Vec<(f64, f64)> {
-    let rule = gauss_legendre(16);
-    let h = (b - a) / panels as f64;
-    (0..panels)
-        .flat_map(|k| {
-            let c = a + (k as f64 + 0.5) * h;
-            rule.iter()
-                .map(move |&(x, w)| (c + 0.5 * h * x, 0.5 * h * w))
-        })
+/// The `n`-point Gauss–Legendre rule on [a, b] (one rule: gauss-quad's nodes of any order).
+fn rule(a: f64, b: f64, n: usize) -> Vec<(f64, f64)> {
+    let h = 0.5 * (b - a);
+    gauss_legendre(n)
+        .iter()
+        .map(|&(x, w)| (a + h * (1.0 + x), h * w))
         .collect()
 }
 
 /// (M_r, N_r) at each of `radii` from the fields of the plate pressed by P on r ≤ B and by
 /// the pressure `q` = (r, weight·q·r) nodes on the base. The kernels at the Gauss heights decay
 /// like e^(−ξ·distance to the nearer face) (0.211 D): the ξ-integral stops at e^(−36) of it,
-/// in panels of one period of the fastest oscillation (J₀(ξr) beside q̄'s and p̄'s), where 16
-/// Gauss nodes err by about π³²/32! ≈ 3e-20 of the integrand.
+/// by one Gauss rule with 16 nodes per period of the fastest oscillation (J₀(ξr) beside q̄'s
+/// and p̄'s): about 10 per period where the nodes are sparsest, in the middle.
 fn field_resultants(q: &[(f64, f64)], r_o: f64, radii: &[f64]) -> Vec<(f64, f64)> {
     // two Gauss heights through the thickness: ζ = ±D/(2√3), weights D/2
     let zeta = 0.5 * D / 3f64.sqrt();
     let heights = [(0.5 * D - zeta, -zeta), (0.5 * D + zeta, zeta)];
     let xi_max = 36.0 / (0.5 * D - zeta);
     let fastest = radii.iter().fold(0.0f64, |m, &r| m.max(r)) + r_o + B;
-    let panels = (xi_max * fastest / (2.0 * PI)).ceil() as usize;
+    let nodes = 16 * (xi_max * fastest / (2.0 * PI)).ceil() as usize;
     let mut out = vec![(0.0, 0.0); radii.len()];
-    for (xi, wx) in composite(0.0, xi_max, panels) {
+    for (xi, wx) in rule(0.0, xi_max, nodes) {
         let p_bar = P * B * libm::j1(xi * B) / xi;
         let q_bar: f64 = q.iter().map(|&(r, wq)| wq * libm::j0(xi * r)).sum();
         for &(z, zeta) in &heights {
@@ -79,8 +75,8 @@ fn the_far_field_moment_of_the_fields_is_bettis() {
     let c = layer.receding_contact(&RecedingParams::default()).unwrap();
     let r_o = c.r_o;
     // q at r = R_o(1 − s²): the phase ξr changes at most 2R_o·ξ_max ≈ 520 per unit s
-    // (ξ_max ≈ 170/D): 96 panels keep 16 nodes within 0.9 of a period
-    let q: Vec<(f64, f64)> = composite(0.0, 1.0, 96)
+    // (ξ_max ≈ 170/D), 83 periods: 1536 nodes, at least 12 per period
+    let q: Vec<(f64, f64)> = rule(0.0, 1.0, 1536)
         .into_iter()
         .map(|(s, w)| {
             let r = r_o * (1.0 - s * s);
