@@ -25,6 +25,7 @@ mod shear_kernels;
 mod slab;
 mod small_hole_residual;
 mod transform;
+mod two_plate_curve_equilibrium;
 mod two_plate_hole;
 mod two_plate_hole_fast;
 mod two_plate_hole_pressure;
