@@ -20,6 +20,12 @@
 //!      material = { E = 3e7, nu = 0.3 }\n",
 //! )?;
 //! assert!(two_hankel::blocker(&scene).is_none());
+//! // without a hole the receding contact; a fixed edge is the finite elements' alone
+//! let text = "model = \"two-plate\"\nmethod = \"auto\"\n[hole]\nradius = 0.0\n\
+//!             [load]\nouter_radius = 0.31\npressure = 1.0\n[[plates]]\nthickness = 0.1\n";
+//! assert!(two_hankel::blocker(&Scene::parse(text)?).is_none());
+//! let fixed = format!("{text}[joint]\nouter_radius = 1.54\nfixed_edge = true\n");
+//! assert_eq!(two_hankel::blocker(&Scene::parse(&fixed)?).map(|b| b.0), Some("joint.fixed_edge"));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
