@@ -109,14 +109,14 @@
 //! | 1e-3, ∞ | 0.075–0.17 s | 0.11–0.22 s | 1.35× | ≤ 2.0e-10 | unchanged (6.1e-5 … 2.1e-4 R_o) |
 //! | 1e-6, 1.54 in | 1.4–2.1 s | 2.1–3.0 s | 1.41× | ≤ 8.1e-12 | unchanged (5.4e-10 … 1.4e-6 R_o) |
 //!
-//! The 10 ms at 1e-6 is still 30–60× off.
+//! The 10 ms at 1e-6 is still 28–65× off.
 //!
 //! **Where the time goes** (row (1, 1.3) at 1e-6, one thread, `perf record`): 6 search radii
 //! and 2 of the estimate's variants, of which the fewer-nodes variant (at R_o, where the search
 //! ended) now takes the search's tables. Per radius the tables of module `crack_tables`
 //! (22 % of the CPU): the J₀ rows of l's transform at the Nyström rule's nodes up to ξ_l
-//! (320 × 480, 12 %), the Nyström rule's cosine tables on the t-rule (2 × 380 × 440) and
-//! H_l's weights; then 4–6 Anderson-accelerated crack iterations; per geometry the setup
+//! (12 %), the Nyström rule's cosine tables on the t-rule and H_l's weights; then a few Anderson-accelerated crack iterations (32 over the 8 radii);
+//! per geometry the setup
 //! (16 %: the bilateral plate of each variant 5 %, the slab's midplane curve, the corner
 //! table) and the hole tables' panels (9 %, module `hole_tables`).
 //!
@@ -124,9 +124,9 @@
 //! (module `hole_tables`): σ_r, τ_rz at the Chebyshev heights per unit Abel function at t and
 //! per unit ring load at s, tabulated once per geometry on panels of 2.5π/ξ_max, built where
 //! a radius first needs them, and interpolated at each radius's t- and s-rule (measured error
-//! 5e-15 of their scale, bound 3e-12); this removed the per-radius hole tables (cos ξt − 1 on
-//! 1100 hole nodes × the t-rule, J₀ rows of 440 × 480) and the hole rule per radius, which with
-//! the per-iteration sums over them were 30 % of the CPU. (b) A setup keeps its last radius's
+//! 2.5e-15 of their scale, bound 3e-12); this removed the per-radius hole tables (cos ξt − 1 on
+//! the hole rule × the t-rule, J₀ rows of its nodes up to ξ_l × the s-rule) and the hole rule
+//! per radius, which with the per-iteration sums over them were 30 % of the CPU (profile). (b) A setup keeps its last radius's
 //! tables (module `crack_tables`): the fewer-nodes variant at R_o and the finite rim's two
 //! solves per radius (module `rim_holed`) build them once. (c) H_l's weights near c take the
 //! v-substitution on l's first panel only (beyond it the s-rule converges, ρ ≥ 5.8). Earlier
