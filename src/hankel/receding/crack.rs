@@ -14,45 +14,23 @@
 //!
 //! # Cost
 //!
-//! Most of the holed route's cost: per contact radius the cosine and J₀ tables of
-//! [`super::grid`] and the H_l weights, rebuilt for every radius (rows in parallel; 50–60 ms of
-//! 60–100 ms on (1, 1.3) at 1e-6, one thread, before the wider Nyström panels and the shorter
-//! graded cap), then 5–7 Anderson-accelerated iterations (warm-started from a nearby radius's
-//! correction); timed by example 19 (breakdown and sizes in [`super::holed`]'s Cost).
+//! Per contact radius the tables of module `crack_tables` (a setup keeps the last radius's),
+//! then a few Anderson-accelerated iterations (32 over the 8 radii of (1, 1.3) at 1e-6;
+//! warm-started from a nearby radius's
+//! correction), each a Nyström solve of n + 1 unknowns, the cosine tables' sums and the hole's
+//! part through module `hole_tables` (2nz sums over the t- and s-rule instead of sums over the
+//! hole rule); timed by example 19 (breakdown in [`super::holed`]'s Cost).
 
 use super::anderson::{pack, unpack, Anderson};
 use super::contact::RecedingError;
 use super::endpoint::Endpoint;
-use super::grid::{dot, PanelGrid, PanelInterp};
+use super::grid::{dot, PanelInterp};
 use super::holed_params::HoledParams;
 use super::holed_setup::{Crack, Setup};
-use super::layer::Stack;
 use super::prescribed::Prescribed;
-use super::system::{cos_m1, panels, Nystrom, XiRule};
-use crate::hankel::hole::eigen::Mode;
+use super::system::{panels, Nystrom};
 use crate::hankel::hole::fit::{fit, Boundary, Fit, HoleData};
-use crate::hankel::transform::LoadTransform;
-use crate::load::FaceLoad;
-use rayon::prelude::*;
-use std::f64::consts::{FRAC_2_PI, PI};
-
-/// (cos x, cos x − 1) from one `sin_cos`: cos x − 1 = −sin²x/(1 + cos x) without cancellation
-/// where cos x > 0, and directly where cos x ≤ 0 (then |cos x − 1| ≥ 1).
-fn cos_and_m1(x: f64) -> (f64, f64) {
-    let (s, c) = x.sin_cos();
-    (c, if c > 0.0 { -s * s / (1.0 + c) } else { c - 1.0 })
-}
-
-/// J₀(x) − 1 without cancellation at small x.
-fn j0_m1(x: f64) -> f64 {
-    if x < 0.1 {
-        let y = 0.25 * x * x;
-        // −y + y²/4 − y³/36 + y⁴/576: the next term is < 1e-17 at x < 0.1
-        -y * (1.0 - y / 4.0 * (1.0 - y / 9.0 * (1.0 - y / 16.0)))
-    } else {
-        libm::j0(x) - 1.0
-    }
-}
+use std::f64::consts::FRAC_2_PI;
 
 impl Setup {
     /// Solves the crack field and its hole correction for contact radius `c` with `n` Nyström
@@ -69,183 +47,29 @@ impl Setup {
         start: Option<&Fit>,
         lift: Option<&Prescribed>,
     ) -> Result<Crack, RecedingError> {
-        let d = self.d;
-        let zero = LoadTransform::new(&FaceLoad::uniform(0.0, c, 0.0)?);
-        // the Nyström ξ-rule: panels up to 2/D wide where the cosines (ω = 3c) allow (the layer
-        // kernels' poles off ξ = 0, zeros of sinh x ± x at x = ξD, lie ≥ 4.2/D off the real
-        // axis: Bernstein ρ ≥ 8.5 on a panel of 2/D, ρ⁻⁴⁰ < 1e-37), its tail cut at 1e-3 of
-        // the iteration tolerance (1e-15 … 1e-8)
-        let tail_tol = (1e-3 * params.iteration_tol).clamp(1e-15, 1e-8);
-        let rule = XiRule::capped(&Stack::single(d), &zero, 3.0 * c, tail_tol, 2.0);
-        let (xi_r, a_r, b_r) = rule.nodes();
-        let (xi_r, a_r, b_r) = (xi_r.to_vec(), a_r.to_vec(), b_r.to_vec());
-        // l on Gauss panels of [c, c + tail] resolving J₀(ξs) up to ξ_l (2.25 periods per panel)
-        let lint = PanelInterp::new(c, c + self.tail, (4.5 * PI / self.xi_l).min(0.5 * d));
-        let s_grid = lint.grid();
-        let s_rule: Vec<(f64, f64)> = s_grid
-            .nodes()
-            .iter()
-            .copied()
-            .zip(s_grid.weights().iter().copied())
-            .collect();
-        let mode_mid: Vec<Vec<num_complex::Complex64>> = s_rule
-            .iter()
-            .map(|&(s, _)| {
-                // a mode below 1e-20 here (times an amplitude of order P) adds nothing
-                let value = |m: &Mode| match m.midplane_bound(s) < 1e-20 {
-                    true => num_complex::Complex64::ZERO,
-                    false => m.midplane_sigma_z(s),
-                };
-                self.modes.iter().map(value).collect()
-            })
-            .collect();
-        let corner_mid: Vec<Vec<f64>> = match &self.corner {
-            None => vec![Vec::new(); s_rule.len()],
-            Some(cl) => s_rule
-                .iter()
-                .map(|&(s, _)| {
-                    self.corner_table
-                        .as_ref()
-                        .and_then(|t| t.0.rows_at(&t.1, s))
-                        .unwrap_or_else(|| cl.midplane_basis(s, self.r_max))
-                })
-                .collect(),
-        };
-        // s₀ = slab + modes + corner: the bilateral plate's corner fields are the crack
-        // correction's (same A, D, ν, exponents), so their basis rows serve both
-        let weights = self.bilateral.corner_weights();
-        let s0: Vec<f64> = s_rule
-            .iter()
-            .zip(&corner_mid)
-            .map(|(&(s, _), basis)| {
-                let corner = match (weights.is_empty(), weights.len() == basis.len()) {
-                    (true, _) => 0.0,
-                    (false, true) => weights.iter().zip(basis).map(|(w, b)| w * b).sum(),
-                    (false, false) => return self.s0(s),
-                };
-                self.slab_sigma_z(s) + self.bilateral.modes_midplane(s) + corner
-            })
-            .collect();
+        let tb = self.radius_tables(c, params)?;
+        let (xi_r, a_r, b_r, lint, s_rule) = (&tb.xi_r, &tb.a_r, &tb.b_r, &tb.lint, &tb.s_rule);
+        let (mode_mid, corner_mid, hole, t_rule) =
+            (&tb.mode_mid, &tb.corner_mid, &tb.hole, &tb.t_rule);
+        let (cos_t, cosm1_t) = (&tb.cos_t, &tb.cosm1_t);
+        let (rule_low, rule_j, rule_jc) = (tb.rule_low, &tb.rule_j, &tb.rule_jc);
+        let nz = self.z_cheb.len();
+        let (h_rows, h_edge) = (&tb.h_rows, &tb.h_edge);
         // the lifted plate carries no load: no bilateral part, and the lift's Abel function F
         // joins φ as a known part (module `prescribed`)
-        let s0 = if lift.is_some() {
-            vec![0.0; s0.len()]
-        } else {
-            s0
+        let s0 = match lift {
+            Some(_) => vec![0.0; tb.s0.len()],
+            None => tb.s0.clone(),
         };
-        let f_rule = lift.map(|f| f.transforms(&xi_r, c));
+        let f_rule = lift.map(|f| f.transforms(xi_r, c));
         let (f_total, f_edge) = lift.map_or((0.0, 0.0), |f| (f.integral(c), f.value(c)));
-        // t-grid on [0, c]: panels resolving cos ξt up to the hole rule's end, and on the last
-        // δ = min(c/2, D/2) t = c − u² (H_l ~ √(c − t) becomes smooth)
-        let hole = self.hole_rule(c);
-        let f_hole =
-            lift.map(|f| f.transforms(&hole.xi.iter().map(|h| h.0).collect::<Vec<_>>(), c));
-        let xi_h = hole.xi.last().map_or(0.0, |x| x.0);
-        // the uniform panels (of h = 4.5π/ξ_h) stop δ = min(c/2, D/2, h) short of c: H_l's
-        // branch point at c lies a panel or more beyond their end (Bernstein ρ ≥ 3 + √8,
-        // ρ⁻⁴⁰ < 1e-30), and the graded cap is as short as that allows (its nodes cost two
-        // table entries per row of every table)
-        let t_width = 4.5 * PI / xi_h;
-        let delta = (0.5 * c).min(0.5 * d).min(t_width);
-        let su = delta.sqrt();
-        let t_grid = PanelGrid::new(0.0, c - delta, t_width);
-        let graded: Vec<(f64, f64)> =
-            panels(0.0, su, (4.5 * PI / (2.0 * xi_h * su)).min(0.25 * su))
-                .into_iter()
-                .map(|(u, w)| (c - u * u, 2.0 * u * w))
-                .collect();
-        let nf = t_grid.len();
-        let t_rule: Vec<(f64, f64)> = t_grid
-            .nodes()
-            .iter()
-            .copied()
-            .zip(t_grid.weights().iter().copied())
-            .chain(graded.iter().copied())
-            .collect();
-        let nt = t_rule.len();
-        // the tables, one row per ξ (contiguous in t or s): cos ξt, cos ξt − 1 on the rule's
-        // ξ, cos ξt − 1 on the hole's
-        // (rows in parallel: they are independent)
-        let (cos_t, cosm1_t): (Vec<Vec<f64>>, Vec<Vec<f64>>) = xi_r
-            .par_iter()
-            .map(|&x| {
-                let (mut cos, mut cosm1) = (vec![0.0; nt], vec![0.0; nt]);
-                t_grid.cos_rows(x, &mut cos[..nf], &mut cosm1[..nf]);
-                for (i, &(t, _)) in graded.iter().enumerate() {
-                    (cos[nf + i], cosm1[nf + i]) = cos_and_m1(x * t);
-                }
-                (cos, cosm1)
-            })
-            .unzip();
-        let hole_cosm1: Vec<Vec<f64>> = hole
-            .xi
-            .par_iter()
-            .map(|h| {
-                let mut row = vec![0.0; nt];
-                t_grid.cos_m1_row(h.0, &mut row[..nf]);
-                for (i, &(t, _)) in graded.iter().enumerate() {
-                    row[nf + i] = cos_m1(h.0 * t);
-                }
-                row
-            })
-            .collect();
-        // s-weights w·s·J₀(ξs) and w·s·(J₀ − 1) for the rule and the hole's low ξ
-        let js = |xi: f64| -> (Vec<f64>, Vec<f64>) {
-            let mut j = vec![0.0; s_rule.len()];
-            s_grid.j0_row(xi, &mut j);
-            s_rule
-                .iter()
-                .zip(&j)
-                .map(|(&(s, w), &j)| {
-                    let x = xi * s;
-                    let m1 = if x < 0.1 { j0_m1(x) } else { j - 1.0 };
-                    (w * s * j, w * s * m1)
-                })
-                .unzip()
-        };
-        // beyond ξ_l l̄ is its endpoint expansion on the rule too (its weights there are
-        // below 30e^(−28) of their peak), with J₀(ξc), J₁(ξc) once per radius
-        let rule_low = xi_r.partition_point(|&x| x <= self.xi_l);
-        let rule_j: Vec<(Vec<f64>, Vec<f64>)> =
-            xi_r[..rule_low].par_iter().map(|&x| js(x)).collect();
-        let hole_low = hole.xi.partition_point(|h| h.0 <= self.xi_l);
-        let bessel_c = |xi: &[f64]| -> Vec<(f64, f64)> {
-            xi.par_iter()
-                .map(|&x| (libm::j0(x * c), libm::j1(x * c)))
-                .collect()
-        };
-        let rule_jc = bessel_c(&xi_r[rule_low..]);
-        let hole_hi: Vec<f64> = hole.xi[hole_low..].iter().map(|h| h.0).collect();
-        let hole_jc = bessel_c(&hole_hi);
-        let hole_j: Vec<Vec<f64>> = hole.xi[..hole_low].par_iter().map(|h| js(h.0).1).collect();
-        // H_l(t) = −(2/π)∫_c^{c+tail} l(s) s ds/√(s² − t²) = −(2/π)∫ l(√(t² + v²)) dv (v from
-        // √(c² − t²); only where t is within a quarter s-panel of c, the rest on the s-rule):
-        // linear in l's node values, so one row of weights per t, reused by every iteration
-        let ns = s_rule.len();
-        let h_row = |t: f64| -> Vec<f64> {
-            if c - t >= 0.25 * lint.width {
-                // s² − t² vanishes a quarter panel or more before the first panel: the s-rule
-                // itself converges (Bernstein ellipse ρ ≥ 2.6, ρ⁻⁴⁰ < 2e-17)
-                return s_rule
-                    .iter()
-                    .map(|&(s, w)| -FRAC_2_PI * w * s / ((s - t) * (s + t)).sqrt())
-                    .collect();
+        // the lift's part of the hole traction (σ_r's heights, then τ_rz's): fixed per radius
+        let mut lift_hole = vec![0.0; 2 * nz];
+        if let Some(f) = lift {
+            for (wk, (_, f1)) in hole.wk.iter().zip(f.transforms(&hole.xi, c)) {
+                axpy(&mut lift_hole, f1, wk);
             }
-            let v0 = ((c - t) * (c + t)).max(0.0).sqrt();
-            let end = c + self.tail;
-            let v1 = ((end - t) * (end + t)).sqrt();
-            let mut row = vec![0.0; ns];
-            for (v, w) in panels(v0, v1, d) {
-                if let Some((k, bw)) = lint.weights_at((t * t + v * v).sqrt()) {
-                    for (r, b) in row[20 * k..20 * (k + 1)].iter_mut().zip(&bw) {
-                        *r -= FRAC_2_PI * w * b;
-                    }
-                }
-            }
-            row
-        };
-        let h_rows: Vec<Vec<f64>> = t_rule.par_iter().map(|&(t, _)| h_row(t)).collect();
-        let h_edge = h_row(c);
+        }
         let mut fitted: Option<Fit> = start.filter(|f| f.modes.len() == self.modes.len()).cloned();
         let mut last = f64::NAN;
         let mut out = Crack {
@@ -275,7 +99,7 @@ impl Setup {
                 })
                 .collect();
             let l0: f64 = s_rule.iter().zip(&l).map(|(&(s, w), v)| w * s * v).sum();
-            let tail = Endpoint::new(&lint, &l, c);
+            let tail = Endpoint::new(lint, &l, c);
             let hl: Vec<f64> = h_rows.iter().map(|row| dot(row, &l)).collect();
             let whl: Vec<f64> = t_rule.iter().zip(&hl).map(|(&(_, w), h)| w * h).collect();
             let hl_total: f64 = whl.iter().sum();
@@ -299,9 +123,15 @@ impl Setup {
                     beta[k] -= b_r[k] * f[k].1;
                 }
             }
-            let sys =
-                Nystrom::solve_general(rule.clone(), c, n, -l0 - hl_total - f_total, &alpha, &beta)
-                    .ok_or(RecedingError::Singular { c })?;
+            let sys = Nystrom::solve_general(
+                tb.rule.clone(),
+                c,
+                n,
+                -l0 - hl_total - f_total,
+                &alpha,
+                &beta,
+            )
+            .ok_or(RecedingError::Singular { c })?;
             let (c0, g, h) = sys.series();
             // φ = ψ + H_l, ψ(t) = C₀ + Σ_k [g_k (cos ξ_k t − 1) − h_k cos ξ_k t]
             let mut phi: Vec<f64> = hl.iter().map(|h| c0 + h).collect();
@@ -311,44 +141,32 @@ impl Setup {
                 }
             }
             let wphi: Vec<f64> = t_rule.iter().zip(&phi).map(|(&(_, w), p)| w * p).collect();
-            let edge = sys.phi(c) + dot(&h_edge, &l) + f_edge;
+            let edge = sys.phi(c) + dot(h_edge, &l) + f_edge;
             out.edge = edge / scale;
             out.iterations = it;
-            // the crack field's bottom load b = q + l, b̃(ξ) = b̄(ξ) − b̄(0), on the hole rule
-            let btil: Vec<f64> = hole
-                .xi
-                .par_iter()
-                .enumerate()
-                .map(|(k, &(xi, ..))| {
-                    let q = dot(&wphi, &hole_cosm1[k]);
-                    let lt = match hole_j.get(k) {
-                        Some(j) => dot(j, &l),
-                        None => {
-                            let (j0, j1) = hole_jc[k - hole_low];
-                            tail.transform(xi, j0, j1) - l0
-                        }
-                    };
-                    q + lt + f_hole.as_ref().map_or(0.0, |f| f[k].1)
-                })
-                .collect();
-            let nz = self.z_cheb.len();
-            let (mut sr, mut tau) = (vec![0.0; nz], vec![0.0; nz]);
-            for (k, &(_, w, j0, j1x, j1)) in hole.xi.iter().enumerate() {
-                let wb = w * btil[k];
-                for j in 0..nz {
-                    let kk = hole.kernels[k][j];
-                    sr[j] += wb * (kk[0] * j0 - kk[1] * j1x);
-                    tau[j] += wb * kk[2] * j1;
-                }
+            // the crack field's traction on the hole from its bottom load b = q + l through the
+            // hole's tables (module `hole_tables`): φ's part by G, l's up to ξ_l by H, beyond
+            // ξ_l l̄'s endpoint expansion on the hole rule
+            let mut st = lift_hole.clone();
+            for (g, w) in tb.hole_t.iter().zip(&wphi) {
+                axpy(&mut st, *w, g);
             }
+            for (h, v) in tb.hole_s.iter().zip(&l) {
+                axpy(&mut st, *v, h);
+            }
+            let high = hole.xi[hole.low..].iter().zip(&hole.wk[hole.low..]);
+            for ((&xi, wk), &(j0, j1)) in high.zip(&tb.hole_jc) {
+                axpy(&mut st, tail.transform(xi, j0, j1) - l0, wk);
+            }
+            let (sr, tau) = st.split_at(nz);
             let data: Vec<HoleData> = self
                 .z_fit
                 .iter()
                 .enumerate()
                 .map(|(i, &z)| HoleData {
                     z,
-                    sigma_r: dot(&self.interp_even[i], &sr),
-                    tau_rz: dot(&self.interp_odd[i], &tau),
+                    sigma_r: dot(&self.interp_even[i], sr),
+                    tau_rz: dot(&self.interp_odd[i], tau),
                 })
                 .collect();
             if it == 1 {
@@ -390,7 +208,7 @@ impl Setup {
         if let Some((sys, l, used)) = state.filter(|_| !radii.is_empty()) {
             out.pressure = radii
                 .iter()
-                .map(|&r| self.pressure_at(r, &sys, &l, &lint, used.as_ref(), lift))
+                .map(|&r| self.pressure_at(r, &sys, &l, lint, used.as_ref(), lift))
                 .collect();
         }
         Ok(out)
@@ -471,5 +289,12 @@ impl Setup {
                 extra: &extra,
             }],
         )
+    }
+}
+
+/// y ← y + a·x.
+fn axpy(y: &mut [f64], a: f64, x: &[f64]) {
+    for (y, x) in y.iter_mut().zip(x) {
+        *y += a * x;
     }
 }

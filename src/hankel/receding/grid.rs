@@ -309,6 +309,14 @@ impl PanelInterp {
         }
     }
 
+    /// `panels` panels of width `width` from `start` (exactly that width, unlike [`Self::new`]).
+    pub(crate) fn equal(start: f64, width: f64, panels: usize) -> Self {
+        let mut out = Self::new(start, start + width, width);
+        out.panels = panels.max(1);
+        out.width = width;
+        out
+    }
+
     /// The nodes and weights of every panel, in order.
     pub(crate) fn grid(&self) -> PanelGrid {
         PanelGrid::equal(self.start, self.width, self.panels)

@@ -98,57 +98,50 @@
 //!
 //! # Cost
 //!
-//! Measured 2026-11-24 on all twelve Table 1 rows by `boltzone two --method hankel --tol T`
-//! ([`HoledParams::for_tolerance`]), this branch's binary and main's by turns in one session,
-//! two rounds, the median CPU (user + sys) per row, load 7–9 on the 2 cores:
+//! Measured 2026-11-25 on all twelve Table 1 rows by `boltzone two --method hankel --tol T`
+//! ([`HoledParams::for_tolerance`]), this route's binary and the one before the hole tables
+//! by turns in one session, the CPU (user + sys) per row (median of two rounds at 1e-3, one
+//! at 1e-6), load 9–11 on the 2 cores (three other agents building):
 //!
-//! | T | CPU per row | main's | in total | R_o moved (of R_o) | estimates (of R_o) |
-//! |---|-------------|--------|----------|--------------------|--------------------|
-//! | 1e-6 | 0.31–0.60 s | 0.41–0.68 s | 1.40× | ≤ 4.6e-12 | 3.8e-10 … 1.3e-6, unchanged |
-//! | 1e-3 | 0.07–0.13 s | 0.10–0.15 s | 1.32× | ≤ 3.2e-10 | 6.1e-5 … 2.1e-4, unchanged |
+//! | T, C | CPU per row | before | in total | R_o moved (of R_o) | estimates |
+//! |------|-------------|--------|----------|--------------------|-----------|
+//! | 1e-6, ∞ | 0.28–0.65 s | 0.38–0.74 s | 1.35× | ≤ 4.5e-13 | unchanged (3.8e-10 … 1.3e-6 R_o) |
+//! | 1e-3, ∞ | 0.075–0.17 s | 0.11–0.22 s | 1.35× | ≤ 2.0e-10 | unchanged (6.1e-5 … 2.1e-4 R_o) |
+//! | 1e-6, 1.54 in | 1.4–2.1 s | 2.1–3.0 s | 1.41× | ≤ 8.1e-12 | unchanged (5.4e-10 … 1.4e-6 R_o) |
 //!
-//! The gain is largest on the narrow loads (1.7× on (1, 1.3)) and least on (1, 3.1) (1.1×),
-//! where R_o ≥ πD already set the Nyström ξ-rule's panels. The FE (`--method fem --tol 1e-6`,
-//! same rows, same session, right after): 0.48–1.14 s per row, 1.0–3.5× this route's, not the
-//! issue's 20×; it stops at its 2e-5 floor (estimates 2.7e-5 … 3.9e-5 R_o, `converged`
-//! false) with R_o 4e-7 … 1.6e-6 R_o above this route's. The 10 ms at 1e-6 is still
-//! 30–60× off.
+//! The 10 ms at 1e-6 is still 28–65× off.
 //!
-//! **Where the time goes** (row (1, 1.3) at 1e-6, one thread, temporary timers, before this
-//! round): 6 search radii (2 to bracket from B + 0.45D, 4 of inverse interpolation) and 2 for
-//! the estimate's variants, each 60–100 ms: 50–60 ms of tables, then 5–7 crack iterations
-//! (2 on the radius at R_o). The tables' sizes: the Nyström ξ-rule 840 nodes (570 below ξ_l),
-//! the t-rule 420, l's s-rule 500, the hole's ξ-rule 1200 (560 below ξ_l): J₀ rows of
-//! (570 + 560) × 500, cosine tables of 840 × 420 twice and 1200 × 420. Per geometry besides:
-//! the bilateral holed plate, the slab's midplane curve up to B + 3D + tail and the corner
-//! table (about a fifth of the CPU at 1e-3). The iteration count did not move with Anderson's
-//! depth 6 or 10 instead of 3, nor with each radius started from the correction extrapolated
-//! linearly from its two nearest radii (counts identical on (1, 1.3), (1, 2.2), (0.5, 1.3)).
-//! Tried and left out: the Nyström rule's ω = 2c instead of 3c (4–14 % on the three rows with
-//! B/A = 3.1 only, R_o unchanged to 1e-15); the J₀ rows' asymptotic series cut to fewer terms
-//! at x ≥ 50 and 100 and without the unused cos − 1 (1.02× on all twelve rows: noise).
+//! **Where the time goes** (row (1, 1.3) at 1e-6, one thread, `perf record`): 6 search radii
+//! and 2 of the estimate's variants, of which the fewer-nodes variant (at R_o, where the search
+//! ended) now takes the search's tables. Per radius the tables of module `crack_tables`
+//! (22 % of the CPU): the J₀ rows of l's transform at the Nyström rule's nodes up to ξ_l
+//! (12 %), the Nyström rule's cosine tables on the t-rule and H_l's weights; then a few Anderson-accelerated crack iterations (32 over the 8 radii);
+//! per geometry the setup
+//! (16 %: the bilateral plate of each variant 5 %, the slab's midplane curve, the corner
+//! table) and the hole tables' panels (9 %, module `hole_tables`).
 //!
-//! **This round** (module `crack`): the Nyström ξ-rule's panels up to 2/D wide instead of
-//! 1/D where the cosines of ω = 3c allow it (c < πD; with the tail cut below, 840 → 380
-//! nodes on (1, 1.3) at 1e-6, by the rule's formula; the layer kernels' poles lie ≥ 4.2/D
-//! off the real axis), its tail cut at 1e-3 of the iteration
-//! tolerance (1e-15 … 1e-8) instead of 1e-15 at every tier; the t-rule's graded cap at c
-//! one uniform panel long instead of min(c, D)/2 (220 → 80 nodes on (1, 1.3): its nodes are a
-//! column of every cosine table), their cos and cos − 1 from one `sin_cos`. Earlier rounds
-//! (2.5× in total): the Anderson-accelerated iteration, the corner table, rayon over table rows
-//! and the two variants, H_l's weights on the s-rule away from c, l's transform beyond ξ_l by
-//! its endpoint expansion, J₀ by Horner's rule and a Chebyshev table ([`super::grid`]), the
-//! hole rule built per radius, the search by step-stopping inverse interpolation from
-//! B + 0.45D, each radius warm-started, the variants sharing the setup, the tolerance tiers.
+//! **This round.** (a) The hole's part of every iteration through tables independent of c
+//! (module `hole_tables`): σ_r, τ_rz at the Chebyshev heights per unit Abel function at t and
+//! per unit ring load at s, tabulated once per geometry on panels of 2.5π/ξ_max, built where
+//! a radius first needs them, and interpolated at each radius's t- and s-rule (measured error
+//! 2.5e-15 of their scale, bound 3e-12); this removed the per-radius hole tables (cos ξt − 1 on
+//! the hole rule × the t-rule, J₀ rows of its nodes up to ξ_l × the s-rule) and the hole rule
+//! per radius, which with the per-iteration sums over them were 30 % of the CPU (profile). (b) A setup keeps its last radius's
+//! tables (module `crack_tables`): the fewer-nodes variant at R_o and the finite rim's two
+//! solves per radius (module `rim_holed`) build them once. (c) H_l's weights near c take the
+//! v-substitution on l's first panel only (beyond it the s-rule converges, ρ ≥ 5.8). Earlier
+//! rounds (3.5× in total): wider Nyström panels and a shorter graded cap, the
+//! Anderson-accelerated iteration, the corner table, rayon over table rows and the two
+//! variants, H_l's weights on the s-rule away from c, l's transform beyond ξ_l by its endpoint
+//! expansion, J₀ by Horner's rule and a Chebyshev table ([`super::grid`]), the search by
+//! step-stopping inverse interpolation from B + 0.45D, each radius warm-started, the
+//! variants sharing the setup, the tolerance tiers.
 //!
-//! **Next** (structural; not done): the hole's part of every iteration through tables
-//! independent of c — its σ_r, τ_rz at the Chebyshev heights per unit Abel function at t
-//! (∫ (cos ξt − 1)·kernel dξ, tabulated in t once per geometry on panels of half the t-rule's
-//! width, interpolated at each radius's t-rule) and per unit ring load at s (the same with
-//! J₀(ξs) − 1, which needs no ξ_l cutoff); this removes the 1200-row hole tables and the hole
-//! rule per radius. Likewise the Nyström ξ-rule fixed for the geometry (its ω from the search's
-//! largest c) with the J₀ rows of l's transform on fixed s-panels, only the partial panel at
-//! c rebuilt; and fewer radii (a predictor of R_o, Newton with the edge coefficient's slope).
+//! **Next** (structural; not done): the Nyström ξ-rule fixed per table epoch (its ω from the
+//! epoch's largest c, as the hole rule's) with the J₀ rows of l's transform and its cosine
+//! tables on fixed panels, only the partial panel at c rebuilt; the coarse variants' setups
+//! (a bilateral plate each) shared or replaced; fewer radii (a predictor of R_o, Newton with
+//! the edge coefficient's slope: module `holed_search`).
 //!
 //! Re-measured after earlier rounds: A → 0 (`small_holes_approach_the_receding_solution`)
 //! −8.255e-8, −1.973e-8, −4.965e-9; the 10 × 10 grid study against the FE at 1e-4

@@ -1,7 +1,7 @@
 //! The fixed parts of one geometry of the semi-analytic two-plate route with the hole
 //! ([`super::holed`]): the bilateral holed plate, the correction basis (hole modes, corner
 //! fields), the tables that every trial contact radius reuses ([`Setup`]), the hole's ξ-rule
-//! for one radius ([`Setup::hole_rule`]),
+//! for the hole tables ([`Setup::hole_rule`]),
 //! and one contact radius solved ([`Crack`]). The root search over the radius is
 //! [`super::holed_search`]; the public entry points and their record are [`super::holed`].
 //!
@@ -14,10 +14,10 @@
 //! Example 19 (`examples/19_two_plate_hankel.rs`): about 0.2 s per geometry before they were
 //! cut to [A, B + 3D + tail] (the slab's midplane curve 0.12 s, the corner table 0.07 s on
 //! Table 1 row 1, over the whole reach), shared with the
-//! estimate's coarse setup ([`Setup::sharing`]); the hole rule, a few ms, per trial radius.
-//! At the knobs for 1e-3 the setup is about a fifth of the route's 0.10–0.15 s per Table 1
-//! row (profile, (0.5, 1.6): 17 % in `Setup::sharing`, of which the bilateral plate 6 %, the
-//! midplane curve 5 %).
+//! estimate's coarse setup ([`Setup::sharing`]). The hole rule is built per hole table
+//! (module `hole_tables`), not per radius. At the knobs for 1e-6 the setups are 16 % of the
+//! route's CPU on (1, 1.3) (`perf record`, 2026-11-25; the bilateral plates 5 %), the hole
+//! tables' panels 9 %.
 //!
 //! ```
 //! // Internal to the route; reached through its entry point:
@@ -40,7 +40,7 @@ use crate::hankel::transform::LoadTransform;
 use crate::joint::{OuterRadius, SinglePlate};
 use rayon::prelude::*;
 use std::f64::consts::PI;
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// The load's outer radius, in D, up to which the Nyström points are not scaled.
 const NODES_SPAN: f64 = 3.5;
@@ -84,7 +84,15 @@ pub(super) struct Setup {
     /// The corner fields' midplane σ_z (the basis rows of [`CornerLoads::midplane_basis`]) on
     /// panels of D/2 over [A, r_max], interpolated by every trial radius.
     pub(super) corner_table: Option<Arc<(PanelInterp, Vec<Vec<f64>>)>>,
+    /// The last contact radius's tables, keyed by (c, iteration tolerance) bits
+    /// ([`Setup::radius_tables`]).
+    pub(super) last_tables: Mutex<Option<TablesKey>>,
+    /// The hole's tables independent of the radius ([`Setup::hole_table`]).
+    pub(super) hole_tables: Mutex<Option<Arc<super::hole_tables::HoleTable>>>,
 }
+
+/// A radius's tables with their key (module `crack_tables`).
+pub(super) type TablesKey = ((u64, u64), Arc<super::crack_tables::RadiusTables>);
 
 /// The hole's ξ-rule for one contact radius ([`Setup::hole_rule`]).
 pub(super) struct HoleRule {
@@ -278,6 +286,8 @@ impl Setup {
         let xi_h = (params.hole_decay / z_cheb[m / 2 - 1]).max(2.0 * params.xi_l / d);
         Ok(Self {
             corner_table,
+            last_tables: Mutex::new(None),
+            hole_tables: Mutex::new(None),
             a,
             d,
             p0: LoadTransform::new(load).eval(0.0),
@@ -302,11 +312,12 @@ impl Setup {
         })
     }
 
-    /// The hole ξ-rule for contact radius `c`: ends at ξ_h; 20-point panels of 2.25 periods
+    /// The hole ξ-rule for contact radii up to `c`: ends at ξ_h; 20-point panels of 2.25 periods
     /// (Gauss–Legendre's error on them ≈ (e·ωh/80)^40 ≈ 2e-13) of cos ξ(r ± A) for the crack
     /// loads within c + 8D up to ξ_l, and of the contact edge c beyond (l's transform is its
-    /// endpoint expansion there). Built per radius: a rule for the scan's farthest radius
-    /// would be 1.6 (below ξ_l) to 2.4 (beyond) times as dense near R_o on Table 1 row 1.
+    /// endpoint expansion there). Built per hole table (module `hole_tables`, c = 2D beyond
+    /// its first radius), not for the scan's farthest radius: that rule would be 1.6 (below
+    /// ξ_l) to 2.4 (beyond) times as dense near R_o on Table 1 row 1.
     pub(super) fn hole_rule(&self, c: f64) -> HoleRule {
         let (a, d) = (self.a, self.d);
         let width = |omega: f64| (4.5 * PI / omega).min(1.0 / d);

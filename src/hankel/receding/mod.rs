@@ -39,8 +39,10 @@
 mod anderson;
 pub mod contact;
 mod crack;
+mod crack_tables;
 mod endpoint;
 pub mod grid;
+mod hole_tables;
 pub mod holed;
 mod holed_infinite;
 mod holed_params;
