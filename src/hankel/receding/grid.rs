@@ -72,6 +72,24 @@ fn cos_m1(x: f64) -> f64 {
     -2.0 * s * s
 }
 
+/// (cos x, cos x − 1) from one `sin_cos`: cos x − 1 = −sin²x/(1 + cos x) without cancellation
+/// where cos x > 0, and directly where cos x ≤ 0 (then |cos x − 1| ≥ 1).
+pub(super) fn cos_and_m1(x: f64) -> (f64, f64) {
+    let (s, c) = x.sin_cos();
+    (c, if c > 0.0 { -s * s / (1.0 + c) } else { c - 1.0 })
+}
+
+/// J₀(x) − 1 without cancellation at small x.
+pub(super) fn j0_m1(x: f64) -> f64 {
+    if x < 0.1 {
+        let y = 0.25 * x * x;
+        // −y + y²/4 − y³/36 + y⁴/576: the next term is < 1e-17 at x < 0.1
+        -y * (1.0 - y / 4.0 * (1.0 - y / 9.0 * (1.0 - y / 16.0)))
+    } else {
+        libm::j0(x) - 1.0
+    }
+}
+
 impl PanelGrid {
     /// Panels no wider than `width` on [`a`, `b`] (at least one).
     pub fn new(a: f64, b: f64, width: f64) -> Self {

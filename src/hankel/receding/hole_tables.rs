@@ -17,7 +17,7 @@
 //! Gauss–Legendre panels of width 2.5π/ξ_max from 0 (ξ_max the rule's end for G, ξ_l for H),
 //! each panel computed the first time a radius needs it, and interpolated (barycentric
 //! formula, [`super::grid::PanelInterp`]) at each radius's t- and s-rule. The hole ξ-rule is
-//! [`Setup::hole_rule`] for a radius c_hi = c + 2D beyond the first radius asked (it resolves
+//! `Setup::hole_rule` (module `holed_setup`) for a radius c_hi = c + 2D beyond the first radius asked (it resolves
 //! every radius up to c_hi); a radius beyond c_hi starts a new table.
 //!
 //! **Interpolation error.** G_j and H_j are band-limited to ξ_max: on a panel of width h the
@@ -27,7 +27,7 @@
 //!
 //! # Accuracy
 //!
-//! The unit test here (`interpolated_tables_match_the_sums`) measures the interpolant against
+//! The unit test of module `setup_tables` (`interpolated_tables_match_the_sums`) measures the interpolant against
 //! the sums at 400 points per band on Table 1 row (1, 1.3) at the knobs for 1e-6: 2.5e-15 (G)
 //! and 1.6e-15 (H) of Σ_k |w_k K_kj|, asserted below the bound (1e-11 with its Lebesgue
 //! constant rounded up); through the route, R_o moved by at most 8.1e-12 R_o from the
@@ -46,9 +46,7 @@
 //! let _ = (two_plate_hole, HoledParams::default());
 //! ```
 
-use super::crack_tables::j0_m1;
-use super::grid::{PanelGrid, PanelInterp};
-use super::holed_setup::Setup;
+use super::grid::{j0_m1, PanelGrid, PanelInterp};
 use nalgebra::DMatrix;
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -70,7 +68,7 @@ pub(super) struct HoleTable {
     /// Radii up to which the hole rule resolves the loads.
     pub(super) c_hi: f64,
     /// Upper Chebyshev heights.
-    nz: usize,
+    pub(super) nz: usize,
     /// The hole ξ-rule's nodes, and per node w_k K_kj (σ_r's heights, then τ_rz's).
     pub(super) xi: Vec<f64>,
     pub(super) wk: Vec<Vec<f64>>,
@@ -92,10 +90,17 @@ impl Band {
 }
 
 impl HoleTable {
-    /// The table for radii up to `c_hi` of `setup`'s geometry.
-    pub(super) fn new(setup: &Setup, c_hi: f64) -> Self {
-        let rule = setup.hole_rule(c_hi);
-        let nz = setup.z_cheb.len();
+    /// The table for radii up to `c_hi` from the hole rule `rule` (built for `c_hi`), with `nz`
+    /// Chebyshev heights, l's transform taken up to `xi_l`, G tabulated on [0, `t_end`] and H on
+    /// [0, `s_end`].
+    pub(super) fn new(
+        rule: &HoleRule,
+        nz: usize,
+        xi_l: f64,
+        c_hi: f64,
+        t_end: f64,
+        s_end: f64,
+    ) -> Self {
         let xi: Vec<f64> = rule.xi.iter().map(|h| h.0).collect();
         let wk: Vec<Vec<f64>> = rule
             .xi
@@ -106,14 +111,13 @@ impl HoleTable {
                 sr.chain(kk.iter().map(|k| w * k[2] * j1)).collect()
             })
             .collect();
-        let low = xi.partition_point(|&x| x <= setup.xi_l);
-        let xi_max = xi.last().copied().unwrap_or(setup.xi_l);
-        let s_end = c_hi + setup.tail + setup.d;
+        let low = xi.partition_point(|&x| x <= xi_l);
+        let xi_max = xi.last().copied().unwrap_or(xi_l);
         Self {
             c_hi,
             nz,
-            t_band: Band::new(c_hi + setup.d, PANEL_PERIODS * PI / xi_max),
-            s_band: Band::new(s_end, PANEL_PERIODS * PI / setup.xi_l),
+            t_band: Band::new(t_end, PANEL_PERIODS * PI / xi_max),
+            s_band: Band::new(s_end, PANEL_PERIODS * PI / xi_l),
             xi,
             wk,
             low,
@@ -220,85 +224,10 @@ impl HoleTable {
     }
 }
 
-impl Setup {
-    /// The hole table for contact radius `c`: the setup's, or a new one from c to c + 2D when
-    /// `c` lies beyond it.
-    pub(super) fn hole_table(&self, c: f64) -> Arc<HoleTable> {
-        let kept = self
-            .hole_tables
-            .lock()
-            .ok()
-            .and_then(|t| t.as_ref().filter(|t| c <= t.c_hi).map(Arc::clone));
-        if let Some(t) = kept {
-            return t;
-        }
-        let table = Arc::new(HoleTable::new(self, c + 2.0 * self.d));
-        if let Ok(mut t) = self.hole_tables.lock() {
-            *t = Some(Arc::clone(&table));
-        }
-        table
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::hankel::receding::holed::HoledParams;
-    use crate::{FaceLoad, Material, OuterRadius, SinglePlate};
-
-    /// G and H interpolated against their sums over the rule at the same points, at 400 points
-    /// spread over each band (Table 1 row (1, 1.3), the knobs for 1e-6): the module's bound is
-    /// 3e-12 of Σ_k |w_k K_kj|; asserted 1e-11 of it.
-    #[test]
-    fn interpolated_tables_match_the_sums() {
-        let (load, mat) = (FaceLoad::uniform(0.1, 0.13, 1.0), Material::unit(0.3));
-        let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, mat.unwrap(), load.unwrap());
-        let plate = plate.unwrap();
-        let setup = Setup::new(&plate, &HoledParams::for_tolerance(1e-6)).unwrap();
-        let c = 0.17;
-        let table = setup.hole_table(c);
-        let m = 2 * table.nz;
-        let scale: Vec<f64> = (0..m)
-            .map(|j| table.wk.iter().map(|w| 2.0 * w[j].abs()).sum())
-            .collect();
-        let check = |points: Vec<f64>, bessel: bool| -> f64 {
-            let got = if bessel {
-                table.h(&points, &vec![1.0; points.len()])
-            } else {
-                table.g(&points)
-            };
-            let mut worst: f64 = 0.0;
-            for (&x, g) in points.iter().zip(&got) {
-                let count = if bessel { table.low } else { table.xi.len() };
-                for j in 0..m {
-                    let sum: f64 = table.xi[..count]
-                        .iter()
-                        .zip(&table.wk)
-                        .map(|(&k, w)| {
-                            w[j] * if bessel {
-                                libm::j0(k * x) - 1.0
-                            } else {
-                                (k * x).cos() - 1.0
-                            }
-                        })
-                        .sum();
-                    worst = worst.max((g[j] - sum).abs() / scale[j]);
-                }
-            }
-            worst
-        };
-        let t_err = check(
-            (0..400).map(|i| c * (i as f64 + 0.37) / 400.0).collect(),
-            false,
-        );
-        let s_end = c + setup.tail;
-        let s_err = check(
-            (0..400)
-                .map(|i| c + (s_end - c) * (i as f64 + 0.37) / 400.0)
-                .collect(),
-            true,
-        );
-        println!("G: {t_err:e}, H: {s_err:e} of the sums' scale");
-        assert!(t_err < 1e-11 && s_err < 1e-11, "{t_err:e} {s_err:e}");
-    }
+/// The hole's ξ-rule for one contact radius (`Setup::hole_rule`, module `holed_setup`).
+pub(super) struct HoleRule {
+    /// (ξ, w, J₀(ξA), J₁(ξA)/(ξA), J₁(ξA)).
+    pub(super) xi: Vec<(f64, f64, f64, f64, f64)>,
+    /// The kernels (R₀, R₁, T) per node and Chebyshev height.
+    pub(super) kernels: Vec<Vec<[f64; 3]>>,
 }

@@ -26,7 +26,9 @@
 //! ```
 
 use super::contact::RecedingError;
+use super::crack_tables::RadiusTables;
 use super::grid::PanelInterp;
+use super::hole_tables::{HoleRule, HoleTable};
 use super::holed_params::HoledParams;
 use super::layer_field::bottom_kernels;
 use super::system::panels;
@@ -88,19 +90,11 @@ pub(super) struct Setup {
     /// ([`Setup::radius_tables`]).
     pub(super) last_tables: Mutex<Option<TablesKey>>,
     /// The hole's tables independent of the radius ([`Setup::hole_table`]).
-    pub(super) hole_tables: Mutex<Option<Arc<super::hole_tables::HoleTable>>>,
+    pub(super) hole_tables: Mutex<Option<Arc<HoleTable>>>,
 }
 
 /// A radius's tables with their key (module `crack_tables`).
-pub(super) type TablesKey = ((u64, u64), Arc<super::crack_tables::RadiusTables>);
-
-/// The hole's ξ-rule for one contact radius ([`Setup::hole_rule`]).
-pub(super) struct HoleRule {
-    /// (ξ, w, J₀(ξA), J₁(ξA)/(ξA), J₁(ξA)).
-    pub(super) xi: Vec<(f64, f64, f64, f64, f64)>,
-    /// The kernels (R₀, R₁, T) per node and Chebyshev height.
-    pub(super) kernels: Vec<Vec<[f64; 3]>>,
-}
+pub(super) type TablesKey = ((u64, u64), Arc<RadiusTables>);
 
 /// One contact radius solved.
 pub(super) struct Crack {

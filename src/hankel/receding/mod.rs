@@ -57,6 +57,7 @@ pub mod rim;
 pub mod rim_bending;
 pub mod rim_holed;
 mod search;
+mod setup_tables;
 mod system;
 
 pub use contact::{
