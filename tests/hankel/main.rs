@@ -26,6 +26,7 @@ mod small_hole_residual;
 mod transform;
 mod two_plate_hole;
 mod two_plate_hole_fast;
+mod two_plate_hole_newton;
 mod two_plate_hole_pressure;
 mod two_plate_hole_reach;
 mod two_plate_hole_tier8;
