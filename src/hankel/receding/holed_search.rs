@@ -56,7 +56,7 @@
 //! (four variants instead of two): by turns with main's binary once more (one round,
 //! load ~8, the tiers' survey running beside), at --tol 1e-6 C = ∞ 95 solves as main's (the
 //! search's 24 saved go to the variants), CPU per row 0.36–0.72 s against 0.34–0.80 s (1.01×
-//! in total), estimates up to 2.8× larger on narrow loads ((0.75, 1.3): 3.9e-8 → 3.6e-7 R_o)
+//! in total), estimates up to 9× larger on narrow loads ((0.75, 1.3): 3.9e-8 → 3.6e-7 R_o)
 //! and every row converged, (0.5, 1.3) too (1.3e-6 → 2.1e-7); at C = 1.54 in 215 solves
 //! against 287, 1.34–2.88 s per row against 1.92–3.06 s (1.32× in total), all twelve
 //! converged (main: eleven).
