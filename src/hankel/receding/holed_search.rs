@@ -87,8 +87,9 @@ pub(super) struct Found {
     /// The solve at R_o (with the pressure at the radii asked for), or with none asked for and
     /// R_o extrapolated by one step, the last solve of the search.
     pub(super) last: Crack,
-    /// The contact radius of `last`.
-    pub(super) last_radius: f64,
+    /// The correction of the search's solve nearest R_o (the variants' warm start, the same
+    /// whether or not a pressure was asked for).
+    pub(super) warm: Option<Fit>,
     /// Contact radii solved.
     pub(super) solves: usize,
     /// Crack iterations over those radii.
@@ -98,14 +99,18 @@ pub(super) struct Found {
 }
 
 impl Found {
+    /// The edge coefficient at R_o: the search's value there, else zero (R_o extrapolated, to
+    /// within the root tolerance).
+    pub(super) fn at_r_o(&self) -> f64 {
+        self.edges
+            .iter()
+            .find(|e| e.0 == self.r_o)
+            .map_or(0.0, |e| e.1)
+    }
+
     /// The edge coefficient's slope at R_o from the search's edge values ([`secant_slope`]).
     pub(super) fn slope(&self, d: f64) -> Option<f64> {
-        let at_r_o = if self.last_radius == self.r_o {
-            self.last.edge
-        } else {
-            0.0
-        };
-        secant_slope(&self.edges, self.r_o, at_r_o, d)
+        secant_slope(&self.edges, self.r_o, self.at_r_o(), d)
     }
 }
 
@@ -171,8 +176,9 @@ impl Setup {
             true => seen.iter().position(|(c, _)| *c == r_o),
             false => seen.len().checked_sub(1),
         };
-        let (last_radius, last) = match reuse.filter(|_| at.is_empty()) {
-            Some(i) => seen.swap_remove(i),
+        let warm = nearest(&seen, r_o);
+        let last = match reuse.filter(|_| at.is_empty()) {
+            Some(i) => seen.swap_remove(i).1,
             None => {
                 solves += 1;
                 let radii: Vec<f64> = at
@@ -181,13 +187,13 @@ impl Setup {
                     .collect();
                 let k = self.crack(r_o, n, params, &radii, nearest(&seen, r_o).as_ref(), None)?;
                 iterations += k.iterations;
-                (r_o, k)
+                k
             }
         };
         Ok(Found {
             r_o,
             last,
-            last_radius,
+            warm,
             solves,
             iterations,
             edges,
@@ -391,17 +397,12 @@ pub(super) fn estimate(
     }
     // each variant's R_o by one Newton step from R_o: its change is ~1e-6 D or less, where the
     // step's error, ∝ the change squared, is far below it; a larger change gets the search
-    // f(R_o): the solve's when it was at R_o, else zero to within the root tolerance
-    let at_r_o = if found.last_radius == r_o {
-        found.last.edge
-    } else {
-        0.0
-    };
+    let at_r_o = found.at_r_o();
     let (slope, solves) = match found.slope(setup.d) {
         Some(s) => (s, 0),
         None => {
             let h = 1e-3 * setup.d;
-            let warm = found.last.fit.as_ref();
+            let warm = found.warm.as_ref();
             let n = setup.nodes_for(params.nodes);
             let up = setup.crack(r_o + h, n, params, &[], warm, None)?.edge;
             ((up - at_r_o) / h, 1)
@@ -416,7 +417,7 @@ pub(super) fn estimate(
                 setup.nodes_for(p.nodes),
                 p,
                 &[],
-                found.last.fit.as_ref(),
+                found.warm.as_ref(),
                 None,
             )?
             .edge
