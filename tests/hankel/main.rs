@@ -28,6 +28,7 @@ mod transform;
 mod two_plate_curve_equilibrium;
 mod two_plate_hole;
 mod two_plate_hole_fast;
+mod two_plate_hole_newton;
 mod two_plate_hole_pressure;
 mod two_plate_hole_reach;
 mod two_plate_hole_tier8;

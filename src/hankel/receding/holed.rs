@@ -29,8 +29,10 @@
 //! decay over c − A), Anderson-accelerated (module `anderson`: 17 → 8 steps on the narrowest
 //! load). X's traction on the hole needs l's transform to ξ ≫ ξ_l; beyond ξ_l it is the
 //! endpoint expansion by parts, −l(c)cJ₁(ξc)/ξ − l′(c)cJ₀(ξc)/ξ² + (l′ + c l″)(c)J₁(ξc)/ξ³,
-//! exact to O(ξ^(−4.5)). The edge coefficient of the total is X's φ(c); R_o is its root, by the
-//! receding solver's scan and a step-stopping inverse interpolation (module `holed_search`).
+//! exact to O(ξ^(−4.5)). The edge coefficient of the total is X's φ(c); R_o is its root, by
+//! Newton's method from a predictor with secant slopes, stopping when the step or the last
+//! secant step's own error is within the root tolerance (module `holed_search`; the receding
+//! solver's scan and inverse interpolation when Newton fails).
 //!
 //! **Error control.** R_o's estimate adds (a) the change from a run with ⌈3n/4⌉ Nyström points,
 //! (b) the change from a run with half the hole modes (the bilateral plate and Z), 2/3 of the
@@ -39,7 +41,10 @@
 //! one Newton step from R_o (slope: a secant through two of the search's edge values), its error
 //! ∝ the change squared (≤ 1e-6 D: negligible; as full searches to 2e-12 D on Table 1 row 1); a
 //! change beyond 0.01 D gets the full search. [`HoledParams::for_tolerance`] picks the knobs for
-//! a tolerance. Its tier for 1e-8 changes (b): N doubles from 32 until the bilateral residual
+//! a tolerance; its tier for 1e-6 doubles N from 16 until the bilateral residual is 2e-6 P
+//! (the change from N/2 at N = 16 overstated a 5e-8 error 30× on (0.5, 1.3), which it left
+//! not converged at 1e-6) and coarsens the modes, the heights and ξ_l each alone, as the
+//! tier for 1e-8. Its tier for 1e-8 changes (b): N doubles from 32 until the bilateral residual
 //! is 5e-7 P, where the modes converge regularly and the change from N/2 overstates the error
 //! 10–10³×; the variants take 3/4 of the modes ([`HoledParams::coarse_modes`]), 2/3 of the
 //! heights and 2/3 of ξ_l each alone ([`HoledParams::split_variants`]), their changes added.

@@ -35,19 +35,23 @@ pub(super) fn solve(
 ) -> Result<(HoledContact, Vec<(f64, f64)>), RecedingError> {
     let start = Instant::now();
     let setup = Setup::new(plate, params)?;
-    let (mut out, curve) = solve_on(&setup, plate, params, at)?;
+    let (mut out, curve, _) = solve_on(&setup, plate, params, at)?;
     out.info.seconds = start.elapsed().as_secs_f64();
     Ok((out, curve))
 }
 
+/// R_o with its record, the pressure curve (r, q) and the edge coefficient's slope at R_o.
+pub(super) type Solved = (HoledContact, Vec<(f64, f64)>, Option<f64>);
+
 /// As [`solve`] on a `setup` built for `plate` and `params` (module `rim_holed` shares it with
-/// the rim's solves); `seconds` counts from this call, not the setup's.
+/// the rim's solves); `seconds` counts from this call, not the setup's. Also the edge
+/// coefficient's slope at R_o, where the search's edge values give it (the rim's Newton start).
 pub(super) fn solve_on(
     setup: &Setup,
     plate: &SinglePlate,
     params: &HoledParams,
     at: &[f64],
-) -> Result<(HoledContact, Vec<(f64, f64)>), RecedingError> {
+) -> Result<Solved, RecedingError> {
     let start = Instant::now();
     let b = plate.load().outer();
     let found = setup.search(b, params.nodes, params, None, at)?;
@@ -80,5 +84,5 @@ pub(super) fn solve_on(
     }
     info.solves = solves;
     info.seconds = start.elapsed().as_secs_f64();
-    Ok((HoledContact { r_o, info }, curve))
+    Ok((HoledContact { r_o, info }, curve, found.slope(setup.d)))
 }

@@ -103,8 +103,9 @@ pub struct HoledParams {
     /// regular and the change from N/2 is 10–300 times the error: module docs there).
     pub coarse_modes: f64,
     /// Whether the estimate coarsens the modes, the heights and ξ_l in separate variants and
-    /// adds their changes (default false: one variant, cheaper; true in the tier for 1e-8,
-    /// where their changes, each ~1e-10 R_o, were seen to cancel).
+    /// adds their changes (default false: one variant, cheaper; true in the tiers for 1e-8,
+    /// where their changes, each ~1e-10 R_o, were seen to cancel, and 1e-6, where ξ_l's
+    /// 1.1e-8 R_o was).
     pub split_variants: bool,
 }
 
@@ -140,7 +141,8 @@ impl HoledParams {
     /// 1e-6; tighter tolerances take these knobs too, the route's reach), hole modes doubled
     /// from 32 until the bilateral plate's residual is 5e-7 P (at most 128), 28 heights,
     /// ξ_l = 55/D, `hole_decay` 18 and the coarse variants apart, the modes' at 3/4 (below). From 1e-6 (up to
-    /// 1e-5), 16 Nyström points, ξ_l = 28/D, a tail of 12D
+    /// 1e-5), 16 Nyström points, hole modes doubled from 16 until the bilateral residual is
+    /// 2e-6 P (at most 64; the half-modes variant kept, below), ξ_l = 28/D, a tail of 12D
     /// (l ~ e^(−2.1(r−c)/D): 10D moved R_o by 1.5e-9 R_o on Table 1 row 1, 12D by ~2e-11), root
     /// and iteration tolerances 1e-9 (of D; of p̄(0)/c). Looser, one tier per decade, each
     /// chosen by its run on Table 1's twelve rows. Measured on those rows (ν = 0.3) by
@@ -153,11 +155,34 @@ impl HoledParams {
     /// | 1e-4 | 8 | 12 | 8 | 12 | 7 | 1e-5 | 8 | 3.7e-5 | 6.2e-6 | 0.14–0.26 s |
     /// | 1e-3 | 6 | 10 | 6 | 10 | 6 | 1e-4 | 8 | 2.1e-4 | 4.0e-5 | 0.10–0.15 s |
     ///
-    /// (1e-6: 1.3e-6, 3.2e-10, 0.43–0.78 s; main 0.61–1.02 s. The 1e-5 row by its own run at
+    /// (1e-6 with 16 modes always: 1.3e-6, 3.2e-10, 0.43–0.78 s; main 0.61–1.02 s. The 1e-5 row by its own run at
     /// load 1.7, main 0.75–0.94 s: its first choice, 12 modes, 16 heights, ξ_l = 18/D, tail 9D,
     /// came within 0.91 of its estimate on (0.75, 1.3).) The estimate's honesty over random
     /// geometries:
     /// `tests/hankel/two_plate_hole_tiers.rs`.
+    ///
+    /// **The tier for 1e-6's modes and variants.** With 16 modes always, (0.5, 1.3) estimated
+    /// 1.3e-6 R_o (not converged) over an error of 5.1e-8: the half-modes variant (8 modes,
+    /// where the modes converge irregularly: below) set it; the 3/4 variant (12 modes) would
+    /// change R_o by 4.3e-8, under that error, so it was not taken. Its bilateral residual at 16
+    /// modes is 1.1e-5 P, the other eleven rows' at most 1.3e-6 P: doubling until 2e-6 P gives
+    /// (0.5, 1.3) 32 modes (3.0e-7 P), estimate 7.9e-8 R_o, within 7.7e-9 R_o of the tier for
+    /// 1e-8 (`tests/hankel/two_plate_hole_newton.rs`). With one coarse variant the tiers'
+    /// survey then found on (A/D, B/A, ν) = (0.341, 1.175, 0.388) an error of 1.07e-8 R_o
+    /// against an estimate of 3.3e-9 (the half-modes estimate had hidden it); each knob alone
+    /// (`tier6_knobs_one_at_a_time`, same file) moved R_o − reference from −1.07e-8 to
+    /// +8.4e-10 with ξ_l = 55/D, −7.9e-9 with 28 heights, and left it at −1.07e-8 … −1.15e-8
+    /// with the modes to 5e-8 P, `hole_decay` 18, a tail of 14D or 24 points: ξ_l's error, its
+    /// change cancelled in the one variant by the modes' and heights' (as on the tier for
+    /// 1e-8, below). So the tier coarsens each alone ([`HoledParams::split_variants`]).
+    /// The tiers' survey after both changes (`tests/hankel/two_plate_hole_tiers.rs`, 40
+    /// random geometries, 199 s at load ~8): the tier for 1e-6 converged on 40 of 40 (36
+    /// before, the others' estimates up to 1.5e-5 R_o), its error at most 0.21 of its
+    /// estimate, the largest estimate 6.4e-7 R_o; the tiers for 1e-3, 1e-4, 1e-5 unchanged
+    /// (at most 0.37, 0.37, 0.39 of their estimates). The rim survey
+    /// (`tests/hankel/two_plate_rim_survey.rs`, 16 random rims, 316 s at load ~8): every run
+    /// within its bar, the largest error/(estimate + reference's) 0.16 at 1e-3 and 0.75 at
+    /// 1e-6 (before: 0.14, 0.72; both on A/D 1.77, B/A 1.91, C − B = 6.8D).
     ///
     /// The tier for 1e-8 (24 Nyström points, tail 14D, root 1e-11, iteration 1e-11), chosen by measurement on Table 1's five rows whose 1e-6 estimates were
     /// over 1e-8 ((1, 1.3), (0.75, 1.6), (0.75, 1.3), (0.5, 1.6), (0.5, 1.3)), each knob alone
@@ -201,13 +226,14 @@ impl HoledParams {
         };
         // N doubled from 32 until the bilateral plate's residual is 5e-7 P: the variant at 3/4
         // of N is honest only where the modes converge regularly (the docs above)
-        let adaptive = HoleParams {
+        let doubled = |start, max, target| HoleParams {
             terms: None,
-            start_terms: 32,
-            max_terms: 128,
-            residual_target: 5e-7,
+            start_terms: start,
+            max_terms: max,
+            residual_target: target,
             ..base.hole
         };
+        let adaptive = doubled(32, 128, 5e-7);
         let tier = |from, nodes, heights, hole, xi_l, tail, root: f64, hole_decay, coarse| Tier {
             from,
             params: Self {
@@ -220,8 +246,8 @@ impl HoledParams {
                 tail,
                 hole_decay,
                 coarse_modes: coarse,
-                // the tier for 1e-8 only
-                split_variants: from < 1e-6,
+                // the tiers for 1e-6 and 1e-8
+                split_variants: from <= 1e-6,
                 ..base
             },
         };
@@ -231,7 +257,17 @@ impl HoledParams {
             tier(1e-3, 6, 10, fixed(6), 10.0, 6.0, 1e-4, 8.0, 0.5),
             tier(1e-4, 8, 12, fixed(8), 12.0, 7.0, 1e-5, 8.0, 0.5),
             tier(1e-5, 10, 18, fixed(16), 22.0, 10.0, 1e-7, 10.0, 0.5),
-            tier(1e-6, 16, 18, fixed(16), 28.0, 12.0, 1e-9, 13.0, 0.5),
+            tier(
+                1e-6,
+                16,
+                18,
+                doubled(16, 64, 2e-6),
+                28.0,
+                12.0,
+                1e-9,
+                13.0,
+                0.5,
+            ),
             tier(1e-8, 24, 28, adaptive, 55.0, 14.0, 1e-11, 18.0, 0.75),
         ];
         // tighter than the tightest tier: its knobs (the route's reach; the estimate says

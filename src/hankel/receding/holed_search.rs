@@ -1,34 +1,72 @@
 //! The search for R_o of the holed two-plate model ([`super::holed`]) and its error estimate:
-//! the trial contact radii of module `crack` bracketed by the receding solver's scan
-//! ([`super::search::root`]) and refined by inverse interpolation that stops on its step
-//! ([`crate::numerics::secant::refine`]), every edge value kept so that none is computed twice,
-//! each radius's crack iteration started from the correction of the nearest radius solved.
+//! Newton's method on the edge coefficient f(c) = c·φ(c)/p̄(0) of the trial contact radii of
+//! module `crack` ([`newton_root`]), from a predictor, every edge value kept so that none is
+//! computed twice, each radius's crack iteration started from the correction of the nearest
+//! radius solved.
 //!
-//! - [`Setup::search`]: R_o, the solve at R_o (reused from the search when no pressure is asked
-//!   for) and the edge values (c, c·φ(c)/p̄(0)) the search computed;
-//! - [`estimate`]: the R_o of the two coarser variants (⌈3n/4⌉ Nyström points; half the hole
-//!   modes and 2/3 of the heights), each one Newton step from R_o with the slope of the edge
-//!   coefficient taken as a secant through two of the search's own edge values (a solve at
-//!   R_o + 10⁻³D only when the search left none between 10⁻⁵D and 10⁻²D of R_o); the two
-//!   variants run in parallel (rayon).
+//! - [`Setup::search`]: R_o from B + 0.45D, the first step with a fitted slope
+//!   −min(0.35 + 0.45D/(B − A), 2)/D (`Setup::predictor`), then secants (inverse quadratic
+//!   interpolation through three points when it agrees with the secant), kept in the bracket
+//!   once there is one; when Newton fails (a slope not negative, a step out of range, ten
+//!   evaluations) the receding solver's scan ([`super::search::root`]) and step-stopping
+//!   inverse interpolation ([`crate::numerics::secant::refine`]) as before. Also the solve at
+//!   R_o (or at the last radius, within the root tolerance of R_o, when no pressure is asked
+//!   for) and the edge values the search computed;
+//! - the stop: the next step s is at most the root tolerance (returning the last point, as
+//!   `refine`), or, after three points, the secant step's own error 4·|f″/2f′|·|s|·(|s| + |x −
+//!   x′|) (f″/2 the last three points' divided difference, x′ the previous point) is: R_o is
+//!   then x + s, not solved at; the error of a secant step through x′ and x is
+//!   (f″/2f′)·e·e′ to leading order, with |e| ≈ |s| and |e′| ≤ |s| + |x − x′|;
+//! - [`estimate`]: the R_o of the coarser variants (⌈3n/4⌉ Nyström points; half the hole modes
+//!   and 2/3 of the heights, or each alone), each one Newton step from R_o with the slope of
+//!   the edge coefficient taken as a secant through two of the search's own edge values (a
+//!   solve at R_o + 10⁻³D only when the search left none between 10⁻⁵D and 10⁻²D of R_o); the
+//!   variants run in parallel (rayon). The finite rim (module `rim_holed`) starts its own
+//!   Newton search from the infinite plate's R_o with its slope ([`Found::slope`]).
 //!
 //! # Accuracy
 //!
-//! The secant's relative error is about f″δ/f′ for points δ ≤ 10⁻²D apart; the Newton step's
-//! error is that times the step, below 10⁻⁸D for the steps (≤ 10⁻⁶D) of Table 1. Measured as the
-//! estimate against a finer run: `tests/hankel/two_plate_hole_fast.rs`.
+//! The stop against the same knobs iterated to 1e-13 (`tests/hankel/two_plate_hole_newton.rs`,
+//! `newton_stops_within_its_root_tolerance`). The variants' secant: its relative error is about
+//! f″δ/f′ for points δ ≤ 10⁻²D apart; the Newton step's error is that times the step, below
+//! 10⁻⁸D for the steps (≤ 10⁻⁶D) of Table 1. Measured as the estimate against a finer run:
+//! `tests/hankel/two_plate_hole_fast.rs`.
 //!
 //! # Cost
 //!
-//! Two solves fewer per geometry than a fresh solve at R_o and a secant solve (13 → 11 on Table 1
-//! row 1), and two more than Brent's method, whose last steps shrink the bracket around a root
-//! it already has (11 → 9: 3 scan points, 4 refinements, 2 variants); the warm start saves one
-//! crack iteration of three on the radii near R_o; the variants' solves on two cores at once,
-//! the half-terms variant's setup sharing the slab's midplane curve and the corner table
-//! ([`Setup::sharing`]). The scan from B + 0.45D instead of B (R_o − B is 0.38–0.56D on
-//! Table 1) brackets R_o in two solves instead of three or four: all twelve rows took 95
-//! radii instead of 110 at --tol 1e-6 and 79 at 1e-3, R_o moved ≤ 3.2e-10 R_o (by turns
-//! against main, module [`super::holed`]'s Cost). Timed by example 19.
+//! Measured 2026-11-25 on all twelve Table 1 rows by `boltzone two --method hankel --tol T`
+//! (C = ∞ and C = 1.54 in), this search's binary and main's by turns per row in one session,
+//! two rounds, the median CPU (user + sys), load 5–10 on the 2 cores (the other helpers'
+//! builds), with the 1e-6 tier's modes doubled to 2e-6 P but one coarse variant (the tier's
+//! split variants, below, came after):
+//!
+//! | T | C | radii (crack solves) in all | CPU per row | main's | in total | R_o moved |
+//! |---|---|-----------------------------|-------------|--------|----------|-----------|
+//! | 1e-6 | ∞ | 71 (main 95) | 0.33–0.60 s | 0.42–0.74 s | 1.20× | ≤ 4.6e-10 R_o but (0.5, 1.3)'s 5.2e-8 (its modes) |
+//! | 1e-3 | ∞ | 59 (79) | 0.10–0.14 s | 0.10–0.18 s | 1.17× | ≤ 4.3e-5 R_o (the root tolerance 1e-4 D), ≤ 0.54 of the estimate |
+//! | 1e-6 | 1.54 in | 191 (287) | 1.25–2.50 s | 2.08–3.27 s | 1.43× | ≤ 2.9e-11 R_o but (0.5, 1.3)'s 5.3e-8 |
+//! | 1e-3 | 1.54 in | 157 (245) | 0.34–0.61 s | 0.57–1.10 s | 1.55× | ≤ 4.8e-5 R_o, ≤ 0.22 of the estimate |
+//!
+//! At C = ∞ the search takes 3–5 radii instead of 5–6 (traced with a unit first slope, before
+//! the fitted one: 3–6, the extrapolated stop saving the last); with the rim 13–17 crack
+//! solves instead of 20–24 in all, the rim's search from the infinite R_o and no re-solve at
+//! R_o. At 1e-3 R_o moves within the root
+//! tolerance (1e-4 D), which both searches meet differently; it is part of both estimates.
+//! The 1e-6 tier's split variants (module [`super::holed_params`]) add two solves per geometry
+//! (four variants instead of two): by turns with main's binary once more (one round,
+//! load ~8, the tiers' survey running beside), at --tol 1e-6 C = ∞ 95 solves as main's (the
+//! search's 24 saved go to the variants), CPU per row 0.36–0.72 s against 0.34–0.80 s (1.01×
+//! in total), estimates up to 9× larger on narrow loads ((0.75, 1.3): 3.9e-8 → 3.6e-7 R_o)
+//! and every row converged, (0.5, 1.3) too (1.3e-6 → 2.1e-7); at C = 1.54 in 215 solves
+//! against 287, 1.34–2.88 s per row against 1.92–3.06 s (1.32× in total), all twelve
+//! converged (main: eleven).
+//!
+//! Before (the scan): two solves fewer per geometry than a fresh solve at R_o and a secant
+//! solve (13 → 11 on Table 1 row 1), the warm start saving one crack iteration of three on the
+//! radii near R_o; the variants' solves on two cores at once, the half-terms variant's setup
+//! sharing the slab's midplane curve and the corner table ([`Setup::sharing`]); the scan from
+//! B + 0.45D instead of B bracketed R_o in two solves instead of three or four (all twelve rows
+//! 95 radii instead of 110 at --tol 1e-6). Timed by example 19.
 
 use super::contact::RecedingError;
 use super::holed_params::HoledParams;
@@ -46,8 +84,12 @@ const SCAN_FROM: f64 = 0.45;
 pub(super) struct Found {
     /// The contact radius R_o.
     pub(super) r_o: f64,
-    /// The solve at R_o (with the pressure at the radii asked for).
+    /// The solve at R_o (with the pressure at the radii asked for), or with none asked for and
+    /// R_o extrapolated by one step, the last solve of the search.
     pub(super) last: Crack,
+    /// The correction of the search's solve nearest R_o (the variants' warm start, the same
+    /// whether or not a pressure was asked for).
+    pub(super) warm: Option<Fit>,
     /// Contact radii solved.
     pub(super) solves: usize,
     /// Crack iterations over those radii.
@@ -56,16 +98,33 @@ pub(super) struct Found {
     pub(super) edges: Vec<(f64, f64)>,
 }
 
+impl Found {
+    /// The edge coefficient at R_o: the search's value there, else zero (R_o extrapolated, to
+    /// within the root tolerance).
+    pub(super) fn at_r_o(&self) -> f64 {
+        self.edges
+            .iter()
+            .find(|e| e.0 == self.r_o)
+            .map_or(0.0, |e| e.1)
+    }
+
+    /// The edge coefficient's slope at R_o from the search's edge values ([`secant_slope`]).
+    pub(super) fn slope(&self, d: f64) -> Option<f64> {
+        secant_slope(&self.edges, self.r_o, self.at_r_o(), d)
+    }
+}
+
 impl Setup {
-    /// R_o with `n` Nyström points ([`Setup::nodes_for`]: more for wide loads; bracketing
-    /// `near` first) and the contact pressure at
-    /// r = A + x(R_o − A) for x in `at`.
+    /// R_o with `n` Nyström points ([`Setup::nodes_for`]: more for wide loads), from `near`
+    /// (else B + 0.45D) by [`newton_root`] with the edge coefficient's slope `slope` (else
+    /// −1/D), falling back to the scan and inverse interpolation when Newton fails; and the
+    /// contact pressure at r = A + x(R_o − A) for x in `at`.
     pub(super) fn search(
         &self,
         b: f64,
         n: usize,
         params: &HoledParams,
-        near: Option<f64>,
+        near: Option<(f64, f64)>,
         at: &[f64],
     ) -> Result<Found, RecedingError> {
         let n = self.nodes_for(n);
@@ -83,34 +142,41 @@ impl Setup {
             seen.push((c, k));
             Ok::<f64, RecedingError>(e)
         };
-        // the receding solver's scan for the bracket only (an infinite tolerance ends its
-        // Brent refinement before any evaluation), then refine from the scan's last points
-        // the scan starts where R_o lies on Table 1 (B + 0.38…0.56 D) and on the tiers' survey,
-        // so that two solves bracket it, and scans outward or inward from there as before
-        let scan = Scan {
-            b: b + (SCAN_FROM * self.d).min(params.reach * self.d),
-            d: self.d,
-            step: params.step * self.d,
-            end: b + params.reach * self.d,
-            tol: f64::INFINITY,
-            max_iterations: 100,
-        };
-        root(&mut |c| edge(c, &mut seen), &scan, near)?.ok_or(RecedingError::NotFound {
-            from: b,
-            to: scan.end,
-        })?;
-        let known: Vec<(f64, f64)> = seen.iter().map(|(c, k)| (*c, k.edge)).collect();
-        let r_o = refine(
+        let tol = params.rel_tol * self.d;
+        let (x0, slope0) = near.unwrap_or_else(|| self.predictor(b, params));
+        let range = (self.a + 0.05 * self.d, b + params.reach * self.d);
+        let newton = newton_root(
             &mut |c| edge(c, &mut seen),
-            &known,
-            params.rel_tol * self.d,
-            100,
-        )?
-        .x;
+            x0,
+            slope0,
+            NEWTON_STEP * self.d,
+            range,
+            tol,
+            NEWTON_EVALUATIONS,
+        )?;
+        let (r_o, evaluated) = match newton {
+            Some(root) => (root.x, root.evaluated),
+            None => (
+                self.bracket_and_refine(
+                    b,
+                    params,
+                    near.map(|p| p.0),
+                    &mut |c, s| edge(c, s),
+                    &mut seen,
+                )?,
+                true,
+            ),
+        };
         let edges: Vec<(f64, f64)> = seen.iter().map(|(c, k)| (*c, k.edge)).collect();
         let mut solves = seen.len();
         let mut iterations: usize = seen.iter().map(|(_, k)| k.iterations).sum();
-        let reuse = seen.iter().position(|(c, _)| *c == r_o);
+        // the solve at R_o, or with R_o one extrapolated step beyond the last radius solved (its
+        // error bounded below the root tolerance) that radius's solve, when no pressure is asked
+        let reuse = match evaluated {
+            true => seen.iter().position(|(c, _)| *c == r_o),
+            false => seen.len().checked_sub(1),
+        };
+        let warm = nearest(&seen, r_o);
         let last = match reuse.filter(|_| at.is_empty()) {
             Some(i) => seen.swap_remove(i).1,
             None => {
@@ -127,11 +193,165 @@ impl Setup {
         Ok(Found {
             r_o,
             last,
+            warm,
             solves,
             iterations,
             edges,
         })
     }
+
+    /// Where [`Setup::search`] starts without a guess, and the first step's slope: R_o − B is
+    /// 0.38…0.56 D on Table 1 (B + 0.45D), and D times the edge coefficient's slope at R_o
+    /// is −0.5 … −2.0 there, steeper on narrow loads, fitted as −min(0.35 + 0.45D/(B − A), 2)
+    /// (within 25 % on ten of the twelve rows, 1.15× on (0.75, 1.3), 1.2× on (0.5, 1.3)).
+    fn predictor(&self, b: f64, params: &HoledParams) -> (f64, f64) {
+        let x0 = b + (SCAN_FROM * self.d).min(params.reach * self.d);
+        let slope = (0.35 + 0.45 * self.d / (b - self.a)).min(2.0);
+        (x0, -slope / self.d)
+    }
+
+    /// The fallback of [`Setup::search`]: the receding solver's scan for a bracket (an infinite
+    /// tolerance ends its Brent refinement before any evaluation) from B + 0.45D, outward or
+    /// inward, then step-stopping inverse interpolation from the scan's last points; `seen`
+    /// holds the solves so far (Newton's), whose edge values start the refinement when none of
+    /// the scan's bracket.
+    fn bracket_and_refine(
+        &self,
+        b: f64,
+        params: &HoledParams,
+        near: Option<f64>,
+        edge: &mut impl FnMut(f64, &mut Vec<(f64, Crack)>) -> Result<f64, RecedingError>,
+        seen: &mut Vec<(f64, Crack)>,
+    ) -> Result<f64, RecedingError> {
+        let scan = Scan {
+            b: b + (SCAN_FROM * self.d).min(params.reach * self.d),
+            d: self.d,
+            step: params.step * self.d,
+            end: b + params.reach * self.d,
+            tol: f64::INFINITY,
+            max_iterations: 100,
+        };
+        let from = seen.len();
+        root(&mut |c| edge(c, seen), &scan, near)?.ok_or(RecedingError::NotFound {
+            from: b,
+            to: scan.end,
+        })?;
+        let known: Vec<(f64, f64)> = seen[from..].iter().map(|(c, k)| (*c, k.edge)).collect();
+        Ok(refine(&mut |c| edge(c, seen), &known, params.rel_tol * self.d, 100)?.x)
+    }
+}
+
+/// A root found by [`newton_root`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct NewtonRoot {
+    /// The root.
+    pub(super) x: f64,
+    /// Whether `x` was evaluated (else it is the last point evaluated plus one secant step).
+    pub(super) evaluated: bool,
+}
+
+/// The largest Newton step, in D (the scan's step).
+const NEWTON_STEP: f64 = 0.25;
+
+/// Evaluations before [`newton_root`] gives up (the search then scans).
+pub(super) const NEWTON_EVALUATIONS: usize = 10;
+
+/// The factor on the secant step's error term in [`newton_root`]'s extrapolated stop.
+const EXTRAPOLATION_SAFETY: f64 = 4.0;
+
+/// The root of a decreasing smooth `f` from `x0`, the first step with the slope `slope0`, then
+/// secants through the last two points (inverse quadratic interpolation through three when it
+/// lies within twice the secant step), steps at most `max_step`, kept inside the bracket once
+/// there is one (bisection when a step leaves it). Stops when the next step s is at most `tol`
+/// (returning the last point evaluated, whose error s bounds), or when the secant step's own
+/// error, (f″/2f′)·s·e′ with e′ ≤ |s| + |x − x′| the previous point's, times 4, is at most
+/// `tol` (returning x + s unevaluated; f″/2 from the last three points' divided difference).
+/// `None` when the slope is not negative, a step leaves `range` or after `max_evaluations`:
+/// the caller's fallback.
+pub(super) fn newton_root<E>(
+    f: &mut impl FnMut(f64) -> Result<f64, E>,
+    x0: f64,
+    slope0: f64,
+    max_step: f64,
+    range: (f64, f64),
+    tol: f64,
+    max_evaluations: usize,
+) -> Result<Option<NewtonRoot>, E> {
+    let mut pts: Vec<(f64, f64)> = Vec::new();
+    let mut x = x0;
+    for _ in 0..max_evaluations {
+        let fx = f(x)?;
+        if fx == 0.0 {
+            return Ok(Some(NewtonRoot { x, evaluated: true }));
+        }
+        pts.push((x, fx));
+        let k = pts.len();
+        let slope = match k {
+            1 => slope0,
+            _ => (fx - pts[k - 2].1) / (x - pts[k - 2].0),
+        };
+        if !(slope < 0.0 && slope.is_finite()) {
+            return Ok(None);
+        }
+        let secant = -fx / slope;
+        let mut step = secant;
+        if k >= 3 {
+            let q = inverse_quadratic(&pts[k - 3..]) - x;
+            if q.is_finite() && q * secant > 0.0 && q.abs() <= 2.0 * secant.abs() {
+                step = q;
+            }
+        }
+        // the bracket: the largest x with f > 0 and the smallest with f < 0
+        let lo = pts
+            .iter()
+            .filter(|p| p.1 > 0.0)
+            .map(|p| p.0)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let hi = pts
+            .iter()
+            .filter(|p| p.1 < 0.0)
+            .map(|p| p.0)
+            .fold(f64::INFINITY, f64::min);
+        let next = x + step.clamp(-max_step, max_step);
+        let bracketed = lo.is_finite() && hi.is_finite();
+        if bracketed && !(next > lo.min(hi) && next < lo.max(hi)) {
+            x = 0.5 * (lo + hi);
+            continue;
+        }
+        if !(range.0..=range.1).contains(&next) {
+            return Ok(None);
+        }
+        // the secant step's relative error: 4(f″/2f′)(|s| + |x − x′|) from three points, 1 from two
+        let relative = if k >= 3 {
+            let (p, q) = (pts[k - 3], pts[k - 2]);
+            let f2 = ((fx - q.1) / (x - q.0) - (q.1 - p.1) / (q.0 - p.0)) / (x - p.0);
+            EXTRAPOLATION_SAFETY * (f2 / slope).abs() * (secant.abs() + (x - q.0).abs())
+        } else {
+            1.0
+        };
+        // the last point's error is the step (to within `relative` of it); the predicted slope
+        // of the first step measures nothing
+        if k >= 2 && step.abs().max(secant.abs()) * (1.0 + relative) <= tol {
+            return Ok(Some(NewtonRoot { x, evaluated: true }));
+        }
+        if k >= 3 && relative * secant.abs() <= tol && secant.abs() <= max_step {
+            return Ok(Some(NewtonRoot {
+                x: x + secant,
+                evaluated: false,
+            }));
+        }
+        x = next;
+    }
+    Ok(None)
+}
+
+/// Inverse quadratic interpolation at f = 0 through three points (NaN when two values
+/// coincide).
+fn inverse_quadratic(p: &[(f64, f64)]) -> f64 {
+    let ((x0, f0), (x1, f1), (x2, f2)) = (p[0], p[1], p[2]);
+    x0 * f1 * f2 / ((f0 - f1) * (f0 - f2))
+        + x1 * f0 * f2 / ((f1 - f0) * (f1 - f2))
+        + x2 * f0 * f1 / ((f2 - f0) * (f2 - f1))
 }
 
 /// r = A + x(R_o − A), exactly R_o at x = 1 (where the pressure is zero: one ulp inside, its
@@ -177,14 +397,15 @@ pub(super) fn estimate(
     }
     // each variant's R_o by one Newton step from R_o: its change is ~1e-6 D or less, where the
     // step's error, ∝ the change squared, is far below it; a larger change gets the search
-    let (slope, solves) = match secant_slope(&found.edges, found.r_o, found.last.edge, setup.d) {
+    let at_r_o = found.at_r_o();
+    let (slope, solves) = match found.slope(setup.d) {
         Some(s) => (s, 0),
         None => {
             let h = 1e-3 * setup.d;
-            let warm = found.last.fit.as_ref();
+            let warm = found.warm.as_ref();
             let n = setup.nodes_for(params.nodes);
             let up = setup.crack(r_o + h, n, params, &[], warm, None)?.edge;
-            ((up - found.last.edge) / h, 1)
+            ((up - at_r_o) / h, 1)
         }
     };
     // the fewer-nodes variant starts from the search's correction (same modes); the
@@ -196,7 +417,7 @@ pub(super) fn estimate(
                 setup.nodes_for(p.nodes),
                 p,
                 &[],
-                found.last.fit.as_ref(),
+                found.warm.as_ref(),
                 None,
             )?
             .edge
@@ -205,7 +426,7 @@ pub(super) fn estimate(
             return Ok((r_o + step, 1));
         }
         setup
-            .search(b, p.nodes, p, Some(r_o), &[])
+            .search(b, p.nodes, p, Some((r_o, slope)), &[])
             .map(|f| (f.r_o, f.solves))
     };
     let fewer = HoledParams {

@@ -18,8 +18,12 @@
 //! ([`RimStates::far_field_log`]: ∫(q − p)(r²/2 + k ln r) r dr over [A, c], by 32-point
 //! Gauss–Legendre in u with r = c − (c − A)u², smooth for the √ or 1/√ edge), and
 //! β = −M_∞(C)/(M_E(C) + M₂(C)). R_o is the root of the total edge coefficient
-//! φ_∞(c) + βφ₂(c), bracketed about the infinite plate's R_o and refined by step-stopping
-//! inverse interpolation ([`crate::numerics::secant::refine`], as the infinite route).
+//! φ_∞(c) + βφ₂(c), by Newton's method from the infinite plate's R_o with the infinite plate's
+//! slope, then secants (module `holed_search`'s `newton_root`, its stop as the infinite
+//! route's; when it fails, bracketed about the infinite R_o and refined by step-stopping
+//! inverse interpolation, [`crate::numerics::secant::refine`]). With no pressure asked for, the
+//! last trial of the search (at R_o, or within the root tolerance of it) gives the record's β
+//! and moment instead of a solve at R_o.
 //!
 //! **Error estimate**: the infinite route's estimate (Nyström points, hole terms, heights,
 //! root), plus the changes of the finite-C R_o when both S_∞ and S₂ are solved with ⌈3n/4⌉
@@ -92,7 +96,7 @@ use super::holed_infinite;
 use super::holed_params::{HoledParams, MAX_B_OVER_D_RIM};
 use super::holed_record::HoledContact;
 pub use super::holed_record::RimRecord;
-use super::holed_search::{fraction_radius, secant_slope};
+use super::holed_search::{fraction_radius, newton_root, secant_slope, NEWTON_EVALUATIONS};
 use super::holed_setup::Setup;
 use super::prescribed::Prescribed;
 use super::rim::PAPKOVICH_DECAY;
@@ -209,7 +213,7 @@ pub(super) fn finite_rim(
     let infinite = SinglePlate::new(a, OuterRadius::Infinite, d, plate.material(), load.clone())?;
     // one setup for the infinite plate's R_o, which brackets the search, and the rim's solves
     let setup = Setup::new(&infinite, params)?;
-    let (inf, _) = holed_infinite::solve_on(&setup, &infinite, params, &[])?;
+    let (inf, _, inf_slope) = holed_infinite::solve_on(&setup, &infinite, params, &[])?;
     let mat = plate.material();
     let states = RimStates::new(a, d, mat)?;
     let gl = gauss_legendre(20);
@@ -245,30 +249,52 @@ pub(super) fn finite_rim(
         from: b,
         to: scan.end,
     };
-    // bracketed about the infinite plate's R_o by the receding solver's scan (its Brent
-    // refinement ended at once by an infinite tolerance), then refined by the infinite route's
-    // step-stopping inverse interpolation: Brent's method to the root tolerance took 10–12 steps
-    // on this edge coefficient, which is rough at that scale (its crack iterations stop at their
-    // own tolerance), 25–28 solves per geometry at every tolerance
+    // (the fallback: bracketed about the infinite plate's R_o by the receding solver's scan,
+    // its Brent refinement ended at once by an infinite tolerance, then refined by the infinite
+    // route's step-stopping inverse interpolation: Brent's method to the root tolerance took
+    // 10–12 steps on this edge coefficient, rough at that scale, 25–28 solves per geometry)
     // Nyström points as the infinite route's (more for loads beyond B = 3.5D): with
     // `params.nodes` alone, B/D = 8 at --tol 1e-3 put R_o 2.4e-3 R_o off the 1e-6 tier's
     let (nodes, coarse_n) = (
         route.setup.nodes_for(params.nodes),
         route.setup.nodes_for((3 * params.nodes).div_ceil(4).max(4)),
     );
-    let edge = |c: f64, seen: &mut Vec<(f64, f64)>| -> Result<f64, RecedingError> {
-        let e = route.trial(c, nodes, &[])?.edge;
-        seen.push((c, e));
+    // the last trial of the search is kept: with no pressure asked for it is the one at R_o
+    // (or within the root tolerance of it, R_o extrapolated by one secant step)
+    let mut kept: Option<Trial> = None;
+    let mut edge = |c: f64, seen: &mut Vec<(f64, f64)>| -> Result<f64, RecedingError> {
+        let t = route.trial(c, nodes, &[])?;
+        seen.push((c, t.edge));
+        let e = t.edge;
+        kept = Some(t);
         Ok(e)
     };
     let mut seen = Vec::new();
-    let bracket = Scan {
-        tol: f64::INFINITY,
-        ..scan
+    // Newton from the infinite plate's R_o with its slope (the rim moves R_o by ~1e-3 R_o and
+    // the slope little); the bracketing scan and inverse interpolation when Newton fails
+    let newton = newton_root(
+        &mut |c| edge(c, &mut seen),
+        inf.r_o,
+        inf_slope.unwrap_or(-1.0 / d),
+        scan.step,
+        (a + 0.05 * d, scan.end),
+        params.rel_tol * d,
+        NEWTON_EVALUATIONS,
+    )?;
+    let (r_o, evaluated) = match newton {
+        Some(root) => (root.x, root.evaluated),
+        None => {
+            let bracket = Scan {
+                tol: f64::INFINITY,
+                ..scan
+            };
+            let from = seen.len();
+            root(&mut |c| edge(c, &mut seen), &bracket, Some(inf.r_o))?.ok_or(not_found)?;
+            let known = seen[from..].to_vec();
+            let r = refine(&mut |c| edge(c, &mut seen), &known, params.rel_tol * d, 100)?;
+            (r.x, true)
+        }
     };
-    root(&mut |c| edge(c, &mut seen), &bracket, Some(inf.r_o))?.ok_or(not_found)?;
-    let known = seen.clone();
-    let r_o = refine(&mut |c| edge(c, &mut seen), &known, params.rel_tol * d, 100)?.x;
     let mut solves = seen.len();
     // the coarse variants' R_o, each by one Newton step from R_o, the slope a secant through two
     // of the search's edge values (or a difference over 1e-3 D): its error ∝ the change
@@ -279,6 +305,7 @@ pub(super) fn finite_rim(
     let (coarse, fewer_heights) = if params.estimate {
         let f0 = match seen.iter().find(|p| p.0 == r_o) {
             Some(p) => p.1,
+            None if !evaluated => 0.0,
             None => {
                 solves += 1;
                 route.trial(r_o, nodes, &[])?.edge
@@ -311,7 +338,13 @@ pub(super) fn finite_rim(
         (f64::NAN, f64::NAN)
     };
     let radii: Vec<f64> = at.iter().map(|&x| fraction_radius(a, r_o, x)).collect();
-    let last = route.trial(r_o, nodes, &radii)?;
+    let last = match kept.filter(|_| at.is_empty()) {
+        Some(t) => t,
+        None => {
+            solves += 1;
+            route.trial(r_o, nodes, &radii)?
+        }
+    };
     let decay_bound = d * (-PAPKOVICH_DECAY * (c_outer - r_o) / d).exp();
     let mut info = inf.info;
     info.r_o_error += decay_bound
@@ -320,7 +353,7 @@ pub(super) fn finite_rim(
         } else {
             (r_o - coarse).abs() + (r_o - fewer_heights).abs()
         };
-    info.solves += 2 * (solves + 1);
+    info.solves += 2 * solves;
     info.seconds = start.elapsed().as_secs_f64();
     info.rim = Some(RimRecord {
         outer_radius: c_outer,
