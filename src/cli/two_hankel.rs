@@ -12,10 +12,10 @@
 //! # Cost
 //!
 //! The holed route's with the knobs for --tol ([`HoledParams::for_tolerance`]), per Table 1
-//! geometry: 0.10–0.15 s of CPU at --tol 1e-3, 0.43–0.78 s at 1e-6, 1.4–2.2 s at 1e-8 (every
-//! row converged there; load 9–12); timed by example 19. With the Newton search and the 1e-6
-//! tier's split variants (module `hankel::receding::holed_search`'s Cost): 0.10–0.14 s at
-//! 1e-3, 0.36–0.72 s at 1e-6 (all twelve converged), with --c 1.54 1.34–2.88 s at 1e-6.
+//! geometry (2026-11-25, load 1.5–2.5; module `hankel::receding::holed`'s Cost): 0.06–0.11 s
+//! of CPU at --tol 1e-3, 0.35–0.77 s at 1e-6 (all twelve converged), with --c 1.54 1.0–2.0 s at
+//! 1e-6; 1.4–2.2 s at 1e-8 (every row converged there; load 9–12, before the hole tables);
+//! timed by example 19.
 
 use super::exit::{sig, Status};
 use super::two_args::Args;

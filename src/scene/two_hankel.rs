@@ -39,10 +39,11 @@
 //!
 //! # Cost
 //!
-//! With a hole one semi-analytic solve, 0.10–0.15 s of CPU per Table 1 geometry at a tolerance
-//! of 1e-3, 0.43–0.78 s at 1e-6 (example 19); the curve adds one evaluation per point. Without
-//! a hole one receding solve, 0.1–0.2 s at B ≈ D; with a rim 0.1–0.3 s, twice with the curve
-//! (its radii need R_o); timed by `tests/scene/two_hankel_no_hole.rs`.
+//! With a hole one semi-analytic solve, 0.06–0.11 s of CPU per Table 1 geometry at a
+//! tolerance of 1e-3, 0.35–0.77 s at 1e-6 (2026-11-25, module
+//! [`crate::hankel::receding::holed`]'s Cost); the curve adds one evaluation per point.
+//! Without a hole one receding solve, 0.1–0.2 s at B ≈ D; with a rim 0.1–0.3 s, twice with the
+//! curve (its radii need R_o); timed by `tests/scene/two_hankel_no_hole.rs`.
 
 use super::error::SceneError;
 use super::file::{InterfaceKind, Model, Scene};

@@ -56,10 +56,11 @@ fn anderson_changes_nothing_but_the_count() {
         fast.r_o - plain.r_o
     );
     // each radius starts from the nearest one's correction, so the last radii of the search
-    // take 2 steps either way (the stopping test compares two iterates): what Anderson halves
-    // is the count beyond that floor of 2 per radius, over the whole search. Measured with the
-    // scan started at B + 0.45D (7 radii): 46 steps instead of 81, 32 instead of 67 beyond
-    // the floor (before, from B with more radii: 52 instead of 105).
+    // take 2 steps either way (the stopping test compares two iterates): Anderson's saving is
+    // in the count beyond that floor of 2 per radius, over the whole search. How much depends
+    // on the search: with the scan from B + 0.45D (7 radii) 32 steps beyond the floor instead
+    // of 67; with the Newton search (4 radii, farther apart, so the warm starts are colder) 26
+    // instead of 40. What holds for any search is that the same radii take fewer steps.
     println!(
         "search iterations {} (Anderson) vs {} (plain) over {} radii; R_o differ by {:e}",
         fast.info.search_iterations,
@@ -69,9 +70,9 @@ fn anderson_changes_nothing_but_the_count() {
     );
     let floor = 2 * fast.info.solves;
     assert!(
-        2 * fast.info.search_iterations.saturating_sub(floor)
-            <= plain.info.search_iterations.saturating_sub(floor) + fast.info.solves,
-        "search iterations {} (Anderson) vs {} (plain), floor {floor}: not about halved",
+        fast.info.search_iterations.saturating_sub(floor)
+            < plain.info.search_iterations.saturating_sub(floor),
+        "search iterations {} (Anderson) vs {} (plain), floor {floor}: no fewer",
         fast.info.search_iterations,
         plain.info.search_iterations
     );

@@ -114,7 +114,15 @@
 //! | 1e-3, ∞ | 0.075–0.17 s | 0.11–0.22 s | 1.35× | ≤ 2.0e-10 | unchanged (6.1e-5 … 2.1e-4 R_o) |
 //! | 1e-6, 1.54 in | 1.4–2.1 s | 2.1–3.0 s | 1.41× | ≤ 8.1e-12 | unchanged (5.4e-10 … 1.4e-6 R_o) |
 //!
-//! The 10 ms at 1e-6 is still 28–65× off.
+//! With the search by secant steps from a fitted first slope and the tier for 1e-6's mode
+//! doubling and separate variants (module `holed_search`'s Cost, merged after this round):
+//! all twelve rows, the binary before both rounds and after, by turns, one round, load
+//! 1.5–2.5: at 1e-6, C = ∞, 5.67 → 5.73 s in total (0.99×: the separate variants' two
+//! solves per row spend what the tables saved; all twelve rows converge, (0.5, 1.3), 1.3e-6 R_o
+//! not converged before, now 2.1e-7); at 1e-3, C = ∞, 1.64 → 1.08 s (1.52×, 4–5 solves per
+//! row instead of 5–7); at 1e-6, C = 1.54 in, 31.9 → 15.9 s (2.01×, 17–19 solves instead of
+//! 23–24). R_o moved ≤ 4.6e-10 R_o at 1e-6 except (0.5, 1.3), 5.3e-8 (its modes 16 → 32).
+//! The 10 ms at 1e-6 is still 35–75× off (0.35–0.77 s per row).
 //!
 //! **Where the time goes** (row (1, 1.3) at 1e-6, one thread, `perf record`): 6 search radii
 //! and 2 of the estimate's variants, of which the fewer-nodes variant (at R_o, where the search
@@ -145,8 +153,8 @@
 //! **Next** (structural; not done): the Nyström ξ-rule fixed per table epoch (its ω from the
 //! epoch's largest c, as the hole rule's) with the J₀ rows of l's transform and its cosine
 //! tables on fixed panels, only the partial panel at c rebuilt; the coarse variants' setups
-//! (a bilateral plate each) shared or replaced; fewer radii (a predictor of R_o, Newton with
-//! the edge coefficient's slope: module `holed_search`).
+//! (a bilateral plate each) shared or replaced; fewer radii by a predictor of R_o better than
+//! B + 0.45D (the search itself now takes secant steps: module `holed_search`).
 //!
 //! Re-measured after earlier rounds: A → 0 (`small_holes_approach_the_receding_solution`)
 //! −8.255e-8, −1.973e-8, −4.965e-9; the 10 × 10 grid study against the FE at 1e-4
