@@ -16,7 +16,11 @@
 //! a_k = 1²·3²·…·(2k−1)²/(k!·8^k),
 //!
 //! summed to k = 18 by Horner's rule (at x = 25 the first term dropped is 1.5e-17; the smallest,
-//! near k = 2x, is ~e^(−50)),
+//! near k = 2x, is ~e^(−50)); in [`PanelGrid::j0_row`] a panel whose nodes all lie at x ≥ 25
+//! sums only the terms its smallest x needs for the same 1.5e-17 (k ≤ 14 from x = 33, 11 from
+//! 50, 9 from 78, 7 from 160: a_{k+1}/x^(k+1) < 1.5e-17 there), with 1/x and √(2/(πx)) as
+//! products of the row's 1/(8ξ), √(2/(πξ)) and the node's 1/s, 1/√s (a few ulp of J₀'s
+//! amplitude),
 //! with cos(x − π/4) = (cos x + sin x)/√2, sin(x − π/4) = (sin x − cos x)/√2 from the addition
 //! theorem; from 2 to 25 (where [`libm::j0`] calls sin and cos), from a table built once: on each unit interval [k, k + 1) the
 //! interpolant of degree 12 at 13 Chebyshev points of [`libm::j0`], summed by Clenshaw's
@@ -37,7 +41,10 @@
 //! the table's 12 steps of Clenshaw's recurrence instead of libm's sin, cos and rational
 //! approximations (libm's J₀ was 19 % of the holed route's CPU at the knobs for 1e-3, under 2 %
 //! after; Table 1 at those knobs 1.82–1.90 s instead of 2.16–2.76 s for all twelve rows, by
-//! turns at load 8, R_o unchanged to the 10 digits printed); [`dot`], the
+//! turns at load 8, R_o unchanged to the 10 digits printed). The fewer terms per panel at
+//! larger x and the reciprocals per node (2026-11-25): [`PanelGrid::j0_row`]'s own share of
+//! the CPU of `two --method hankel --a 0.1 --b 0.13 --d 0.1 --tol 1e-6` (one thread, `perf
+//! record`) from 20.7 % to 8.9 %, R_o moved by 5e-17 of R_o; [`dot`], the
 //! rows' products with a vector, in four partial sums. The holed route's timing: example 19.
 //!
 //! ```
@@ -64,6 +71,9 @@ pub struct PanelGrid {
     offsets: Vec<f64>,
     nodes: Vec<f64>,
     weights: Vec<f64>,
+    /// 1/s and 1/√s at every node (0 where s ≤ 0): J₀'s asymptotic expansion at x = ξs
+    /// takes 1/x and √(2/(πx)) as products with the row's 1/ξ and √(2/(πξ)).
+    inv: Vec<(f64, f64)>,
 }
 
 /// −2 sin²(x/2) = cos x − 1 without cancellation at small x.
@@ -102,19 +112,27 @@ impl PanelGrid {
         let rule = gauss_legendre(20);
         let mids: Vec<f64> = (0..k).map(|j| a + (j as f64 + 0.5) * h).collect();
         let offsets: Vec<f64> = rule.iter().map(|&(x, _)| 0.5 * h * x).collect();
-        let nodes = mids
+        let nodes: Vec<f64> = mids
             .iter()
             .flat_map(|m| offsets.iter().map(move |o| m + o))
             .collect();
         let weights = mids
             .iter()
             .flat_map(|_| rule.iter().map(|&(_, w)| 0.5 * h * w))
+            .collect::<Vec<f64>>();
+        let inv = nodes
+            .iter()
+            .map(|&s: &f64| match s > 0.0 {
+                true => (1.0 / s, 1.0 / s.sqrt()),
+                false => (0.0, 0.0),
+            })
             .collect();
         Self {
             mids,
             offsets,
             nodes,
             weights,
+            inv,
         }
     }
 
@@ -180,20 +198,90 @@ impl PanelGrid {
         self.for_each(xi, |i, _, _, m1| out[i] = m1);
     }
 
-    /// `out` ← J₀(ξs) at every node (ξ ≥ 0).
+    /// `out` ← J₀(ξs) at every node (ξ ≥ 0). A panel whose nodes all lie at x = ξs ≥ 25
+    /// takes the asymptotic expansion with the fewest terms its smallest x allows (module
+    /// docs), the others each node's branch.
     pub fn j0_row(&self, xi: f64, out: &mut [f64]) {
-        let nodes = &self.nodes;
-        self.for_each(xi, |i, c, s, _| {
-            let x = xi * nodes[i];
-            out[i] = if x < TABLE_FROM {
-                libm::j0(x)
-            } else if x < ASYMPTOTIC_FROM {
-                j0_table(x)
-            } else {
-                j0_asymptotic(x, c, s)
+        let offs: Vec<(f64, f64)> = self
+            .offsets
+            .iter()
+            .map(|&o| {
+                let (s, c) = (xi * o).sin_cos();
+                (c, s)
+            })
+            .collect();
+        let reach = self.offsets.iter().fold(0.0f64, |r, o| r.max(o.abs()));
+        let scale = (1.0 / (8.0 * xi), (2.0 / (PI * xi)).sqrt());
+        for (p, &m) in self.mids.iter().enumerate() {
+            let (sm, cm) = (xi * m).sin_cos();
+            let at = 20 * p..20 * (p + 1);
+            let (out, nodes, inv) = (&mut out[at.clone()], &self.nodes[at.clone()], &self.inv[at]);
+            // cos ξs and sin ξs by the addition theorem, as in `for_each`
+            let mut trig = [(0.0, 0.0); 20];
+            for (t, &(co, so)) in trig.iter_mut().zip(&offs) {
+                *t = (cm * co - sm * so, sm * co + cm * so);
+            }
+            let panel = Panel {
+                trig: &trig,
+                inv,
+                scale,
             };
-        });
+            match asymptotic_terms(xi * (m - reach)) {
+                Some(18) => panel.asymptotic::<10, 9>(out),
+                Some(14) => panel.asymptotic::<8, 7>(out),
+                Some(11) => panel.asymptotic::<6, 6>(out),
+                Some(9) => panel.asymptotic::<5, 5>(out),
+                Some(_) => panel.asymptotic::<4, 4>(out),
+                None => {
+                    for ((o, &s), &(c, sn)) in out.iter_mut().zip(nodes).zip(&trig) {
+                        let x = xi * s;
+                        *o = if x < TABLE_FROM {
+                            libm::j0(x)
+                        } else if x < ASYMPTOTIC_FROM {
+                            j0_table(x)
+                        } else {
+                            j0_asymptotic(x, c, sn)
+                        };
+                    }
+                }
+            }
+        }
     }
+}
+
+/// One panel of a J₀ row: (cos ξs, sin ξs) and (1/s, 1/√s) at its 20 nodes, and the row's
+/// (1/(8ξ), √(2/(πξ))).
+struct Panel<'a> {
+    trig: &'a [(f64, f64); 20],
+    inv: &'a [(f64, f64)],
+    scale: (f64, f64),
+}
+
+impl Panel<'_> {
+    /// `out` ← J₀ at the panel's nodes from the asymptotic expansion with the first `P`
+    /// coefficients of P and `Q` of Q (the terms a_k/x^k up to k = 2P − 2 and 2Q − 1).
+    fn asymptotic<const P: usize, const Q: usize>(&self, out: &mut [f64]) {
+        let (p_c, q_c) = coefficients();
+        let p_c: [f64; P] = std::array::from_fn(|k| p_c[k]);
+        let q_c: [f64; Q] = std::array::from_fn(|k| q_c[k]);
+        let (y_scale, amp_scale) = self.scale;
+        for ((o, &(c, s)), &(inv, inv_sqrt)) in out.iter_mut().zip(self.trig).zip(self.inv) {
+            let y = y_scale * inv;
+            let y2 = y * y;
+            let p = p_c.iter().rev().fold(0.0, |acc, &v| acc * y2 + v);
+            let q = y * q_c.iter().rev().fold(0.0, |acc, &v| acc * y2 + v);
+            let (cos_w, sin_w) = ((c + s) * FRAC_1_SQRT_2, (s - c) * FRAC_1_SQRT_2);
+            *o = amp_scale * inv_sqrt * (p * cos_w - q * sin_w);
+        }
+    }
+}
+
+/// The largest index k of the terms a_k/x^k of J₀'s expansion kept at every x ≥ `x_min`: the
+/// first term dropped is below 1.5e-17 (as at x = 25 with k ≤ 18): 18 from x = 25, 14 from 33,
+/// 11 from 50, 9 from 78, 7 from 160; None below 25.
+fn asymptotic_terms(x_min: f64) -> Option<usize> {
+    const FROM: [(f64, usize); 5] = [(160.0, 7), (78.0, 9), (50.0, 11), (33.0, 14), (25.0, 18)];
+    FROM.iter().find(|f| x_min >= f.0).map(|f| f.1)
 }
 
 /// Σ x_i y_i over the common length, in four interleaved partial sums (which the compiler
@@ -275,7 +363,19 @@ static COEFFICIENTS: std::sync::OnceLock<(Vec<f64>, Vec<f64>)> = std::sync::Once
 
 /// J₀(x) for x ≥ 25 from cos x and sin x (module docs): P and Q by Horner's rule.
 fn j0_asymptotic(x: f64, cos: f64, sin: f64) -> f64 {
-    let (p_c, q_c) = COEFFICIENTS.get_or_init(|| {
+    let (p_c, q_c) = coefficients();
+    let y = 1.0 / (8.0 * x);
+    let y2 = y * y;
+    let horner = |c: &[f64]| c.iter().rev().fold(0.0, |acc, &v| acc * y2 + v);
+    let (p, q) = (horner(p_c), y * horner(q_c));
+    let cos_w = (cos + sin) * FRAC_1_SQRT_2;
+    let sin_w = (sin - cos) * FRAC_1_SQRT_2;
+    (2.0 / (PI * x)).sqrt() * (p * cos_w - q * sin_w)
+}
+
+/// The coefficients of P and Q ([`COEFFICIENTS`]).
+fn coefficients() -> &'static (Vec<f64>, Vec<f64>) {
+    COEFFICIENTS.get_or_init(|| {
         let mut b = vec![1.0];
         for i in 0..TERMS {
             let i = i as f64;
@@ -286,14 +386,7 @@ fn j0_asymptotic(x: f64, cos: f64, sin: f64) -> f64 {
         let p = (0..=TERMS).step_by(2).map(|k| sign(k) * b[k]).collect();
         let q = (1..=TERMS).step_by(2).map(|k| sign(k) * b[k]).collect();
         (p, q)
-    });
-    let y = 1.0 / (8.0 * x);
-    let y2 = y * y;
-    let horner = |c: &[f64]| c.iter().rev().fold(0.0, |acc, &v| acc * y2 + v);
-    let (p, q) = (horner(p_c), y * horner(q_c));
-    let cos_w = (cos + sin) * FRAC_1_SQRT_2;
-    let sin_w = (sin - cos) * FRAC_1_SQRT_2;
-    (2.0 / (PI * x)).sqrt() * (p * cos_w - q * sin_w)
+    })
 }
 
 /// Barycentric interpolation on Gauss–Legendre panels of equal width from `start`.
