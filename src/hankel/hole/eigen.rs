@@ -97,7 +97,7 @@ pub struct ModeField<T> {
 
 /// One symmetric Papkovich–Fadle mode of the layer −D ≤ z ≤ D: decaying outward (K₀, K₁,
 /// normalised on the hole r = A) or growing outward (I₀, I₁, normalised on a rim r = C).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Mode {
     lam: Complex64,
     alpha: Complex64,

@@ -9,12 +9,21 @@
 //!
 //! The unit test here (`interpolated_tables_match_the_sums`) measures the hole tables'
 //! interpolant against their sums (module `hole_tables`); the kept radius tables are the same
-//! tables, bit for bit (`tests/hankel/two_plate_hole_fast.rs`).
+//! tables, bit for bit (`tests/hankel/two_plate_hole_fast.rs`). The graded cap's cosines by
+//! the addition theorem along ξ differ from one `sin_cos` per entry by the rounding of the
+//! argument ξt (module `grid`'s Accuracy): on Table 1 R_o moved by at most 2.4e-13 of R_o at
+//! 1e-6 (module [`super::holed`]'s Cost).
 //!
 //! # Cost
 //!
 //! Most of a radius's cost (module [`super::holed`]'s Cost, where the time goes); timed by
-//! example 19.
+//! example 19. Three savings per radius (2026-11-25; row (1, 1.3) at 1e-6, one thread, `perf
+//! record`, shares of the whole run's CPU): the bilateral plate's modes at the s-rule taken
+//! from the correction's table of the same modes (`HolePlate::modes_midplane_with`; bit for
+//! bit the same s₀) instead of evaluated again, 5.4 % → 0.4 %; the graded cap's cos ξt by
+//! the addition theorem along the Nyström rule's ξ-panels ([`XiRule::grid`]) instead of one
+//! sin/cos pair per entry (the same values within the rounding of ξt); l's J₀ rows scaled
+//! in place. Through the route: module [`super::holed`]'s Cost.
 //!
 //! ```
 //! // Internal to the route; reached through its entry point:
@@ -108,17 +117,32 @@ impl Setup {
         };
         // s₀ = slab + modes + corner: the bilateral plate's corner fields are the crack
         // correction's (same A, D, ν, exponents), so their basis rows serve both
+        // and the bilateral plate's modes are the correction's when it has no rim (the same
+        // roots, A, D, ν, G): their values at the s-rule serve both too (bit for bit: a mode
+        // left out of `mode_mid` as negligible there, evaluated if the plate's sum takes it)
         let weights = self.bilateral.corner_weights();
+        let same_modes = self.bilateral.modes() == self.modes.as_slice();
         let s0: Vec<f64> = s_rule
             .iter()
             .zip(&corner_mid)
-            .map(|(&(s, _), basis)| {
+            .zip(&mode_mid)
+            .map(|((&(s, _), basis), row)| {
                 let corner = match (weights.is_empty(), weights.len() == basis.len()) {
                     (true, _) => 0.0,
                     (false, true) => weights.iter().zip(basis).map(|(w, b)| w * b).sum(),
                     (false, false) => return self.s0(s),
                 };
-                self.slab_sigma_z(s) + self.bilateral.modes_midplane(s) + corner
+                let modes = match same_modes {
+                    true => {
+                        self.bilateral
+                            .modes_midplane_with(s, |k| match row[k] == Complex64::ZERO {
+                                true => self.modes[k].midplane_sigma_z(s),
+                                false => row[k],
+                            })
+                    }
+                    false => self.bilateral.modes_midplane(s),
+                };
+                self.slab_sigma_z(s) + modes + corner
             })
             .collect();
         // t-grid on [0, c]: panels resolving cos ξt up to the hole rule's end, and on the last
@@ -148,15 +172,30 @@ impl Setup {
             .collect();
         let nt = t_rule.len();
         // the tables, one row per ξ (contiguous in t or s): cos ξt, cos ξt − 1 on the rule's
-        // ξ, cos ξt − 1 on the hole's
-        // (rows in parallel: they are independent)
+        // ξ (rows in parallel: they are independent). On the graded cap, whose t are no panel
+        // grid, by the addition theorem along the rule's ξ-panels instead (ξt = tξ), a column
+        // per t: two sin/cos pairs per ξ-panel and offset instead of one per entry (the same
+        // values within the rounding of ξt, module `grid`); directly if the rule were no grid
+        let xi_grid = Some(rule.grid()).filter(|g| g.nodes() == xi_r.as_slice());
+        let cap: Vec<(Vec<f64>, Vec<f64>)> = graded
+            .par_iter()
+            .map(|&(t, _)| match &xi_grid {
+                Some(g) => {
+                    let (mut cos, mut cosm1) = (vec![0.0; g.len()], vec![0.0; g.len()]);
+                    g.cos_rows(t, &mut cos, &mut cosm1);
+                    (cos, cosm1)
+                }
+                None => xi_r.iter().map(|&x| cos_and_m1(x * t)).unzip(),
+            })
+            .collect();
         let (cos_t, cosm1_t): (Vec<Vec<f64>>, Vec<Vec<f64>>) = xi_r
             .par_iter()
-            .map(|&x| {
+            .enumerate()
+            .map(|(k, &x)| {
                 let (mut cos, mut cosm1) = (vec![0.0; nt], vec![0.0; nt]);
                 t_grid.cos_rows(x, &mut cos[..nf], &mut cosm1[..nf]);
-                for (i, &(t, _)) in graded.iter().enumerate() {
-                    (cos[nf + i], cosm1[nf + i]) = cos_and_m1(x * t);
+                for (i, (c, m1)) in cap.iter().enumerate() {
+                    (cos[nf + i], cosm1[nf + i]) = (c[k], m1[k]);
                 }
                 (cos, cosm1)
             })
@@ -166,18 +205,17 @@ impl Setup {
         let (s_nodes, ws): (Vec<f64>, Vec<f64>) = s_rule.iter().map(|&(s, w)| (s, w * s)).unzip();
         let hole_s = hole.h(&s_nodes, &ws);
         // s-weights w·s·J₀(ξs) and w·s·(J₀ − 1) for the rule and the hole's low ξ
+        // (in place: both rows written once)
         let js = |xi: f64| -> (Vec<f64>, Vec<f64>) {
-            let mut j = vec![0.0; s_rule.len()];
+            let mut j = vec![0.0; s_nodes.len()];
             s_grid.j0_row(xi, &mut j);
-            s_rule
-                .iter()
-                .zip(&j)
-                .map(|(&(s, w), &j)| {
-                    let x = xi * s;
-                    let m1 = if x < 0.1 { j0_m1(x) } else { j - 1.0 };
-                    (w * s * j, w * s * m1)
-                })
-                .unzip()
+            let mut m1 = j.clone();
+            for ((j, m1), (&s, &ws)) in j.iter_mut().zip(&mut m1).zip(s_nodes.iter().zip(&ws)) {
+                let x = xi * s;
+                *m1 = ws * if x < 0.1 { j0_m1(x) } else { *m1 - 1.0 };
+                *j *= ws;
+            }
+            (j, m1)
         };
         // beyond ξ_l l̄ is its endpoint expansion on the rule too (its weights there are
         // below 30e^(−28) of their peak), with J₀(ξc), J₁(ξc) once per radius

@@ -23,6 +23,7 @@
 //!
 //! One dense solve of the Nyström system per radius; example 06.
 
+use super::grid::PanelGrid;
 use super::layer::Stack;
 use crate::hankel::transform::LoadTransform;
 use crate::numerics::quadrature::{gauss_legendre, panel};
@@ -33,6 +34,8 @@ use std::f64::consts::{FRAC_PI_2, PI};
 /// b_m = (2/π)w_m M_p(ξ_mD), and p̃_m = p̄(ξ_m) − p̄(0).
 #[derive(Debug, Clone)]
 pub(crate) struct XiRule {
+    /// The panels' width (the nodes are [`PanelGrid::equal`]'s from 0).
+    h: f64,
     xi: Vec<f64>,
     a: Vec<f64>,
     b: Vec<f64>,
@@ -96,7 +99,19 @@ impl XiRule {
                 p_tilde.push(transform.eval(z) - p0);
             }
         }
-        Self { xi, a, b, p_tilde }
+        Self {
+            h,
+            xi,
+            a,
+            b,
+            p_tilde,
+        }
+    }
+
+    /// The nodes as a panel grid, the same floating-point values (its rows of cos ξt by the
+    /// addition theorem along ξ: module `grid`).
+    pub(crate) fn grid(&self) -> PanelGrid {
+        PanelGrid::equal(0.0, self.h, self.xi.len() / 20)
     }
 
     /// Number of ξ-nodes.

@@ -24,12 +24,13 @@
 //! ```
 
 use super::super::corner::{CornerMidplaneRule, FieldComponent};
-use super::super::eigen::{lame_field, uniform_field, ModeField};
+use super::super::eigen::{lame_field, uniform_field, Mode, ModeField};
 use super::super::midplane_sum::MidplaneSum;
 use super::super::HoleInfo;
 use super::{dot, HolePlate};
 use crate::hankel::field::{Slab, StressEstimate};
 use crate::numerics::quadrature::QuadParams;
+use num_complex::Complex64;
 
 impl HolePlate {
     /// The rim radius C whose traction the correction cancels (None: infinite plate).
@@ -108,15 +109,27 @@ impl HolePlate {
     /// The modes' part of [`Self::correction_midplane`] (modes whose share is bounded below
     /// 1e-18 P there are skipped: [`Mode::midplane_bound`](super::super::eigen::Mode::midplane_bound)).
     pub fn modes_midplane(&self, r: f64) -> f64 {
+        self.modes_midplane_with(r, |k| self.modes[k].midplane_sigma_z(r))
+    }
+
+    /// [`Self::modes_midplane`] with mode k's midplane σ_z at r from `value(k)`: a caller
+    /// that has tabulated the same modes ([`Self::modes`]) at r saves their evaluation.
+    pub fn modes_midplane_with(&self, r: f64, value: impl Fn(usize) -> Complex64) -> f64 {
         let negligible = 1e-18 * self.p_ref;
         self.fit.as_ref().map_or(0.0, |f| {
             self.modes
                 .iter()
                 .zip(&f.modes)
-                .filter(|(m, c)| c.norm() * m.midplane_bound(r) > negligible)
-                .map(|(m, c)| (c * m.midplane_sigma_z(r)).re)
+                .enumerate()
+                .filter(|(_, (m, c))| c.norm() * m.midplane_bound(r) > negligible)
+                .map(|(k, (_, c))| (c * value(k)).re)
                 .sum()
         })
+    }
+
+    /// The Papkovich–Fadle modes of the correction (decaying, then growing with a rim).
+    pub fn modes(&self) -> &[Mode] {
+        &self.modes
     }
 
     /// The corner enrichment's midplane σ_z(r, 0) field by field, 4 real values per exponent
