@@ -150,11 +150,31 @@
 //! step-stopping inverse interpolation from B + 0.45D, each radius warm-started, the
 //! variants sharing the setup, the tolerance tiers.
 //!
+//! **Tables round** (2026-11-25; modules `grid`, `setup_tables`): J₀'s asymptotic expansion
+//! with only the terms each panel's smallest argument needs and per-node reciprocals, the
+//! bilateral plate's modes at the s-rule from the correction's table of the same modes, the
+//! graded cap's cosines by the addition theorem along the Nyström rule's ξ-panels. All twelve
+//! Table 1 rows, main's binary and this one by turns, two rounds, load 3.3–3.5 on the 2 cores
+//! (total CPU per round): at 1e-6, C = ∞, 2.93–3.04 → 2.52–2.64 s (1.16×; per row 0.19–0.39 →
+//! 0.16–0.42 s); at 1e-3, 0.51–0.53 → 0.43–0.46 s (1.17×); at 1e-6, C = 1.54 in, 8.37–8.98 →
+//! 7.96–8.23 s (1.07×). The same solves per row; R_o moved ≤ 2.4e-13 of R_o at 1e-6 (≤ 1.2e-6
+//! of its estimate), ≤ 1.3e-11 at C = 1.54 in, at 1e-3 ≤ 5.6e-15 except (0.75, 1.6), 8.5e-10
+//! (6e-6 of its estimate: a round-off's different search step); every estimate the same to
+//! three digits; the tiers survey (`two_plate_hole_tiers`, 40 geometries, 57 s at load ~3):
+//! largest error/estimate 0.37, 0.37, 0.39, 0.21 at 1e-3, 1e-4, 1e-5, 1e-6. Where the time goes after it (row (1, 1.3) at 1e-6, one thread, `perf
+//! record`): the hole tables' panels 20 %, the crack iterations 14 %, the Nyström rule's cosine rows on the t-rule 10 %, the J₀ rows of
+//! l's transform 9 %, the modes at the s-rule 6 %, H_l's weights 4 %; per setup the bilateral
+//! plate, its fit and the slab's midplane curve about 24 %.
+//!
 //! **Next** (structural; not done): the Nyström ξ-rule fixed per table epoch (its ω from the
 //! epoch's largest c, as the hole rule's) with the J₀ rows of l's transform and its cosine
-//! tables on fixed panels, only the partial panel at c rebuilt; the coarse variants' setups
-//! (a bilateral plate each) shared or replaced; fewer radii by a predictor of R_o better than
-//! B + 0.45D (the search itself now takes secant steps: module `holed_search`).
+//! tables on fixed panels, only the partial panel at c rebuilt (the s-rule's first panel must
+//! stay at least a quarter panel wide, H_l's weights need the branch point at c that far
+//! from the next panel, and no wider than a panel, J₀'s resolution: a partial panel under a
+//! quarter merges with the next into two halves; `PanelInterp` then needs unequal panels);
+//! the coarse variants' setups (a bilateral plate each) shared or replaced; fewer radii by a predictor of
+//! R_o better than B + 0.45D (the search itself now takes secant steps: module
+//! `holed_search`).
 //!
 //! Re-measured after earlier rounds: A → 0 (`small_holes_approach_the_receding_solution`)
 //! −8.255e-8, −1.973e-8, −4.965e-9; the 10 × 10 grid study against the FE at 1e-4
