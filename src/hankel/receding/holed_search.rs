@@ -90,6 +90,10 @@ pub(super) struct Found {
     /// The correction of the search's solve nearest R_o (the variants' warm start, the same
     /// whether or not a pressure was asked for).
     pub(super) warm: Option<Fit>,
+    /// The search's solve at R_o, or with R_o extrapolated by one step its last solve, and
+    /// its edge value: where the estimate's variants are solved (the same whether or not a
+    /// pressure was asked for; with none asked for, the setup keeps its tables there).
+    pub(super) anchor: (f64, f64),
     /// Contact radii solved.
     pub(super) solves: usize,
     /// Crack iterations over those radii.
@@ -177,6 +181,7 @@ impl Setup {
             false => seen.len().checked_sub(1),
         };
         let warm = nearest(&seen, r_o);
+        let anchor = reuse.map_or((r_o, 0.0), |i| (seen[i].0, seen[i].1.edge));
         let last = match reuse.filter(|_| at.is_empty()) {
             Some(i) => seen.swap_remove(i).1,
             None => {
@@ -194,6 +199,7 @@ impl Setup {
             r_o,
             last,
             warm,
+            anchor,
             solves,
             iterations,
             edges,
@@ -408,12 +414,17 @@ pub(super) fn estimate(
             ((up - at_r_o) / h, 1)
         }
     };
-    // the fewer-nodes variant starts from the search's correction (same modes); the
-    // half-terms one has other modes and starts from none
+    // each variant from the search's correction, solved at the anchor x (R_o, or the last
+    // radius when R_o was extrapolated from it: the fewer-nodes variant there takes the tables
+    // the setup kept): its change is −(f_v(x) − f(x) + f(R_o))/f′ (f(R_o) zero when
+    // extrapolated), the difference at x of two edge coefficients whose slopes differ by as
+    // little as their roots do; at x = R_o the Newton step from R_o as before
+    let (x, f_x) = found.anchor;
+    let shift = f_x - at_r_o;
     let variant = |setup: &Setup, p: &HoledParams| -> Result<(f64, usize), RecedingError> {
-        let step = -setup
+        let step = -(setup
             .crack(
-                r_o,
+                x,
                 setup.nodes_for(p.nodes),
                 p,
                 &[],
@@ -421,6 +432,7 @@ pub(super) fn estimate(
                 None,
             )?
             .edge
+            - shift)
             / slope;
         if step.is_finite() && step.abs() < 0.01 * setup.d {
             return Ok((r_o + step, 1));

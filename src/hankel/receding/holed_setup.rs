@@ -209,21 +209,17 @@ impl Setup {
         let ct = params.hole.corner_terms;
         let corner = (ct > 0).then(|| CornerLoads::new(a, d, nu, g, ct));
         let z_fit = heights(d, if ct > 0 { 8 * n } else { 4 * n });
-        let corner_cols = corner.as_ref().map_or_else(Vec::new, |cl| {
-            cl.tractions(a, &z_fit)
-                .iter()
-                .flat_map(|t| {
-                    let mut sr = Vec::new();
-                    let mut tau = Vec::new();
-                    for c in t {
-                        sr.extend([c[0].re, c[0].im, c[1].re, c[1].im]);
-                        tau.extend([c[2].re, c[2].im, c[3].re, c[3].im]);
-                    }
-                    sr.extend(tau);
-                    sr
-                })
-                .collect()
+        // the corner columns at the fit heights: a shared setup's when its modes (so its
+        // heights) and corner terms are these (the heights and ξ_l variants)
+        let same_fit = shared.filter(|s| {
+            s.z_fit == z_fit
+                && s.nu == nu
+                && s.corner.as_ref().map(|c| c.count()) == corner.as_ref().map(|c| c.count())
         });
+        let corner_cols = match same_fit {
+            Some(s) => s.corner_cols.clone(),
+            None => corner_columns(corner.as_ref(), a, &z_fit),
+        };
         // Chebyshev points of the first kind on [−D, D]; the upper half are integrated
         let m = params.heights;
         let theta = |j: usize| PI * (j as f64 + 0.5) / m as f64;
@@ -278,10 +274,20 @@ impl Setup {
             }),
         };
         let xi_h = (params.hole_decay / z_cheb[m / 2 - 1]).max(2.0 * params.xi_l / d);
+        // the hole tables depend on the hole ξ-rule, the heights and the tail, not on the modes
+        // or the Nyström points: a setup changing only those (the estimate's modes variant)
+        // takes the shared setup's, with the panels its radii have built
+        let same_rule = shared.filter(|s| {
+            (s.nu, s.xi_h, s.xi_l, s.tail) == (nu, xi_h, params.xi_l / d, tail)
+                && s.z_cheb == z_cheb
+        });
+        let hole_tables = same_rule
+            .and_then(|s| s.hole_tables.lock().ok().and_then(|t| t.clone()))
+            .map_or_else(|| Mutex::new(None), |t| Mutex::new(Some(t)));
         Ok(Self {
             corner_table,
             last_tables: Mutex::new(None),
-            hole_tables: Mutex::new(None),
+            hole_tables,
             a,
             d,
             p0: LoadTransform::new(load).eval(0.0),
@@ -373,4 +379,25 @@ impl Setup {
             .as_ref()
             .map_or(f64::NAN, |c| c.eval(r).value)
     }
+}
+
+/// The corner fields' σ_r and τ_rz columns at the fit heights `z_fit` on the hole r = A (per
+/// height: the σ_r columns, then the τ_rz ones; real and imaginary parts of each term's two
+/// fields), empty without corner terms.
+fn corner_columns(corner: Option<&CornerLoads>, a: f64, z_fit: &[f64]) -> Vec<f64> {
+    corner.map_or_else(Vec::new, |cl| {
+        cl.tractions(a, z_fit)
+            .iter()
+            .flat_map(|t| {
+                let mut sr = Vec::new();
+                let mut tau = Vec::new();
+                for c in t {
+                    sr.extend([c[0].re, c[0].im, c[1].re, c[1].im]);
+                    tau.extend([c[2].re, c[2].im, c[3].re, c[3].im]);
+                }
+                sr.extend(tau);
+                sr
+            })
+            .collect()
+    })
 }

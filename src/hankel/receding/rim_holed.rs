@@ -319,7 +319,14 @@ pub(super) fn finite_rim(
                 (route.trial(r_o + h, nodes, &[])?.edge - f0) / h
             }
         };
-        let fc = route.trial(r_o, coarse_n, &[])?.edge;
+        // the variants solved at the search's last radius x when R_o was extrapolated from it
+        // (the fewer-nodes trial takes its kept tables), their changes −(f_v(x) − f(x))/f′;
+        // at R_o otherwise, −f_v(R_o)/f′ as before (module `holed_search`'s estimate)
+        let (x, shift) = match (evaluated, seen.last()) {
+            (false, Some(&(x, f_x))) => (x, f_x - f0),
+            _ => (r_o, 0.0),
+        };
+        let fc = route.trial(x, coarse_n, &[])?.edge - shift;
         let few = HoledParams {
             heights: (params.heights / 3 * 2).max(4),
             ..*params
@@ -331,7 +338,7 @@ pub(super) fn finite_rim(
             warm: RefCell::new(route.warm.borrow().clone()),
             ..route
         };
-        let fh = heights_route.trial(r_o, nodes, &[])?.edge;
+        let fh = heights_route.trial(x, nodes, &[])?.edge - shift;
         solves += 2;
         (r_o - fc / slope, r_o - fh / slope)
     } else {
