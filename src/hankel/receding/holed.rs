@@ -40,7 +40,9 @@
 //! residual traction on the hole is measured on the fit's check heights. Each variant's R_o is
 //! one Newton step from R_o (slope: a secant through two of the search's edge values), its error
 //! ∝ the change squared (≤ 1e-6 D: negligible; as full searches to 2e-12 D on Table 1 row 1); a
-//! change beyond 0.01 D gets the full search. [`HoledParams::for_tolerance`] picks the knobs for
+//! change beyond 0.01 D gets the full search. When R_o was extrapolated from the search's last
+//! radius x, the variants are solved at x and their change is the difference of edge values
+//! there, −(f_v(x) − f(x))/f′ (module `holed_search`). [`HoledParams::for_tolerance`] picks the knobs for
 //! a tolerance; its tier for 1e-6 doubles N from 16 until the bilateral residual is 2e-6 P
 //! (the change from N/2 at N = 16 overstated a 5e-8 error 30× on (0.5, 1.3), which it left
 //! not converged at 1e-6) and coarsens the modes, the heights and ξ_l each alone, as the
@@ -124,6 +126,25 @@
 //! 23–24). R_o moved ≤ 4.6e-10 R_o at 1e-6 except (0.5, 1.3), 5.3e-8 (its modes 16 → 32).
 //! The 10 ms at 1e-6 is still 35–75× off (0.35–0.77 s per row).
 //!
+//! **The variants at the search's last radius** (the round after): where the search
+//! extrapolated R_o from its last radius x (module `holed_search`), the estimate's variants
+//! are solved at x, so the fewer-nodes variant takes the tables the setup kept there; the
+//! modes variant takes the setup's hole tables (its hole ξ-rule, heights and tail are the
+//! run's). Solves per row unchanged (7–9 at 1e-6, 4–5 at 1e-3, 17–19 at 1e-6 with
+//! C = 1.54 in). All twelve rows, main's binary (a88b227) and this one by turns per row, three
+//! rounds, the median CPU (user + sys), load 2.3–3.2 on the 2 cores: at 1e-6, C = ∞,
+//! 2.93 → 2.64 s in total (1.11×; 0.17–0.41 s per row against 0.19–0.37 s); at 1e-3,
+//! 0.53 → 0.53 s (1.00×, 0.03–0.06 s per row); at 1e-6, C = 1.54 in, 8.43 → 7.90 s (1.07×,
+//! 0.53–1.12 s per row against 0.56–1.16 s). R_o the same to the last digit on every row at
+//! all three; the estimates the same but on (1, 3.1) at 1e-6 (3.85e-10 → 3.76e-10 R_o; at
+//! C = 1.54 in 5.44e-10 → 5.35e-10) and (0.5, 1.6) at 1e-3 (1.30e-4 → 1.18e-4 R_o: the
+//! variants' changes at R_o had held the extrapolated root's own error, 1.6e-6 in, which the
+//! root tolerance, 1e-4 D = 2e-5 in, counts apart). The tiers' survey after it
+//! (`tests/hankel/two_plate_hole_tiers.rs`, 40 random geometries): error/estimate at most
+//! 0.37, 0.37, 0.39, 0.21 at 1e-3 … 1e-6, as before, converged on 40, 40, 39, 40; the rim
+//! survey at most 0.16 (1e-3) and 0.76 (1e-6; 0.75 before). At 1e-6 the 10 ms is
+//! 17–41× off.
+//!
 //! **Where the time goes** (row (1, 1.3) at 1e-6, one thread, `perf record`): 6 search radii
 //! and 2 of the estimate's variants, of which the fewer-nodes variant (at R_o, where the search
 //! ended) now takes the search's tables. Per radius the tables of module `crack_tables`
@@ -131,7 +152,10 @@
 //! (12 %), the Nyström rule's cosine tables on the t-rule and H_l's weights; then a few Anderson-accelerated crack iterations (32 over the 8 radii);
 //! per geometry the setup
 //! (16 %: the bilateral plate of each variant 5 %, the slab's midplane curve, the corner
-//! table) and the hole tables' panels (9 %, module `hole_tables`).
+//! table) and the hole tables' panels (9 %, module `hole_tables`). With the variants at the
+//! search's last radius (same row, three runs of each binary, shares of each one's samples):
+//! the estimate 43 % → 35 %, its radius tables 30 % → 24 %, its hole-table panels 16 % →
+//! 11 % (the heights and ξ_l variants' own); the search 19 → 22 %, the setup 15 → 17 %.
 //!
 //! **This round.** (a) The hole's part of every iteration through tables independent of c
 //! (module `hole_tables`): σ_r, τ_rz at the Chebyshev heights per unit Abel function at t and
@@ -172,9 +196,11 @@
 //! stay at least a quarter panel wide, H_l's weights need the branch point at c that far
 //! from the next panel, and no wider than a panel, J₀'s resolution: a partial panel under a
 //! quarter merges with the next into two halves; `PanelInterp` then needs unequal panels);
-//! the coarse variants' setups (a bilateral plate each) shared or replaced; fewer radii by a predictor of
-//! R_o better than B + 0.45D (the search itself now takes secant steps: module
-//! `holed_search`).
+//! the variants' radius tables in parts (the heights and modes variants change neither the
+//! Nyström rule nor the J₀ rows of l's transform, only the hole's part and the modes'
+//! midplane rows), and the heights and ξ_l variants' hole tables; fewer radii, which needs a
+//! start within a few 1e-3 D of R_o (module `holed_search`'s Cost: neither B + 0.45D nor the
+//! no-hole receding solution is one).
 //!
 //! Re-measured after earlier rounds: A → 0 (`small_holes_approach_the_receding_solution`)
 //! −8.255e-8, −1.973e-8, −4.965e-9; the 10 × 10 grid study against the FE at 1e-4

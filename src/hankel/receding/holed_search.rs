@@ -21,8 +21,13 @@
 //!   and 2/3 of the heights, or each alone), each one Newton step from R_o with the slope of
 //!   the edge coefficient taken as a secant through two of the search's own edge values (a
 //!   solve at R_o + 10⁻³D only when the search left none between 10⁻⁵D and 10⁻²D of R_o); the
-//!   variants run in parallel (rayon). The finite rim (module `rim_holed`) starts its own
-//!   Newton search from the infinite plate's R_o with its slope ([`Found::slope`]).
+//!   variants run in parallel (rayon). When the search extrapolated R_o from its last radius x,
+//!   each variant is solved at x (the fewer-nodes one with the tables the setup kept there) and
+//!   its change is −(f_v(x) − f(x))/f′: the two edge coefficients' slopes differ by about as
+//!   much as their roots, so the difference at x is their roots' difference to that order, the
+//!   extrapolated root's own error (counted apart, the root tolerance) left out. The finite
+//!   rim (module `rim_holed`) starts its own Newton search from the infinite plate's R_o with
+//!   its slope ([`Found::slope`]) and solves its variants likewise.
 //!
 //! # Accuracy
 //!
@@ -60,6 +65,21 @@
 //! and every row converged, (0.5, 1.3) too (1.3e-6 → 2.1e-7); at C = 1.54 in 215 solves
 //! against 287, 1.34–2.88 s per row against 1.92–3.06 s (1.32× in total), all twelve
 //! converged (main: eleven).
+//!
+//! The variants at the search's last radius, when R_o was extrapolated from it (the fewer-nodes
+//! variant on the tables kept there), and the modes variant on the setup's hole tables: the
+//! same solves, 1.11× less CPU in total at 1e-6 (C = ∞), 1.00× at 1e-3, 1.07× at 1e-6 with
+//! C = 1.54 in, R_o unchanged (module [`super::holed`]'s Cost, by turns with main's binary).
+//!
+//! **Why still four radii.** Traced at 1e-6 on Table 1 (C = ∞): the search takes four radii on
+//! nine rows, three on (0.75, 1.3) and (0.5, 3.1), where B + 0.45D lies within 3.4e-3 D and
+//! 1e-4 D of R_o, five on (0.5, 1.6). After three radii the extrapolated stop's own error
+//! bound was 3.9e-8 … 3.2e-5 D on the others, against the root tolerance 1e-9 D; the first
+//! step's slope was 0.5–17 % off, and R_o − (B + 0.45D) was −0.073 … +0.113 D. Three radii
+//! need a start within a few 1e-3 D. The no-hole receding solution under the same annular
+//! load (module `contact`'s `contact_radius`, 7–32 ms) is no such start: the holed R_o lies
+//! 0.005 … 0.30 D inside it, widest on the narrow loads (B − A ≤ 0.6D), where the hole's
+//! own compliance matters most.
 //!
 //! Before (the scan): two solves fewer per geometry than a fresh solve at R_o and a secant
 //! solve (13 → 11 on Table 1 row 1), the warm start saving one crack iteration of three on the

@@ -14,10 +14,15 @@
 //! Example 19 (`examples/19_two_plate_hankel.rs`): about 0.2 s per geometry before they were
 //! cut to [A, B + 3D + tail] (the slab's midplane curve 0.12 s, the corner table 0.07 s on
 //! Table 1 row 1, over the whole reach), shared with the
-//! estimate's coarse setup ([`Setup::sharing`]). The hole rule is built per hole table
-//! (module `hole_tables`), not per radius. At the knobs for 1e-6 the setups are 16 % of the
-//! route's CPU on (1, 1.3) (`perf record`, 2026-11-25; the bilateral plates 5 %), the hole
-//! tables' panels 9 %.
+//! estimate's coarse setups ([`Setup::sharing`]), as is the bilateral plate where the hole
+//! knobs are the same (the heights and ξ_l variants) and the hole tables (with the panels
+//! built so far) where the hole ξ-rule, heights and tail are (the modes variant). The hole
+//! rule is built per hole table (module `hole_tables`), not per radius. At the knobs for 1e-6
+//! the setups are 16 % of the route's CPU on (1, 1.3) (`perf record`, 2026-11-25; the
+//! bilateral plates 5 %), the hole tables' panels 9 %. With the modes variant on the setup's
+//! hole tables (one thread, three runs each, this route's binary and main's): the hole
+//! tables' panels under the estimate 16 % → 11 % of each binary's samples, the main setup
+//! 15–17 %.
 //!
 //! ```
 //! // Internal to the route; reached through its entry point:
@@ -209,17 +214,21 @@ impl Setup {
         let ct = params.hole.corner_terms;
         let corner = (ct > 0).then(|| CornerLoads::new(a, d, nu, g, ct));
         let z_fit = heights(d, if ct > 0 { 8 * n } else { 4 * n });
-        // the corner columns at the fit heights: a shared setup's when its modes (so its
-        // heights) and corner terms are these (the heights and ξ_l variants)
-        let same_fit = shared.filter(|s| {
-            s.z_fit == z_fit
-                && s.nu == nu
-                && s.corner.as_ref().map(|c| c.count()) == corner.as_ref().map(|c| c.count())
+        let corner_cols = corner.as_ref().map_or_else(Vec::new, |cl| {
+            cl.tractions(a, &z_fit)
+                .iter()
+                .flat_map(|t| {
+                    let mut sr = Vec::new();
+                    let mut tau = Vec::new();
+                    for c in t {
+                        sr.extend([c[0].re, c[0].im, c[1].re, c[1].im]);
+                        tau.extend([c[2].re, c[2].im, c[3].re, c[3].im]);
+                    }
+                    sr.extend(tau);
+                    sr
+                })
+                .collect()
         });
-        let corner_cols = match same_fit {
-            Some(s) => s.corner_cols.clone(),
-            None => corner_columns(corner.as_ref(), a, &z_fit),
-        };
         // Chebyshev points of the first kind on [−D, D]; the upper half are integrated
         let m = params.heights;
         let theta = |j: usize| PI * (j as f64 + 0.5) / m as f64;
@@ -379,25 +388,4 @@ impl Setup {
             .as_ref()
             .map_or(f64::NAN, |c| c.eval(r).value)
     }
-}
-
-/// The corner fields' σ_r and τ_rz columns at the fit heights `z_fit` on the hole r = A (per
-/// height: the σ_r columns, then the τ_rz ones; real and imaginary parts of each term's two
-/// fields), empty without corner terms.
-fn corner_columns(corner: Option<&CornerLoads>, a: f64, z_fit: &[f64]) -> Vec<f64> {
-    corner.map_or_else(Vec::new, |cl| {
-        cl.tractions(a, z_fit)
-            .iter()
-            .flat_map(|t| {
-                let mut sr = Vec::new();
-                let mut tau = Vec::new();
-                for c in t {
-                    sr.extend([c[0].re, c[0].im, c[1].re, c[1].im]);
-                    tau.extend([c[2].re, c[2].im, c[3].re, c[3].im]);
-                }
-                sr.extend(tau);
-                sr
-            })
-            .collect()
-    })
 }

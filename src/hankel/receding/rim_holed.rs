@@ -29,7 +29,9 @@
 //! root), plus the changes of the finite-C R_o when both S_∞ and S₂ are solved with ⌈3n/4⌉
 //! Nyström points and, on a second setup, with 2/3 of the Chebyshev heights (each one Newton
 //! step from R_o, the slope a secant through the search's edge values within 1e-5…1e-2 D of
-//! R_o, else a difference over 1e-3 D), plus the rim
+//! R_o, else a difference over 1e-3 D; solved at the search's last radius x when R_o was
+//! extrapolated from it, the change then −(f_v(x) − f(x))/f′ as module `holed_search`'s
+//! estimate), plus the rim
 //! residue's D·e^(−4.21(C − R_o)/D) ([`super::rim`]). That bound, against the FE meshed to C
 //! at --tol 1e-5 on (A/D, B/A) = (1, 2.2) (`tests/hankel/two_plate_rim_decay.rs`, ignored):
 //! at C − R_o = 0.6, 1.0, 1.5, 2.0 D, |FE − this| = 3.7e-4, 2.3e-5, 9.2e-7, 7.7e-7 D against
