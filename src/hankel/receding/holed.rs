@@ -126,25 +126,6 @@
 //! 23–24). R_o moved ≤ 4.6e-10 R_o at 1e-6 except (0.5, 1.3), 5.3e-8 (its modes 16 → 32).
 //! The 10 ms at 1e-6 is still 35–75× off (0.35–0.77 s per row).
 //!
-//! **The variants at the search's last radius** (the round after): where the search
-//! extrapolated R_o from its last radius x (module `holed_search`), the estimate's variants
-//! are solved at x, so the fewer-nodes variant takes the tables the setup kept there; the
-//! modes variant takes the setup's hole tables (its hole ξ-rule, heights and tail are the
-//! run's). Solves per row unchanged (7–9 at 1e-6, 4–5 at 1e-3, 17–19 at 1e-6 with
-//! C = 1.54 in). All twelve rows, main's binary (a88b227) and this one by turns per row, three
-//! rounds, the median CPU (user + sys), load 2.3–3.2 on the 2 cores: at 1e-6, C = ∞,
-//! 2.93 → 2.64 s in total (1.11×; 0.17–0.41 s per row against 0.19–0.37 s); at 1e-3,
-//! 0.53 → 0.53 s (1.00×, 0.03–0.06 s per row); at 1e-6, C = 1.54 in, 8.43 → 7.90 s (1.07×,
-//! 0.53–1.12 s per row against 0.56–1.16 s). R_o the same to the last digit on every row at
-//! all three; the estimates the same but on (1, 3.1) at 1e-6 (3.85e-10 → 3.76e-10 R_o; at
-//! C = 1.54 in 5.44e-10 → 5.35e-10) and (0.5, 1.6) at 1e-3 (1.30e-4 → 1.18e-4 R_o: the
-//! variants' changes at R_o had held the extrapolated root's own error, 1.6e-6 in, which the
-//! root tolerance, 1e-4 D = 2e-5 in, counts apart). The tiers' survey after it
-//! (`tests/hankel/two_plate_hole_tiers.rs`, 40 random geometries): error/estimate at most
-//! 0.37, 0.37, 0.39, 0.21 at 1e-3 … 1e-6, as before, converged on 40, 40, 39, 40; the rim
-//! survey at most 0.16 (1e-3) and 0.76 (1e-6; 0.75 before). At 1e-6 the 10 ms is
-//! 17–41× off.
-//!
 //! **Where the time goes** (row (1, 1.3) at 1e-6, one thread, `perf record`): 6 search radii
 //! and 2 of the estimate's variants, of which the fewer-nodes variant (at R_o, where the search
 //! ended) now takes the search's tables. Per radius the tables of module `crack_tables`
@@ -152,10 +133,7 @@
 //! (12 %), the Nyström rule's cosine tables on the t-rule and H_l's weights; then a few Anderson-accelerated crack iterations (32 over the 8 radii);
 //! per geometry the setup
 //! (16 %: the bilateral plate of each variant 5 %, the slab's midplane curve, the corner
-//! table) and the hole tables' panels (9 %, module `hole_tables`). With the variants at the
-//! search's last radius (same row, three runs of each binary, shares of each one's samples):
-//! the estimate 43 % → 35 %, its radius tables 30 % → 24 %, its hole-table panels 16 % →
-//! 11 % (the heights and ξ_l variants' own); the search 19 → 22 %, the setup 15 → 17 %.
+//! table) and the hole tables' panels (9 %, module `hole_tables`).
 //!
 //! **This round.** (a) The hole's part of every iteration through tables independent of c
 //! (module `hole_tables`): σ_r, τ_rz at the Chebyshev heights per unit Abel function at t and
@@ -189,6 +167,29 @@
 //! record`): the hole tables' panels 20 %, the crack iterations 14 %, the Nyström rule's cosine rows on the t-rule 10 %, the J₀ rows of
 //! l's transform 9 %, the modes at the s-rule 6 %, H_l's weights 4 %; per setup the bilateral
 //! plate, its fit and the slab's midplane curve about 24 %.
+//!
+//! **The variants at the search's last radius** (2026-11-25, after the tables round): where
+//! the search extrapolated R_o from its last radius x (module `holed_search`), the
+//! estimate's variants are solved at x, so the fewer-nodes variant takes the tables the setup
+//! kept there; the modes variant takes the setup's hole tables (its hole ξ-rule, heights and
+//! tail are the run's). Solves per row unchanged (7–9 at 1e-6, 4–5 at 1e-3, 17–19 at 1e-6
+//! with C = 1.54 in). All twelve rows, main's binary (94a0563) and this one by turns per row,
+//! three rounds, the median CPU (user + sys), load 2.1–2.8 on the 2 cores: at 1e-6, C = ∞,
+//! 2.43 → 2.19 s in total (1.11×; 0.15–0.27 s per row against 0.16–0.31 s); at 1e-3,
+//! 0.46 → 0.43 s (1.07×, 0.03–0.05 s per row); at 1e-6, C = 1.54 in, 7.68 → 7.27 s (1.06×,
+//! 0.45–1.10 s per row against 0.50–1.10 s). R_o the same bit for bit on every row at all
+//! three; the estimates the same but on (1, 3.1) at 1e-6 (3.85e-10 → 3.76e-10 R_o; at
+//! C = 1.54 in 5.44e-10 → 5.35e-10) and (0.5, 1.6) at 1e-3 (1.30e-4 → 1.18e-4 R_o: the
+//! variants' changes at R_o had held the extrapolated root's own error, 1.6e-6 in, which the
+//! root tolerance, 1e-4 D = 2e-5 in, counts apart); at 1e-8 (C = ∞, one round, the tiers' survey
+//! beside) R_o bit for bit, the estimates within 0.3 %, 7.77 → 6.78 s. The tiers' survey after it
+//! (`tests/hankel/two_plate_hole_tiers.rs`, 40 random geometries): error/estimate at most
+//! 0.37, 0.37, 0.39, 0.21 at 1e-3 … 1e-6, as before, converged on 40, 40, 39, 40; the rim
+//! survey at most 0.16 (1e-3) and 0.76 (1e-6; 0.75 before). At 1e-6 the 10 ms is
+//! 15–27× off. Row (1, 1.3) at 1e-6, one thread, `perf record`, three runs of each binary
+//! (shares of each one's samples): the estimate 42 % → 35 %, its radius tables 27 % → 21 %,
+//! its hole-table panels 14 % → 10 % (now the heights and ξ_l variants' own); the search
+//! 20 → 22 %, the setup 16 → 18 %.
 //!
 //! **Next** (structural; not done): the Nyström ξ-rule fixed per table epoch (its ω from the
 //! epoch's largest c, as the hole rule's) with the J₀ rows of l's transform and its cosine

@@ -68,7 +68,7 @@
 //!
 //! The variants at the search's last radius, when R_o was extrapolated from it (the fewer-nodes
 //! variant on the tables kept there), and the modes variant on the setup's hole tables: the
-//! same solves, 1.11× less CPU in total at 1e-6 (C = ∞), 1.00× at 1e-3, 1.07× at 1e-6 with
+//! same solves, 1.11× less CPU in total at 1e-6 (C = ∞), 1.07× at 1e-3, 1.06× at 1e-6 with
 //! C = 1.54 in, R_o unchanged (module [`super::holed`]'s Cost, by turns with main's binary).
 //!
 //! **Why still four radii.** Traced at 1e-6 on Table 1 (C = ∞): the search takes four radii on
