@@ -5,8 +5,11 @@
 //! **What is computed.** For nodes s = m_p + δ_j (panel midpoints m_p = a + (p + ½)h, offsets
 //! δ_j = ½h·x_j of the 20-point rule, the same floating-point nodes as
 //! `system::panels`) and one ξ: cos ξs and sin ξs by the addition theorem from
-//! the per-panel and per-offset values; cos ξs − 1 = A + B + AB − sin ξm_p sin ξδ_j with
-//! A = cos ξm_p − 1, B = cos ξδ_j − 1 (each without cancellation; the sum loses at most a factor
+//! the per-panel and per-offset values (with more than 8 panels, the per-panel values of every
+//! 8th panel m_a from `sin_cos` and of the 7 after it by one rotation each, by ξjh, j = 1 … 7:
+//! no chain of rotations, so no accumulated error); cos ξs − 1 = A + B + AB − sin ξm_p sin ξδ_j
+//! with A = cos ξm_p − 1, B = cos ξδ_j − 1, each −sin²/(1 + cos) from the same sine and cosine
+//! where the cosine is positive, else directly (no cancellation either way; the sum loses at most a factor
 //! (m_p/s)² ≤ 16 of relative accuracy, since nodes with |s| < |m_p|/4 are computed directly);
 //! J₀(x) for x ≥ 25 from Hankel's asymptotic expansion
 //! (Abramowitz & Stegun 9.2.5, 9.2.9–10):
@@ -35,7 +38,8 @@
 //!
 //! # Cost
 //!
-//! One sin/cos pair per panel and per offset, a few multiplications per entry, and for J₀ the
+//! One sin/cos pair per offset and per panel (per 8 panels and 7 more per row beyond 8 panels),
+//! a few multiplications per entry, and for J₀ the
 //! 18 terms of the series by Horner's rule (about 3× faster than summing term by term to a
 //! threshold: the J₀ rows of the holed route fell from 45 to 15 ms per radius); from 2 to 25
 //! the table's 12 steps of Clenshaw's recurrence instead of libm's sin, cos and rational
@@ -67,6 +71,8 @@ const ASYMPTOTIC_FROM: f64 = 25.0;
 /// s = m_p + δ_j that the rows use.
 #[derive(Debug, Clone)]
 pub struct PanelGrid {
+    /// The panels' width h and midpoints m_p.
+    width: f64,
     mids: Vec<f64>,
     offsets: Vec<f64>,
     nodes: Vec<f64>,
@@ -82,12 +88,25 @@ fn cos_m1(x: f64) -> f64 {
     -2.0 * s * s
 }
 
-/// (cos x, cos x − 1) from one `sin_cos`: cos x − 1 = −sin²x/(1 + cos x) without cancellation
-/// where cos x > 0, and directly where cos x ≤ 0 (then |cos x − 1| ≥ 1).
+/// cos x − 1 from sin x and cos x: −sin²x/(1 + cos x) without cancellation where cos x > 0,
+/// and directly where cos x ≤ 0 (then |cos x − 1| ≥ 1).
+fn m1_of(s: f64, c: f64) -> f64 {
+    if c > 0.0 {
+        -s * s / (1.0 + c)
+    } else {
+        c - 1.0
+    }
+}
+
+/// (cos x, cos x − 1) from one `sin_cos` ([`m1_of`]).
 pub(super) fn cos_and_m1(x: f64) -> (f64, f64) {
     let (s, c) = x.sin_cos();
-    (c, if c > 0.0 { -s * s / (1.0 + c) } else { c - 1.0 })
+    (c, m1_of(s, c))
 }
+
+/// Panels per anchor of [`PanelGrid::mid_trig`]: every 8th midpoint from `sin_cos`, the 7 after
+/// it by one rotation each.
+const ANCHOR_EVERY: usize = 8;
 
 /// J₀(x) − 1 without cancellation at small x.
 pub(super) fn j0_m1(x: f64) -> f64 {
@@ -128,6 +147,7 @@ impl PanelGrid {
             })
             .collect();
         Self {
+            width: h,
             mids,
             offsets,
             nodes,
@@ -163,12 +183,11 @@ impl PanelGrid {
             .iter()
             .map(|&o| {
                 let (s, c) = (xi * o).sin_cos();
-                (c, s, cos_m1(xi * o))
+                (c, s, m1_of(s, c))
             })
             .collect();
-        for (p, &m) in self.mids.iter().enumerate() {
-            let (sm, cm) = (xi * m).sin_cos();
-            let am = cos_m1(xi * m);
+        for (p, (&m, (sm, cm))) in self.mids.iter().zip(self.mid_trig(xi)).enumerate() {
+            let am = m1_of(sm, cm);
             for (j, &(co, so, bo)) in offs.iter().enumerate() {
                 let c = cm * co - sm * so;
                 let s = sm * co + cm * so;
@@ -183,6 +202,27 @@ impl PanelGrid {
                 f(i, c, s, m1);
             }
         }
+    }
+
+    /// (sin ξm_p, cos ξm_p) at every panel midpoint: with more than [`ANCHOR_EVERY`] panels,
+    /// every 8th (the anchor m_a) from `sin_cos` and the 7 after it by the addition theorem
+    /// with ξjh (j = 1 … 7, one `sin_cos` each per row) — one rotation from an anchor, so the
+    /// error does not accumulate: a few ulp, as the rounding of ξm_p itself.
+    fn mid_trig(&self, xi: f64) -> Vec<(f64, f64)> {
+        if self.mids.len() <= ANCHOR_EVERY {
+            return self.mids.iter().map(|&m| (xi * m).sin_cos()).collect();
+        }
+        let steps: [(f64, f64); ANCHOR_EVERY] =
+            std::array::from_fn(|j| (xi * (j as f64 * self.width)).sin_cos());
+        let mut out = Vec::with_capacity(self.mids.len());
+        for chunk in self.mids.chunks(ANCHOR_EVERY) {
+            let (sa, ca) = (xi * chunk[0]).sin_cos();
+            out.push((sa, ca));
+            for &(sj, cj) in &steps[1..chunk.len()] {
+                out.push((sa * cj + ca * sj, ca * cj - sa * sj));
+            }
+        }
+        out
     }
 
     /// `cos` ← cos ξs and `cos_m1` ← cos ξs − 1 at every node.
@@ -212,8 +252,7 @@ impl PanelGrid {
             .collect();
         let reach = self.offsets.iter().fold(0.0f64, |r, o| r.max(o.abs()));
         let scale = (1.0 / (8.0 * xi), (2.0 / (PI * xi)).sqrt());
-        for (p, &m) in self.mids.iter().enumerate() {
-            let (sm, cm) = (xi * m).sin_cos();
+        for (p, (&m, (sm, cm))) in self.mids.iter().zip(self.mid_trig(xi)).enumerate() {
             let at = 20 * p..20 * (p + 1);
             let (out, nodes, inv) = (&mut out[at.clone()], &self.nodes[at.clone()], &self.inv[at]);
             // cos ξs and sin ξs by the addition theorem, as in `for_each`
