@@ -17,7 +17,9 @@
 //! Per contact radius the tables of module `crack_tables` (a setup keeps the last radius's),
 //! then a few Anderson-accelerated iterations (32 over the 8 radii of (1, 1.3) at 1e-6;
 //! warm-started from a nearby radius's
-//! correction), each a Nyström solve of n + 1 unknowns, the cosine tables' sums and the hole's
+//! correction), each a Nyström solve of n + 1 unknowns with the matrix built and LU-factored
+//! once per radius (module `system`'s `NystromMatrix`: only α, β and the total change between
+//! iterations; the same arithmetic, R_o bit for bit), the cosine tables' sums and the hole's
 //! part through module `hole_tables` (2nz sums over the t- and s-rule instead of sums over the
 //! hole rule); timed by example 19 (breakdown in [`super::holed`]'s Cost).
 
@@ -28,7 +30,7 @@ use super::grid::{dot, PanelInterp};
 use super::holed_params::HoledParams;
 use super::holed_setup::{Crack, Setup};
 use super::prescribed::Prescribed;
-use super::system::{panels, Nystrom};
+use super::system::{panels, Nystrom, NystromMatrix};
 use crate::hankel::hole::fit::{fit, Boundary, Fit, HoleData};
 use std::f64::consts::FRAC_2_PI;
 
@@ -84,6 +86,8 @@ impl Setup {
         // the last solve and the l and correction it was solved with (for the pressure)
         let mut state: Option<(Nystrom, Vec<f64>, Option<Fit>)> = None;
         let mut accel = (params.anderson > 0).then(|| Anderson::new(params.anderson));
+        // the Nyström matrix depends on the radius only: factored once for every iteration
+        let matrix = NystromMatrix::new(tb.rule.clone(), c, n);
         for it in 1..=params.max_iterations {
             let l: Vec<f64> = (0..s_rule.len())
                 .map(|i| {
@@ -123,15 +127,9 @@ impl Setup {
                     beta[k] -= b_r[k] * f[k].1;
                 }
             }
-            let sys = Nystrom::solve_general(
-                tb.rule.clone(),
-                c,
-                n,
-                -l0 - hl_total - f_total,
-                &alpha,
-                &beta,
-            )
-            .ok_or(RecedingError::Singular { c })?;
+            let sys = matrix
+                .solve(-l0 - hl_total - f_total, &alpha, &beta)
+                .ok_or(RecedingError::Singular { c })?;
             let (c0, g, h) = sys.series();
             // φ = ψ + H_l, ψ(t) = C₀ + Σ_k [g_k (cos ξ_k t − 1) − h_k cos ξ_k t]
             let mut phi: Vec<f64> = hl.iter().map(|h| c0 + h).collect();

@@ -131,6 +131,86 @@ pub(crate) fn cos_m1(x: f64) -> f64 {
     -2.0 * s * s
 }
 
+/// The Nyström system's matrix for one rule, contact radius c and n-point s-rule, factored
+/// once: [`Self::solve`] takes any right-hand side of [`Nystrom::solve_general`]'s form (the
+/// holed route's crack iteration changes only α, β and the total between its solves).
+pub(crate) struct NystromMatrix {
+    rule: XiRule,
+    c: f64,
+    /// The s-rule's weights ω_j, and cos ξ_k s_j, cos ξ_k s_j − 1 (row j, column k).
+    om: Vec<f64>,
+    cm: DMatrix<f64>,
+    vm: DMatrix<f64>,
+    lu: nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>,
+}
+
+impl NystromMatrix {
+    /// The matrix of the discretised equation (the bordered system of φ_j and C₀), LU-factored.
+    pub(crate) fn new(rule: XiRule, c: f64, n: usize) -> Self {
+        let gl = gauss_legendre(n);
+        let s: Vec<f64> = gl.iter().map(|&(x, _)| 0.5 * c * (1.0 + x)).collect();
+        let om: Vec<f64> = gl.iter().map(|&(_, w)| 0.5 * c * w).collect();
+        let m = rule.len();
+        let cm = DMatrix::from_fn(n, m, |i, k| (rule.xi[k] * s[i]).cos());
+        let vm = DMatrix::from_fn(n, m, |i, k| cos_m1(rule.xi[k] * s[i]));
+        let mut ca = cm.clone();
+        let mut vb = vm.clone();
+        for k in 0..m {
+            ca.column_mut(k).scale_mut(rule.a[k]);
+            vb.column_mut(k).scale_mut(rule.b[k]);
+        }
+        let kmat = &ca * cm.transpose() + &vb * vm.transpose();
+        let mut sys = DMatrix::zeros(n + 1, n + 1);
+        for i in 0..n {
+            for j in 0..n {
+                sys[(i, j)] = kmat[(i, j)] * om[j];
+            }
+            sys[(i, i)] += 1.0;
+            sys[(i, n)] = -1.0;
+            sys[(n, i)] = om[i];
+        }
+        Self {
+            rule,
+            c,
+            om,
+            cm,
+            vm,
+            lu: sys.lu(),
+        }
+    }
+
+    /// The system solved for the right-hand side f(t) = Σ_m [α_m cos ξ_m t + β_m (cos ξ_m t − 1)]
+    /// and ∫₀^c φ = `total`; `None` if the matrix is singular.
+    pub(crate) fn solve(&self, total: f64, alpha: &[f64], beta: &[f64]) -> Option<Nystrom> {
+        let (n, m) = (self.om.len(), self.rule.len());
+        let f = &self.vm * DVector::from_column_slice(beta)
+            + &self.cm * DVector::from_column_slice(alpha);
+        let mut rhs = DVector::zeros(n + 1);
+        for i in 0..n {
+            rhs[i] = f[i];
+        }
+        rhs[n] = total;
+        let sol = self.lu.solve(&rhs)?;
+        let wphi = DVector::from_fn(n, |j, _| self.om[j] * sol[j]);
+        let q_bar = self.cm.transpose() * &wphi;
+        let w_hat = self.vm.transpose() * &wphi;
+        let g = (0..m)
+            .map(|k| beta[k] - self.rule.b[k] * w_hat[k])
+            .collect();
+        let h = (0..m)
+            .map(|k| self.rule.a[k] * q_bar[k] - alpha[k])
+            .collect();
+        Some(Nystrom {
+            c: self.c,
+            rule: self.rule.clone(),
+            c0: sol[n],
+            g,
+            h,
+            abel_rule: std::sync::OnceLock::new(),
+        })
+    }
+}
+
 /// The solved Nyström system for one contact radius c.
 #[derive(Debug, Clone)]
 pub(crate) struct Nystrom {
@@ -168,46 +248,7 @@ impl Nystrom {
         alpha: &[f64],
         beta: &[f64],
     ) -> Option<Self> {
-        let gl = gauss_legendre(n);
-        let s: Vec<f64> = gl.iter().map(|&(x, _)| 0.5 * c * (1.0 + x)).collect();
-        let om: Vec<f64> = gl.iter().map(|&(_, w)| 0.5 * c * w).collect();
-        let m = rule.len();
-        let cm = DMatrix::from_fn(n, m, |i, k| (rule.xi[k] * s[i]).cos());
-        let vm = DMatrix::from_fn(n, m, |i, k| cos_m1(rule.xi[k] * s[i]));
-        let mut ca = cm.clone();
-        let mut vb = vm.clone();
-        for k in 0..m {
-            ca.column_mut(k).scale_mut(rule.a[k]);
-            vb.column_mut(k).scale_mut(rule.b[k]);
-        }
-        let kmat = &ca * cm.transpose() + &vb * vm.transpose();
-        let f = &vm * DVector::from_column_slice(beta) + &cm * DVector::from_column_slice(alpha);
-        let mut sys = DMatrix::zeros(n + 1, n + 1);
-        let mut rhs = DVector::zeros(n + 1);
-        for i in 0..n {
-            for j in 0..n {
-                sys[(i, j)] = kmat[(i, j)] * om[j];
-            }
-            sys[(i, i)] += 1.0;
-            sys[(i, n)] = -1.0;
-            rhs[i] = f[i];
-            sys[(n, i)] = om[i];
-        }
-        rhs[n] = total;
-        let sol = sys.lu().solve(&rhs)?;
-        let wphi = DVector::from_fn(n, |j, _| om[j] * sol[j]);
-        let q_bar = cm.transpose() * &wphi;
-        let w_hat = vm.transpose() * &wphi;
-        let g = (0..m).map(|k| beta[k] - rule.b[k] * w_hat[k]).collect();
-        let h = (0..m).map(|k| rule.a[k] * q_bar[k] - alpha[k]).collect();
-        Some(Self {
-            c,
-            rule,
-            c0: sol[n],
-            g,
-            h,
-            abel_rule: std::sync::OnceLock::new(),
-        })
+        NystromMatrix::new(rule, c, n).solve(total, alpha, beta)
     }
 
     /// The contact radius c this system was solved for.
