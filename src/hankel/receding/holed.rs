@@ -191,6 +191,32 @@
 //! its hole-table panels 14 % → 10 % (now the heights and ξ_l variants' own); the search
 //! 20 → 22 %, the setup 16 → 18 %.
 //!
+//! **Tables round 2** (2026-11-25; modules `grid`, `system`, `crack`): the crack iteration's
+//! Nyström matrix (its n × m cosine tables, the kernel product and the LU) built once per
+//! radius instead of once per iteration (the same arithmetic: R_o of row (1, 1.3) at 1e-6
+//! identical to the last digit with and without it); the panel grids' per-panel sines and
+//! cosines beyond 8 panels from every 8th panel and one rotation each, cos − 1 of offsets and
+//! midpoints from the same sine and cosine instead of another sin call. All twelve Table 1
+//! rows, main's binary (f139e81) and this one by turns, two rounds, load 3.5–4.1 on the 2
+//! cores (total CPU per round): at 1e-6, C = ∞, 2.28–2.32 → 2.17–2.19 s (1.05–1.06×; per row
+//! 0.14–0.30 → 0.14–0.28 s); at 1e-3, 0.45–0.46 → 0.45–0.47 s (no gain within the noise,
+//! 0.96–1.02×); at 1e-6, C = 1.54 in, 7.44–7.52 → 6.99–7.04 s (1.06–1.08×; per row 0.46–1.13
+//! → 0.42–0.97 s). The same solves per row (7–9, 4–5, 17–19), every row converged; R_o moved
+//! ≤ 5.1e-13 of R_o at 1e-6 (≤ 1.4e-6 of its estimate), ≤ 1.5e-11 at C = 1.54 in (4.1e-5 of
+//! its estimate), at 1e-3 ≤ 1.4e-13 except (0.75, 1.6), 8.5e-10 (6.3e-6 of its estimate, the
+//! row and amount of the first tables round: a round-off's different search step); estimates
+//! within 8.4e-5 of themselves. Row (1, 1.3) at 1e-6, one thread (`perf stat`, five runs of
+//! each binary by turns, two rounds, load ~1.1): 843–889 → 789–818 ms. What is left of the
+//! trigonometry (libm's sin and sin/cos pairs, 12.5 % of that row's samples, `perf record`):
+//! mostly cos ξt − 1 computed directly at the 5 nodes per cosine row nearest t = 0 (where the
+//! addition theorem would cancel), the cosine and J₀ rows' per-offset pairs, the panels'
+//! anchors and rotations, and per setup the corner table's Bessel K and the eigenmodes'
+//! fields; the J₀ rows' own arithmetic 8.7 %, the crack iterations' sums 5.1 %, libm's J₀
+//! (mostly the slab's midplane curve) 4.5 %.
+//! The tiers' survey (`two_plate_hole_tiers`, 40 random geometries, 40 s at load ~1.5):
+//! error/estimate at most 0.37, 0.37, 0.39, 0.21 at 1e-3 … 1e-6, converged on 40, 40, 39, 40,
+//! as before.
+//!
 //! **Next** (structural; not done): the Nyström ξ-rule fixed per table epoch (its ω from the
 //! epoch's largest c, as the hole rule's) with the J₀ rows of l's transform and its cosine
 //! tables on fixed panels, only the partial panel at c rebuilt (the s-rule's first panel must
