@@ -110,6 +110,17 @@ pub(crate) fn survey_n(default: usize) -> usize {
 /// narrow loads on thick plates, A/D 0.34–0.58, B/A 1.18–1.35, estimates 1.1e-6 … 1.5e-5,
 /// errors 4.9e-9 … 1.5e-8. The tier's first choice for 1e-5 (12 modes, 16 heights, ξ_l 18/D,
 /// tail 9D) converged on all 40 with the error up to 0.66 of its estimate.
+///
+/// Re-measured 2026-11-25 (46 s, idle machine) on main after the tier for 1e-6 doubles its
+/// modes to 2e-6 P and splits its variants, the Newton search, the hole tables and the variants
+/// at the search's last radius: largest error/estimate 0.37, 0.37, 0.39, 0.21 for 1e-3 … 1e-6
+/// (the 0.16 above was stale before that: 0.23 on (0.649, 1.181) with the scan's binary);
+/// largest estimates 5.8e-4, 4.3e-5, 1.6e-5, 6.4e-7 of R_o; converged on 40, 40, 39, 40 (at
+/// 1e-5 still (0.341, 1.175): error 1.6e-6, estimate 1.6e-5 of R_o, its half-modes variant).
+/// With the tier for 1e-5's modes doubled to 2e-6 P as the tier for 1e-6's (module
+/// `holed_params`; 45 s): largest error/estimate 0.37, 0.37, 0.39, 0.21, largest estimates
+/// 5.8e-4, 4.3e-5, 1.0e-6, 6.4e-7 of R_o, converged on 40 of 40 at every tier ((0.341, 1.175)
+/// at 1e-5: error 3.5e-8, estimate 3.9e-7).
 #[test]
 #[ignore = "survey: about 2.5 s per geometry (SURVEY_N, default 40)"]
 fn random_geometries_are_within_every_tiers_estimate() {
