@@ -217,6 +217,22 @@
 //! error/estimate at most 0.37, 0.37, 0.39, 0.21 at 1e-3 … 1e-6, converged on 40, 40, 39, 40,
 //! as before.
 //!
+//! **Tables round 3** (2026-11-25; module [`crate::hankel::midplane`]): the slab's midplane
+//! curve, built per setup, takes its J₀(ξ_i r) as rows of the panel grid's J₀ (table below 25,
+//! Hankel's expansion beyond, the sines and cosines by the addition theorem) instead of
+//! [`libm::j0`] at every ξ-node and radius: its share of row (1, 1.3) at 1e-6 (one thread,
+//! `perf record`) 7.0 % → 1.1 %, libm's J₀ 3.6 % → 0.5 %. All twelve Table 1 rows, main's
+//! binary (889b72e) and this one by turns per row (`perf stat`, 3 runs each, task-clock
+//! summed over the rows), two rounds, load 1.1–1.5 on the 2 cores: at 1e-6, C = ∞,
+//! 2.91–2.39 → 2.66–2.23 s (1.07–1.10×); at 1e-3, 0.59–0.54 → 0.51–0.48 s (1.13–1.17×; the
+//! curve is per setup, a larger part of the fewer solves); at 1e-6, C = 1.54 in
+//! (`/usr/bin/time`, whole sets by turns) 8.50–7.58 → 8.50–7.05 s (1.00–1.08×, within the
+//! noise). The same solves per row (7–9, 4–5, 17–19), every row converged; R_o moved
+//! ≤ 6.3e-13 of R_o at 1e-6 (≤ 9.6e-6 of its estimate), ≤ 2.1e-13 at 1e-3 (≤ 7.7e-10 of its
+//! estimate), ≤ 2.0e-11 at C = 1.54 in (≤ 4.9e-5 of its estimate); the `slab --curve` values
+//! of four geometries ≤ 2.3e-15 P against estimates of 1.2e-12 P. The hole tables' panels
+//! (`HoleTable::values`, 15–18 % of the row's samples) are unchanged.
+//!
 //! **Next** (structural; not done): the Nyström ξ-rule fixed per table epoch (its ω from the
 //! epoch's largest c, as the hole rule's) with the J₀ rows of l's transform and its cosine
 //! tables on fixed panels, only the partial panel at c rebuilt (the s-rule's first panel must
