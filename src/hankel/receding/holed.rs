@@ -231,7 +231,9 @@
 //! ≤ 6.3e-13 of R_o at 1e-6 (≤ 9.6e-6 of its estimate), ≤ 2.1e-13 at 1e-3 (≤ 7.7e-10 of its
 //! estimate), ≤ 2.0e-11 at C = 1.54 in (≤ 4.9e-5 of its estimate); the `slab --curve` values
 //! of four geometries ≤ 2.3e-15 P against estimates of 1.2e-12 P. The hole tables' panels
-//! (`HoleTable::values`, 15–18 % of the row's samples) are unchanged.
+//! (`HoleTable::values`, 15–18 % of the row's samples) are unchanged. The tiers' survey
+//! (`two_plate_hole_tiers`, 40 random geometries, 41 s at load ~1.5): error/estimate at most
+//! 0.37, 0.37, 0.39, 0.21 at 1e-3 … 1e-6, converged on 40 of 40 at every tier, as before.
 //!
 //! **Next** (structural; not done): the Nyström ξ-rule fixed per table epoch (its ω from the
 //! epoch's largest c, as the hole rule's) with the J₀ rows of l's transform and its cosine
