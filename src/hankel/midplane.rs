@@ -47,9 +47,9 @@
 
 use super::field::Slab;
 use super::kernel::midplane;
-use super::receding::grid::{dot, PanelGrid};
 use super::transform::LoadTransform;
 use crate::error::{positive, InputError};
+use crate::numerics::panel_grid::{dot, PanelGrid};
 use crate::numerics::quadrature::Estimate;
 use std::f64::consts::PI;
 

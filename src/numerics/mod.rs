@@ -8,6 +8,8 @@
 //! - [`integral_j0`]: Ji₀(x) = ∫₀^x J₀; [`bessel_i`], [`bessel_k`]: I₀, I₁, K₀, K₁ of complex
 //!   argument; [`bessel_nu`]: J_ν of complex order and Γ;
 //! - [`chebyshev`]: interpolation on the Chebyshev–Lobatto grid;
+//! - [`panel_grid`]: rows of cos ξs, cos ξs − 1 and J₀(ξs) over equal Gauss panels, and
+//!   interpolation on them (the holed two-plate route's tables, the slab's midplane rule);
 //! - [`convergence`]: level estimates, fitted rates and observed orders of refinement sequences;
 //! - [`random`]: a seeded generator (splitmix64) for reproducible studies.
 //!
@@ -34,6 +36,7 @@ pub mod bessel_nu;
 pub mod chebyshev;
 pub mod convergence;
 pub mod integral_j0;
+pub mod panel_grid;
 pub mod quadrature;
 pub mod random;
 pub mod root;

@@ -15,8 +15,6 @@ mod hole_fast;
 mod hole_profile;
 mod pair_cli;
 mod receding_contact;
-mod receding_grid;
-mod receding_grid_j0;
 mod receding_kernels;
 mod receding_pair;
 mod rim_moment_fields;

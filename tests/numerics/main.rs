@@ -3,6 +3,8 @@
 
 mod bessel_ik;
 mod bessel_j;
+mod panel_grid;
+mod panel_grid_j0;
 mod quadrature;
 mod root;
 mod secant;

@@ -26,12 +26,12 @@
 use super::anderson::{pack, unpack, Anderson};
 use super::contact::RecedingError;
 use super::endpoint::Endpoint;
-use super::grid::{dot, PanelInterp};
 use super::holed_params::HoledParams;
 use super::holed_setup::{Crack, Setup};
 use super::prescribed::Prescribed;
 use super::system::{panels, Nystrom, NystromMatrix};
 use crate::hankel::hole::fit::{fit, Boundary, Fit, HoleData};
+use crate::numerics::panel_grid::{dot, PanelInterp};
 use std::f64::consts::FRAC_2_PI;
 
 impl Setup {

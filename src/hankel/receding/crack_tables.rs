@@ -22,9 +22,9 @@
 //! let _ = (two_plate_hole, HoledParams::default());
 //! ```
 
-use super::grid::PanelInterp;
 use super::hole_tables::HoleTable;
 use super::system::XiRule;
+use crate::numerics::panel_grid::PanelInterp;
 use num_complex::Complex64;
 use std::sync::Arc;
 

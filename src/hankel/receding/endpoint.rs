@@ -23,7 +23,7 @@
 //! let _ = (two_plate_hole, HoledParams::default());
 //! ```
 
-use super::grid::PanelInterp;
+use crate::numerics::panel_grid::PanelInterp;
 
 /// l's values at the contact edge for the endpoint expansion of its transform (module docs
 /// of [`super::holed`]): l(c), l′(c) and f = (s l′)′ = l′ + s l″ at c.

@@ -16,7 +16,7 @@
 //! iteration). G_j and H_j depend on the geometry only; they are tabulated on 20-point
 //! Gauss–Legendre panels of width 2.5π/ξ_max from 0 (ξ_max the rule's end for G, ξ_l for H),
 //! each panel computed the first time a radius needs it, and interpolated (barycentric
-//! formula, [`super::grid::PanelInterp`]) at each radius's t- and s-rule. The hole ξ-rule is
+//! formula, [`crate::numerics::panel_grid::PanelInterp`]) at each radius's t- and s-rule. The hole ξ-rule is
 //! `Setup::hole_rule` (module `holed_setup`) for a radius c_hi = c + 2D beyond the first radius asked (it resolves
 //! every radius up to c_hi); a radius beyond c_hi starts a new table.
 //!
@@ -35,7 +35,7 @@
 //!
 //! # Cost
 //!
-//! A panel of G costs 20 cosines per ξ-node (the addition theorem of [`super::grid`]), of H 20
+//! A panel of G costs 20 cosines per ξ-node (the addition theorem of [`crate::numerics::panel_grid`]), of H 20
 //! J₀ values per node up to ξ_l; the first radius of a setup builds about twice the entries of
 //! the per-radius tables it replaces, later radii a panel or two (module [`super::holed`]'s
 //! Cost; example 19).
@@ -46,7 +46,7 @@
 //! let _ = (two_plate_hole, HoledParams::default());
 //! ```
 
-use super::grid::{j0_m1, PanelGrid, PanelInterp};
+use crate::numerics::panel_grid::{j0_m1, PanelGrid, PanelInterp};
 use nalgebra::DMatrix;
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -140,7 +140,7 @@ impl HoleTable {
 
     /// The panels `first..=last` of G (`bessel` false) or H, each 20 rows of 2nz values: the
     /// rows cos ξ_kt − 1 (or J₀(ξ_ks) − 1) over every node at once (the addition theorem of
-    /// [`super::grid`] shares its sines and cosines across panels), times the matrix w_k K_kj.
+    /// [`crate::numerics::panel_grid`] shares its sines and cosines across panels), times the matrix w_k K_kj.
     fn panels(&self, band: &Band, first: usize, last: usize, bessel: bool) -> Vec<Arc<Vec<f64>>> {
         let count = last + 1 - first;
         let grid = PanelGrid::equal(first as f64 * band.width, band.width, count);

@@ -148,11 +148,11 @@
 //! rounds (3.5× in total): wider Nyström panels and a shorter graded cap, the
 //! Anderson-accelerated iteration, the corner table, rayon over table rows and the two
 //! variants, H_l's weights on the s-rule away from c, l's transform beyond ξ_l by its endpoint
-//! expansion, J₀ by Horner's rule and a Chebyshev table ([`super::grid`]), the search by
+//! expansion, J₀ by Horner's rule and a Chebyshev table ([`crate::numerics::panel_grid`]), the search by
 //! step-stopping inverse interpolation from B + 0.45D, each radius warm-started, the
 //! variants sharing the setup, the tolerance tiers.
 //!
-//! **Tables round** (2026-11-25; modules `grid`, `setup_tables`): J₀'s asymptotic expansion
+//! **Tables round** (2026-11-25; modules `numerics::panel_grid`, `setup_tables`): J₀'s asymptotic expansion
 //! with only the terms each panel's smallest argument needs and per-node reciprocals, the
 //! bilateral plate's modes at the s-rule from the correction's table of the same modes, the
 //! graded cap's cosines by the addition theorem along the Nyström rule's ξ-panels. All twelve
@@ -191,7 +191,7 @@
 //! its hole-table panels 14 % → 10 % (now the heights and ξ_l variants' own); the search
 //! 20 → 22 %, the setup 16 → 18 %.
 //!
-//! **Tables round 2** (2026-11-25; modules `grid`, `system`, `crack`): the crack iteration's
+//! **Tables round 2** (2026-11-25; modules `numerics::panel_grid`, `system`, `crack`): the crack iteration's
 //! Nyström matrix (its n × m cosine tables, the kernel product and the LU) built once per
 //! radius instead of once per iteration (the same arithmetic: R_o of row (1, 1.3) at 1e-6
 //! identical to the last digit with and without it); the panel grids' per-panel sines and

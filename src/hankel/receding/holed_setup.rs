@@ -32,7 +32,6 @@
 
 use super::contact::RecedingError;
 use super::crack_tables::RadiusTables;
-use super::grid::PanelInterp;
 use super::hole_tables::{HoleRule, HoleTable};
 use super::holed_params::HoledParams;
 use super::layer_field::bottom_kernels;
@@ -45,6 +44,7 @@ use crate::hankel::hole::{HoleParams, HolePlate};
 use crate::hankel::midplane::MidplaneCurve;
 use crate::hankel::transform::LoadTransform;
 use crate::joint::{OuterRadius, SinglePlate};
+use crate::numerics::panel_grid::PanelInterp;
 use rayon::prelude::*;
 use std::f64::consts::PI;
 use std::sync::{Arc, Mutex, OnceLock};

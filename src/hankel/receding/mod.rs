@@ -11,7 +11,6 @@
 //!   hole correction, iterated); `crack`: one trial contact radius of it;
 //! - [`rim_bending`]: the exact non-decaying states (membrane, bending) and the far field by
 //!   reciprocity; [`rim`]: the finite rim r = C of the plate without a hole;
-//! - [`grid`]: cosine and J₀ rows over equal Gauss panels, the holed route's tables;
 //! - [`contact`]: the solver ([`Layer::receding_contact`]) and its results (derivation,
 //!   accuracy and cost there).
 //!
@@ -41,7 +40,6 @@ pub mod contact;
 mod crack;
 mod crack_tables;
 mod endpoint;
-pub mod grid;
 mod hole_tables;
 pub mod holed;
 mod holed_infinite;

@@ -11,7 +11,7 @@
 //! interpolant against their sums (module `hole_tables`); the kept radius tables are the same
 //! tables, bit for bit (`tests/hankel/two_plate_hole_fast.rs`). The graded cap's cosines by
 //! the addition theorem along ξ differ from one `sin_cos` per entry by the rounding of the
-//! argument ξt (module `grid`'s Accuracy): on Table 1 R_o moved by at most 2.4e-13 of R_o at
+//! argument ξt (module `numerics::panel_grid`'s Accuracy): on Table 1 R_o moved by at most 2.4e-13 of R_o at
 //! 1e-6 (module [`super::holed`]'s Cost).
 //!
 //! # Cost
@@ -33,7 +33,6 @@
 
 use super::contact::RecedingError;
 use super::crack_tables::RadiusTables;
-use super::grid::{cos_and_m1, j0_m1, PanelGrid, PanelInterp};
 use super::hole_tables::HoleTable;
 use super::holed_params::HoledParams;
 use super::holed_setup::Setup;
@@ -42,6 +41,7 @@ use super::system::{panels, XiRule};
 use crate::hankel::hole::eigen::Mode;
 use crate::hankel::transform::LoadTransform;
 use crate::load::FaceLoad;
+use crate::numerics::panel_grid::{cos_and_m1, j0_m1, PanelGrid, PanelInterp};
 use num_complex::Complex64;
 use rayon::prelude::*;
 use std::f64::consts::{FRAC_2_PI, PI};
@@ -175,7 +175,7 @@ impl Setup {
         // ξ (rows in parallel: they are independent). On the graded cap, whose t are no panel
         // grid, by the addition theorem along the rule's ξ-panels instead (ξt = tξ), a column
         // per t: two sin/cos pairs per ξ-panel and offset instead of one per entry (the same
-        // values within the rounding of ξt, module `grid`); directly if the rule were no grid
+        // values within the rounding of ξt, module `numerics::panel_grid`); directly if the rule were no grid
         let xi_grid = Some(rule.grid()).filter(|g| g.nodes() == xi_r.as_slice());
         let cap: Vec<(Vec<f64>, Vec<f64>)> = graded
             .par_iter()

@@ -23,9 +23,9 @@
 //!
 //! One dense solve of the Nyström system per radius; example 06.
 
-use super::grid::PanelGrid;
 use super::layer::Stack;
 use crate::hankel::transform::LoadTransform;
+use crate::numerics::panel_grid::PanelGrid;
 use crate::numerics::quadrature::{gauss_legendre, panel};
 use nalgebra::{DMatrix, DVector};
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -109,7 +109,7 @@ impl XiRule {
     }
 
     /// The nodes as a panel grid, the same floating-point values (its rows of cos ξt by the
-    /// addition theorem along ξ: module `grid`).
+    /// addition theorem along ξ: module `numerics::panel_grid`).
     pub(crate) fn grid(&self) -> PanelGrid {
         PanelGrid::equal(0.0, self.h, self.xi.len() / 20)
     }

@@ -1,5 +1,5 @@
 //! Rows of cos ξs, cos ξs − 1 and J₀(ξs) over the nodes of equal Gauss–Legendre panels, for
-//! the holed two-plate model's transforms (module `crack`): the tables it rebuilds for every
+//! the holed two-plate model's transforms (module `hankel::receding::crack`): the tables it rebuilds for every
 //! trial contact radius, at a few flops per entry instead of a library call.
 //!
 //! **What is computed.** For nodes s = m_p + δ_j (panel midpoints m_p = a + (p + ½)h, offsets
@@ -33,7 +33,7 @@
 //!
 //! # Accuracy
 //!
-//! `tests/hankel/receding_grid.rs`: every row against the library functions evaluated at the
+//! `tests/numerics/panel_grid.rs`: every row against the library functions evaluated at the
 //! same nodes (cos, `libm::j0`), within the rounding of the argument ξs (a few ulp times x).
 //!
 //! # Cost
@@ -52,7 +52,7 @@
 //! rows' products with a vector, in four partial sums. The holed route's timing: example 19.
 //!
 //! ```
-//! use boltzone::hankel::receding::grid::PanelGrid;
+//! use boltzone::numerics::panel_grid::PanelGrid;
 //! let grid = PanelGrid::new(1.0, 3.0, 0.5);
 //! let mut row = vec![0.0; grid.len()];
 //! grid.j0_row(40.0, &mut row);
@@ -99,7 +99,7 @@ fn m1_of(s: f64, c: f64) -> f64 {
 }
 
 /// (cos x, cos x − 1) from one `sin_cos` ([`m1_of`]).
-pub(super) fn cos_and_m1(x: f64) -> (f64, f64) {
+pub(crate) fn cos_and_m1(x: f64) -> (f64, f64) {
     let (s, c) = x.sin_cos();
     (c, m1_of(s, c))
 }
@@ -109,7 +109,7 @@ pub(super) fn cos_and_m1(x: f64) -> (f64, f64) {
 const ANCHOR_EVERY: usize = 8;
 
 /// J₀(x) − 1 without cancellation at small x.
-pub(super) fn j0_m1(x: f64) -> f64 {
+pub(crate) fn j0_m1(x: f64) -> f64 {
     if x < 0.1 {
         let y = 0.25 * x * x;
         // −y + y²/4 − y³/36 + y⁴/576: the next term is < 1e-17 at x < 0.1

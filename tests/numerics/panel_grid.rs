@@ -1,8 +1,8 @@
-//! `hankel::receding::grid`: the rows of cos ξs, cos ξs − 1 and J₀(ξs) over equal Gauss panels
+//! `numerics::panel_grid`: the rows of cos ξs, cos ξs − 1 and J₀(ξs) over equal Gauss panels
 //! against the library functions evaluated at the same nodes (`f64::cos`, `libm::j0`, an
 //! independent rational-approximation implementation), within the rounding of the argument.
 
-use boltzone::hankel::receding::grid::PanelGrid;
+use boltzone::numerics::panel_grid::PanelGrid;
 
 /// The argument ξs carries a rounding of a few ulp of x, which moves cos ξs by that much and
 /// J₀ by that times its amplitude √(2/(πx)): the bound both rows are held to.

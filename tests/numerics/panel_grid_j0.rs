@@ -1,9 +1,9 @@
-//! `hankel::receding::grid`'s J₀ below x = 25 (from 2, a table of Chebyshev interpolants of
+//! `numerics::panel_grid`'s J₀ below x = 25 (from 2, a table of Chebyshev interpolants of
 //! degree 12 on unit intervals, built once; below 2, `libm::j0`) against a second method that shares nothing with it: Bessel's
 //! integral J₀(x) = (1/π)∫₀^π cos(x sin θ) dθ by the midpoint rule, whose error for a periodic
 //! analytic integrand is of the order of J₂ₙ(x) for n points (n = 96: below 1e-60 at x ≤ 25).
 
-use boltzone::hankel::receding::grid::PanelGrid;
+use boltzone::numerics::panel_grid::PanelGrid;
 
 /// Bessel's integral by the midpoint rule on 96 points.
 fn j0_bessel_integral(x: f64) -> f64 {
@@ -21,7 +21,7 @@ fn the_j0_table_equals_bessels_integral_below_25() {
     // visited about 40 times. The table's own error is ≤ 5e-18; the rest is rounding: of libm's
     // values at the Chebyshev points (carried with a Lebesgue constant under 2.5), and in the
     // integral of the argument x sin θ (a few ulp of x, moving the cosine by as much). Held to
-    // that argument's rounding, 4ε(1 + x) as in `receding_grid.rs`. Measured: the row at most
+    // that argument's rounding, 4ε(1 + x) as in `panel_grid.rs`. Measured: the row at most
     // 0.69 of it, the table (x ≥ 2) 0.21, libm's own J₀ 0.69.
     let grid = PanelGrid::new(0.0, 25.0, 0.5);
     let mut row = vec![0.0; grid.len()];
