@@ -235,6 +235,20 @@
 //! (`two_plate_hole_tiers`, 40 random geometries, 41 s at load ~1.5): error/estimate at most
 //! 0.37, 0.37, 0.39, 0.21 at 1e-3 … 1e-6, converged on 40 of 40 at every tier, as before.
 //!
+//! **The four rounds together** (2026-11-25, the session's first binary, a88b227, against main
+//! after them, b178692, by turns per row with `/usr/bin/time`, CPU user + sys, an idle machine,
+//! load ≤ 1.6): at 1e-6, C = ∞, 3.07–3.74 → 2.11–2.14 s for the twelve rows in two rounds
+//! (1.5×; per row 0.14–0.27 s); at 1e-3, 0.59–0.69 → 0.49–0.51 s (1.2–1.4×, 0.03–0.05 s per
+//! row); at 1e-6, C = 1.54 in, one round, 9.45 → 7.36 s (1.28×, 0.45–0.98 s per row). The same
+//! solves per row; R_o moved ≤ 7e-13 R_o at 1e-6, ≤ 7.9e-14 at 1e-3, ≤ 6.6e-12 at C = 1.54 in;
+//! every row converged, the largest estimates 3.6e-7, 2.8e-4, 5.3e-7 R_o. The FE two-plate
+//! model at --tol 1e-6 in the same session, same rows: 6.42 s (none converged, its 2e-5
+//! floor), so this route is 3.0× faster there, against the 20×; one geometry at
+//! 1e-6 is 14–27× the 10 ms. Of a row's time the bilateral holed plate alone (the
+//! single plate with the hole, `single --method hankel --tol 1e-6` on row (1, 1.3): 7 ms,
+//! its JSON `seconds`) is already most of that 10 ms, and the search and the estimate need 7–9 crack
+//! solves besides.
+//!
 //! **Next** (structural; not done): the Nyström ξ-rule fixed per table epoch (its ω from the
 //! epoch's largest c, as the hole rule's) with the J₀ rows of l's transform and its cosine
 //! tables on fixed panels, only the partial panel at c rebuilt (the s-rule's first panel must
