@@ -13,8 +13,8 @@
 //! r ≤ r_max. The nodes are a [`PanelGrid`]'s (equal panels from 0), so the J₀(ξ_i r) of one r
 //! are one row of [`PanelGrid::j0_row`] ([`libm::j0`] below 2, a Chebyshev table to 25, Hankel's
 //! expansion beyond with its sines and cosines by the addition theorem across the panels:
-//! within a few ulp times ξ_i r of [`libm::j0`], the rounding of the argument itself) and the
-//! sum is [`dot`]. Error estimate: the tail bound plus a rounding floor 50ε Σ|c_i|; the tests
+//! within a few ulp times ξ_i r of [`libm::j0`], the rounding of the argument itself), summed
+//! against the c_i panel by panel ([`PanelGrid::j0_dot`], no row of the rule's size). Error estimate: the tail bound plus a rounding floor 50ε Σ|c_i|; the tests
 //! check the rule against the adaptive quadrature of [`Slab::sigma_z`] and the real-space route.
 //!
 //! σ_z(r, 0) is real-analytic in r (the load is a distance D away): [`MidplaneCurve`]
@@ -49,7 +49,7 @@ use super::field::Slab;
 use super::kernel::midplane;
 use super::transform::LoadTransform;
 use crate::error::{positive, InputError};
-use crate::numerics::panel_grid::{dot, PanelGrid};
+use crate::numerics::panel_grid::PanelGrid;
 use crate::numerics::quadrature::Estimate;
 use std::f64::consts::PI;
 
@@ -182,9 +182,11 @@ impl MidplaneRule {
 
     /// σ_z(r, 0) with its error estimate; for r beyond r_max the error is infinite.
     pub fn eval(&self, r: f64) -> Estimate {
-        let mut row = vec![0.0; self.grid.len()];
-        self.grid.j0_row(r.abs(), &mut row);
-        let s = dot(&self.c, &row);
+        // J₀(ξ_i r) → 0 as r → ∞: an infinite r is 0 with an infinite error, as beyond r_max
+        let s = match r.is_finite() {
+            true => self.grid.j0_dot(r.abs(), &self.c),
+            false => 0.0,
+        };
         Estimate {
             value: -s,
             error: if r.abs() <= self.r_max {

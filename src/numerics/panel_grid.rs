@@ -242,6 +242,21 @@ impl PanelGrid {
     /// takes the asymptotic expansion with the fewest terms its smallest x allows (module
     /// docs), the others each node's branch.
     pub fn j0_row(&self, xi: f64, out: &mut [f64]) {
+        self.j0_panels(xi, |p, values| {
+            out[20 * p..20 * (p + 1)].copy_from_slice(values)
+        });
+    }
+
+    /// Σ_i w_i J₀(ξs_i) over the nodes (ξ ≥ 0): [`Self::j0_row`]'s values summed panel by panel,
+    /// without a row of the grid's size (the slab's midplane rule, one per radius).
+    pub fn j0_dot(&self, xi: f64, w: &[f64]) -> f64 {
+        let mut sum = 0.0;
+        self.j0_panels(xi, |p, values| sum += dot(&w[20 * p..20 * (p + 1)], values));
+        sum
+    }
+
+    /// J₀(ξs) at each panel's 20 nodes, handed to `each` with the panel's index (module docs).
+    fn j0_panels(&self, xi: f64, mut each: impl FnMut(usize, &[f64; 20])) {
         let offs: Vec<(f64, f64)> = self
             .offsets
             .iter()
@@ -254,7 +269,8 @@ impl PanelGrid {
         let scale = (1.0 / (8.0 * xi), (2.0 / (PI * xi)).sqrt());
         for (p, (&m, (sm, cm))) in self.mids.iter().zip(self.mid_trig(xi)).enumerate() {
             let at = 20 * p..20 * (p + 1);
-            let (out, nodes, inv) = (&mut out[at.clone()], &self.nodes[at.clone()], &self.inv[at]);
+            let (nodes, inv) = (&self.nodes[at.clone()], &self.inv[at]);
+            let mut out = [0.0; 20];
             // cos ξs and sin ξs by the addition theorem, as in `for_each`
             let mut trig = [(0.0, 0.0); 20];
             for (t, &(co, so)) in trig.iter_mut().zip(&offs) {
@@ -266,11 +282,11 @@ impl PanelGrid {
                 scale,
             };
             match asymptotic_terms(xi * (m - reach)) {
-                Some(18) => panel.asymptotic::<10, 9>(out),
-                Some(14) => panel.asymptotic::<8, 7>(out),
-                Some(11) => panel.asymptotic::<6, 6>(out),
-                Some(9) => panel.asymptotic::<5, 5>(out),
-                Some(_) => panel.asymptotic::<4, 4>(out),
+                Some(18) => panel.asymptotic::<10, 9>(&mut out),
+                Some(14) => panel.asymptotic::<8, 7>(&mut out),
+                Some(11) => panel.asymptotic::<6, 6>(&mut out),
+                Some(9) => panel.asymptotic::<5, 5>(&mut out),
+                Some(_) => panel.asymptotic::<4, 4>(&mut out),
                 None => {
                     for ((o, &s), &(c, sn)) in out.iter_mut().zip(nodes).zip(&trig) {
                         let x = xi * s;
@@ -284,6 +300,7 @@ impl PanelGrid {
                     }
                 }
             }
+            each(p, &out);
         }
     }
 }

@@ -96,3 +96,25 @@ fn weights_integrate_polynomials_exactly() {
         "{integral} {exact}"
     );
 }
+
+#[test]
+fn j0_dot_is_the_row_summed() {
+    // the slab's midplane rule sums J₀(ξ_i r) against its weights panel by panel: against the
+    // row of `j0_row` summed term by term here, within the rounding of the sums (n ε Σ|w J₀|)
+    let grid = PanelGrid::new(0.0, 60.0, 1.5);
+    let n = grid.len();
+    let w: Vec<f64> = (0..n)
+        .map(|i| ((i * 7919) % 101) as f64 / 50.0 - 1.0)
+        .collect();
+    let mut row = vec![0.0; n];
+    for r in [0.0, 0.3, 1.7, 4.0, 25.0, 310.0] {
+        grid.j0_row(r, &mut row);
+        let plain: f64 = w.iter().zip(&row).map(|(a, b)| a * b).sum();
+        let scale: f64 = w.iter().zip(&row).map(|(a, b)| (a * b).abs()).sum();
+        let got = grid.j0_dot(r, &w);
+        assert!(
+            (got - plain).abs() <= n as f64 * f64::EPSILON * scale,
+            "r = {r}: {got:e} against {plain:e}"
+        );
+    }
+}
