@@ -166,10 +166,8 @@ impl MidplaneRule {
         let h = xi_max / panels;
         let grid = PanelGrid::equal(0.0, h, panels as usize);
         let c: Vec<f64> = grid
-            .nodes()
-            .iter()
-            .zip(grid.weights())
-            .map(|(&s, &w)| w * s * tr.eval(s) * midplane(s * d))
+            .pairs()
+            .map(|(s, w)| w * s * tr.eval(s) * midplane(s * d))
             .collect();
         let floor = 50.0 * f64::EPSILON * c.iter().map(|v| v.abs()).sum::<f64>();
         Ok(Self {

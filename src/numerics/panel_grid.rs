@@ -176,6 +176,11 @@ impl PanelGrid {
         &self.weights
     }
 
+    /// The rule as (node, weight) pairs.
+    pub fn pairs(&self) -> impl Iterator<Item = (f64, f64)> + '_ {
+        self.nodes.iter().copied().zip(self.weights.iter().copied())
+    }
+
     /// Calls `f(index, cos ξs, sin ξs, cos ξs − 1)` for every node.
     fn for_each(&self, xi: f64, mut f: impl FnMut(usize, f64, f64, f64)) {
         let offs: Vec<(f64, f64, f64)> = self

@@ -86,12 +86,7 @@ impl Setup {
         // l on Gauss panels of [c, c + tail] resolving J₀(ξs) up to ξ_l (2.25 periods per panel)
         let lint = PanelInterp::new(c, c + self.tail, (4.5 * PI / self.xi_l).min(0.5 * d));
         let s_grid = lint.grid();
-        let s_rule: Vec<(f64, f64)> = s_grid
-            .nodes()
-            .iter()
-            .copied()
-            .zip(s_grid.weights().iter().copied())
-            .collect();
+        let s_rule: Vec<(f64, f64)> = s_grid.pairs().collect();
         let mode_mid: Vec<Vec<Complex64>> = s_rule
             .iter()
             .map(|&(s, _)| {
@@ -163,13 +158,7 @@ impl Setup {
                 .map(|(u, w)| (c - u * u, 2.0 * u * w))
                 .collect();
         let nf = t_grid.len();
-        let t_rule: Vec<(f64, f64)> = t_grid
-            .nodes()
-            .iter()
-            .copied()
-            .zip(t_grid.weights().iter().copied())
-            .chain(graded.iter().copied())
-            .collect();
+        let t_rule: Vec<(f64, f64)> = t_grid.pairs().chain(graded.iter().copied()).collect();
         let nt = t_rule.len();
         // the tables, one row per ξ (contiguous in t or s): cos ξt, cos ξt − 1 on the rule's
         // ξ (rows in parallel: they are independent). On the graded cap, whose t are no panel
