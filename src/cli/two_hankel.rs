@@ -11,7 +11,8 @@
 //!
 //! # Cost
 //!
-//! The holed route's with the knobs for --tol ([`HoledParams::for_tolerance`]), per Table 1
+//! The holed route's with the knobs for --tol ([`two_plate_hole_to`]: tighter knobs only where
+//! those fall short, none of Table 1's rows), per Table 1
 //! geometry (2026-11-25, load 1.5–2.5; module `hankel::receding::holed`'s Cost): 0.06–0.11 s
 //! of CPU at --tol 1e-3, 0.35–0.77 s at 1e-6 (all twelve converged), with --c 1.54 1.0–2.0 s at
 //! 1e-6; 1.4–2.2 s at 1e-8 (every row converged there; load 9–12, before the hole tables);
@@ -19,7 +20,7 @@
 
 use super::exit::{sig, Status};
 use super::two_args::Args;
-use boltzone::hankel::receding::holed::{two_plate_hole_pressure, HoledParams};
+use boltzone::hankel::receding::holed::two_plate_hole_to;
 use boltzone::hankel::receding::{MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
@@ -124,11 +125,10 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
             .collect(),
         None => Vec::new(),
     };
-    let (out, curve) = two_plate_hole_pressure(&plate, &HoledParams::for_tolerance(args.tol), &at)
-        .map_err(|e| {
-            anyhow::anyhow!("the Hankel route cannot treat this joint ({e}); try --method fem")
-        })?;
-    let converged = out.info.r_o_error <= args.tol * out.r_o;
+    let (out, curve) = two_plate_hole_to(&plate, args.tol, &at).map_err(|e| {
+        anyhow::anyhow!("the Hankel route cannot treat this joint ({e}); try --method fem")
+    })?;
+    let converged = out.meets(args.tol);
     if let Some(path) = &args.out.curve {
         let method = "Hankel route with the hole (boltzone::hankel::receding::holed), \
                       interface A <= r <= R_o";
@@ -163,6 +163,9 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
             sig(2.0 * out.r_o, 10),
             if converged {
                 ""
+            } else if !out.info.hole_resolved {
+                "  NOT converged to --tol (exit 3): the hole modes stopped short of their \
+                 residual target, so the estimate is not trusted (narrow load on a small hole?)"
             } else {
                 "  NOT converged to --tol (exit 3)"
             }

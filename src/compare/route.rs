@@ -10,8 +10,8 @@
 //!   is bounded when it is too far to move R_o by a tenth of the tolerance and fitted
 //!   otherwise ([`crate::hankel::hole::rim`]), so the route has no reach limit of its own;
 //! - **two plates** (frictionless, equal): by FE, [`crate::contact::two_plate::solve`]; by
-//!   Hankel, [`crate::hankel::receding::holed::two_plate_hole`] with its rim C (module
-//!   `rim_holed`) and [`HoledParams::for_tolerance`]. Its reach ([`two_hankel_reach`]): A/D ≥
+//!   Hankel, [`crate::hankel::receding::holed::two_plate_hole_to`] with its rim C (module
+//!   `rim_holed`): the knobs for the tolerance, tighter ones when they fall short. Its reach ([`two_hankel_reach`]): A/D ≥
 //!   [`MIN_A_OVER_D`], B/D ≤ [`MAX_B_OVER_D_RIM`] (a finite rim), C > B + D.
 //!
 //! [`Method::Auto`] takes the single plate's Hankel route, and the two plates' Hankel route
@@ -60,7 +60,7 @@ use super::single::{single_fem, FemStudy};
 use super::{CompareError, Geometry};
 use crate::contact::two_plate::{solve as solve_two, TwoPlateParams};
 use crate::hankel::hole::{single_plate_separation, HoleParams};
-use crate::hankel::receding::holed::{two_plate_hole, HoledParams};
+use crate::hankel::receding::holed::two_plate_hole_to;
 use crate::hankel::receding::{AUTO_BELOW, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
 use crate::hankel::separation::SeparationParams;
 use crate::joint::OuterRadius;
@@ -209,14 +209,16 @@ pub(super) fn two(g: &Geometry, method: Method, tol: f64) -> Result<ModelResult,
     }
     if two_takes_hankel(method, tol, reach.is_ok()) {
         let plate = g.single_plate(OuterRadius::Finite(g.c))?;
-        let outcome =
-            two_plate_hole(&plate, &HoledParams::for_tolerance(tol)).map(|out| ModelResult {
-                value: Value::with_tolerance(out.r_o, out.info.r_o_error, tol),
-                route: Route::Hankel,
-                levels: out.info.solves,
-                dofs: 0,
-                model: "two plates, Hankel route with the hole and rim",
-            });
+        let outcome = two_plate_hole_to(&plate, tol, &[]).map(|(out, _)| ModelResult {
+            value: Value {
+                converged: out.meets(tol),
+                ..Value::with_tolerance(out.r_o, out.info.r_o_error, tol)
+            },
+            route: Route::Hankel,
+            levels: out.info.solves,
+            dofs: 0,
+            model: "two plates, Hankel route with the hole and rim",
+        });
         let error = |source| CompareError::TwoHankel {
             geometry: g.label(),
             source,

@@ -48,7 +48,7 @@
 use super::error::SceneError;
 use super::file::{InterfaceKind, Model, Scene};
 use super::solution::{InterfaceCurve, Solution};
-use crate::hankel::receding::holed::{two_plate_hole_pressure, HoledParams};
+use crate::hankel::receding::holed::two_plate_hole_to;
 use crate::hankel::receding::rim::rim_contact;
 use crate::hankel::receding::{Pair, RecedingParams, MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
 use crate::joint::{Joint, OuterRadius, Plate};
@@ -199,8 +199,10 @@ pub fn solve(
     out: &mut Solution,
 ) -> Result<(), SceneError> {
     let curve_asked = scene.outputs.interface_pressure.is_some();
-    let (r_o, error, curve) = if joint.hole_radius() <= 0.0 {
-        solve_no_hole(scene.tolerance, joint, curve_asked)?
+    // `resolved`: the hole's modes met their target (always, without a hole)
+    let (r_o, error, resolved, curve) = if joint.hole_radius() <= 0.0 {
+        let (r_o, error, curve) = solve_no_hole(scene.tolerance, joint, curve_asked)?;
+        (r_o, error, true, curve)
     } else {
         let plate = joint
             .single_plate_substitute()
@@ -213,13 +215,12 @@ pub fn solve(
             true => curve_fractions().collect(),
             false => Vec::new(),
         };
-        let params = HoledParams::for_tolerance(scene.tolerance);
-        let (h, curve) = two_plate_hole_pressure(&plate, &params, &at)?;
-        (h.r_o, h.info.r_o_error, curve)
+        let (h, curve) = two_plate_hole_to(&plate, scene.tolerance, &at)?;
+        (h.r_o, h.info.r_o_error, h.info.hole_resolved, curve)
     };
     out.r_o = r_o / length;
     out.r_o_error = error / length;
-    out.converged = error <= scene.tolerance * r_o;
+    out.converged = resolved && error <= scene.tolerance * r_o;
     out.full_contact = Some(false);
     if curve_asked {
         out.interface = Some(InterfaceCurve {

@@ -21,16 +21,25 @@ fn run(g: (f64, f64, f64), tol: f64) -> HoledContact {
 
 /// One geometry (A/D, B/A, ν), A = 0.1, uniform load, by the knobs `params`.
 pub(crate) fn run_with(g: (f64, f64, f64), params: &HoledParams) -> HoledContact {
+    two_plate_hole(&plate(g), params).unwrap()
+}
+
+/// The infinite plate of geometry (A/D, B/A, ν), A = 0.1, uniform load.
+pub(crate) fn plate(g: (f64, f64, f64)) -> SinglePlate {
+    plate_with(g, OuterRadius::Infinite)
+}
+
+/// The plate of geometry (A/D, B/A, ν), A = 0.1, uniform load, outer radius `c`.
+pub(crate) fn plate_with(g: (f64, f64, f64), c: OuterRadius) -> SinglePlate {
     let (a_over_d, b_over_a, nu) = g;
-    let plate = SinglePlate::new(
+    SinglePlate::new(
         A,
-        OuterRadius::Infinite,
+        c,
         A / a_over_d,
         Material::new(3.0e7, nu).unwrap(),
         FaceLoad::uniform(A, b_over_a * A, 1.0).unwrap(),
     )
-    .unwrap();
-    two_plate_hole(&plate, params).unwrap()
+    .unwrap()
 }
 
 /// Each tier's (error, estimate, claims converged) on `g`, all relative to R_o, after checking
@@ -51,7 +60,7 @@ fn check(g: (f64, f64, f64)) -> Vec<(f64, f64, bool)> {
                 reference.r_o
             );
             let est = out.info.r_o_error / out.r_o;
-            (err / out.r_o, est, est <= tol)
+            (err / out.r_o, est, out.meets(tol))
         })
         .collect()
 }
@@ -121,6 +130,10 @@ pub(crate) fn survey_n(default: usize) -> usize {
 /// `holed_params`; 45 s): largest error/estimate 0.37, 0.37, 0.39, 0.21, largest estimates
 /// 5.8e-4, 4.3e-5, 1.0e-6, 6.4e-7 of R_o, converged on 40 of 40 at every tier ((0.341, 1.175)
 /// at 1e-5: error 3.5e-8, estimate 3.9e-7).
+/// With the tiers for 1e-3 and 1e-4 doubling their modes to 1e-3 and 1e-4 P, and `converged`
+/// as `HoledContact::meets` (the hole resolved to its modes' target too; 40 s, idle): largest
+/// error/estimate 0.37, 0.29, 0.39, 0.21, largest estimates 3.8e-4, 4.3e-5, 1.0e-6, 6.4e-7 of
+/// R_o, converged (hole resolved) on 40 of 40 at every tier.
 #[test]
 #[ignore = "survey: about 2.5 s per geometry (SURVEY_N, default 40)"]
 fn random_geometries_are_within_every_tiers_estimate() {

@@ -291,6 +291,59 @@ pub fn two_plate_hole(
     two_plate_hole_pressure(plate, params, &[]).map(|(out, _)| out)
 }
 
+/// R_o (and the pressure at `at`, as [`two_plate_hole_pressure`]) to the relative tolerance
+/// `tol`: the knobs of [`HoledParams::for_tolerance`]`(tol)`, and when their run does not meet
+/// `tol` ([`HoledContact::meets`]: by its own estimate, the hole resolved), or fails numerically (no sign change of the edge coefficient
+/// within the scan, a singular system), each tighter tier in turn up to the tier for 1e-6
+/// ([`HoledParams::tiers_from`]); the first run that meets `tol`, else the last run (its
+/// estimate says what was reached) or its error. Bad input is returned at once, and a run whose
+/// rim residue alone ([`RimRecord::decay_bound`](super::rim_holed::RimRecord::decay_bound),
+/// which no knob moves) is over `tol` is not handed on. What `two --method hankel`, a scene's
+/// `method = "hankel"` and the map take.
+///
+/// Why: each tier was chosen on Table 1 and held over random geometries near it
+/// (`tests/hankel/two_plate_hole_tiers.rs`); over the whole reach
+/// (`tests/hankel/two_plate_hole_reach_survey.rs`) small holes (A/D < 0.3) left the loose
+/// tiers short: with 6 fixed modes the tier for 1e-3 found no contact radius on 5 of 30
+/// random geometries and on (A/D, B/A, ν) = (0.067, 1.58, −0.29) left 6.1 P on the hole,
+/// R_o off by 6.6e-3 against an estimate of 2.4e-3 R_o. The loose tiers now double their
+/// modes to a residual target (module `holed_params`), and a tier whose run still falls short
+/// hands over to the next.
+///
+/// ```no_run
+/// use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+/// use boltzone::hankel::receding::holed::two_plate_hole_to;
+/// let load = FaceLoad::uniform(0.1, 0.31, 1.0)?;
+/// let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3)?, load)?;
+/// let (out, _) = two_plate_hole_to(&plate, 1e-6, &[])?;
+/// assert!(out.info.r_o_error <= 1e-6 * out.r_o);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn two_plate_hole_to(
+    plate: &SinglePlate,
+    tol: f64,
+    at: &[f64],
+) -> Result<(HoledContact, Vec<(f64, f64)>), RecedingError> {
+    let tiers = HoledParams::tiers_from(tol);
+    let mut run = two_plate_hole_pressure(plate, &tiers[0], at);
+    for params in &tiers[1..] {
+        // done when met, on bad input, or when the rim's residue alone (no knob moves it)
+        // is over the tolerance
+        let done = match &run {
+            Ok((out, _)) => {
+                let rim = out.info.rim.as_ref().map_or(0.0, |r| r.decay_bound);
+                out.meets(tol) || rim > tol * out.r_o
+            }
+            Err(e) => matches!(e, RecedingError::Input(_)),
+        };
+        if done {
+            break;
+        }
+        run = two_plate_hole_pressure(plate, params, at);
+    }
+    run
+}
+
 /// [`two_plate_hole`] and the interface pressure q(r) ≥ 0 (compression positive, the units of
 /// the load) at r = A + x(R_o − A) for each fraction x in `at` (0 ≤ x ≤ 1): pairs (r, q).
 pub fn two_plate_hole_pressure(

@@ -67,6 +67,8 @@ pub(super) fn solve_on(
         r_o_half_terms: f64::NAN,
         residual_max: last.residual,
         bilateral_residual: setup.bilateral.info().residual_max,
+        hole_resolved: params.hole.terms.is_some()
+            || setup.bilateral.info().residual_max <= params.hole.residual_target,
         crack_traction: last.crack_traction,
         iterations: last.iterations,
         search_iterations: found.iterations,

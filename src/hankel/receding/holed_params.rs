@@ -142,7 +142,7 @@ impl HoledParams {
     /// from 32 until the bilateral plate's residual is 5e-7 P (at most 128), 28 heights,
     /// ξ_l = 55/D, `hole_decay` 18 and the coarse variants apart, the modes' at 3/4 (below). From 1e-6 (up to
     /// 1e-5), 16 Nyström points, hole modes doubled from 16 until the bilateral residual is
-    /// 2e-6 P (at most 64; the half-modes variant kept, below), ξ_l = 28/D, a tail of 12D
+    /// 2e-6 P (at most 128, 64 before the whole-reach survey below; the half-modes variant kept), ξ_l = 28/D, a tail of 12D
     /// (l ~ e^(−2.1(r−c)/D): 10D moved R_o by 1.5e-9 R_o on Table 1 row 1, 12D by ~2e-11), root
     /// and iteration tolerances 1e-9 (of D; of p̄(0)/c). Looser, one tier per decade, each
     /// chosen by its run on Table 1's twelve rows. Measured on those rows (ν = 0.3) by
@@ -152,14 +152,37 @@ impl HoledParams {
     /// | from | nodes | heights | modes | ξ_l·D | tail/D | root, iteration | `hole_decay` | estimate | difference | CPU |
     /// |------|-------|---------|-------|-------|--------|-----------------|--------------|----------|------------|-----|
     /// | 1e-5 | 10 | 18 | 16, doubled to 2e-6 P | 22 | 10 | 1e-7 | 10 | 9.0e-7 | 5.5e-8 | 0.38–0.58 s |
-    /// | 1e-4 | 8 | 12 | 8 | 12 | 7 | 1e-5 | 8 | 3.7e-5 | 6.2e-6 | 0.14–0.26 s |
-    /// | 1e-3 | 6 | 10 | 6 | 10 | 6 | 1e-4 | 8 | 2.1e-4 | 4.0e-5 | 0.10–0.15 s |
+    /// | 1e-4 | 8 | 12 | 8, doubled to 1e-4 P | 12 | 7 | 1e-5 | 8 | 3.7e-5 | 6.2e-6 | 0.14–0.26 s |
+    /// | 1e-3 | 6 | 10 | 6, doubled to 1e-3 P | 10 | 6 | 1e-4 | 8 | 2.1e-4 | 4.0e-5 | 0.10–0.15 s |
     ///
     /// (1e-6 with 16 modes always: 1.3e-6, 3.2e-10, 0.43–0.78 s; main 0.61–1.02 s. The 1e-5 row by its own run at
     /// load 1.7, main 0.75–0.94 s: its first choice, 12 modes, 16 heights, ξ_l = 18/D, tail 9D,
     /// came within 0.91 of its estimate on (0.75, 1.3).) The estimate's honesty over random
     /// geometries:
     /// `tests/hankel/two_plate_hole_tiers.rs`.
+    ///
+    /// **The loose tiers' modes over the whole reach** (2026-11-25): with 6 and 8 modes always,
+    /// the survey over everything the route takes at C = ∞
+    /// (`tests/hankel/two_plate_hole_reach_survey.rs`: A/D 0.04–15, B/A 1.02–20, ν −0.95 to
+    /// 0.499, 30 random geometries) found the tier for 1e-3 short on small holes (A/D 0.05–0.19):
+    /// no contact radius at all on 5 (the edge coefficient of one sign up to B + 8D), and on
+    /// (0.067, 1.58, −0.29) 6.1 P left on the hole and R_o off by 6.6e-3 against an estimate of
+    /// 2.4e-3 R_o; the tier for 1e-4 not converged there, estimates up to 0.82 R_o. Each knob
+    /// alone on five of them: only the modes mattered (doubled to 2e-4 P: errors ≤ 4.2e-5 R_o,
+    /// within 0.22 of the estimates). So these tiers double their modes too, to 1e-3 P and 1e-4
+    /// P; on Table 1 the residual at 6 and 8 modes is already below (R_o and estimates
+    /// unchanged). The survey then: every run within its bar (at most 0.29 of it), converged on
+    /// 28, 30, 30, 30 of 30 at 1e-3 … 1e-6. Narrow loads (B/A 1.001–1.1, the same file's second
+    /// survey): every run within its bar, but at most 0.94 and 0.96 of it at 1e-5 and 1e-6,
+    /// where the modes stopped at 64 far short of 2e-6 P (1.6e-3 P). So the tiers for 1e-5 and
+    /// 1e-6 double to 128 (as the tier for 1e-8), which resolves the small holes with wider
+    /// loads (on the whole-reach survey 3 runs stopped at 64 with 3.2e-6 … 5e-5 P, at most
+    /// 0.28 of their estimates; at 128 they meet 2e-6 P), and a run whose modes still stop short
+    /// claims no tolerance ([`HoledInfo::hole_resolved`](super::holed::HoledInfo::hole_resolved)):
+    /// narrow loads then at most 0.50 of the bar, converged on 19, 13, 16, 9 of 30.
+    /// [`two_plate_hole_to`](super::holed::two_plate_hole_to) hands a run short of its
+    /// tolerance to the next tier. On Table 1 and the tiers' survey nothing changed (40 of 40
+    /// resolved and converged at every tier; Table 1's R_o and estimates bit for bit).
     ///
     /// **The tier for 1e-5's modes** (2026-11-25): with 16 modes always its survey left
     /// (A/D, B/A, ν) = (0.341, 1.175, 0.388) not converged, error 1.6e-6 against an estimate
@@ -232,13 +255,28 @@ impl HoledParams {
     /// 10.5 s quoted at [`MAX_B_OVER_D`] and [`MAX_B_OVER_D_RIM`] (lower tiers, lower load):
     /// near the CLI fuzz's 30 s.
     pub fn for_tolerance(tol: f64) -> Self {
+        Self::tiers_from(tol)[0]
+    }
+
+    /// The knobs of [`HoledParams::for_tolerance`]`(tol)` followed by each tighter tier's up to
+    /// the tier for 1e-6: what [`two_plate_hole_to`](super::holed::two_plate_hole_to) tries in
+    /// turn until the estimate meets `tol`. The tier for 1e-8 only when asked for (`tol` below
+    /// 1e-6): its cost at the reach (19.5 s of CPU at B/D = 16, 28 s with a rim at B/D = 8,
+    /// below) after the looser tiers' would pass the 30 s a run may take
+    /// (`tests/cli/fuzz.rs`).
+    ///
+    /// ```
+    /// use boltzone::hankel::receding::holed::HoledParams;
+    /// let tiers = HoledParams::tiers_from(1e-4);
+    /// assert_eq!(tiers[0], HoledParams::for_tolerance(1e-4));
+    /// assert_eq!(tiers.len(), 3); // 1e-4, 1e-5, 1e-6
+    /// assert_eq!(HoledParams::tiers_from(1e-6).len(), 1);
+    /// assert_eq!(HoledParams::tiers_from(1e-9), [HoledParams::for_tolerance(1e-8)]);
+    /// ```
+    pub fn tiers_from(tol: f64) -> Vec<Self> {
         let base = Self {
             vary_xi_l: true,
             ..Self::default()
-        };
-        let fixed = |n| HoleParams {
-            terms: Some(n),
-            ..base.hole
         };
         // N doubled from 32 until the bilateral plate's residual is 5e-7 P: the variant at 3/4
         // of N is honest only where the modes converge regularly (the docs above)
@@ -270,13 +308,13 @@ impl HoledParams {
         // (from, nodes, heights, modes, ξ_l·D, tail/D, root and iteration tolerance,
         // hole_decay, the coarse variant's share of the modes), loosest first
         let tiers = [
-            tier(1e-3, 6, 10, fixed(6), 10.0, 6.0, 1e-4, 8.0, 0.5),
-            tier(1e-4, 8, 12, fixed(8), 12.0, 7.0, 1e-5, 8.0, 0.5),
+            tier(1e-3, 6, 10, doubled(6, 64, 1e-3), 10.0, 6.0, 1e-4, 8.0, 0.5),
+            tier(1e-4, 8, 12, doubled(8, 64, 1e-4), 12.0, 7.0, 1e-5, 8.0, 0.5),
             tier(
                 1e-5,
                 10,
                 18,
-                doubled(16, 64, 2e-6),
+                doubled(16, 128, 2e-6),
                 22.0,
                 10.0,
                 1e-7,
@@ -287,7 +325,7 @@ impl HoledParams {
                 1e-6,
                 16,
                 18,
-                doubled(16, 64, 2e-6),
+                doubled(16, 128, 2e-6),
                 28.0,
                 12.0,
                 1e-9,
@@ -298,13 +336,21 @@ impl HoledParams {
         ];
         // tighter than the tightest tier: its knobs (the route's reach; the estimate says
         // what was reached)
-        let tightest = tiers[tiers.len() - 1].params;
-        tiers
+        let first = tiers
             .iter()
-            .find(|t| tol >= t.from)
-            .map_or(tightest, |t| t.params)
+            .position(|t| tol >= t.from)
+            .unwrap_or(tiers.len() - 1);
+        // the tightest tier handed over to: the one for 1e-6
+        let last = tiers
+            .iter()
+            .rposition(|t| t.from >= ESCALATE_TO)
+            .map_or(first, |k| k.max(first));
+        tiers[first..=last].iter().map(|t| t.params).collect()
     }
 }
+
+/// The tightest tier [`HoledParams::tiers_from`] hands a run over to when it was not asked for.
+const ESCALATE_TO: f64 = 1e-6;
 
 /// One tier of [`HoledParams::for_tolerance`]: its knobs, for tolerances from `from` up.
 struct Tier {
