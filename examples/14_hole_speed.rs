@@ -12,9 +12,9 @@
 //! own uncertainty is the change from N = `n_ref` to 2·`n_ref` (the hole residual falls like
 //! N^(−1.74), R_o's error faster). "actual" is |R_o − reference|.
 //!
-//! **What to expect.** N doubles from 4 until R_o's own error estimate is below 1e-6 R_o: ten
-//! rows stop at N = 8, the two narrowest loads on the thicker plates at N = 16, in 4.6–8.7 ms
-//! (load ≈ 1), of which the slab's traction profile is 1–3 ms and the corner enrichment's
+//! **What to expect.** N doubles from 4 until R_o's own error estimate is below 1e-6 R_o: six
+//! rows stop at N = 8 and six (the narrower loads) at N = 16, in 4.0–8.3 ms (idle machine,
+//! 2026-11-25), of which the slab's traction profile is 1–3 ms and the corner enrichment's
 //! tractions at the new heights about as much again. The self-check: every actual error within
 //! its estimate plus the reference's uncertainty, and the two routes' R_o equal within their
 //! slab-data errors.

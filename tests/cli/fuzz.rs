@@ -290,6 +290,9 @@ fn campaign(seed: u64, n: usize) -> (Vec<String>, f64, [usize; 4]) {
                 let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                 let Some(args) = sets.get(i) else { break };
                 let r = run(args, Duration::from_secs(30));
+                if r.cpu_seconds > 10.0 {
+                    println!("slow: {:.1} s CPU: {}", r.cpu_seconds, args.join(" "));
+                }
                 let mut g = results.lock().unwrap();
                 g.1 = g.1.max(r.cpu_seconds);
                 if let Some(c) = r.code.filter(|c| (0..=3).contains(c)) {

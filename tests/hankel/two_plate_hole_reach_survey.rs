@@ -23,83 +23,25 @@
 //!   unresolved runs it shares their modes' error: there the survey cannot see it, and those
 //!   runs claim nothing.
 
-use super::two_plate_hole_tiers::{plate, survey_n, Rng};
-use boltzone::hankel::receding::holed::{two_plate_hole, HoledContact, HoledParams};
-use boltzone::hankel::receding::{RecedingError, MAX_B_OVER_D, MIN_A_OVER_D};
+use super::reach::{survey, Outcome};
+use super::two_plate_hole_tiers::plate;
+use boltzone::hankel::receding::holed::{two_plate_hole, HoledParams};
 
-/// (A/D, B/A, ν) → R_o at `tol`, A = 0.1.
-fn run(g: (f64, f64, f64), tol: f64) -> Result<HoledContact, RecedingError> {
+/// R_o, its estimate and whether it meets `tol` (`HoledContact::meets`), by the knobs for `tol`.
+fn run(g: (f64, f64, f64), tol: f64) -> Outcome {
     two_plate_hole(&plate(g), &HoledParams::for_tolerance(tol))
+        .map(|out| (out.r_o, out.info.r_o_error, out.meets(tol)))
+        .map_err(|e| e.to_string())
 }
 
 #[test]
 #[ignore = "survey: seconds to a minute per geometry (SURVEY_N, default 30)"]
 fn random_geometries_over_the_whole_reach_are_within_their_estimates() {
-    survey(0x1f83_d9ab_fb41_bd6b, 1.02, 20.0);
+    survey(0x1f83_d9ab_fb41_bd6b, (1.02, 20.0), 30, run);
 }
 
 #[test]
 #[ignore = "survey: seconds to a minute per geometry (SURVEY_N, default 30)"]
 fn random_narrow_loads_are_within_their_estimates() {
-    survey(0x5be0_cd19_137e_2179, 1.001, 1.1);
-}
-
-/// The survey over SURVEY_N random geometries (`seed`), B/A log-uniform in `ba_lo`–`ba_hi`.
-fn survey(seed: u64, ba_lo: f64, ba_hi: f64) {
-    let n = survey_n(30);
-    let mut rng = Rng(seed);
-    let tiers = [1e-3, 1e-4, 1e-5, 1e-6];
-    let mut worst = [(0.0f64, 0usize); 4];
-    let mut failures = Vec::new();
-    let mut k = 0;
-    while k < n {
-        let ad = rng.uniform(MIN_A_OVER_D.ln(), 15f64.ln()).exp();
-        let ba = rng.uniform(ba_lo.ln(), ba_hi.ln()).exp();
-        let nu = rng.uniform(-0.95, 0.499);
-        if ad * ba > MAX_B_OVER_D {
-            continue;
-        }
-        k += 1;
-        let g = (ad, ba, nu);
-        let mut line = format!("A/D {ad:.6} B/A {ba:.6} nu {nu:.6}:");
-        let reference = match run(g, 1e-9) {
-            Ok(r) => r,
-            Err(e) => {
-                line += &format!(" reference failed: {e}");
-                println!("{line}");
-                failures.push(line);
-                continue;
-            }
-        };
-        line += &format!(" ref est {:.1e}", reference.info.r_o_error / reference.r_o);
-        for (w, tol) in worst.iter_mut().zip(tiers) {
-            match run(g, tol) {
-                Ok(out) => {
-                    let error = (out.r_o - reference.r_o).abs();
-                    let bar = out.info.r_o_error + reference.info.r_o_error;
-                    let converged = out.meets(tol);
-                    line += &format!(
-                        "  {tol:.0e}: {:.1e}/{:.1e}{}",
-                        error / out.r_o,
-                        out.info.r_o_error / out.r_o,
-                        if converged { "" } else { " NC" }
-                    );
-                    w.0 = w.0.max(error / bar);
-                    w.1 += usize::from(converged);
-                    if error > bar {
-                        failures.push(format!("{line} BEYOND"));
-                    }
-                }
-                Err(e) => {
-                    line += &format!("  {tol:.0e}: failed ({e})");
-                    failures.push(line.clone());
-                }
-            }
-        }
-        println!("{line}");
-    }
-    for (tol, (ratio, conv)) in tiers.iter().zip(worst) {
-        println!("tier {tol:e}: largest error/bar {ratio:.2}, converged {conv} of {n}");
-    }
-    assert!(failures.is_empty(), "failures: {failures:#?}");
+    survey(0x5be0_cd19_137e_2179, (1.001, 1.1), 30, run);
 }

@@ -92,6 +92,21 @@ impl Rng {
         lo + (hi - lo) * (self.0 >> 11) as f64 / (1u64 << 53) as f64
     }
 
+    /// A geometry (A/D, B/A, ν) from the holed routes' whole reach: A/D log-uniform from the
+    /// smallest hole the two-plate route takes (`MIN_A_OVER_D`, 0.04) to 15, B/A log-uniform in
+    /// `ba_lo`–`ba_hi`, ν uniform in −0.95–0.499, drawn again until B/D ≤ `MAX_B_OVER_D` (16).
+    pub(crate) fn reach_geometry(&mut self, ba_lo: f64, ba_hi: f64) -> (f64, f64, f64) {
+        use boltzone::hankel::receding::{MAX_B_OVER_D, MIN_A_OVER_D};
+        loop {
+            let ad = self.uniform(MIN_A_OVER_D.ln(), 15f64.ln()).exp();
+            let ba = self.uniform(ba_lo.ln(), ba_hi.ln()).exp();
+            let nu = self.uniform(-0.95, 0.499);
+            if ad * ba <= MAX_B_OVER_D {
+                return (ad, ba, nu);
+            }
+        }
+    }
+
     /// A survey geometry (A/D, B/A, ν): A/D in 0.3–3 and B/A in 1.1–4 log-uniform (B/D ≤ 12,
     /// within the route's reach of 16), ν uniform in 0–0.45.
     pub(crate) fn geometry(&mut self) -> (f64, f64, f64) {
