@@ -121,3 +121,18 @@ fn a_hole_the_modes_do_not_resolve_claims_no_tolerance() {
     assert_eq!(run.status.code(), Some(3), "{text}");
     assert!(text.contains("hole modes stopped short"), "{text}");
 }
+
+#[test]
+fn an_unresolved_hole_goes_on_only_to_a_tier_with_more_modes() {
+    // the narrow load above: the tier for 1e-3 stops at 64 modes short of 1e-3 P, and so would
+    // the tier for 1e-4 (also at most 64): its run is returned as it is
+    let p = plate((0.205524, 1.022406, 0.263163));
+    let own = two_plate_hole(&p, &HoledParams::for_tolerance(1e-3)).unwrap();
+    assert!(!own.info.hole_resolved);
+    let (out, _) = two_plate_hole_to(&p, 1e-3, &[]).unwrap();
+    assert_eq!((out.r_o, out.info.solves), (own.r_o, own.info.solves));
+    // from 1e-4 (at most 64 modes) it goes on to the tier for 1e-5 (at most 128), and no further
+    let (out, _) = two_plate_hole_to(&p, 1e-4, &[]).unwrap();
+    let next = two_plate_hole(&p, &HoledParams::for_tolerance(1e-5)).unwrap();
+    assert_eq!((out.r_o, out.info.solves), (next.r_o, next.info.solves));
+}
