@@ -11,8 +11,9 @@
 //!   otherwise ([`crate::hankel::hole::rim`]), so the route has no reach limit of its own;
 //! - **two plates** (frictionless, equal): by FE, [`crate::contact::two_plate::solve`]; by
 //!   Hankel, [`crate::hankel::receding::holed::two_plate_hole_to`] with its rim C (module
-//!   `rim_holed`): the knobs for the tolerance, tighter ones when they fall short. Its reach ([`two_hankel_reach`]): A/D ≥
-//!   [`MIN_A_OVER_D`], B/D ≤ [`MAX_B_OVER_D_RIM`] (a finite rim), C > B + D.
+//!   `rim_holed`): the knobs for the tolerance, tighter ones when they fall short. Its reach
+//!   ([`two_hankel_reach`]): A/D ≥ [`MIN_A_OVER_D`], B/D ≤ [`MAX_B_OVER_D_RIM`] (a finite
+//!   rim), C > B + D.
 //!
 //! [`Method::Auto`] takes the single plate's Hankel route, and the two plates' Hankel route
 //! where it applies — decided up front by the reach above — and below a tolerance of

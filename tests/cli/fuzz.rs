@@ -21,6 +21,12 @@
 //! at load ~10, had counted 36 `table1`/`table2 --tol 1e-320` runs (7.5–9 s of CPU each on one
 //! thread, as at 1e-5) and two B/D = 8 rims at --tol 1.4e-4 (11 s of CPU, 25 trial radii: the
 //! rim's search, since made the infinite route's) over the limit, hence the CPU clock.
+//! Re-run twice on 25 Nov 2026 after the holed route's knobs came to double their hole modes
+//! (to 128 for 1e-5 and 1e-6) and to hand a run short of its tolerance to the next tier: the
+//! first (487 s, codes 4804/76/4987/133) passed with its slowest run at 29.6 s of CPU, a
+//! narrow load on a small hole with a rim taken through every tier (now stopped where the next
+//! tier allows no more modes); the second (601 s beside other work, the same codes) with its
+//! slowest at 15.9 s. Runs over 10 s of CPU are printed with their arguments.
 
 use std::io::Read;
 use std::process::{Command, Stdio};

@@ -64,8 +64,8 @@
 //! residual met: that cost 1.3–1.4× on the four rows it moved to N = 16). Beyond Table 1, over
 //! random geometries across the reach and random narrow loads (B/A 1.001–1.1;
 //! `tests/hankel/hole_reach_survey.rs`, in CI): every error within its estimate plus the
-//! reference's, at most 0.17 of it. Against the finite-element single plate the difference is within
-//! the two estimates, < 0.005 % on Table 1, including a rim 1.3D beyond the load
+//! reference's, at most 0.17 of it. Against the finite-element single plate the difference is
+//! within the two estimates, < 0.005 % on Table 1, including a rim 1.3D beyond the load
 //! (`tests/fem/hole_agreement.rs`).
 //!
 //! # Cost
@@ -73,8 +73,8 @@
 //! (R_o to 1e-6, default parameters; `cargo bench --bench hole` and example 14, one thread):
 //! 4.0–5.7 ms for the six Table 1 rows that stop at N = 8, 6.6–8.3 ms for the six at N = 16, 74 ms
 //! for all twelve (example 14, idle machine, 2026-11-25; before: ten rows at N = 8 in 4.6–6.5 ms,
-//! two at 16 in 8.7 ms, 72 ms). About 30 % goes to the slab's traction on the hole at M/2 + 1 Chebyshev–Lobatto heights
-//! (M = 24–72, [`profile`]; 4–12 thousand ξ-nodes, 1.1–3.0 ms), 25–35 % to the corner fields'
+//! two at 16 in 8.7 ms, 72 ms). About 30 % goes to the slab's traction on the hole at M/2 + 1
+//! Chebyshev–Lobatto heights (M = 24–72, [`profile`]; 4–12 thousand ξ-nodes, 1.1–3.0 ms), 25–35 % to the corner fields'
 //! tractions, the rest to the fit (Householder QR), the residual and the root search on
 //! interpolants sized for the bracket. The direct route ([`SlabSampling::Direct`]: every fitted and
 //! checked height integrated) costs 9.3–18 ms. At the scene tolerances, R_o alone with

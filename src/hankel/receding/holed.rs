@@ -293,8 +293,9 @@ pub fn two_plate_hole(
 
 /// R_o (and the pressure at `at`, as [`two_plate_hole_pressure`]) to the relative tolerance
 /// `tol`: the knobs of [`HoledParams::for_tolerance`]`(tol)`, and when their run does not meet
-/// `tol` ([`HoledContact::meets`]: by its own estimate, the hole resolved), or fails numerically (no sign change of the edge coefficient
-/// within the scan, a singular system), each tighter tier in turn up to the tier for 1e-6
+/// `tol` ([`HoledContact::meets`]: by its own estimate, the hole resolved), or fails
+/// numerically (no sign change of the edge coefficient within the scan, a singular system),
+/// each tighter tier in turn up to the tier for 1e-6
 /// ([`HoledParams::tiers_from`]); the first run that meets `tol`, else the last run (its
 /// estimate says what was reached) or its error. Bad input is returned at once; not handed on
 /// either: a run whose rim residue alone

@@ -142,9 +142,9 @@ impl HoledParams {
     /// from 32 until the bilateral plate's residual is 5e-7 P (at most 128), 28 heights,
     /// ξ_l = 55/D, `hole_decay` 18 and the coarse variants apart, the modes' at 3/4 (below). From 1e-6 (up to
     /// 1e-5), 16 Nyström points, hole modes doubled from 16 until the bilateral residual is
-    /// 2e-6 P (at most 128, 64 before the whole-reach survey below; the half-modes variant kept), ξ_l = 28/D, a tail of 12D
-    /// (l ~ e^(−2.1(r−c)/D): 10D moved R_o by 1.5e-9 R_o on Table 1 row 1, 12D by ~2e-11), root
-    /// and iteration tolerances 1e-9 (of D; of p̄(0)/c). Looser, one tier per decade, each
+    /// 2e-6 P (at most 128, 64 before the whole-reach survey below; the half-modes variant
+    /// kept), ξ_l = 28/D, a tail of 12D (l ~ e^(−2.1(r−c)/D): 10D moved R_o by 1.5e-9 R_o on
+    /// Table 1 row 1, 12D by ~2e-11), root and iteration tolerances 1e-9 (of D; of p̄(0)/c). Looser, one tier per decade, each
     /// chosen by its run on Table 1's twelve rows. Measured on those rows (ν = 0.3) by
     /// `boltzone two --method hankel`, by turns with main's binary (load 2.6–3.3): the largest
     /// estimate and |R_o − main's R_o at the knobs for 1e-6| relative to R_o, CPU per row:
