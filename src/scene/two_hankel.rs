@@ -220,7 +220,7 @@ pub fn solve(
     };
     out.r_o = r_o / length;
     out.r_o_error = error / length;
-    out.converged = resolved && error <= scene.tolerance * r_o;
+    out.converged = resolved && crate::value::meets(r_o, error, scene.tolerance);
     out.full_contact = Some(false);
     if curve_asked {
         out.interface = Some(InterfaceCurve {

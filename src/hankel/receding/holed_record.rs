@@ -70,7 +70,7 @@ impl HoledContact {
     /// Whether R_o meets the relative tolerance `tol`: its estimate within `tol`·R_o, and the
     /// hole resolved to its modes' target ([`HoledInfo::hole_resolved`]).
     pub fn meets(&self, tol: f64) -> bool {
-        self.info.hole_resolved && self.info.r_o_error <= tol * self.r_o
+        self.info.hole_resolved && crate::value::meets(self.r_o, self.info.r_o_error, tol)
     }
 }
 
