@@ -1,6 +1,10 @@
 //! `boltzone two`: the two-plate model (report Chapter II.B), solved by
 //! [`boltzone::contact::two_plate`]: separation radius R_o with its error, and on request the
-//! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV.
+//! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV. `--method hankel` takes the
+//! semi-analytic routes (modules `two_hankel`, `two_pair`, `two_rim`); `--method auto` takes them
+//! below a tolerance of 3e-5 where they apply, and the finite elements when a route declines the
+//! joint (its [`super::two_hankel::Declined`] reason in the text and the JSON's `fallback`; the
+//! JSON's `method` says which answered: `tests/hankel/two_plate_hole_handover.rs`).
 //!
 //! `--units` (in-psi-lbf, mm-MPa-N, m-Pa-N) sets the units of every flag and of the text, the
 //! JSON (`units` key), the curve, the VTU, the figures and the report; the solver works in any
@@ -148,14 +152,23 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
                 && super::two_hankel::unsupported(&args).is_none()
         }
     };
-    if let (true, Some(c)) = (hankel && args.geom.a <= 0.0, args.c) {
-        return super::two_rim::run(&args, c, load, start);
-    }
-    if hankel && args.geom.a <= 0.0 {
-        return super::two_pair::run(&args, load, start);
-    }
+    // `auto` hands a joint the semi-analytic route declines to the finite elements, saying why
+    let mut fallback = None;
     if hankel {
-        return super::two_hankel::run(&args, load, start);
+        let ran = match (args.geom.a <= 0.0, args.c) {
+            (true, Some(c)) => super::two_rim::run(&args, c, load.clone(), start),
+            (true, None) => super::two_pair::run(&args, load.clone(), start),
+            (false, _) => super::two_hankel::run(&args, load.clone(), start),
+        };
+        match ran {
+            Err(e) if args.method == Method::Auto => {
+                let why = e.downcast::<super::two_hankel::Declined>()?.0;
+                fallback = Some(format!(
+                    "the Hankel route declined ({why}); the finite elements answer"
+                ));
+            }
+            ran => return ran,
+        }
     }
     let joint = Joint::new(
         args.geom.a,
@@ -250,6 +263,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let r_o_over_a = (args.geom.a > 0.0).then(|| s.r_o / args.geom.a);
     if args.json {
         let mut out = serde_json::json!({
+            "method": "fem",
             "r_o": s.r_o,
             "r_o_error": s.r_o_error,
             "converged": s.converged,
@@ -269,6 +283,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         });
         if let Some(q) = r_o_over_a {
             out["r_o_over_a"] = q.into();
+        }
+        if let Some(why) = &fallback {
+            out["fallback"] = why.as_str().into();
         }
         if let Some(f) = &s.friction {
             super::friction_out::json(&mut out, &s, f)?;
@@ -318,6 +335,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             println!("{}", super::friction_out::summary(&s, f, l));
         }
         println!("deflection under the nut: {:.4e} {l}", s.nut_deflection);
+        if let Some(why) = &fallback {
+            println!("method auto: {why}");
+        }
     }
     Ok(Status::from_converged(s.converged))
 }

@@ -23,9 +23,11 @@ pub enum Method {
     Fem,
     /// Hankel transforms: bilateral holed plate + crack field + hole correction.
     Hankel,
-    /// Hankel where it applies (equal infinite plates with a hole, pressure load, no outputs
-    /// but R_o) and the tolerance is below 3e-5 (where the FE's estimate, which carries 2e-5 of R_o, cannot claim it), else
-    /// fem.
+    /// Hankel where it applies (equal plates with a hole, or any two plates without one in
+    /// frictionless contact; a pressure load; R_o and the curve only) and the tolerance is
+    /// below 3e-5 (where the FE's estimate, which carries 2e-5 of R_o, cannot claim it), else
+    /// fem; also fem, with the reason in the output (JSON `fallback`), where the Hankel route
+    /// declines the joint: no contact radius found, or with a hole its modes left unresolved.
     Auto,
 }
 

@@ -19,7 +19,7 @@
 //! timed by example 19.
 
 use super::exit::{sig, Status};
-use super::two_args::Args;
+use super::two_args::{Args, Method};
 use boltzone::hankel::receding::holed::two_plate_hole_to;
 use boltzone::hankel::receding::{MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
@@ -70,7 +70,8 @@ pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> 
             return Some((
                 "--c",
                 c.to_string(),
-                "needs --method fem with unequal plates (the Hankel route's finite rim takes                  two equal plates, with or without a hole)",
+                "needs --method fem with unequal plates (the Hankel route's finite rim takes \
+                 two equal plates, with or without a hole)",
             ));
         }
         if g.b > MAX_B_OVER_D_RIM * g.d {
@@ -106,6 +107,30 @@ pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> 
 /// Points of the `--curve` (plus one).
 const CURVE_POINTS: usize = 100;
 
+/// A semi-analytic route could not answer this joint (no contact radius within its scan, a
+/// singular system, a hole its modes leave unresolved under `--method auto`): a limit of the
+/// method, not bad input. `--method hankel` reports it (exit 1); `--method auto` hands the
+/// joint to the finite elements and says why (module `two`).
+#[derive(Debug)]
+pub struct Declined(pub String);
+
+impl std::fmt::Display for Declined {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "the Hankel route cannot treat this joint ({}); try --method fem",
+            self.0
+        )
+    }
+}
+
+impl std::error::Error for Declined {}
+
+/// `e` as the route's [`Declined`] error.
+pub fn declined(e: impl std::fmt::Display) -> anyhow::Error {
+    Declined(e.to_string()).into()
+}
+
 /// Runs the Hankel route on checked arguments with bearing pressure `load`.
 pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Result<Status> {
     let g = &args.geom;
@@ -125,9 +150,10 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
             .collect(),
         None => Vec::new(),
     };
-    let (out, curve) = two_plate_hole_to(&plate, args.tol, &at).map_err(|e| {
-        anyhow::anyhow!("the Hankel route cannot treat this joint ({e}); try --method fem")
-    })?;
+    let (out, curve) = two_plate_hole_to(&plate, args.tol, &at).map_err(declined)?;
+    if args.method == Method::Auto && !out.info.hole_resolved {
+        return Err(declined(boltzone::scene::two_hankel::UNRESOLVED));
+    }
     let converged = out.meets(args.tol);
     if let Some(path) = &args.out.curve {
         let method = "Hankel route with the hole (boltzone::hankel::receding::holed), \

@@ -58,6 +58,7 @@ pub mod temperature;
 pub mod temperature_keys;
 mod temperature_spec;
 pub mod temperature_table;
+pub mod two_fem;
 pub mod two_hankel;
 pub use crate::units;
 

@@ -22,8 +22,7 @@ use super::error::SceneError;
 use super::field;
 use super::file::{InterfaceKind, MaterialSpec, Method, Model, ProfileKind, Scene};
 use super::materials;
-use crate::contact::thermal;
-use crate::contact::two_plate::{self, EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
+use crate::contact::two_plate::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use crate::fem::single::{self as fem_single, FaceCondition, SingleParams};
 use crate::hankel::hole::{single_plate_separation, HoleParams};
 use crate::hankel::{SeparationParams, Slab};
@@ -36,7 +35,7 @@ use std::time::Instant;
 pub use super::solution::{InterfaceCurve, Solution, Step};
 
 /// The material of plate `i` in SI units.
-fn material(scene: &Scene, i: usize) -> Result<Material, SceneError> {
+pub(super) fn material(scene: &Scene, i: usize) -> Result<Material, SceneError> {
     match scene.material_of(i) {
         MaterialSpec::Name(n) => {
             let m = materials::lookup(&n).ok_or_else(|| SceneError::Invalid {
@@ -173,7 +172,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         note: format!("from {}", scene.units.name()),
         seconds: t0.elapsed().as_secs_f64(),
     }];
-    let (method, why) = pick(scene);
+    let (mut method, mut why) = pick(scene);
     let l = scene.units.length();
     let mut out = Solution {
         r_o: 0.0,
@@ -197,63 +196,41 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         field: None,
         midplane: None,
     };
-    let t1 = Instant::now();
+    let mut t1 = Instant::now();
     let mut heat_step = None;
     let other = match (scene.model, method) {
         (Model::TwoPlate, Method::Hankel) => {
             let scale = (l, scene.units.stress());
-            super::two_hankel::solve(scene, &joint, scale, &mut out)?;
-            Some("finite elements")
+            let declined = match super::two_hankel::solve(scene, &joint, scale, &mut out) {
+                Err(SceneError::Receding(e)) if scene.method == Method::Auto => Some(e.to_string()),
+                Ok(false) if scene.method == Method::Auto => {
+                    Some(super::two_hankel::UNRESOLVED.into())
+                }
+                r => r.map(|_| None)?,
+            };
+            match declined {
+                None => Some("finite elements"),
+                Some(reason) => {
+                    // `auto` hands the joint the route declines to the finite elements
+                    plan.push(Step {
+                        name: "hankel route".into(),
+                        ran: true,
+                        note: format!("declined: {reason}"),
+                        seconds: t1.elapsed().as_secs_f64(),
+                    });
+                    (method, why) = (
+                        Method::Fem,
+                        "finite elements: the semi-analytic route declined the joint (above)",
+                    );
+                    (out.method, out.interface) = (Method::Fem, None);
+                    t1 = Instant::now();
+                    heat_step = super::two_fem::solve(scene, &joint, nut, &mut out)?;
+                    None
+                }
+            }
         }
         (Model::TwoPlate, _) => {
-            let params = two_plate_params(scene, nut);
-            let s = match (&scene.temperature, &scene.outputs.field) {
-                (Some(t), _) if t.from_heat => {
-                    super::from_heat::solve(scene, &joint, &params, t, &mut out)?.solution
-                }
-                (Some(t), Some(_)) => super::temperature::two_plate_field(
-                    &joint,
-                    &params,
-                    t,
-                    (l, scene.units.stress()),
-                    &mut out.field,
-                )?,
-                (Some(t), None) => {
-                    let jt = t.joint_temperature(&joint, scene.units.stress())?;
-                    thermal::solve_with_temperature(&joint, &params, &jt)?
-                }
-                (None, Some(_)) => {
-                    let (s, f) = crate::contact::two_plate::solve_field(&joint, &params)?;
-                    let (grid, _) = field::two_plate_grid(&s, &f)?;
-                    out.field = Some(field::scaled(grid, l, scene.units.stress()));
-                    s
-                }
-                (None, None) => two_plate::solve(&joint, &params)?,
-            };
-            (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
-            out.full_contact = Some(s.full_contact);
-            out.nut_deflection = Some(s.nut_deflection / l);
-            if scene.outputs.interface_pressure.is_some() {
-                let st = scene.units.stress();
-                out.interface = Some(InterfaceCurve {
-                    radius: s.radius.iter().map(|r| r / l).collect(),
-                    pressure: s.pressure.iter().map(|p| p / st).collect(),
-                    gap: s.gap.iter().map(|g| g / l).collect(),
-                });
-            }
-            if scene.outputs.conductance {
-                let t = Instant::now();
-                let last = scene.plates.len().saturating_sub(1);
-                let m = [material(scene, 0)?, material(scene, last)?];
-                out.joint_conductance = Some(super::heat::conductance(
-                    scene.heat.as_ref(),
-                    scene.units,
-                    &s,
-                    m,
-                )?);
-                out.conductance_unit = Some(scene.units.heat_symbols().1);
-                heat_step = Some(t.elapsed().as_secs_f64());
-            }
+            heat_step = super::two_fem::solve(scene, &joint, nut, &mut out)?;
             None
         }
         (Model::Slab, _) => {

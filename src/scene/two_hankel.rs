@@ -8,7 +8,9 @@
 //!
 //! `method = "hankel"` asks for it; `method = "auto"` takes it, as `boltzone two --method auto`
 //! does, where it applies and the tolerance is below [`AUTO_BELOW`] (above it the finite
-//! elements reach the tolerance faster). Equal plates are symmetric about the interface, which
+//! elements reach the tolerance faster); where the route then declines the joint (an error of
+//! the route, or a hole its modes leave unresolved, [`UNRESOLVED`]) the finite elements answer
+//! and the plan says why (module [`super::run`]). Equal plates are symmetric about the interface, which
 //! therefore carries no shear: welded, frictionless and frictional interfaces are one problem,
 //! the plate on a frictionless rigid plane that the routes solve.
 //!
@@ -188,8 +190,14 @@ fn curve_fractions() -> impl Iterator<Item = f64> {
     (0..=CURVE_POINTS).map(|k| 1.0 - (1.0 - k as f64 / CURVE_POINTS as f64).powi(2))
 }
 
+/// Why `method = "auto"` leaves a holed run whose modes stopped short of their residual target
+/// to the finite elements: its ± is then no bound, where the FE's is.
+pub const UNRESOLVED: &str =
+    "the hole modes stopped short of their residual target, so its estimate is not trusted";
+
 /// Solves `joint` (SI) by the route and fills `out`'s R_o, error, `converged` and, when asked,
-/// the interface curve (scene units: lengths divided by `length`, pressures by `stress`).
+/// the interface curve (scene units: lengths divided by `length`, pressures by `stress`);
+/// returns whether the hole's modes met their residual target (always, without a hole).
 /// Without a hole: the receding contact of the two plates ([`Pair::receding_contact`]), with a
 /// finite rim [`rim_contact`], as `boltzone two --method hankel --a 0`.
 pub fn solve(
@@ -197,7 +205,7 @@ pub fn solve(
     joint: &Joint,
     (length, stress): (f64, f64),
     out: &mut Solution,
-) -> Result<(), SceneError> {
+) -> Result<bool, SceneError> {
     let curve_asked = scene.outputs.interface_pressure.is_some();
     // `resolved`: the hole's modes met their target (always, without a hole)
     let (r_o, error, resolved, curve) = if joint.hole_radius() <= 0.0 {
@@ -229,7 +237,7 @@ pub fn solve(
             gap: vec![0.0; curve.len()],
         });
     }
-    Ok(())
+    Ok(resolved)
 }
 
 /// R_o, its estimate and the interface curve (r, q), SI.

@@ -1,7 +1,9 @@
 //! `two_plate_hole_to`: the knobs for the tolerance, and the next tier's when their run falls
 //! short (module `holed`'s docs), on geometries the whole-reach survey
 //! (`two_plate_hole_reach_survey.rs`) found: small holes, where the tier for 1e-3 with its former
-//! 6 fixed modes found no contact radius or missed its estimate.
+//! 6 fixed modes found no contact radius or missed its estimate. And `two --method auto` (and a
+//! scene's `method = "auto"`), which hand a hole the modes leave unresolved to the finite
+//! elements.
 
 use super::two_plate_hole_tiers::{plate, plate_with};
 use boltzone::hankel::receding::holed::{
@@ -135,4 +137,71 @@ fn an_unresolved_hole_goes_on_only_to_a_tier_with_more_modes() {
     let (out, _) = two_plate_hole_to(&p, 1e-4, &[]).unwrap();
     let next = two_plate_hole(&p, &HoledParams::for_tolerance(1e-5)).unwrap();
     assert_eq!((out.r_o, out.info.solves), (next.r_o, next.info.solves));
+}
+
+/// `two --method M --tol T --json` on the narrow load above (A = 0.1): the exit code and the JSON.
+fn two_json(method: &str, tol: &str) -> (Option<i32>, serde_json::Value) {
+    let g = (0.205524, 1.022406, 0.263163);
+    let (d, b, nu) = (0.1 / g.0, 0.1 * g.1, g.2);
+    let run = std::process::Command::new(env!("CARGO_BIN_EXE_boltzone"))
+        .args([
+            "two", "--method", method, "--a", "0.1", "--tol", tol, "--json",
+        ])
+        .args([
+            "--b",
+            &b.to_string(),
+            "--d",
+            &d.to_string(),
+            "--nu",
+            &nu.to_string(),
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&run.stdout);
+    (run.status.code(), serde_json::from_str(&text).unwrap())
+}
+
+#[test]
+fn auto_hands_an_unresolved_hole_to_the_finite_elements() {
+    // below 3e-5 `auto` takes the Hankel route, whose modes stop at 128 short of their target
+    // here: its ± is no bound, so the finite elements answer, and say why
+    let (code, auto) = two_json("auto", "2e-5");
+    let (fem_code, fem) = two_json("fem", "2e-5");
+    assert_eq!(auto["method"], "fem");
+    let why = auto["fallback"].as_str().unwrap();
+    assert!(why.contains("hole modes stopped short"), "{why}");
+    assert_eq!((code, &auto["r_o"]), (fem_code, &fem["r_o"]));
+    assert!(fem.get("fallback").is_none());
+    // the declined run lies within both bars of the answer
+    let (hankel_code, hankel) = two_json("hankel", "2e-5");
+    assert_eq!(hankel_code, Some(3));
+    assert_eq!(hankel["hankel"]["hole_resolved"], false);
+    let f = |v: &serde_json::Value, k: &str| v[k].as_f64().unwrap();
+    let gap = (f(&hankel, "r_o") - f(&fem, "r_o")).abs();
+    assert!(
+        gap <= f(&hankel, "r_o_error") + f(&fem, "r_o_error"),
+        "{gap:e}"
+    );
+    // a scene with `method = "auto"` does the same, its plan saying so
+    let scene = |method: &str| {
+        let g = (0.205524, 1.022406, 0.263163);
+        let text = format!(
+            "model = \"two-plate\"\nmethod = \"{method}\"\ntolerance = 2e-5\n[hole]\nradius = 0.1\n\
+             [load]\nouter_radius = {}\npressure = 1.0\n[[plates]]\nthickness = {}\n\
+             material = {{ E = 28e6, nu = {} }}\n",
+            0.1 * g.1,
+            0.1 / g.0,
+            g.2
+        );
+        boltzone::scene::solve(&boltzone::scene::Scene::parse(&text).unwrap()).unwrap()
+    };
+    let (s, by_fem) = (scene("auto"), scene("fem"));
+    assert_eq!(s.method, boltzone::scene::Method::Fem);
+    assert_eq!((s.r_o, s.converged), (by_fem.r_o, by_fem.converged));
+    let step = s.plan.iter().find(|p| p.name == "hankel route").unwrap();
+    assert!(
+        step.ran && step.note.starts_with("declined: the hole modes"),
+        "{}",
+        step.note
+    );
 }

@@ -1,0 +1,96 @@
+//! The two-plate model of a scene by the finite elements ([`crate::contact::two_plate`]): R_o,
+//! the nut's deflection and, where asked, the interface curve, the field and the joint's
+//! conductance, in the scene's units; with `[temperature]` the thermal strains (module
+//! [`super::temperature`], or from the heat solution, module [`super::from_heat`]). Module
+//! [`super::run`] calls it for `method = "fem"`, for `auto` where the semi-analytic route does
+//! not apply, and where that route declines the joint.
+//!
+//! # Accuracy
+//!
+//! That of [`crate::contact::two_plate`]; the scene against the library call:
+//! `tests/scene/examples.rs`.
+//!
+//! # Cost
+//!
+//! One two-plate solve (`cargo bench --bench contact`), one more for a field.
+//!
+//! ```
+//! let text = "model = \"two-plate\"\nmethod = \"fem\"\ntolerance = 1e-2\n[hole]\nradius = 0.1\n\
+//!             [load]\nouter_radius = 0.31\npressure = 1.0\n[[plates]]\nthickness = 0.1\n";
+//! let s = boltzone::solve(&boltzone::scene::Scene::parse(text)?)?;
+//! assert_eq!(s.method, boltzone::scene::Method::Fem);
+//! assert!(s.r_o > 0.31 && s.converged);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use super::error::SceneError;
+use super::field;
+use super::file::Scene;
+use super::run::{material, two_plate_params};
+use super::solution::{InterfaceCurve, Solution};
+use crate::contact::thermal;
+use crate::contact::two_plate;
+use crate::joint::Joint;
+use std::time::Instant;
+
+/// Solves `joint` (SI; `nut` the nut's displacement in m, if the scene gives one) by the finite
+/// elements and fills `out` in the scene's units; returns the seconds of the conductance step
+/// when it ran.
+pub fn solve(
+    scene: &Scene,
+    joint: &Joint,
+    nut: Option<f64>,
+    out: &mut Solution,
+) -> Result<Option<f64>, SceneError> {
+    let l = scene.units.length();
+    let mut heat_step = None;
+    let params = two_plate_params(scene, nut);
+    let s = match (&scene.temperature, &scene.outputs.field) {
+        (Some(t), _) if t.from_heat => {
+            super::from_heat::solve(scene, joint, &params, t, out)?.solution
+        }
+        (Some(t), Some(_)) => super::temperature::two_plate_field(
+            joint,
+            &params,
+            t,
+            (l, scene.units.stress()),
+            &mut out.field,
+        )?,
+        (Some(t), None) => {
+            let jt = t.joint_temperature(joint, scene.units.stress())?;
+            thermal::solve_with_temperature(joint, &params, &jt)?
+        }
+        (None, Some(_)) => {
+            let (s, f) = two_plate::solve_field(joint, &params)?;
+            let (grid, _) = field::two_plate_grid(&s, &f)?;
+            out.field = Some(field::scaled(grid, l, scene.units.stress()));
+            s
+        }
+        (None, None) => two_plate::solve(joint, &params)?,
+    };
+    (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
+    out.full_contact = Some(s.full_contact);
+    out.nut_deflection = Some(s.nut_deflection / l);
+    if scene.outputs.interface_pressure.is_some() {
+        let st = scene.units.stress();
+        out.interface = Some(InterfaceCurve {
+            radius: s.radius.iter().map(|r| r / l).collect(),
+            pressure: s.pressure.iter().map(|p| p / st).collect(),
+            gap: s.gap.iter().map(|g| g / l).collect(),
+        });
+    }
+    if scene.outputs.conductance {
+        let t = Instant::now();
+        let last = scene.plates.len().saturating_sub(1);
+        let m = [material(scene, 0)?, material(scene, last)?];
+        out.joint_conductance = Some(super::heat::conductance(
+            scene.heat.as_ref(),
+            scene.units,
+            &s,
+            m,
+        )?);
+        out.conductance_unit = Some(scene.units.heat_symbols().1);
+        heat_step = Some(t.elapsed().as_secs_f64());
+    }
+    Ok(heat_step)
+}
