@@ -115,9 +115,10 @@ pub(super) fn solve_level_at(
 }
 
 /// R_o of a level: from the gap's shape ([`estimate`]); where the welded zone came from the
-/// report's rule and the open side penetrates (no smooth separation to fit), the midpoint
-/// between the last closed and the first open node, ± half that interval (the report's own
-/// resolution).
+/// report's rule and the open side penetrates (no smooth separation to fit), or where the
+/// contact reaches the node before a finite rim and only the rim's node is open (no two open
+/// nodes to extrapolate the gap from: `tests/contact/near_rim.rs`), the midpoint between the
+/// last closed and the first open node, ± half that interval (the report's own resolution).
 fn separation(sol: &LevelSolution) -> Option<SeparationEstimate> {
     let p = closed_pressure(sol);
     let est = estimate(&NodalInterface {
@@ -125,10 +126,13 @@ fn separation(sol: &LevelSolution) -> Option<SeparationEstimate> {
         pressure: &p,
         gap: &sol.gap,
     });
-    if est.is_some() || !sol.lcp.prefix {
+    let k = p.iter().rposition(|&x| x > 0.0)?;
+    // Contact up to the node before the rim, the rim alone open: no two open nodes to
+    // extrapolate the gap from, so R_o is bracketed as under the report's rule.
+    let rim_alone_open = k + 2 == sol.radius.len();
+    if est.is_some() || !(sol.lcp.prefix || rim_alone_open) {
         return est;
     }
-    let k = p.iter().rposition(|&x| x > 0.0)?;
     let (r0, r1) = (sol.radius[k], *sol.radius.get(k + 1)?);
     Some(SeparationEstimate {
         r_o: 0.5 * (r0 + r1),

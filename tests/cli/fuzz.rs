@@ -26,7 +26,8 @@
 //! first (487 s, codes 4804/76/4987/133) passed with its slowest run at 29.6 s of CPU, a
 //! narrow load on a small hole with a rim taken through every tier (now stopped where the next
 //! tier allows no more modes); the second (601 s beside other work, the same codes) with its
-//! slowest at 15.9 s. Runs over 10 s of CPU are printed with their arguments.
+//! slowest at 15.9 s. Runs over 10 s of CPU are printed with their arguments, and with `FUZZ_SHOW_FAILURES` set every
+//! run that exits 1 (a failure the user sees) with the first line of its message.
 
 use std::io::Read;
 use std::process::{Command, Stdio};
@@ -298,6 +299,10 @@ fn campaign(seed: u64, n: usize) -> (Vec<String>, f64, [usize; 4]) {
                 let r = run(args, Duration::from_secs(30));
                 if r.cpu_seconds > 10.0 {
                     println!("slow: {:.1} s CPU: {}", r.cpu_seconds, args.join(" "));
+                }
+                if r.code == Some(1) && std::env::var_os("FUZZ_SHOW_FAILURES").is_some() {
+                    let why = r.stderr.lines().next().unwrap_or("");
+                    println!("exit 1: {}\n    {why}", args.join(" "));
                 }
                 let mut g = results.lock().unwrap();
                 g.1 = g.1.max(r.cpu_seconds);

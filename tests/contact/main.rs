@@ -6,6 +6,7 @@ mod exterior;
 mod friction;
 mod friction_cli;
 mod lcp;
+mod near_rim;
 mod receding_vs_fe;
 mod separation;
 mod thermal;
