@@ -189,6 +189,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             "r_o": s.r_o,
             "r_o_error": s.r_o_error,
             "converged": s.converged,
+            "full_contact": s.full_contact,
             "tolerance": tolerance(&args),
             "levels": info.levels,
             "observed_order": info.observed_order,
@@ -230,6 +231,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             info.dofs,
             info.seconds
         );
+        if s.full_contact {
+            println!("full contact: the midplane stays compressive out to the rim, R_o = C");
+        }
     }
     Ok(Status::from_converged(s.converged))
 }

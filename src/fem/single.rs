@@ -3,7 +3,10 @@
 //! radius C, both faces pressed by p(r) over A..B. By symmetry only the upper half 0 ≤ z ≤ D is
 //! meshed, with a roller on the midplane (w = 0, u free, τ_rz = 0), a free hole and a free rim.
 //!
-//! R_o is the smallest radius beyond the load (r ≥ B) where the midplane σ_z turns tensile.
+//! R_o is the smallest radius beyond the load (r ≥ B) where the midplane σ_z turns tensile; a
+//! finite plate whose midplane stays compressive out to its rim is in full contact, R_o = C
+//! ([`SingleSolution::full_contact`]; short thick plates, C − B below about D: the two-plate
+//! model, which shares no code, agrees on which joints, `tests/fem/full_contact.rs`).
 //! σ_z on the midplane is recovered from the roller reactions ([`super::line_traction`]:
 //! σ_z = −t_z); the crossing is located inside the element edge where the nodal values change
 //! sign, by linear (Q4, Cst4) or quadratic (Q9) interpolation of the nodal values.
@@ -84,7 +87,7 @@ use super::solve::{Factorization, SolveParams};
 use super::spacing::Spacing;
 use super::thermal::Thermal;
 use crate::error::InputError;
-use crate::joint::SinglePlate;
+use crate::joint::{OuterRadius, SinglePlate};
 use crate::material::Material;
 pub use crate::numerics::convergence::level_estimate;
 use crate::value::meets;
@@ -341,6 +344,10 @@ pub struct SingleSolution {
     pub r_o: f64,
     /// Its estimated absolute error ([`level_estimate`]).
     pub r_o_error: f64,
+    /// Whether the midplane stayed compressive out to a finite rim on the finest level: full
+    /// contact, R_o = C (its error the level estimate while the last two levels agree on it,
+    /// else the span C − B).
+    pub full_contact: bool,
     /// Whether `r_o_error` ≤ `tolerance`·R_o.
     pub converged: bool,
     /// The study's record (levels, sizes, time).
@@ -379,13 +386,20 @@ pub(crate) fn study(
     check_levels(params.levels)?;
     let t0 = Instant::now();
     let mut values = Vec::new();
+    let mut margins = Vec::new();
     let (mut nodes, mut dofs) = (0, 0);
     let mut levels = crossing_levels(plate, params)?;
     levels.keep = keep;
     levels.temperature = temperature;
+    let span = plate.load().outer()..levels_rim(plate);
+    // (r_o, error) and whether a full contact is still unsettled (no tolerance then out of reach)
+    let level_estimate = |values: &[f64], margins: &[Option<f64>]| {
+        full_contact_estimate(level_estimate(values)?, margins, &span)
+    };
     for level in levels.by_ref().take(params.levels) {
         let level = level?;
         values.push(level.r_o);
+        margins.push(level.full_contact_margin);
         (nodes, dofs) = (level.nodes, level.dofs);
         let met = |(_, e): (f64, f64)| tolerance.is_some_and(|t| meets(level.r_o, e, t));
         // out of reach: even shrinking FASTEST_ESTIMATE_RATE× per level, the levels left
@@ -394,16 +408,19 @@ pub(crate) fn study(
         let hopeless = |(r, e): (f64, f64)| {
             tolerance.is_some_and(|t| e > t * r.abs() * FASTEST_ESTIMATE_RATE.powi(left))
         };
-        if level_estimate(&values).is_some_and(|v| met(v) || hopeless(v)) {
+        if level_estimate(&values, &margins)
+            .is_some_and(|(r, e, unsettled)| met((r, e)) || (!unsettled && hopeless((r, e))))
+        {
             break;
         }
     }
-    let (r_o, r_o_error) = level_estimate(&values).ok_or(FemError::Solver(
+    let (r_o, r_o_error, _) = level_estimate(&values, &margins).ok_or(FemError::Solver(
         "fewer than three refinement levels were solved".into(),
     ))?;
     let solution = SingleSolution {
         r_o,
         r_o_error,
+        full_contact: margins.last().is_some_and(Option::is_some),
         converged: meets(r_o, r_o_error, tolerance.unwrap_or(params.tolerance)),
         info: SingleInfo {
             observed_order: observed_order(&values),
@@ -415,6 +432,44 @@ pub(crate) fn study(
         },
     };
     Ok((solution, levels.last.take()))
+}
+
+/// The rim C of `plate` (infinite: no full contact is possible, any value serves).
+fn levels_rim(plate: &SinglePlate) -> f64 {
+    match plate.outer_radius() {
+        OuterRadius::Finite(c) => c,
+        OuterRadius::Infinite => f64::INFINITY,
+    }
+}
+
+/// The level estimate `(r_o, error)` where a level found full contact (R_o = C, its midplane
+/// compressive out to the rim by `margins`), and whether that is still unsettled. It stands
+/// when no level was in full contact, when the last three were (and the last margin exceeds
+/// four times each of their two changes: the sign of σ_z near the rim settled), or when the
+/// last three all found a crossing; otherwise R_o may yet lie anywhere in `span` (B..C), and
+/// the error is its width. On (A, B, D, C) =
+/// (0.1, 0.2, 0.5, 0.58) the margins were 5.1e-4, 7.1e-4, 6.1e-4 P on levels 1–3 (a rule of
+/// half the last margin would have settled there), then 2.5e-4, 4.0e-5 P: the two-plate
+/// model, which shares no code, opens 1.2e-3 inside that rim; at C = 0.57 they were 5.29e-3,
+/// 5.24e-3, 5.08e-3 P. `tests/fem/full_contact.rs`.
+fn full_contact_estimate(
+    (r_o, error): (f64, f64),
+    margins: &[Option<f64>],
+    span: &std::ops::Range<f64>,
+) -> Option<(f64, f64, bool)> {
+    let settled = match margins {
+        [.., None, None, None] => true,
+        [.., Some(m0), Some(m1), Some(m2)] => {
+            *m2 > 0.0 && 4.0 * (m2 - m1).abs().max((m1 - m0).abs()) < *m2
+        }
+        // fewer than three levels, or a change between full contact and a crossing among
+        // the last three
+        _ => margins.iter().all(Option::is_none),
+    };
+    Some(match settled {
+        true => (r_o, error, false),
+        false => (r_o, error.max(span.end - span.start), true),
+    })
 }
 
 fn check_levels(levels: usize) -> Result<(), FemError> {

@@ -130,8 +130,12 @@ pub const FIXED_GRADING_TIGHT: f64 = 1.0 / 8.0;
 /// The discrete crossing R_o of one mesh level, and that mesh's size.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LevelCrossing {
-    /// First upward zero of the recovered midplane σ_z beyond B on this mesh.
+    /// First upward zero of the recovered midplane σ_z beyond B on this mesh; a finite rim C
+    /// where σ_z stays compressive out to it (full contact).
     pub r_o: f64,
+    /// In full contact, the least compression of the midplane beyond B, −max σ_z (in the load's
+    /// units): how far this mesh is from opening near the rim; None where σ_z turned tensile.
+    pub full_contact_margin: Option<f64>,
     /// Nodes of the mesh.
     pub nodes: usize,
     /// Equations of the mesh.
@@ -189,13 +193,28 @@ impl Iterator for CrossingLevels<'_> {
             });
         self.level += 1;
         let level = solved.and_then(|m| {
-            let r_o =
-                m.first_tensile_crossing(self.plate.load().outer())
-                    .ok_or(FemError::Solver(
-                        "the midplane stress never turns tensile inside the plate".into(),
-                    ))?;
+            let b = self.plate.load().outer();
+            let (r_o, full_contact_margin) =
+                match (m.first_tensile_crossing(b), self.plate.outer_radius()) {
+                    (Some(r_o), _) => (r_o, None),
+                    // compressive out to a finite rim: full contact, R_o = C (an answer)
+                    (None, OuterRadius::Finite(c)) => {
+                        let peak =
+                            m.r.iter()
+                                .zip(&m.sigma_z)
+                                .filter(|(r, _)| **r >= b)
+                                .fold(f64::NEG_INFINITY, |p, (_, s)| p.max(*s));
+                        (c, Some(-peak))
+                    }
+                    (None, OuterRadius::Infinite) => {
+                        return Err(FemError::Solver(
+                            "the midplane stress never turns tensile inside the plate".into(),
+                        ))
+                    }
+                };
             Ok(LevelCrossing {
                 r_o,
+                full_contact_margin,
                 nodes: m.nodes,
                 dofs: m.dofs,
             })

@@ -277,6 +277,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                 }
                 None => (fem_single::solve(&plate, &params)?, None),
             };
+            out.full_contact = Some(s.full_contact);
             if let Some(h) = h {
                 let st = scene.units.stress();
                 if scene.outputs.field.is_some() {

@@ -5,6 +5,7 @@ mod cli;
 #[path = "../common/mod.rs"]
 mod common;
 mod elements;
+mod full_contact;
 mod hankel_agreement;
 mod hole_agreement;
 mod lame;
