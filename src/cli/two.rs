@@ -198,11 +198,25 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         ..Default::default()
     };
     let html = args.report.as_ref().is_some_and(|p| is_html(p));
+    // welded dissimilar plates: the contact problem can be defective (an oscillatory edge
+    // singularity); the message says what to use instead
+    let welded_dissimilar =
+        matches!(args.interface, Interface::Welded) && !super::two_pair::equal_plates(&args);
+    let hint = |e: boltzone::contact::ContactError| -> anyhow::Error {
+        match welded_dissimilar {
+            true => anyhow::anyhow!(
+                "{e}: welded dissimilar plates have an oscillatory edge singularity and the \
+                 welded model is ill-posed here; use --interface frictionless or --interface \
+                 friction --mu M"
+            ),
+            false => e.into(),
+        }
+    };
     let (s, field) = if args.out.field.is_some() || args.out.plot.is_some() || html {
-        let (s, field) = solve_field(&joint, &params)?;
+        let (s, field) = solve_field(&joint, &params).map_err(hint)?;
         (s, Some(field))
     } else {
-        (solve(&joint, &params)?, None)
+        (solve(&joint, &params).map_err(hint)?, None)
     };
     if let (Some(path), Some(field)) = (&args.out.field, &field) {
         super::write_output(path, &super::two_files::field_vtu(&s, field, args.units)?)?;

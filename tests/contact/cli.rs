@@ -81,3 +81,31 @@ fn bad_input_is_reported_not_panicked() {
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("0.6"));
 }
+
+#[test]
+fn a_defective_welded_dissimilar_joint_says_what_to_use_instead() {
+    // one of 16 such exit-1 runs of the 10⁴ fuzz (25 Nov 2026): a modulus ratio of 9.3
+    let joint = [
+        "two",
+        "--a",
+        "0",
+        "--b",
+        "5.364e-3",
+        "--d",
+        "1.7437e-3",
+        "--nu",
+        "0.19677",
+        "--e",
+        "1.34958e8",
+        "--e2",
+        "1.25494e9",
+    ];
+    let welded = boltzone(&[&joint[..], &["--interface", "welded"]].concat());
+    let text = String::from_utf8_lossy(&welded.stderr);
+    assert_eq!(welded.status.code(), Some(1), "{text}");
+    assert!(text.contains("not positive definite"), "{text}");
+    assert!(text.contains("--interface frictionless"), "{text}");
+    // and the frictionless model answers it
+    let frictionless = boltzone(&[&joint[..], &["--interface", "frictionless"]].concat());
+    assert_eq!(frictionless.status.code(), Some(0));
+}
