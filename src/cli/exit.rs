@@ -86,6 +86,30 @@ pub fn usage<T>(flag: &str, value: impl std::fmt::Display, reason: &str) -> anyh
     Err(UsageError(format!("{flag} = {value}: {reason}")).into())
 }
 
+/// A semi-analytic route could not answer this joint (no contact radius within its scan, a
+/// singular system, a hole its modes leave unresolved under `--method auto`): a limit of the
+/// method, not bad input. `--method hankel` reports it (exit 1); `--method auto` hands the
+/// joint to the finite elements and says why (module `two`). Exit 1 (`code_of`)..
+#[derive(Debug)]
+pub struct Declined(pub String);
+
+impl std::fmt::Display for Declined {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "the Hankel route cannot treat this joint ({}); try --method fem",
+            self.0
+        )
+    }
+}
+
+impl std::error::Error for Declined {}
+
+/// `e` as the route's [`Declined`] error.
+pub fn declined(e: impl std::fmt::Display) -> anyhow::Error {
+    Declined(e.to_string()).into()
+}
+
 /// The exit code of a failed command: 2 for bad input, 1 otherwise.
 pub fn code_of(e: &anyhow::Error) -> u8 {
     let input = e.chain().any(|c| {

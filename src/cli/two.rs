@@ -3,7 +3,7 @@
 //! interface pressure p(r), gap g(r) and (welded) shear τ(r) as CSV. `--method hankel` takes the
 //! semi-analytic routes (modules `two_hankel`, `two_pair`, `two_rim`); `--method auto` takes them
 //! below a tolerance of 3e-5 where they apply, and the finite elements when a route declines the
-//! joint (its [`super::two_hankel::Declined`] reason in the text and the JSON's `fallback`; the
+//! joint (its [`super::exit::Declined`] reason in the text and the JSON's `fallback`; the
 //! JSON's `method` says which answered: `tests/hankel/two_plate_hole_handover.rs`).
 //!
 //! `--units` (in-psi-lbf, mm-MPa-N, m-Pa-N) sets the units of every flag and of the text, the
@@ -162,7 +162,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         };
         match ran {
             Err(e) if args.method == Method::Auto => {
-                let why = e.downcast::<super::two_hankel::Declined>()?.0;
+                let why = e.downcast::<super::exit::Declined>()?.0;
                 fallback = Some(format!(
                     "the Hankel route declined ({why}); the finite elements answer"
                 ));

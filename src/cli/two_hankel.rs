@@ -18,7 +18,7 @@
 //! 1e-6; 1.4–2.2 s at 1e-8 (every row converged there; load 9–12, before the hole tables);
 //! timed by example 19.
 
-use super::exit::{sig, Status};
+use super::exit::{declined, sig, Status};
 use super::two_args::{Args, Method};
 use boltzone::hankel::receding::holed::two_plate_hole_to;
 use boltzone::hankel::receding::{MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
@@ -106,30 +106,6 @@ pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> 
 
 /// Points of the `--curve` (plus one).
 const CURVE_POINTS: usize = 100;
-
-/// A semi-analytic route could not answer this joint (no contact radius within its scan, a
-/// singular system, a hole its modes leave unresolved under `--method auto`): a limit of the
-/// method, not bad input. `--method hankel` reports it (exit 1); `--method auto` hands the
-/// joint to the finite elements and says why (module `two`).
-#[derive(Debug)]
-pub struct Declined(pub String);
-
-impl std::fmt::Display for Declined {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(
-            f,
-            "the Hankel route cannot treat this joint ({}); try --method fem",
-            self.0
-        )
-    }
-}
-
-impl std::error::Error for Declined {}
-
-/// `e` as the route's [`Declined`] error.
-pub fn declined(e: impl std::fmt::Display) -> anyhow::Error {
-    Declined(e.to_string()).into()
-}
 
 /// Runs the Hankel route on checked arguments with bearing pressure `load`.
 pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Result<Status> {

@@ -90,7 +90,7 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
     // every flag was checked: what the route rejects now is beyond its reach (exit 1)
     let out = Pair::new(upper, lower, load)
         .receding_contact(&RecedingParams::default())
-        .map_err(super::two_hankel::declined)?;
+        .map_err(super::exit::declined)?;
     let (r_o, error) = (out.r_o, out.info.r_o_error);
     let converged = error <= args.tol * r_o;
     if let Some(path) = &args.out.curve {

@@ -37,7 +37,7 @@ pub fn run(
     let params = RecedingParams::default();
     let plate = Plate::new(g.d, material)?;
     // every flag was checked: what the route rejects now is beyond its reach (exit 1)
-    let beyond = super::two_hankel::declined;
+    let beyond = super::exit::declined;
     let (out, _) = rim_contact(g.d, material, &load, c, &params, args.tol, &[]).map_err(beyond)?;
     let infinite = Pair::new(plate, plate, load.clone())
         .receding_contact(&params)

@@ -52,6 +52,7 @@ pub mod from_heat;
 pub mod heat;
 pub mod materials;
 pub mod run;
+pub mod si;
 pub mod solution;
 pub mod sweep;
 pub mod temperature;

@@ -20,94 +20,16 @@
 
 use super::error::SceneError;
 use super::field;
-use super::file::{InterfaceKind, MaterialSpec, Method, Model, ProfileKind, Scene};
-use super::materials;
-use crate::contact::two_plate::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
+use super::file::{Method, Model, Scene};
 use crate::fem::single::{self as fem_single, FaceCondition, SingleParams};
 use crate::hankel::hole::{single_plate_separation, HoleParams};
 use crate::hankel::{SeparationParams, Slab};
-use crate::joint::{Joint, OuterRadius, Plate};
-use crate::load::{FaceLoad, Peak};
-use crate::material::Material;
-use std::f64::consts::PI;
+use crate::joint::Joint;
 use std::time::Instant;
 
+pub use super::si::joint_si;
 pub use super::solution::{InterfaceCurve, Solution, Step};
-
-/// The material of plate `i` in SI units.
-pub(super) fn material(scene: &Scene, i: usize) -> Result<Material, SceneError> {
-    match scene.material_of(i) {
-        MaterialSpec::Name(n) => {
-            let m = materials::lookup(&n).ok_or_else(|| SceneError::Invalid {
-                key: format!("plates[{i}].material"),
-                line: 1,
-                reason: format!("\"{n}\": not in the library ({})", materials::names()),
-            })?;
-            Ok(Material::new(m.youngs_modulus, m.poisson_ratio)?)
-        }
-        MaterialSpec::Constants(c) => Ok(Material::new(c.e * scene.units.stress(), c.nu)?),
-    }
-}
-
-/// The joint of `scene` in SI units (m, Pa), and the nut displacement (m) if one is given.
-/// Plates top to bottom; one `[[plates]]` entry stands for two equal plates.
-pub fn joint_si(scene: &Scene) -> Result<(Joint, Option<f64>), SceneError> {
-    let u = scene.units;
-    let (l, s) = (u.length(), u.stress());
-    let a = scene.hole.radius * l;
-    let b = scene.load.outer_radius * l;
-    let p = match (scene.load.force, scene.load.pressure) {
-        (Some(f), _) => f * u.force() / (PI * (b * b - a * a)),
-        (None, Some(p)) => p * s,
-        // a prescribed displacement: the pressure only marks A..B
-        (None, None) => s,
-    };
-    let load = match scene.load.profile {
-        ProfileKind::Uniform => FaceLoad::uniform(a, b, p)?,
-        ProfileKind::PeakA => FaceLoad::triangular(a, b, p, Peak::AtA)?,
-        ProfileKind::PeakB => FaceLoad::triangular(a, b, p, Peak::AtB)?,
-    };
-    let last = scene.plates.len().saturating_sub(1);
-    let (Some(top), Some(bottom)) = (scene.plates.first(), scene.plates.get(last)) else {
-        return Err(SceneError::Invalid {
-            key: "plates".into(),
-            line: 1,
-            reason: "no [[plates]] entry".into(),
-        });
-    };
-    let joint = Joint::new(
-        a,
-        scene
-            .joint
-            .outer_radius
-            .map_or(OuterRadius::Infinite, |c| OuterRadius::Finite(c * l)),
-        Plate::new(top.thickness * l, material(scene, 0)?)?,
-        Plate::new(bottom.thickness * l, material(scene, last)?)?,
-        load,
-    )?;
-    Ok((joint, scene.load.nut_displacement.map(|d| d * l)))
-}
-
-/// The two-plate parameters of `scene` (SI nut displacement `nut`).
-pub fn two_plate_params(scene: &Scene, nut: Option<f64>) -> TwoPlateParams {
-    TwoPlateParams {
-        interface: match scene.joint.interface {
-            InterfaceKind::Welded => InterfaceModel::Welded,
-            InterfaceKind::Frictionless => InterfaceModel::Frictionless,
-            InterfaceKind::Friction => InterfaceModel::Friction {
-                mu: scene.joint.mu.unwrap_or(0.0),
-            },
-        },
-        loading: nut.map_or(Loading::Pressure, Loading::NutDisplacement),
-        edge: if scene.joint.fixed_edge {
-            EdgeSupport::Fixed
-        } else {
-            EdgeSupport::Free
-        },
-        tolerance: scene.tolerance,
-        ..TwoPlateParams::default()
-    }
-}
+pub use super::two_fem::two_plate_params;
 
 /// The Hankel search and hole parameters the single-plate route uses at `tolerance` (as
 /// `boltzone single --method hankel`).

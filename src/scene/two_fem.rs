@@ -25,11 +25,12 @@
 
 use super::error::SceneError;
 use super::field;
+use super::file::InterfaceKind;
 use super::file::Scene;
-use super::run::{material, two_plate_params};
+use super::si::material;
 use super::solution::{InterfaceCurve, Solution};
 use crate::contact::thermal;
-use crate::contact::two_plate;
+use crate::contact::two_plate::{self, EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use crate::joint::Joint;
 use std::time::Instant;
 
@@ -93,4 +94,25 @@ pub fn solve(
         heat_step = Some(t.elapsed().as_secs_f64());
     }
     Ok(heat_step)
+}
+
+/// The two-plate parameters of `scene` (SI nut displacement `nut`).
+pub fn two_plate_params(scene: &Scene, nut: Option<f64>) -> TwoPlateParams {
+    TwoPlateParams {
+        interface: match scene.joint.interface {
+            InterfaceKind::Welded => InterfaceModel::Welded,
+            InterfaceKind::Frictionless => InterfaceModel::Frictionless,
+            InterfaceKind::Friction => InterfaceModel::Friction {
+                mu: scene.joint.mu.unwrap_or(0.0),
+            },
+        },
+        loading: nut.map_or(Loading::Pressure, Loading::NutDisplacement),
+        edge: if scene.joint.fixed_edge {
+            EdgeSupport::Fixed
+        } else {
+            EdgeSupport::Free
+        },
+        tolerance: scene.tolerance,
+        ..TwoPlateParams::default()
+    }
 }
