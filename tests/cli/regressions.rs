@@ -356,3 +356,21 @@ fn a_fixed_edge_beyond_the_mesh_is_refused_naming_c() {
         }
     }
 }
+
+#[test]
+fn a_vanishing_bearing_face_is_bad_input() {
+    // `two --a 0 --b 1e-320 …` reached the FE and failed (exit 1) in the 10⁴ fuzz
+    let r = go(&["two", "--a", "0", "--b", "1e-320", "--d", "0.001"]);
+    assert_eq!(code(&r), 2, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("--b") && r.stderr.contains("1e-3 plate"),
+        "{}",
+        r.stderr
+    );
+    // with a hole the same floor follows from A/D ≥ 1e-3; `single` and `slab` share the check
+    let r = go(&["single", "--a", "1e-9", "--b", "2e-9", "--d", "1"]);
+    assert_eq!(code(&r), 2, "{}", r.stderr);
+    // the floor: B = 1e-3 D is answered
+    let r = go(&["two", "--a", "0", "--b", "0.001", "--d", "1", "--c", "10"]);
+    assert_eq!(code(&r), 0, "{}", r.stderr);
+}

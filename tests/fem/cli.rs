@@ -21,12 +21,14 @@ fn json_has_the_slab_keys_and_mesh_size() {
         "dofs",
         "seconds",
         "levels",
+        "full_contact",
     ] {
         assert!(!v[key].is_null(), "missing {key}: {v}");
     }
     let r_o = v["r_o"].as_f64().unwrap();
     assert!((v["r_o_over_a"].as_f64().unwrap() - r_o / 0.1).abs() < 1e-12);
     assert!(v["levels"].as_array().unwrap().len() == 3);
+    assert_eq!(v["full_contact"], false); // R_o well inside C
 }
 
 #[test]
