@@ -176,8 +176,9 @@ pub fn output_path(flag: &str, path: &Path) -> anyhow::Result<()> {
 
 /// The supported domain of the joint's shape, in thicknesses of the (thinner) plate D: a hole
 /// A = 0 or 1e-3 ≤ A/D ≤ 1e3, a bearing face at least 1e-6·B wider than the hole, reaching
-/// at least 1e-3 thicknesses (B = 1e-320 left the FE's contact window unsized: three exit-1 runs
-/// of the 10⁴ fuzz, 25 Nov 2026) and at most `b_over_d_max` thicknesses wide ([`B_OVER_D_SLAB`], [`B_OVER_D_SINGLE`], [`B_OVER_D_TWO`]).
+/// at least 1e-3 thicknesses (B = 1e-320 left the FE's contact window unsized: three exit-1
+/// runs of the 10⁴ fuzz, 25 Nov 2026) and at most `b_over_d_max` thicknesses wide
+/// ([`B_OVER_D_SLAB`], [`B_OVER_D_SINGLE`], [`B_OVER_D_TWO`]).
 /// Outside it the solvers' meshes or quadratures cannot be sized within bounded memory and time,
 /// so such input is refused rather than left to run out of either.
 pub fn domain(a: f64, b: f64, d: f64, b_over_d_max: f64) -> anyhow::Result<()> {

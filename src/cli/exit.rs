@@ -89,7 +89,7 @@ pub fn usage<T>(flag: &str, value: impl std::fmt::Display, reason: &str) -> anyh
 /// A semi-analytic route could not answer this joint (no contact radius within its scan, a
 /// singular system, a hole its modes leave unresolved under `--method auto`): a limit of the
 /// method, not bad input. `--method hankel` reports it (exit 1); `--method auto` hands the
-/// joint to the finite elements and says why (module `two`). Exit 1 (`code_of`)..
+/// joint to the finite elements and says why (module `two`). Exit 1 ([`code_of`]).
 #[derive(Debug)]
 pub struct Declined(pub String);
 

@@ -10,9 +10,9 @@
 //! does, where it applies and the tolerance is below [`AUTO_BELOW`] (above it the finite
 //! elements reach the tolerance faster); where the route then declines the joint (an error of
 //! the route, or a hole its modes leave unresolved, [`UNRESOLVED`]) the finite elements answer
-//! and the plan says why (module [`super::run`]). Equal plates are symmetric about the interface, which
-//! therefore carries no shear: welded, frictionless and frictional interfaces are one problem,
-//! the plate on a frictionless rigid plane that the routes solve.
+//! and the plan says why (module [`super::run`]). Equal plates are symmetric about the
+//! interface, which therefore carries no shear: welded, frictionless and frictional interfaces
+//! are one problem, the plate on a frictionless rigid plane that the routes solve.
 //!
 //! ```
 //! use boltzone::scene::{two_hankel, Scene};
