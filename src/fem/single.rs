@@ -391,10 +391,14 @@ pub(crate) fn study(
     let mut levels = crossing_levels(plate, params)?;
     levels.keep = keep;
     levels.temperature = temperature;
-    let span = plate.load().outer()..levels_rim(plate);
+    // the span B..C in which a full contact not yet settled may still end (none without a rim)
+    let span = match plate.outer_radius() {
+        OuterRadius::Finite(c) => c - plate.load().outer(),
+        OuterRadius::Infinite => f64::INFINITY,
+    };
     // (r_o, error) and whether a full contact is still unsettled (no tolerance then out of reach)
     let level_estimate = |values: &[f64], margins: &[Option<f64>]| {
-        full_contact_estimate(level_estimate(values)?, margins, &span)
+        level_estimate(values).map(|e| full_contact_estimate(e, margins, span))
     };
     for level in levels.by_ref().take(params.levels) {
         let level = level?;
@@ -434,29 +438,21 @@ pub(crate) fn study(
     Ok((solution, levels.last.take()))
 }
 
-/// The rim C of `plate` (infinite: no full contact is possible, any value serves).
-fn levels_rim(plate: &SinglePlate) -> f64 {
-    match plate.outer_radius() {
-        OuterRadius::Finite(c) => c,
-        OuterRadius::Infinite => f64::INFINITY,
-    }
-}
-
 /// The level estimate `(r_o, error)` where a level found full contact (R_o = C, its midplane
 /// compressive out to the rim by `margins`), and whether that is still unsettled. It stands
 /// when no level was in full contact, when the last three were (and the last margin exceeds
 /// four times each of their two changes: the sign of σ_z near the rim settled), or when the
-/// last three all found a crossing; otherwise R_o may yet lie anywhere in `span` (B..C), and
-/// the error is its width. On (A, B, D, C) =
-/// (0.1, 0.2, 0.5, 0.58) the margins were 5.1e-4, 7.1e-4, 6.1e-4 P on levels 1–3 (a rule of
-/// half the last margin would have settled there), then 2.5e-4, 4.0e-5 P: the two-plate
+/// last three all found a crossing; otherwise R_o may yet lie anywhere in B..C, and the error
+/// is that width, `span`. On (A, B, D, C) = (0.1, 0.2, 0.5, 0.58) the margins were 5.1e-4,
+/// 7.1e-4, 6.1e-4 P on levels 1–3 (a rule of half the last margin would have settled there),
+/// then 2.5e-4, 4.0e-5 P: the two-plate
 /// model, which shares no code, opens 1.2e-3 inside that rim; at C = 0.57 they were 5.29e-3,
 /// 5.24e-3, 5.08e-3 P. `tests/fem/full_contact.rs`.
 fn full_contact_estimate(
     (r_o, error): (f64, f64),
     margins: &[Option<f64>],
-    span: &std::ops::Range<f64>,
-) -> Option<(f64, f64, bool)> {
+    span: f64,
+) -> (f64, f64, bool) {
     let settled = match margins {
         [.., None, None, None] => true,
         [.., Some(m0), Some(m1), Some(m2)] => {
@@ -466,10 +462,10 @@ fn full_contact_estimate(
         // the last three
         _ => margins.iter().all(Option::is_none),
     };
-    Some(match settled {
+    match settled {
         true => (r_o, error, false),
-        false => (r_o, error.max(span.end - span.start), true),
-    })
+        false => (r_o, error.max(span), true),
+    }
 }
 
 fn check_levels(levels: usize) -> Result<(), FemError> {
