@@ -81,7 +81,9 @@ pub(crate) fn mesh(
     // plates near R_o), shrinking on the finest levels ([`level_grading`])
     let (q, q_axial, _) = level_grading(h, g.d[0].min(g.d[1]), 1.25, 1.5);
     let mut foci = vec![g.a, g.b];
-    foci.extend(r_est.filter(|&r| r > g.a && r < g.c));
+    // (a level in full contact estimates R_o = C: the next level is graded at the rim, where
+    // the contact ends, as at any other R_o; a knot there is the rim's own node)
+    foci.extend(r_est.filter(|&r| r > g.a && r <= g.c));
     let h_max = ((g.c - g.a) / 10.0).min(H_MAX_OVER_D * g.d[0].max(g.d[1]));
     let r = Spacing::graded(g.a, g.c, &foci[1..], &foci, h, q, h_max)?;
     let zs =

@@ -8,6 +8,12 @@
 //! the random joints below came within 0.41 of their bars, on (A, B, D, C) = (0, 0.01, 0.1,
 //! 0.114), whose levels ended 0.11277, 0.11266, 0.11270 at observed rate 0.93, the bar of
 //! 3.4e-5 held against a ninth level, 0.1126955.)
+//!
+//! Just past the C where the contact first reaches the rim, a level in full contact (R_o = C)
+//! graded the next level's mesh at A and B only, and that level's contact edge fell into the
+//! coarse last element: tight runs ended 2 % inside the rim with bars of 1.5e-2 to 2.5e-2
+//! (survey of 12 random joints, 25 Nov 2026: the bars held, but the tight runs were worse than
+//! the loose ones). Such a level is now graded at the rim (`refine::mesh`); the last test.
 
 use boltzone::contact::two_plate::{solve, TwoPlateParams, TwoPlateSolution};
 use boltzone::numerics::random::SplitMix64 as Rng;
@@ -135,4 +141,45 @@ fn random_joints_with_the_rim_near_the_contact_edge() {
     println!(
         "16 joints near the rim: {full} in full contact, |error| at most {worst:.2} of the bar"
     );
+}
+
+#[test]
+fn more_levels_narrow_the_bar_past_a_full_contact_level() {
+    // (A, B, D, C), ν = 0.3, C just past where the contact first reaches the rim (found by
+    // bisecting C on `full_contact` at --tol 1e-3): the levels close on C from below, one of
+    // them reaches it. The next level was graded at A and B only (R_o = C was no focus of
+    // the mesh), 0.015 in between the rim's node and the one before: its contact edge fell
+    // there, 0.690 on the first joint where the levels before read 0.69773 and 0.69776, and
+    // the run at 3e-5 ended 0.690085 ± 1.5e-2, forty times the bar of the run at 1e-3.
+    let cases = [
+        (0.0202, 0.3463, 0.5237, 0.69776),
+        (0.0383, 0.1729, 0.3477, 0.42835),
+        (0.0, 0.1982, 0.5179, 0.62136),
+    ];
+    for (a, b, d, c) in cases {
+        let j = joint(a, b, d, d, c, 0.3);
+        let at = |tol: f64| {
+            let params = TwoPlateParams {
+                tolerance: tol,
+                ..TwoPlateParams::default()
+            };
+            solve(&j, &params).unwrap()
+        };
+        let (loose, tight) = (at(1e-3), at(3e-5));
+        let what = format!("(A, B, D, C) = ({a}, {b}, {d}, {c})");
+        let reached = tight.info.levels.iter().any(|l| l.r_o == c);
+        assert!(reached, "{what}: no level reached the rim");
+        assert!(
+            tight.r_o_error < loose.r_o_error,
+            "{what}: {} ± {:.2e} at 3e-5 against {} ± {:.2e} at 1e-3",
+            tight.r_o,
+            tight.r_o_error,
+            loose.r_o,
+            loose.r_o_error
+        );
+        assert!(
+            (tight.r_o - loose.r_o).abs() <= tight.r_o_error + loose.r_o_error,
+            "{what}"
+        );
+    }
 }
