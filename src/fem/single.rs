@@ -447,7 +447,10 @@ pub(crate) fn study(
 /// 7.1e-4, 6.1e-4 P on levels 1–3 (a rule of half the last margin would have settled there),
 /// then 2.5e-4, 4.0e-5 P: the two-plate
 /// model, which shares no code, opens 1.2e-3 inside that rim; at C = 0.57 they were 5.29e-3,
-/// 5.24e-3, 5.08e-3 P. `tests/fem/full_contact.rs`.
+/// 5.24e-3, 5.08e-3 P. (Those later levels were graded at A and B only; graded at the rim too,
+/// as [`crossing_levels`] now does after a level in full contact, level 4 finds the crossing
+/// and at --tol 1e-4 R_o converges to 0.579326 ± 3.1e-5, within the bar of a run to 1e-5,
+/// 0.5792983 ± 3.6e-6.) `tests/fem/full_contact.rs`.
 fn full_contact_estimate(
     (r_o, error): (f64, f64),
     margins: &[Option<f64>],

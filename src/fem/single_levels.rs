@@ -6,8 +6,9 @@
 //!
 //! **Method.** Level l is a mesh graded in r and z with element size h_l = `coarse_size`·D/2^l
 //! at the foci — the hole edge A, the load's knots, the load edge B and, from level 1 on, the
-//! previous level's R_o — growing away from them (the rules and their measurements are in
-//! [`super::single`]'s docs; the grading ratios in [`crate::fem::spacing::level_grading`]).
+//! previous level's R_o (the rim C after a level in full contact) — growing away from them
+//! (the rules and their measurements are in [`super::single`]'s docs; the grading ratios in
+//! [`crate::fem::spacing::level_grading`]).
 //!
 //! # Accuracy
 //!
@@ -74,7 +75,8 @@ pub fn level_spacings(
     };
     let h = params.coarse_size * d / 2f64.powi(level as i32);
     let mut foci = vec![a, plate.load().inner(), b];
-    foci.extend(r_focus.filter(|&r| r > a && r < c));
+    // (after a level in full contact, R_o = C: the rim)
+    foci.extend(r_focus.filter(|&r| r > a && r <= c));
     // the growth ratios, and the largest axial size, shrink on the finest levels
     // ([`level_grading`]) so that every part of the mesh is refined
     let fixed = if params.tolerance < FIXED_GRADING_TOLERANCE {
