@@ -41,7 +41,7 @@ use faer::sparse::linalg::cholesky::{
     SymmetricOrdering,
 };
 use faer::sparse::linalg::SupernodalThreshold;
-use faer::sparse::SparseColMat;
+use faer::sparse::{SparseColMat, SymbolicSparseColMat, SymbolicSparseColMatRef};
 use faer::{Conj, Mat, MatRef, Par, Side};
 use std::sync::Arc;
 use std::time::Instant;
@@ -97,11 +97,42 @@ impl Factorization {
                 SymmetricOrdering::Custom(PermRef::new_checked(fwd, &inverse, n))
             }
         };
+        Self::ordered(k, k.symbolic(), Side::Lower, ord, t0, params)
+    }
+
+    /// As [`Factorization::new`] in the equations' own order (no permutation of the matrix at
+    /// either step): for equations already numbered in a fill-reducing order, e.g. a
+    /// [`super::DofMap::in_node_order`] of [`super::node_dissection`], where it computes what
+    /// [`Factorization::with_ordering`] with [`super::nested_dissection`] computes on the
+    /// mesh's own numbering.
+    pub fn natural(k: &SparseColMat<usize, f64>, params: &SolveParams) -> Result<Self, FemError> {
+        // faer 0.24 reads the pattern as the upper triangle whatever the side when it does not
+        // permute: give it the transpose (the numeric step reads the lower one as it is)
+        let t0 = Instant::now();
+        let upper = transpose(k.symbolic());
+        Self::ordered(
+            k,
+            upper.as_ref(),
+            Side::Upper,
+            SymmetricOrdering::Identity,
+            t0,
+            params,
+        )
+    }
+
+    fn ordered(
+        k: &SparseColMat<usize, f64>,
+        pattern: SymbolicSparseColMatRef<'_, usize>,
+        side: Side,
+        ord: SymmetricOrdering<'_, usize>,
+        t0: Instant,
+        params: &SolveParams,
+    ) -> Result<Self, FemError> {
         let supernodal = CholeskySymbolicParams {
             supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SUPERNODAL,
             ..Default::default()
         };
-        let symbolic = factorize_symbolic_cholesky(k.symbolic(), Side::Lower, ord, supernodal)
+        let symbolic = factorize_symbolic_cholesky(pattern, side, ord, supernodal)
             .map_err(|e| FemError::Solver(format!("symbolic Cholesky: {e:?}")))?;
         let par = if params.parallel {
             Par::rayon(0)
@@ -174,4 +205,28 @@ impl Factorization {
         );
         x
     }
+}
+
+/// The transposed pattern (the upper triangle of a symmetric matrix from its lower one), rows
+/// sorted in each column.
+fn transpose(k: SymbolicSparseColMatRef<'_, usize>) -> SymbolicSparseColMat<usize> {
+    let n = k.nrows();
+    let mut col_ptr = vec![0usize; n + 1];
+    for j in 0..k.ncols() {
+        for i in k.row_idx_of_col(j) {
+            col_ptr[i + 1] += 1;
+        }
+    }
+    for i in 0..n {
+        col_ptr[i + 1] += col_ptr[i];
+    }
+    let mut next = col_ptr.clone();
+    let mut row_idx = vec![0usize; col_ptr[n]];
+    for j in 0..k.ncols() {
+        for i in k.row_idx_of_col(j) {
+            row_idx[next[i]] = j;
+            next[i] += 1;
+        }
+    }
+    SymbolicSparseColMat::new_checked(k.ncols(), n, col_ptr, None, row_idx)
 }

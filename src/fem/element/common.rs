@@ -100,6 +100,31 @@ pub(crate) fn add_btdb(k: &mut [f64], b: &[[f64; 4]], d: &[[f64; 4]; 4], w: f64)
     }
 }
 
+/// [`add_btdb`] for B of the shape every isoparametric element without B-bar has: node a's two
+/// columns are [∂N_a/∂r, 0, N_a/r, ∂N_a/∂z] (u_r) and [0, ∂N_a/∂z, 0, ∂N_a/∂r] (u_z), given
+/// per node as `g[a]` = (∂N_a/∂r, ∂N_a/∂z, N_a/r). Only the nonzero products are formed, in the
+/// order [`add_btdb`] forms them (its products with B's zeros add exact zeros), so the two agree
+/// to the last bit (`tests/fem/elements.rs`, `node_gradient_product_equals_the_general_one`):
+/// D·b costs 10 products instead of 16 and each entry 2–3 instead of 4.
+pub(crate) fn add_btdb_nodes(k: &mut [f64], g: &[[f64; 3]], d: &[[f64; 4]; 4], w: f64) {
+    let nd = 2 * g.len();
+    for (b, &[dr, dz, hoop]) in g.iter().enumerate() {
+        // D times node b's u_r column (dr, 0, hoop, dz) and u_z column (0, dz, 0, dr)
+        let du = d.map(|di| di[0] * dr + di[2] * hoop + di[3] * dz);
+        let dw = d.map(|di| di[1] * dz + di[3] * dr);
+        let (ju, jw) = (2 * b, 2 * b + 1);
+        for (a, &[ar, az, ah]) in g[..=b].iter().enumerate() {
+            let (iu, iw) = (2 * a * nd, (2 * a + 1) * nd);
+            k[iu + ju] += w * (ar * du[0] + ah * du[2] + az * du[3]);
+            k[iu + jw] += w * (ar * dw[0] + ah * dw[2] + az * dw[3]);
+            k[iw + jw] += w * (az * dw[1] + ar * dw[3]);
+            if a < b {
+                k[iw + ju] += w * (az * du[1] + ar * du[3]);
+            }
+        }
+    }
+}
+
 /// Copies the upper triangle of the (nd × nd, row-major) `k` into the lower one.
 pub(crate) fn mirror_upper(k: &mut [f64], nd: usize) {
     for i in 0..nd {
