@@ -132,8 +132,13 @@ pub(crate) fn solve_level_mu(
             add_exterior(&mut stiff, &pattern, mesh, &model.materials, &dofs, p, rim)?;
         }
     }
-    let k = ties.matrix(&stiff.matrix)?;
-    let solver = Factorization::natural(&k, &SolveParams::default())?;
+    // (K itself when nothing is tied: no copy)
+    let tied = match ties.is_trivial() {
+        true => None,
+        false => Some(ties.matrix(&stiff.matrix)?),
+    };
+    let k = tied.as_ref().unwrap_or(&stiff.matrix);
+    let solver = Factorization::natural(k, &SolveParams::default())?;
     let mut f = dofs.gather(loads.forces());
     for (fi, pi) in f.iter_mut().zip(&stiff.prescribed_load) {
         *fi += pi;
@@ -172,7 +177,7 @@ pub(crate) fn solve_level_mu(
                 b[(e, k)] += v;
             }
         }
-        let xb = solver.solve_many(b.as_ref());
+        let xb = solver.solve_many_in_place(b);
         for (k, _) in block.iter().enumerate() {
             for a in 0..m {
                 flex[(a, start + k)] = dot(&cols[a], &|e| xb[(e, k)]);
@@ -216,7 +221,7 @@ pub(crate) fn solve_level_mu(
                     b[(e, 0)] += v * l;
                 }
             }
-            let dy = solver.solve_many(b.as_ref());
+            let dy = solver.solve_many_in_place(b);
             for (i, yi) in y.iter_mut().enumerate() {
                 *yi += dy[(i, 0)];
             }

@@ -137,19 +137,20 @@ impl Pattern {
         let mut row_idx = Vec::new();
         // the equations of the elements of the current node, sorted and unique
         let (mut near, mut near_of): (Vec<u32>, usize) = (Vec::new(), usize::MAX);
+        let mut seen = vec![usize::MAX; n]; // the node whose list last took each equation
         for (j, &(p, c)) in owner.iter().enumerate() {
             let elements = &incident[first[p]..first[p + 1]];
             if near_of != p {
                 near.clear();
                 for &e in elements {
-                    near.extend(
-                        equations[e * nd..(e + 1) * nd]
-                            .iter()
-                            .filter(|&&i| i != NONE),
-                    );
+                    for &i in &equations[e * nd..(e + 1) * nd] {
+                        if i != NONE && seen[i as usize] != p {
+                            seen[i as usize] = p;
+                            near.push(i);
+                        }
+                    }
                 }
                 near.sort_unstable();
-                near.dedup();
                 near_of = p;
             }
             let start = row_idx.len();

@@ -153,7 +153,7 @@ impl Factorization {
     pub fn refactor(&mut self, k: &SparseColMat<usize, f64>) -> Result<(), FemError> {
         let t0 = Instant::now();
         let sym = &*self.symbolic;
-        self.values.clear();
+        // (faer zeroes the values before it factors: only the length is set here)
         self.values.resize(sym.len_val(), 0.0);
         let mut mem =
             MemBuffer::new(sym.factorize_numeric_llt_scratch::<f64>(self.par, Default::default()));
@@ -194,7 +194,11 @@ impl Factorization {
 
     /// Solves K X = B for every column of B at once.
     pub fn solve_many(&self, b: MatRef<'_, f64>) -> Mat<f64> {
-        let mut x = b.to_owned();
+        self.solve_many_in_place(b.to_owned())
+    }
+
+    /// [`Factorization::solve_many`] overwriting B (no copy of it).
+    pub fn solve_many_in_place(&self, mut x: Mat<f64>) -> Mat<f64> {
         let sym = &*self.symbolic;
         let mut mem = MemBuffer::new(sym.solve_in_place_scratch::<f64>(x.ncols(), self.par));
         LltRef::new(sym, &self.values).solve_in_place_with_conj(
