@@ -119,7 +119,7 @@ pub(crate) fn solve_level_mu(
     // factorization needs no permutation; tied unknowns keep the place of their first equation
     // (Ties numbers them so). (AMD's symbolic analysis costs more than the extra fill ND
     // leaves: measured 60 vs 115 ms on a 3045-node Q9 mesh.)
-    let dofs = DofMap::in_node_order(&sup, &node_dissection(mesh));
+    let dofs = DofMap::in_node_order(&sup, &node_dissection(mesh))?;
     let eq_pairs: Vec<(usize, usize)> = pairs
         .iter()
         .filter_map(|&(a, b, c)| Some((dofs.equation(a, c)?, dofs.equation(b, c)?)))

@@ -292,7 +292,7 @@ pub fn solve_half_plate_with(
         None => (vec![plate.material()], None),
     };
     // equations in nested-dissection order: the factorization needs no permutation
-    let dofs = DofMap::in_node_order(&s, &node_dissection(&mesh));
+    let dofs = DofMap::in_node_order(&s, &node_dissection(&mesh))?;
     let k = assemble(&mesh, &materials, &dofs, &Pattern::new(&mesh, &dofs))?;
     let mut rhs = dofs.gather(loads.forces());
     for (a, b) in rhs.iter_mut().zip(&k.prescribed_load) {

@@ -117,7 +117,7 @@ impl Factorization {
     /// let mesh = Mesh::structured(ElementKind::Q9, &r, &[PlateSpec { z, material: 0 }])?;
     /// let mut s = Supports::new(mesh.n_nodes());
     /// for n in mesh.bottom(0) { s.roller_z(n); }
-    /// let dofs = DofMap::in_node_order(&s, &node_dissection(&mesh));
+    /// let dofs = DofMap::in_node_order(&s, &node_dissection(&mesh))?;
     /// let k = assemble(&mesh, &[Material::unit(0.3)?], &dofs, &Pattern::new(&mesh, &dofs))?;
     /// let x = Factorization::natural(&k.matrix, &SolveParams::default())?.solve(&vec![1.0; dofs.n_equations()]);
     /// assert!(x.iter().all(|v| v.is_finite()));
