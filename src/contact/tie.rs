@@ -77,6 +77,11 @@ impl Ties {
         }
     }
 
+    /// True when no two equations are tied (Tᵀ K T = K: callers may use K as it is).
+    pub fn is_trivial(&self) -> bool {
+        self.trivial
+    }
+
     /// Number of tied unknowns.
     pub fn n(&self) -> usize {
         self.n

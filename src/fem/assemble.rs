@@ -4,8 +4,11 @@
 //!
 //! The sparsity pattern ([`Pattern`]) depends only on the mesh and on which components are
 //! free; it is built once from the mesh's node adjacency (faer's `SymbolicSparseColMat`, rows
-//! sorted in each column, entries located by binary search) and every later assembly with other
-//! materials or prescribed values only fills values. Skew
+//! sorted in each column) and every later assembly with other materials or prescribed values
+//! only fills values. With the pattern come the value-array positions of every element's
+//! entries, found while each column is built (a table of the column's rows indexed by
+//! equation), so that assembly adds each kₑ entry at a stored position; an assembly with
+//! other free components than the pattern's finds them by binary search. Skew
 //! nodes enter through kₑ' = Tᵀ kₑ T with T the node's rotation (s, n) → (r, z).
 //!
 //! # Accuracy
@@ -42,10 +45,25 @@ use crate::material::Material;
 use faer::sparse::{SparseColMat, SymbolicSparseColMat};
 
 /// The fixed sparsity pattern of the lower triangle (columns sorted), built from the node
-/// adjacency of the mesh.
+/// adjacency of the mesh, with every element's value positions.
 #[derive(Debug, Clone)]
 pub struct Pattern {
     symbolic: SymbolicSparseColMat<usize>,
+    /// Local dofs per element (2 × nodes).
+    nd: usize,
+    /// The equation of each element's local dofs when the pattern was built (u32::MAX: none).
+    equations: Vec<u32>,
+    /// Per element, the position of the entry of local dofs (i, j), i ≤ j, at j(j + 1)/2 + i
+    /// (u32::MAX where a dof has no equation); empty when the values outgrow u32.
+    positions: Vec<u32>,
+}
+
+/// No equation / no position in the element tables.
+const NONE: u32 = u32::MAX;
+
+/// Index of local entry (i, j), i ≤ j, in an element's packed triangle.
+fn packed(i: usize, j: usize) -> usize {
+    j * (j + 1) / 2 + i
 }
 
 /// An assembled system: K (lower triangle stored) and the load of the prescribed components.
@@ -57,61 +75,132 @@ pub struct Stiffness {
     pub prescribed_load: Vec<f64>,
 }
 
-/// Equation numbers (or None) of an element's local dofs, in local order.
-fn element_equations(mesh: &Mesh, dofs: &DofMap, e: usize) -> Vec<Option<usize>> {
-    mesh.element_nodes(e)
-        .iter()
-        .flat_map(|&n| {
-            [
-                dofs.equation(n, Component::R),
-                dofs.equation(n, Component::Z),
-            ]
-        })
-        .collect()
+/// Most local dofs of an element (Q9's 18).
+const MAX_DOFS: usize = 18;
+
+/// Equation numbers (or None) of an element's local dofs, in local order, into `out`.
+fn element_equations(mesh: &Mesh, dofs: &DofMap, e: usize, out: &mut [Option<usize>]) {
+    for (k, &n) in mesh.element_nodes(e).iter().enumerate() {
+        out[2 * k] = dofs.equation(n, Component::R);
+        out[2 * k + 1] = dofs.equation(n, Component::Z);
+    }
 }
 
 impl Pattern {
     /// The pattern of K for `mesh` with the free components of `dofs`: column j holds every
-    /// equation i ≥ j of a node that shares an element with j's node.
+    /// equation i ≥ j of a node that shares an element with j's node. Any numbering of the
+    /// equations ([`DofMap::new`], [`DofMap::in_node_order`]).
     pub fn new(mesh: &Mesh, dofs: &DofMap) -> Self {
-        // neighbours q ≥ p of every node p (sorted, unique)
-        let mut adj: Vec<Vec<u32>> = vec![Vec::new(); mesh.n_nodes()];
-        for e in 0..mesh.n_elements() {
-            let nodes = mesh.element_nodes(e);
-            for &p in nodes {
-                adj[p].extend(nodes.iter().filter(|&&q| q >= p).map(|&q| q as u32));
+        let n = dofs.n_equations();
+        let nd = 2 * mesh.kind().nodes();
+        let n_el = mesh.n_elements();
+        let mut equations = vec![NONE; n_el * nd];
+        let mut eqs = [None; MAX_DOFS];
+        for e in 0..n_el {
+            element_equations(mesh, dofs, e, &mut eqs[..nd]);
+            for (t, q) in equations[e * nd..(e + 1) * nd].iter_mut().zip(&eqs) {
+                *t = q.map_or(NONE, |q| q as u32);
             }
         }
-        let n = dofs.n_equations();
+        // the elements of every node (ascending), to place their entries column by column
+        let mut first = vec![0usize; mesh.n_nodes() + 1];
+        for e in 0..n_el {
+            for &p in mesh.element_nodes(e) {
+                first[p + 1] += 1;
+            }
+        }
+        for p in 0..mesh.n_nodes() {
+            first[p + 1] += first[p];
+        }
+        let mut incident = vec![0usize; first[mesh.n_nodes()]];
+        let mut fill = first.clone();
+        for e in 0..n_el {
+            for &p in mesh.element_nodes(e) {
+                incident[fill[p]] = e;
+                fill[p] += 1;
+            }
+        }
+        // the node and component of every equation
+        let mut owner = vec![(0usize, 0usize); n];
+        for p in 0..mesh.n_nodes() {
+            for c in [Component::R, Component::Z] {
+                if let Some(j) = dofs.equation(p, c) {
+                    owner[j] = (p, c as usize);
+                }
+            }
+        }
+        let packed_len = nd * (nd + 1) / 2;
+        let mut positions = vec![NONE; n_el * packed_len];
+        let mut at = vec![NONE; n]; // position of each row of the current column
         let mut col_ptr = Vec::with_capacity(n + 1);
         col_ptr.push(0);
         let mut row_idx = Vec::new();
-        let mut col = Vec::new();
-        for (p, list) in adj.iter_mut().enumerate() {
-            list.sort_unstable();
-            list.dedup();
-            for c in [Component::R, Component::Z] {
-                let Some(j) = dofs.equation(p, c) else {
-                    continue;
-                };
-                col.clear();
-                for &q in list.iter() {
-                    for cq in [Component::R, Component::Z] {
-                        if let Some(i) = dofs.equation(q as usize, cq) {
-                            if i >= j {
-                                col.push(i);
-                            }
+        // the equations of the elements of the current node, sorted and unique
+        let (mut near, mut near_of): (Vec<u32>, usize) = (Vec::new(), usize::MAX);
+        let mut seen = vec![usize::MAX; n]; // the node whose list last took each equation
+        for (j, &(p, c)) in owner.iter().enumerate() {
+            let elements = &incident[first[p]..first[p + 1]];
+            if near_of != p {
+                near.clear();
+                for &e in elements {
+                    for &i in &equations[e * nd..(e + 1) * nd] {
+                        if i != NONE && seen[i as usize] != p {
+                            seen[i as usize] = p;
+                            near.push(i);
                         }
                     }
                 }
-                col.sort_unstable();
-                row_idx.extend_from_slice(&col);
-                col_ptr.push(row_idx.len());
+                near.sort_unstable();
+                near_of = p;
             }
-            *list = Vec::new();
+            let start = row_idx.len();
+            let col = &near[near.partition_point(|&i| (i as usize) < j)..];
+            row_idx.extend(col.iter().map(|&i| i as usize));
+            col_ptr.push(row_idx.len());
+            if row_idx.len() >= NONE as usize {
+                continue; // positions beyond u32: assembly searches (see `positions`)
+            }
+            for (k, &i) in col.iter().enumerate() {
+                at[i as usize] = (start + k) as u32;
+            }
+            // every element of p: its entries (i, j) of this column, i ≥ j
+            for &e in elements {
+                let Some(a) = mesh.element_nodes(e).iter().position(|&q| q == p) else {
+                    continue;
+                };
+                let lj = 2 * a + c;
+                for (li, &i) in equations[e * nd..(e + 1) * nd].iter().enumerate() {
+                    if i != NONE && i as usize >= j {
+                        positions[e * packed_len + packed(li.min(lj), li.max(lj))] = at[i as usize];
+                    }
+                }
+            }
+        }
+        if row_idx.len() >= NONE as usize {
+            positions = Vec::new();
         }
         Self {
             symbolic: SymbolicSparseColMat::new_checked(n, n, col_ptr, None, row_idx),
+            nd,
+            equations,
+            positions,
+        }
+    }
+
+    /// The stored positions of element `e`'s entries when its local dofs have the equations
+    /// `eqs` the pattern was built with (else None: the caller searches).
+    fn element_positions(&self, e: usize, eqs: &[Option<usize>]) -> Option<&[u32]> {
+        let len = self.nd * (self.nd + 1) / 2;
+        let stored = self.equations.get(e * self.nd..(e + 1) * self.nd)?;
+        let same = eqs.len() == self.nd
+            && eqs
+                .iter()
+                .zip(stored)
+                .all(|(q, &t)| q.map_or(NONE, |q| q as u32) == t);
+        if same {
+            self.positions.get(e * len..(e + 1) * len)
+        } else {
+            None
         }
     }
 
@@ -173,19 +262,25 @@ pub fn assemble(
     }
     let mut values = vec![0.0; pattern.symbolic.row_idx().len()];
     let mut load = vec![0.0; dofs.n_equations()];
+    let mut buf = [None; MAX_DOFS];
     for e in 0..mesh.n_elements() {
         let k = element_matrix(mesh, materials, dofs, e)?;
-        let eqs = element_equations(mesh, dofs, e);
         let nodes = mesh.element_nodes(e);
-        let nd = eqs.len();
+        let nd = 2 * nodes.len();
+        let eqs = &mut buf[..nd];
+        element_equations(mesh, dofs, e, eqs);
+        let stored = pattern.element_positions(e, eqs);
         for (i, a) in eqs.iter().enumerate() {
             let Some(a) = *a else { continue };
             for (j, b) in eqs.iter().enumerate() {
                 match *b {
                     Some(b) if a >= b => {
-                        let pos = pattern
-                            .position(a, b)
-                            .ok_or(FemError::PatternMismatch { row: a, col: b })?;
+                        let pos = match stored {
+                            Some(t) => t[packed(i.min(j), i.max(j))] as usize,
+                            None => pattern
+                                .position(a, b)
+                                .ok_or(FemError::PatternMismatch { row: a, col: b })?,
+                        };
                         values[pos] += k[i * nd + j];
                     }
                     Some(_) => {}

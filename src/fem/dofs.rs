@@ -143,21 +143,55 @@ pub struct DofMap {
 impl DofMap {
     /// Numbers the free components node by node (the mesh's node order).
     pub fn new(s: &Supports) -> Self {
+        Self::numbered(s, 0..s.nodes.len())
+    }
+
+    /// Numbers the free components node by node in the order `nodes` (every node once, e.g.
+    /// [`super::node_dissection`]): a node's components are numbered together, R before Z.
+    /// An order that is not a permutation of the nodes is refused.
+    ///
+    /// ```
+    /// use boltzone::fem::{Component, DofMap, Supports};
+    /// let d = DofMap::in_node_order(&Supports::new(2), &[1, 0])?;
+    /// assert_eq!(d.equation(1, Component::Z), Some(1));
+    /// assert_eq!(d.equation(0, Component::R), Some(2));
+    /// assert!(DofMap::in_node_order(&Supports::new(2), &[1, 1]).is_err());
+    /// # Ok::<(), boltzone::error::InputError>(())
+    /// ```
+    pub fn in_node_order(s: &Supports, nodes: &[usize]) -> Result<Self, InputError> {
+        let mut seen = vec![false; s.nodes.len()];
+        for &n in nodes {
+            if n >= seen.len() || std::mem::replace(&mut seen[n], true) {
+                return Err(InputError::Parameter {
+                    field: "node order",
+                    value: n as f64,
+                    reason: "must list every node of the supports once",
+                });
+            }
+        }
+        if nodes.len() != seen.len() {
+            return Err(InputError::Parameter {
+                field: "node order",
+                value: nodes.len() as f64,
+                reason: "must list every node of the supports once",
+            });
+        }
+        Ok(Self::numbered(s, nodes.iter().copied()))
+    }
+
+    fn numbered(s: &Supports, order: impl Iterator<Item = usize>) -> Self {
         let mut n_eq = 0;
-        let eq = s
-            .nodes
-            .iter()
-            .map(|ns| {
-                ns.fixed.map(|f| {
-                    if f.is_some() {
-                        NONE
-                    } else {
-                        n_eq += 1;
-                        n_eq - 1
-                    }
-                })
-            })
-            .collect();
+        let mut eq = vec![[NONE; 2]; s.nodes.len()];
+        for n in order {
+            eq[n] = s.nodes[n].fixed.map(|f| {
+                if f.is_some() {
+                    NONE
+                } else {
+                    n_eq += 1;
+                    n_eq - 1
+                }
+            });
+        }
         Self {
             eq,
             support: s.nodes.clone(),

@@ -81,7 +81,7 @@ pub use element::{ElementKind, ElementPoint, Stress};
 pub use error::FemError;
 pub use loads::Loads;
 pub use mesh::{Mesh, PlateSpec};
-pub use ordering::nested_dissection;
+pub use ordering::{nested_dissection, node_dissection};
 pub use recover::{
     centre_stresses, gauss_stresses, internal_forces, line_traction, nodal_mean, nodal_stresses,
     reactions,

@@ -96,6 +96,23 @@ impl Grid<'_> {
 /// The equations of `dofs` in nested-dissection order: entry k is the equation eliminated k-th
 /// (faer's "forward" permutation, new → old).
 pub fn nested_dissection(mesh: &Mesh, dofs: &DofMap) -> Vec<usize> {
+    node_dissection(mesh)
+        .iter()
+        .flat_map(|&n| {
+            [
+                dofs.equation(n, Component::R),
+                dofs.equation(n, Component::Z),
+            ]
+        })
+        .flatten()
+        .collect()
+}
+
+/// The nodes of a structured mesh in nested-dissection order: numbering the equations in it
+/// ([`DofMap::in_node_order`](super::DofMap::in_node_order)) makes [`nested_dissection`] the
+/// identity, so the factorization needs no permutation of the matrix
+/// ([`Factorization::natural`](super::Factorization::natural)).
+pub fn node_dissection(mesh: &Mesh) -> Vec<usize> {
     let cols = mesh.radial_nodes().len();
     let rows = mesh.n_nodes() / cols;
     let order = mesh.kind().order();
@@ -112,13 +129,4 @@ pub fn nested_dissection(mesh: &Mesh, dofs: &DofMap) -> Vec<usize> {
     };
     g.dissect(0, cols - 1, 0, rows - 1);
     nodes
-        .iter()
-        .flat_map(|&n| {
-            [
-                dofs.equation(n, Component::R),
-                dofs.equation(n, Component::Z),
-            ]
-        })
-        .flatten()
-        .collect()
 }

@@ -1,4 +1,5 @@
-//! Sparse Cholesky K = L Lᵀ with faer (fill-reducing AMD or a caller's ordering, always the
+//! Sparse Cholesky K = L Lᵀ with faer (fill-reducing AMD, a caller's ordering, or none for
+//! equations already numbered in a fill-reducing order ([`Factorization::natural`]), always the
 //! supernodal variant: faer's own flop-ratio rule picks the simplicial one for 1k–10k equations,
 //! where the supernodal one measured 2.6× faster, and the 20 × 20 design map 39 % cheaper): the symbolic analysis is done once per [`super::Pattern`], the numeric
 //! factorization again only when values change ([`Factorization::refactor`]), and one
@@ -41,7 +42,7 @@ use faer::sparse::linalg::cholesky::{
     SymmetricOrdering,
 };
 use faer::sparse::linalg::SupernodalThreshold;
-use faer::sparse::SparseColMat;
+use faer::sparse::{SparseColMat, SymbolicSparseColMat, SymbolicSparseColMatRef};
 use faer::{Conj, Mat, MatRef, Par, Side};
 use std::sync::Arc;
 use std::time::Instant;
@@ -97,11 +98,59 @@ impl Factorization {
                 SymmetricOrdering::Custom(PermRef::new_checked(fwd, &inverse, n))
             }
         };
+        Self::ordered(k, k.symbolic(), Side::Lower, ord, t0, params)
+    }
+
+    /// As [`Factorization::new`] in the equations' own order (no permutation of the matrix at
+    /// either step): for equations already numbered in a fill-reducing order, e.g. a
+    /// [`super::DofMap::in_node_order`] of [`super::node_dissection`], where it computes what
+    /// [`Factorization::with_ordering`] with [`super::nested_dissection`] computes on the
+    /// mesh's own numbering (`tests/fem/system.rs`,
+    /// `natural_order_in_dissection_numbering_equals_the_permuted_factorization`: the same
+    /// displacements to the last bit).
+    ///
+    /// ```
+    /// use boltzone::fem::*;
+    /// use boltzone::Material;
+    /// let r = Spacing::uniform(1.0, 2.0, 8)?;
+    /// let z = Spacing::uniform(0.0, 0.5, 4)?;
+    /// let mesh = Mesh::structured(ElementKind::Q9, &r, &[PlateSpec { z, material: 0 }])?;
+    /// let mut s = Supports::new(mesh.n_nodes());
+    /// for n in mesh.bottom(0) { s.roller_z(n); }
+    /// let dofs = DofMap::in_node_order(&s, &node_dissection(&mesh))?;
+    /// let k = assemble(&mesh, &[Material::unit(0.3)?], &dofs, &Pattern::new(&mesh, &dofs))?;
+    /// let x = Factorization::natural(&k.matrix, &SolveParams::default())?.solve(&vec![1.0; dofs.n_equations()]);
+    /// assert!(x.iter().all(|v| v.is_finite()));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn natural(k: &SparseColMat<usize, f64>, params: &SolveParams) -> Result<Self, FemError> {
+        // faer 0.24 reads the pattern as the upper triangle whatever the side when it does not
+        // permute: give it the transpose (the numeric step reads the lower one as it is)
+        let t0 = Instant::now();
+        let upper = transpose(k.symbolic());
+        Self::ordered(
+            k,
+            upper.as_ref(),
+            Side::Upper,
+            SymmetricOrdering::Identity,
+            t0,
+            params,
+        )
+    }
+
+    fn ordered(
+        k: &SparseColMat<usize, f64>,
+        pattern: SymbolicSparseColMatRef<'_, usize>,
+        side: Side,
+        ord: SymmetricOrdering<'_, usize>,
+        t0: Instant,
+        params: &SolveParams,
+    ) -> Result<Self, FemError> {
         let supernodal = CholeskySymbolicParams {
             supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SUPERNODAL,
             ..Default::default()
         };
-        let symbolic = factorize_symbolic_cholesky(k.symbolic(), Side::Lower, ord, supernodal)
+        let symbolic = factorize_symbolic_cholesky(pattern, side, ord, supernodal)
             .map_err(|e| FemError::Solver(format!("symbolic Cholesky: {e:?}")))?;
         let par = if params.parallel {
             Par::rayon(0)
@@ -122,7 +171,7 @@ impl Factorization {
     pub fn refactor(&mut self, k: &SparseColMat<usize, f64>) -> Result<(), FemError> {
         let t0 = Instant::now();
         let sym = &*self.symbolic;
-        self.values.clear();
+        // (faer zeroes the values before it factors: only the length is set here)
         self.values.resize(sym.len_val(), 0.0);
         let mut mem =
             MemBuffer::new(sym.factorize_numeric_llt_scratch::<f64>(self.par, Default::default()));
@@ -163,7 +212,11 @@ impl Factorization {
 
     /// Solves K X = B for every column of B at once.
     pub fn solve_many(&self, b: MatRef<'_, f64>) -> Mat<f64> {
-        let mut x = b.to_owned();
+        self.solve_many_in_place(b.to_owned())
+    }
+
+    /// [`Factorization::solve_many`] overwriting B (no copy of it).
+    pub fn solve_many_in_place(&self, mut x: Mat<f64>) -> Mat<f64> {
         let sym = &*self.symbolic;
         let mut mem = MemBuffer::new(sym.solve_in_place_scratch::<f64>(x.ncols(), self.par));
         LltRef::new(sym, &self.values).solve_in_place_with_conj(
@@ -174,4 +227,28 @@ impl Factorization {
         );
         x
     }
+}
+
+/// The transposed pattern (the upper triangle of a symmetric matrix from its lower one), rows
+/// sorted in each column.
+fn transpose(k: SymbolicSparseColMatRef<'_, usize>) -> SymbolicSparseColMat<usize> {
+    let n = k.nrows();
+    let mut col_ptr = vec![0usize; n + 1];
+    for j in 0..k.ncols() {
+        for i in k.row_idx_of_col(j) {
+            col_ptr[i + 1] += 1;
+        }
+    }
+    for i in 0..n {
+        col_ptr[i + 1] += col_ptr[i];
+    }
+    let mut next = col_ptr.clone();
+    let mut row_idx = vec![0usize; col_ptr[n]];
+    for j in 0..k.ncols() {
+        for i in k.row_idx_of_col(j) {
+            row_idx[next[i]] = j;
+            next[i] += 1;
+        }
+    }
+    SymbolicSparseColMat::new_checked(k.ncols(), n, col_ptr, None, row_idx)
 }

@@ -146,16 +146,21 @@ const MAX_ELEMENTS: f64 = 1e7;
 /// φ is integrated by the trapezoidal rule on 4000 equal steps where a step spans at most a few
 /// target elements (the meshes of ordinary plates), else on steps of h(x)/20 marched from a,
 /// so that an interval 10³⁰ times the smallest element is integrated in a few thousand steps
-/// (graded sizes grow geometrically) instead of being lost in one step.
+/// (graded sizes grow geometrically) instead of being lost in one step. Each step's end value
+/// 1/h is kept as the next step's start (h at every distance to every focus is most of a
+/// mesh's cost: one evaluation a step, not two).
 fn stretch(a: f64, b: f64, h: &dyn Fn(f64) -> f64, out: &mut Vec<f64>) -> Result<(), InputError> {
     const STEPS: usize = 4000;
     let dx = (b - a) / STEPS as f64;
     let uniform = dx <= 4.0 * h(a).min(h(b));
     let (mut xs, mut phi) = (vec![a], vec![0.0]);
+    let mut inv_h = 1.0 / h(a); // 1/h at the current step's start
     if uniform {
         for i in 0..STEPS {
-            let (xa, xb) = (a + i as f64 * dx, a + (i + 1) as f64 * dx);
-            phi.push(phi[i] + 0.5 * dx * (1.0 / h(xa) + 1.0 / h(xb)));
+            let xb = a + (i + 1) as f64 * dx;
+            let inv_b = 1.0 / h(xb);
+            phi.push(phi[i] + 0.5 * dx * (inv_h + inv_b));
+            inv_h = inv_b;
             xs.push(xb);
         }
     } else {
@@ -168,7 +173,9 @@ fn stretch(a: f64, b: f64, h: &dyn Fn(f64) -> f64, out: &mut Vec<f64>) -> Result
                 x + step
             };
             let k = phi.len() - 1;
-            phi.push(phi[k] + 0.5 * (next - x) * (1.0 / h(x) + 1.0 / h(next)));
+            let inv_next = 1.0 / h(next);
+            phi.push(phi[k] + 0.5 * (next - x) * (inv_h + inv_next));
+            inv_h = inv_next;
             xs.push(next);
             x = next;
             if phi.len() as f64 > 20.0 * MAX_ELEMENTS {

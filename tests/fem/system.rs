@@ -18,6 +18,14 @@ fn factor(mesh: &Mesh, mats: &[Material], s: &Supports) -> (DofMap, Stiffness, F
     (dofs, k, f)
 }
 
+/// The stack's materials: E = 1, ν = 0.3 below, E = 3, ν = 0.2 above.
+fn materials() -> [Material; 2] {
+    [
+        Material::new(1.0, 0.3).unwrap(),
+        Material::new(3.0, 0.2).unwrap(),
+    ]
+}
+
 /// Two plates (E = 1 and 3) stacked on z ∈ [0, 0.3] ∪ [0.3, 0.5], r ∈ [0.2, 1].
 fn stack(kind: ElementKind) -> Mesh {
     let r = Spacing::graded(0.2, 1.0, &[0.5], &[0.2, 0.5], 0.05, 1.3, 0.2).unwrap();
@@ -34,10 +42,7 @@ fn stack(kind: ElementKind) -> Mesh {
 
 #[test]
 fn stacked_plates_have_distinct_interface_nodes_and_their_own_materials() {
-    let mats = [
-        Material::new(1.0, 0.3).unwrap(),
-        Material::new(3.0, 0.2).unwrap(),
-    ];
+    let mats = materials();
     let p = 2.0;
     for kind in [ElementKind::Q4, ElementKind::Q9, ElementKind::Cst4] {
         let mesh = stack(kind);
@@ -97,10 +102,7 @@ fn flexibility_by_many_right_hand_sides_is_symmetric_and_matches_single_solves()
     // one plate on a frictionless plane except: the interface (bottom) normal dofs are free but
     // one reference node, as the contact solver will do it
     let mesh = stack(ElementKind::Q9);
-    let mats = [
-        Material::new(1.0, 0.3).unwrap(),
-        Material::new(3.0, 0.2).unwrap(),
-    ];
+    let mats = materials();
     let mut s = Supports::new(mesh.n_nodes());
     let bottom = mesh.bottom(0);
     s.roller_z(*bottom.last().unwrap());
@@ -149,10 +151,7 @@ fn refactor_reuses_the_pattern() {
     }
     let dofs = DofMap::new(&s);
     let pattern = Pattern::new(&mesh, &dofs);
-    let m1 = [
-        Material::new(1.0, 0.3).unwrap(),
-        Material::new(3.0, 0.2).unwrap(),
-    ];
+    let m1 = materials();
     let m2 = [
         Material::new(2.0, 0.1).unwrap(),
         Material::new(0.5, 0.45).unwrap(),
@@ -236,10 +235,7 @@ fn prescribed_displacement_under_a_flat_punch_gives_exact_reactions_and_axis_is_
 #[test]
 fn a_pattern_of_another_dof_map_is_a_named_error() {
     let mesh = stack(ElementKind::Q4);
-    let mats = [
-        Material::new(1.0, 0.3).unwrap(),
-        Material::new(3.0, 0.2).unwrap(),
-    ];
+    let mats = materials();
     let mut s = Supports::new(mesh.n_nodes());
     s.fix(0);
     let other = DofMap::new(&Supports::new(mesh.n_nodes()));
@@ -258,10 +254,7 @@ fn a_pattern_of_another_dof_map_is_a_named_error() {
 #[test]
 fn parallel_and_sequential_factorizations_agree() {
     let mesh = stack(ElementKind::Q9);
-    let mats = [
-        Material::new(1.0, 0.3).unwrap(),
-        Material::new(3.0, 0.2).unwrap(),
-    ];
+    let mats = materials();
     let mut s = Supports::new(mesh.n_nodes());
     for n in [mesh.bottom(0), mesh.bottom(1)].concat() {
         s.roller_z(n);
@@ -285,4 +278,51 @@ fn parallel_and_sequential_factorizations_agree() {
     assert!(
         Factorization::with_ordering(&k.matrix, Some(&nd[1..]), &SolveParams::default()).is_err()
     );
+}
+
+/// Equations numbered in nested-dissection order and factored without permutation
+/// (`DofMap::in_node_order`, `Factorization::natural`) compute what the mesh's own numbering
+/// factored in the nested-dissection order computes: the same matrix, the same elimination, the
+/// same displacements to the last bit (and the pattern stored with each numbering places every
+/// entry where a search of its column finds it, or the two assemblies would differ).
+#[test]
+fn natural_order_in_dissection_numbering_equals_the_permuted_factorization() {
+    let mesh = stack(ElementKind::Q9);
+    let mats = materials();
+    let mut s = Supports::new(mesh.n_nodes());
+    for n in mesh.bottom(0) {
+        s.roller_z(n);
+    }
+    s.prescribe(mesh.top(1)[0], Component::Z, -1e-3);
+    let mut loads = Loads::new(mesh.n_nodes());
+    let q = FaceLoad::uniform(0.2, 0.5, 1.0).unwrap();
+    loads
+        .add_face_pressure(&mesh, &mesh.top(1), 1.0, &q)
+        .unwrap();
+    let solve = |dofs: &DofMap, natural: bool| {
+        let k = assemble(&mesh, &mats, dofs, &Pattern::new(&mesh, dofs)).unwrap();
+        let mut f = dofs.gather(loads.forces());
+        for (fi, pi) in f.iter_mut().zip(&k.prescribed_load) {
+            *fi += pi;
+        }
+        let p = SolveParams::default();
+        let x = if natural {
+            Factorization::natural(&k.matrix, &p).unwrap().solve(&f)
+        } else {
+            let order = nested_dissection(&mesh, dofs);
+            Factorization::with_ordering(&k.matrix, Some(&order), &p)
+                .unwrap()
+                .solve(&f)
+        };
+        dofs.expand(&x)
+    };
+    let own = solve(&DofMap::new(&s), false);
+    let dissected = DofMap::in_node_order(&s, &node_dissection(&mesh)).unwrap();
+    assert_eq!(
+        nested_dissection(&mesh, &dissected),
+        (0..dissected.n_equations()).collect::<Vec<_>>()
+    );
+    let natural = solve(&dissected, true);
+    assert!(own.iter().any(|u| u[1] != 0.0));
+    assert_eq!(own, natural);
 }

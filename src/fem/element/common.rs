@@ -100,6 +100,31 @@ pub(crate) fn add_btdb(k: &mut [f64], b: &[[f64; 4]], d: &[[f64; 4]; 4], w: f64)
     }
 }
 
+/// [`add_btdb`] for B of the shape every isoparametric element without B-bar has: node a's two
+/// columns are [∂N_a/∂r, 0, N_a/r, ∂N_a/∂z] (u_r) and [0, ∂N_a/∂z, 0, ∂N_a/∂r] (u_z), given
+/// per node as `g[a]` = (∂N_a/∂r, ∂N_a/∂z, N_a/r). Only the nonzero products are formed, in the
+/// order [`add_btdb`] forms them (its products with B's zeros add exact zeros), so the two agree
+/// to the last bit (this module's test `node_gradient_product_equals_the_general_one`):
+/// D·b costs 10 products instead of 16 and each entry 2–3 instead of 4.
+pub(crate) fn add_btdb_nodes(k: &mut [f64], g: &[[f64; 3]], d: &[[f64; 4]; 4], w: f64) {
+    let nd = 2 * g.len();
+    for (b, &[dr, dz, hoop]) in g.iter().enumerate() {
+        // D times node b's u_r column (dr, 0, hoop, dz) and u_z column (0, dz, 0, dr)
+        let du = d.map(|di| di[0] * dr + di[2] * hoop + di[3] * dz);
+        let dw = d.map(|di| di[1] * dz + di[3] * dr);
+        let (ju, jw) = (2 * b, 2 * b + 1);
+        for (a, &[ar, az, ah]) in g[..=b].iter().enumerate() {
+            let (iu, iw) = (2 * a * nd, (2 * a + 1) * nd);
+            k[iu + ju] += w * (ar * du[0] + ah * du[2] + az * du[3]);
+            k[iu + jw] += w * (ar * dw[0] + ah * dw[2] + az * dw[3]);
+            k[iw + jw] += w * (az * dw[1] + ar * dw[3]);
+            if a < b {
+                k[iw + ju] += w * (az * du[1] + ar * du[3]);
+            }
+        }
+    }
+}
+
 /// Copies the upper triangle of the (nd × nd, row-major) `k` into the lower one.
 pub(crate) fn mirror_upper(k: &mut [f64], nd: usize) {
     for i in 0..nd {
@@ -131,3 +156,44 @@ pub(crate) const GAUSS3: [(f64, f64); 3] = [
     (0.0, 8.0 / 9.0),
     (0.774_596_669_241_483_4, 5.0 / 9.0),
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The product over B's nonzeros equals the general one bit for bit (upper triangles),
+    /// including a node on the axis (hoop column = ∂N/∂r) and an anisotropic-looking D.
+    #[test]
+    fn node_gradient_product_equals_the_general_one() {
+        let g: Vec<[f64; 3]> = (0..9)
+            .map(|a| {
+                let t = a as f64 + 0.37;
+                [t.sin() * 3.1, (1.7 * t).cos() / 7.0, (0.3 * t).tan()]
+            })
+            .collect();
+        let b: Vec<[f64; 4]> = g
+            .iter()
+            .flat_map(|&[dr, dz, hoop]| [[dr, 0.0, hoop, dz], [0.0, dz, 0.0, dr]])
+            .collect();
+        let iso = elasticity(&Material::new(2.9e7, 0.3).unwrap());
+        let mut general = iso;
+        general[0][3] = 0.125e7;
+        general[3][1] = -0.5e6;
+        for d in [iso, general] {
+            let (mut k1, mut k2) = (vec![0.0; 324], vec![0.0; 324]);
+            for w in [0.31, 1.7e-3] {
+                add_btdb(&mut k1, &b, &d, w);
+                add_btdb_nodes(&mut k2, &g, &d, w);
+            }
+            for j in 0..18 {
+                for i in 0..=j {
+                    assert_eq!(
+                        k1[i * 18 + j].to_bits(),
+                        k2[i * 18 + j].to_bits(),
+                        "({i}, {j})"
+                    );
+                }
+            }
+        }
+    }
+}

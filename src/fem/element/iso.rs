@@ -15,13 +15,13 @@
 //!
 //! O(n_g · n²) per element for n dofs and n_g Gauss points; `cargo bench --bench fem`.
 
-use super::{add_btdb, apply_d, mirror_upper, strain, ElementPoint, Stress};
+use super::{add_btdb, add_btdb_nodes, apply_d, mirror_upper, strain, ElementPoint, Stress};
 use std::f64::consts::PI;
 
 /// A parent element: shape functions and their (ξ, η) derivatives, and a Gauss rule.
 pub(crate) trait Parent {
-    /// Shape functions N and ∂N/∂(ξ, η) at `p`.
-    fn eval(&self, p: [f64; 2]) -> (Vec<f64>, Vec<[f64; 2]>);
+    /// Shape functions N and ∂N/∂(ξ, η) at `p`, written to `n` and `dn` (one entry a node).
+    fn eval(&self, p: [f64; 2], n: &mut [f64], dn: &mut [[f64; 2]]);
     /// 1D Gauss rule used in each direction.
     fn rule(&self) -> &'static [(f64, f64)];
 }
@@ -35,8 +35,32 @@ pub(crate) struct Mapped {
     pub b: Vec<[f64; 4]>,
 }
 
+/// Most nodes of a parent element (Q9).
+const MAX_NODES: usize = 9;
+
 pub(crate) fn map(el: &dyn Parent, x: &[[f64; 2]], p: [f64; 2]) -> Mapped {
-    let (n, dn) = el.eval(p);
+    let mut n = vec![0.0; x.len()];
+    let mut g = [[0.0; 3]; MAX_NODES];
+    let [r, z, det] = map_nodes(el, x, p, &mut n, &mut g[..x.len()]);
+    let b = g[..x.len()]
+        .iter()
+        .flat_map(|&[dr, dz, hoop]| [[dr, 0.0, hoop, dz], [0.0, dz, 0.0, dr]])
+        .collect();
+    Mapped { r, z, det, n, b }
+}
+
+/// The mapping at `p` without allocating: N into `n`, each node's (∂N/∂r, ∂N/∂z, N/r) into
+/// `g` (B's nonzeros, [`super::add_btdb_nodes`]); returns (r, z, det J).
+fn map_nodes(
+    el: &dyn Parent,
+    x: &[[f64; 2]],
+    p: [f64; 2],
+    n: &mut [f64],
+    g: &mut [[f64; 3]],
+) -> [f64; 3] {
+    let mut dn = [[0.0; 2]; MAX_NODES];
+    let dn = &mut dn[..x.len()];
+    el.eval(p, n, dn);
     let (mut r, mut z) = (0.0, 0.0);
     let mut j = [[0.0; 2]; 2]; // j[a][b] = ∂x_a/∂ξ_b
     for (k, xk) in x.iter().enumerate() {
@@ -54,8 +78,7 @@ pub(crate) fn map(el: &dyn Parent, x: &[[f64; 2]], p: [f64; 2]) -> Mapped {
         [j[1][1] / det, -j[0][1] / det],
         [-j[1][0] / det, j[0][0] / det],
     ];
-    let mut b = Vec::with_capacity(2 * n.len());
-    for (k, d) in dn.iter().enumerate() {
+    for (k, (d, gk)) in dn.iter().zip(g.iter_mut()).enumerate() {
         let dr = d[0] * inv[0][0] + d[1] * inv[1][0];
         let dz = d[0] * inv[0][1] + d[1] * inv[1][1];
         // hoop strain N/r; on the axis its limit ∂N/∂r (valid because u = 0 there)
@@ -64,10 +87,9 @@ pub(crate) fn map(el: &dyn Parent, x: &[[f64; 2]], p: [f64; 2]) -> Mapped {
         } else {
             dr
         };
-        b.push([dr, 0.0, hoop, dz]);
-        b.push([0.0, dz, 0.0, dr]);
+        *gk = [dr, dz, hoop];
     }
-    Mapped { r, z, det, n, b }
+    [r, z, det]
 }
 
 /// Gauss points of the tensor rule with their parent weights.
@@ -110,12 +132,17 @@ pub(crate) fn stiffness(el: &dyn Parent, x: &[[f64; 2]], d: &[[f64; 4]; 4], bb: 
         Vec::new()
     };
     let mut k = vec![0.0; nd * nd];
+    let (mut n, mut g) = ([0.0; MAX_NODES], [[0.0; 3]; MAX_NODES]);
     for (p, w) in gauss(el) {
-        let mut m = map(el, x, p);
         if bb {
+            let mut m = map(el, x, p);
             bbar(&mut m.b, &mean);
+            add_btdb(&mut k, &m.b, d, w * 2.0 * PI * m.r * m.det);
+        } else {
+            // B without B-bar keeps its zeros: the product over the nonzeros only
+            let [r, _, det] = map_nodes(el, x, p, &mut n[..x.len()], &mut g[..x.len()]);
+            add_btdb_nodes(&mut k, &g[..x.len()], d, w * 2.0 * PI * r * det);
         }
-        add_btdb(&mut k, &m.b, d, w * 2.0 * PI * m.r * m.det);
     }
     mirror_upper(&mut k, nd);
     k

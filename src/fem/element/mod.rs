@@ -46,6 +46,6 @@ pub mod q4;
 pub mod q9;
 pub mod thermal;
 
-pub(crate) use common::{add_btdb, apply_d, mirror_upper, strain, GAUSS2, GAUSS3};
+pub(crate) use common::{add_btdb, add_btdb_nodes, apply_d, mirror_upper, strain, GAUSS2, GAUSS3};
 pub use common::{elasticity, ElementPoint, Stress};
 pub use kind::ElementKind;

@@ -61,9 +61,10 @@ pub fn shape(p: [f64; 2]) -> ([f64; 9], [[f64; 2]; 9]) {
 pub(crate) struct Q9;
 
 impl Parent for Q9 {
-    fn eval(&self, p: [f64; 2]) -> (Vec<f64>, Vec<[f64; 2]>) {
-        let (n, dn) = shape(p);
-        (n.to_vec(), dn.to_vec())
+    fn eval(&self, p: [f64; 2], n: &mut [f64], dn: &mut [[f64; 2]]) {
+        let (sn, sdn) = shape(p);
+        n.copy_from_slice(&sn);
+        dn.copy_from_slice(&sdn);
     }
     fn rule(&self) -> &'static [(f64, f64)] {
         &super::GAUSS3
