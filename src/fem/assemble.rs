@@ -164,14 +164,16 @@ impl Pattern {
                 at[i as usize] = (start + k) as u32;
             }
             // every element of p: its entries (i, j) of this column, i ≥ j
+            // (every place of p in the element: a degenerate quadrilateral of a card deck, a
+            // triangle, names one node twice)
             for &e in elements {
-                let Some(a) = mesh.element_nodes(e).iter().position(|&q| q == p) else {
-                    continue;
-                };
-                let lj = 2 * a + c;
-                for (li, &i) in equations[e * nd..(e + 1) * nd].iter().enumerate() {
-                    if i != NONE && i as usize >= j {
-                        positions[e * packed_len + packed(li.min(lj), li.max(lj))] = at[i as usize];
+                let places = mesh.element_nodes(e).iter().enumerate();
+                for lj in places.filter(|(_, &q)| q == p).map(|(a, _)| 2 * a + c) {
+                    for (li, &i) in equations[e * nd..(e + 1) * nd].iter().enumerate() {
+                        if i != NONE && i as usize >= j {
+                            positions[e * packed_len + packed(li.min(lj), li.max(lj))] =
+                                at[i as usize];
+                        }
                     }
                 }
             }
@@ -275,9 +277,9 @@ pub fn assemble(
             for (j, b) in eqs.iter().enumerate() {
                 match *b {
                     Some(b) if a >= b => {
-                        let pos = match stored {
-                            Some(t) => t[packed(i.min(j), i.max(j))] as usize,
-                            None => pattern
+                        let pos = match stored.map(|t| t[packed(i.min(j), i.max(j))]) {
+                            Some(t) if t != NONE => t as usize,
+                            _ => pattern
                                 .position(a, b)
                                 .ok_or(FemError::PatternMismatch { row: a, col: b })?,
                         };
