@@ -163,10 +163,13 @@ impl Pattern {
             for (k, &i) in col.iter().enumerate() {
                 at[i as usize] = (start + k) as u32;
             }
-            // every element of p: its entries (i, j) of this column, i ≥ j
-            // (every place of p in the element: a degenerate quadrilateral of a card deck, a
-            // triangle, names one node twice)
-            for &e in elements {
+            // every element of p: its entries (i, j) of this column, i ≥ j, at every place of p
+            // in the element (a card deck's degenerate quadrilateral names one node twice, and
+            // `elements` lists it once per place, consecutively: it is visited once)
+            for (k, &e) in elements.iter().enumerate() {
+                if k > 0 && elements[k - 1] == e {
+                    continue;
+                }
                 let places = mesh.element_nodes(e).iter().enumerate();
                 for lj in places.filter(|(_, &q)| q == p).map(|(a, _)| 2 * a + c) {
                     for (li, &i) in equations[e * nd..(e + 1) * nd].iter().enumerate() {
