@@ -249,6 +249,25 @@
 //! its JSON `seconds`) is already most of that 10 ms, and the search and the estimate need 7–9 crack
 //! solves besides.
 //!
+//! **Where the speed targets stand** (2026-11-25, main d0b1c39, `/usr/bin/time`, an
+//! idle machine, load 0.6–1.3). All twelve Table 1 rows at 1e-6, C = ∞: 0.11–0.24 s wall,
+//! 0.15–0.32 s CPU per row, 7–9 crack solves each, all converged (estimates 3.8e-10 …
+//! 3.6e-7 R_o). The FE two-plate model on the same rows at --tol 1e-6: 0.29–0.68 s, none
+//! converged (its 2e-5 R_o floor); so this route is 1.9–4.4× faster there, not the issue's
+//! 20×. The 10 ms per row is out of this formulation's reach: its bilateral holed
+//! plate alone, the single plate with the hole at the same tolerance (`single --method hankel
+//! --tol 1e-6` on row (1, 1.3), its JSON `seconds`), takes 9.2 ms, and the rest of the row's
+//! 0.13 s goes to its 8 crack solves and the setup they share (row (1, 1.3), `perf record`:
+//! the crack solves 52 % of the samples, of them the c-independent hole tables 24 %, the
+//! setup's sharing 12 %; no single item above a quarter). The 40 × 40 map with the two plates by this route is further still: 224 of its
+//! 1600 points have B/D > 8, beyond [`super::MAX_B_OVER_D_RIM`] (17 s of CPU at B/D = 11, 35 s at
+//! 16), and on points within reach (A/D 0.5, 1, 2 × B/A 1.3, 2, 3, `map --method hankel`)
+//! both models take 0.29 s of CPU per point: at that rate 230 s of wall time for 1600 points on the
+//! two cores, against the 10 s. Both targets need a formulation whose cost does not
+//! grow with the contact radius in plate thicknesses and does not re-solve the holed plate
+//! per radius: the items below trim the crack solves' tables, and removing the crack solves'
+//! whole 52 % would give 2.1×, against the 11–24× asked.
+//!
 //! **Next** (structural; not done): the Nyström ξ-rule fixed per table epoch (its ω from the
 //! epoch's largest c, as the hole rule's) with the J₀ rows of l's transform and its cosine
 //! tables on fixed panels, only the partial panel at c rebuilt (the s-rule's first panel must
