@@ -159,6 +159,7 @@ fn print_text(s: &Solution) {
     if let Some(d) = s.nut_deflection {
         println!("deflection under the nut: {d:.4e} {}", s.length_unit);
     }
+    println!("{}", super::print::rules_line(&s.rules, s.length_unit));
     if let (Some(g), Some(u)) = (s.joint_conductance, s.conductance_unit) {
         println!(
             "joint conductance (integral of h_c dA over the contact zone): {} {u}",

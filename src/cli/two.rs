@@ -173,37 +173,19 @@ pub(super) fn add_rules(out: &mut serde_json::Value, args: &Args) -> anyhow::Res
         error: out["r_o_error"].as_f64().unwrap_or(f64::NAN),
         converged: out["converged"].as_bool().unwrap_or(false),
     };
-    let r = rules(args, r_o);
-    out["rules"] = serde_json::to_value(&r.rules)?;
-    if !r.left_out.is_empty() {
-        out["rules_left_out"] = serde_json::to_value(&r.left_out)?;
+    if let (serde_json::Value::Object(m), serde_json::Value::Object(r)) =
+        (out, serde_json::to_value(rules(args, r_o))?)
+    {
+        m.extend(r);
     }
     Ok(())
 }
 
 /// Prints the rules of thumb beside `r_o`, one line (text output).
 pub(super) fn print_rules(args: &Args, r_o: Value) {
-    let r = rules(args, r_o);
-    let l = args.units.length();
-    let applied = r.rules.iter().map(|x| {
-        let name = match x.name {
-            "cone" => format!("{:.0}° cone", x.half_angle_degrees),
-            other => other.to_string(),
-        };
-        format!(
-            "{name} {} {l} ({:+.1} ± {:.1} %)",
-            sig(x.radius, 5),
-            x.error_percent.value,
-            x.error_percent.error
-        )
-    });
-    let left = r
-        .left_out
-        .iter()
-        .map(|x| format!("{} left out: {}", x.name, x.reason));
     println!(
-        "rules: {}",
-        applied.chain(left).collect::<Vec<_>>().join("; ")
+        "{}",
+        super::print::rules_line(&rules(args, r_o), args.units.length())
     );
 }
 

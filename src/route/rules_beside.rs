@@ -35,7 +35,8 @@ use serde::Serialize;
 /// A rule of thumb's contact radius and its error against the computed R_o.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct RuleResult {
-    /// "45° (Rötscher)", "VDI 2230" or "cone" (of the half-angle asked, 30° by default).
+    /// "45° cone" (Rötscher's), "VDI 2230", "30° cone" (or "cone", of another half-angle
+    /// asked).
     pub name: &'static str,
     /// Cone half-angle, degrees.
     pub half_angle_degrees: f64,
@@ -56,23 +57,25 @@ pub struct RuleLeftOut {
     pub reason: String,
 }
 
-/// The rules beside one R_o: those applied, and those left out with the reason.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+/// The rules beside one R_o: those applied, and those left out with the reason (JSON keys
+/// `rules` and `rules_left_out`, the latter only when a rule was left out).
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
 pub struct Rules {
     /// The rules applied, in the order 45°, VDI 2230, the cone of the half-angle asked.
     pub rules: Vec<RuleResult>,
     /// The rules that could not be applied.
+    #[serde(rename = "rules_left_out", skip_serializing_if = "Vec::is_empty")]
     pub left_out: Vec<RuleLeftOut>,
 }
 
-/// The rules beside `r_o` for a bearing face of radius B on plates D₁ (under the head) and D₂
-/// thick of outer radius C — `(b, d1, d2, c)` — with the extra cone's half-angle
-/// `cone_degrees`.
-pub fn beside(
+/// The rules' contact radii for a bearing face of radius B on plates D₁ (under the head) and
+/// D₂ thick of outer radius C — `(b, d1, d2, c)` — with the extra cone's half-angle
+/// `cone_degrees`: the cones applied, in the order 45°, VDI 2230, the extra cone, and those
+/// left out with the reason.
+pub fn radii(
     (b, d1, d2, c): (f64, f64, f64, OuterRadius),
     cone_degrees: f64,
-    r_o: Value,
-) -> Rules {
+) -> (Vec<(&'static str, ConeRadius)>, Vec<RuleLeftOut>) {
     let c_rule = match c {
         OuterRadius::Finite(c) => c,
         OuterRadius::Infinite => f64::INFINITY,
@@ -84,28 +87,42 @@ pub fn beside(
                 .to_string(),
         ),
     };
+    let cone_name = if cone_degrees == 30.0 {
+        "30° cone"
+    } else {
+        "cone"
+    };
     let candidates = [
         (
-            "45° (Rötscher)",
+            "45° cone",
             roetscher(b, d1, c_rule).map_err(|e| e.to_string()),
         ),
         ("VDI 2230", vdi),
         (
-            "cone",
+            cone_name,
             cone_radius(b, d1, cone_degrees.to_radians(), c_rule).map_err(|e| e.to_string()),
         ),
     ];
-    let mut out = Rules {
-        rules: Vec::new(),
-        left_out: Vec::new(),
-    };
+    let (mut applied, mut left_out) = (Vec::new(), Vec::new());
     for (name, cone) in candidates {
         match cone {
-            Ok(cone) => out.rules.push(result(name, cone, r_o)),
-            Err(reason) => out.left_out.push(RuleLeftOut { name, reason }),
+            Ok(cone) => applied.push((name, cone)),
+            Err(reason) => left_out.push(RuleLeftOut { name, reason }),
         }
     }
-    out
+    (applied, left_out)
+}
+
+/// The rules beside `r_o` ([`radii`] with each rule's error against `r_o`).
+pub fn beside(joint: (f64, f64, f64, OuterRadius), cone_degrees: f64, r_o: Value) -> Rules {
+    let (applied, left_out) = radii(joint, cone_degrees);
+    Rules {
+        rules: applied
+            .into_iter()
+            .map(|(name, cone)| result(name, cone, r_o))
+            .collect(),
+        left_out,
+    }
 }
 
 /// One rule's result against `r_o`.

@@ -91,6 +91,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         heat_passes: None,
         heat_flow: None,
         heat_flow_unit: None,
+        rules: Default::default(),
         plan: Vec::new(),
         interface: None,
         field: None,
@@ -264,8 +265,26 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
             });
         }
     }
+    out.rules = rules_of(scene, &out);
     out.plan = plan;
     Ok(out)
+}
+
+/// The rules of thumb beside the answer `out` (the scene's units: B, the plates' thicknesses
+/// and C as written).
+fn rules_of(scene: &Scene, out: &Solution) -> crate::route::rules_beside::Rules {
+    let d1 = scene.plates.first().map_or(0.0, |p| p.thickness);
+    let d2 = scene.plates.last().map_or(d1, |p| p.thickness);
+    let c = scene.joint.outer_radius.map_or(
+        crate::joint::OuterRadius::Infinite,
+        crate::joint::OuterRadius::Finite,
+    );
+    let r_o = crate::value::Value {
+        value: out.r_o,
+        error: out.r_o_error,
+        converged: out.converged,
+    };
+    crate::route::rules_beside::beside((scene.load.outer_radius, d1, d2, c), 30.0, r_o)
 }
 
 /// The single-plate substitute of a symmetric joint.

@@ -43,7 +43,14 @@ fn folders_under(dir: &Path, prefix: &str, out: &mut BTreeSet<String>) {
 fn tour_names_every_folder_once() {
     let mut on_disk = BTreeSet::new();
     folders_under(&root().join("src"), "src", &mut on_disk);
-    for top in ["reference", "assets", "tests", "examples", "benches", "docs"] {
+    for top in [
+        "reference",
+        "assets",
+        "tests",
+        "examples",
+        "benches",
+        "docs",
+    ] {
         assert!(root().join(top).is_dir(), "{top}/ missing");
         on_disk.insert(top.to_string());
     }

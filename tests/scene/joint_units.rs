@@ -145,8 +145,12 @@ fn curves_and_text_name_the_units() {
     let text = String::from_utf8_lossy(&two.stdout);
     assert!(
         text.contains(" mm   (")
-            && text.lines().any(|l| l.contains("nut: ") && l.ends_with(" mm"))
-            && text.lines().any(|l| l.starts_with("rules: ") && l.contains(" mm (")),
+            && text
+                .lines()
+                .any(|l| l.contains("nut: ") && l.ends_with(" mm"))
+            && text
+                .lines()
+                .any(|l| l.starts_with("rules: ") && l.contains(" mm (")),
         "{text}"
     );
     let csv = std::fs::read_to_string(dir.join("t.csv")).unwrap();
