@@ -28,7 +28,7 @@ use boltzone::contact::two_plate::{
     solve, solve_field, InterfaceModel, Loading, TwoPlateField, TwoPlateParams, TwoPlateSolution,
 };
 use boltzone::fem::ElementKind;
-use boltzone::route::{rules_beside, two_plate, Method};
+use boltzone::route::{rules_beside, sanity, two_plate, Method};
 use boltzone::Value;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Peak, Plate};
 use std::f64::consts::PI;
@@ -189,6 +189,27 @@ pub(super) fn print_rules(args: &Args, r_o: Value) {
     );
 }
 
+/// Prints the plausibility warnings `w` on stderr naming their flags, or with `--strict`
+/// refuses the first as bad input (exit 2).
+pub(super) fn warn(args: &Args, w: &[sanity::Warning]) -> anyhow::Result<()> {
+    for w in w {
+        let (flag, value) = match w.slip {
+            sanity::Slip::Modulus { plate: 0 } => ("--e", args.e()),
+            sanity::Slip::Modulus { .. } => ("--e2", args.e2.unwrap_or(args.e())),
+            sanity::Slip::Pressure => match args.force {
+                Some(f) => ("--force", f),
+                None => ("--p", args.p),
+            },
+            sanity::Slip::Deflection => ("--p/--force/--e", pressure(args)),
+        };
+        if args.strict {
+            return super::exit::usage(flag, value, &format!("{} (--strict)", w.message));
+        }
+        eprintln!("warning: {flag} = {value}: {}", w.message);
+    }
+    Ok(())
+}
+
 /// The route layer's question of the arguments on their `joint`.
 pub(super) fn question<'a>(args: &Args, joint: &'a Joint) -> two_plate::Question<'a> {
     two_plate::Question {
@@ -216,6 +237,12 @@ pub(super) fn question<'a>(args: &Args, joint: &'a Joint) -> two_plate::Question
 pub fn run(args: Args) -> anyhow::Result<Status> {
     let start = std::time::Instant::now();
     check_args(&args)?;
+    let p_given = match args.nut_displacement {
+        Some(_) => 0.0,
+        None => pressure(&args),
+    };
+    let e = [args.e(), args.e2.unwrap_or(args.e())];
+    warn(&args, &sanity::inputs(args.units.units, e, p_given))?;
     let joint = joint(&args)?;
     let q = question(&args, &joint);
     let p = pressure(&args);
@@ -316,6 +343,13 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         };
         super::write_output(path, &text)?;
     }
+    let thinner = args.d2.map_or(args.geom.d, |d2| d2.min(args.geom.d));
+    warn(
+        &args,
+        &sanity::deflection(s.nut_deflection, thinner)
+            .into_iter()
+            .collect::<Vec<_>>(),
+    )?;
     let Some(last) = s.info.levels.last() else {
         anyhow::bail!("the two-plate solver returned no mesh level");
     };

@@ -117,4 +117,8 @@ pub struct Args {
     /// Print the result as JSON.
     #[arg(long)]
     pub(super) json: bool,
+    /// Treat a plausibility warning (a modulus or pressure that looks like a unit slip, a
+    /// deflection beyond 1 % of the plate) as bad input: exit 2 instead of a warning on stderr.
+    #[arg(long)]
+    pub(super) strict: bool,
 }

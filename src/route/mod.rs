@@ -13,7 +13,8 @@
 //! - [`single_plate`]: the single-plate substitute's routes and the semi-analytic route's knobs
 //!   for a tolerance;
 //! - [`rules_beside`]: the rules of thumb beside every answer, each with its error against R_o
-//!   (or the reason it was left out).
+//!   (or the reason it was left out);
+//! - [`sanity`]: warnings for magnitudes that look like a unit slip.
 //!
 //! `auto` is the cheapest route that can meet the tolerance and serve the outputs: for two
 //! plates the semi-analytic routes within their reach below [`two_plate::AUTO_BELOW`] (where the
@@ -40,6 +41,7 @@
 
 pub mod method;
 pub mod rules_beside;
+pub mod sanity;
 pub mod single_plate;
 pub mod two_plate;
 
