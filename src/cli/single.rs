@@ -27,6 +27,7 @@ use boltzone::fem::single::{
 };
 use boltzone::fem::ElementKind;
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
+use boltzone::hankel::separation::SeparationError;
 use boltzone::route::{single_plate, Method};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
@@ -262,9 +263,19 @@ fn run_hankel(
     };
     // Every flag was checked: what the route rejects now is a plate outside its reach (e.g.
     // too thin for its quadrature budget), a limit of the method (exit 1), not bad input.
-    let (sep, hole) = single_plate_separation(plate, &search, &params).map_err(|e| {
-        anyhow::anyhow!("the Hankel route cannot treat this plate ({e}); try --method fem")
-    })?;
+    let (sep, hole) = match single_plate_separation(plate, &search, &params) {
+        Ok(found) => found,
+        // a rim within reach of the load's compression: the plate may touch out to C, which
+        // only the finite elements answer (full contact, R_o = C)
+        Err(e @ SeparationError::NotFound { .. }) if args.c.is_some() => {
+            let why = format!(
+                "{e}: the plate may be in full contact out to its rim, which the Hankel route \
+                 cannot answer; use --method fem"
+            );
+            return super::exit::usage("--c", super::exit::num(args.c.unwrap_or(0.0)), &why);
+        }
+        Err(e) => anyhow::bail!("the Hankel route cannot treat this plate ({e}); try --method fem"),
+    };
     if let Some(path) = &args.out.curve {
         let (l, st) = (args.units.length(), args.units.stress());
         let r = super::hankel_curve::radii(plate, 200);

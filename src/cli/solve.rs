@@ -96,7 +96,16 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let start = std::time::Instant::now();
     let text = read(&args.scene).map_err(classify)?;
     let pts = match &args.geometries {
-        Some(csv) => rows(&text, &read(csv).map_err(classify)?).map_err(classify)?,
+        Some(csv) => {
+            let table = match std::fs::read_to_string(csv) {
+                Ok(t) => t,
+                Err(e) => {
+                    let why = format!("cannot read the geometries CSV: {e}");
+                    return super::exit::usage("--geometries", csv.display(), &why);
+                }
+            };
+            rows(&text, &table).map_err(classify)?
+        }
         None => points(&text).map_err(classify)?,
     };
     let base = &pts[0].scene;

@@ -80,6 +80,15 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     }
     if let Some(n) = args.nut_displacement {
         check::positive("--nut-displacement", "nut displacement", n)?;
+        let d = args.d2.map_or(args.geom.d, |d2| d2.min(args.geom.d));
+        if !(1e-12 * d..=d).contains(&n) {
+            return usage(
+                "--nut-displacement",
+                super::exit::num(n),
+                "must lie within 1e-12..1 thicknesses of the thinner plate (smaller leaves the \
+                 solver's floating-point range; larger is no small-strain joint)",
+            );
+        }
     }
     check::tolerance("--tol", args.tol)?;
     match (args.interface, args.mu) {
@@ -202,6 +211,7 @@ pub(super) fn warn(args: &Args, w: &[sanity::Warning]) -> anyhow::Result<()> {
             },
             sanity::Slip::Deflection => ("--p/--force/--e", pressure(args)),
         };
+        let value = super::exit::num(value);
         if args.strict {
             return super::exit::usage(flag, value, &format!("{} (--strict)", w.message));
         }
@@ -290,6 +300,20 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     } else {
         (solve(&joint, &params).map_err(hint)?, None)
     };
+    if !s.nut_deflection.is_finite() {
+        // the solve is scaled (R_o does not depend on P/E); only the deflection, ∝ P·D/E, is
+        // out of the floating-point range
+        let e = args.e2.unwrap_or(args.e()).min(args.e());
+        return usage(
+            if args.e2.is_some_and(|e2| e2 < args.e()) {
+                "--e2"
+            } else {
+                "--e"
+            },
+            super::exit::num(e),
+            "the deflection under the nut, of order P·D/E, overflows the floating-point range",
+        );
+    }
     if let (Some(path), Some(field)) = (&args.out.field, &field) {
         super::write_output(path, &super::two_files::field_vtu(&s, field, args.units)?)?;
     }

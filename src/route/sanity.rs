@@ -98,7 +98,7 @@ pub fn inputs(units: UnitSystem, e: [f64; 2], p: f64) -> Vec<Warning> {
             out.push(Warning {
                 slip: Slip::Modulus { plate },
                 message: format!(
-                    "E = {e} {st} is {:.3e} Pa, outside the {:.0e}–{:.1e} Pa of structural solids; \
+                    "E = {e:?} {st} is {:.3e} Pa, outside the {:.0e}–{:.1e} Pa of structural solids; \
                      likely {likely}",
                     pa, MIN_MODULUS, MAX_MODULUS
                 ),
@@ -110,7 +110,7 @@ pub fn inputs(units: UnitSystem, e: [f64; 2], p: f64) -> Vec<Warning> {
         out.push(Warning {
             slip: Slip::Pressure,
             message: format!(
-                "the bearing pressure {p} {st} is {:.1} % of E = {e_min} {st}: no metal carries \
+                "the bearing pressure {p:.4e} {st} is {:.1} % of E = {e_min:?} {st}: no metal carries \
                  that elastically (a unit slip in the force, the pressure or E?)",
                 100.0 * p / e_min
             ),
@@ -125,7 +125,7 @@ pub fn deflection(w: f64, d: f64) -> Option<Warning> {
     (w.abs() > MAX_DEFLECTION_OVER_THICKNESS * d).then(|| Warning {
         slip: Slip::Deflection,
         message: format!(
-            "the mean deflection under the nut, {:.3e}, is {:.1} % of the plate thickness {d}: \
+            "the mean deflection under the nut, {:.3e}, is {:.1} % of the plate thickness {d:?}: \
              beyond small-strain elasticity (a unit slip in the pressure, the force or E?)",
             w.abs(),
             100.0 * w.abs() / d

@@ -376,3 +376,64 @@ fn a_vanishing_bearing_face_is_bad_input() {
     let r = go(&["two", "--a", "0", "--b", "0.001", "--d", "1", "--c", "10"]);
     assert_eq!(code(&r), 0, "{}", r.stderr);
 }
+
+#[test]
+fn input_faults_the_fuzz_found_exit_2_naming_the_flag() {
+    // was: exit 1 (a solver's failure, or an I/O error) or 134 (a rayon worker out of memory)
+    // where the input is at fault
+    for (args, flag) in [
+        (
+            &[
+                "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--e", "5e-324",
+            ][..],
+            "--e = 5e-324",
+        ),
+        (
+            &[
+                "two",
+                "--a",
+                "0.1",
+                "--b",
+                "0.31",
+                "--d",
+                "0.1",
+                "--nut-displacement",
+                "5e-324",
+            ],
+            "--nut-displacement = 5e-324",
+        ),
+        (
+            &["map", "--n", "2", "--a-over-d", "1e-308"],
+            "--a-over-d = 1e-308",
+        ),
+        (
+            &["map", "--n", "2", "--a-over-d", "1e308"],
+            "--a-over-d = 1e308",
+        ),
+        (&["map", "--n", "2", "--svg=outfile"], "--svg = outfile"),
+        (
+            &[
+                "single",
+                "--a",
+                "0.1",
+                "--b",
+                "0.31",
+                "--d",
+                "0.1",
+                "--method",
+                "hankel",
+                "--c",
+                "0.3100000001",
+            ],
+            "--c = 0.3100000001",
+        ),
+        (
+            &["deck", "/nonexistent/x.deck"],
+            "FILE = /nonexistent/x.deck",
+        ),
+    ] {
+        let r = go(args);
+        assert_eq!(code(&r), 2, "{args:?}: {}", r.stderr);
+        assert!(r.stderr.contains(flag), "{args:?}: {}", r.stderr);
+    }
+}
