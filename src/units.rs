@@ -27,6 +27,16 @@ use serde::{Deserialize, Serialize};
 pub const INCH: f64 = 0.0254;
 /// One pound-force in newtons (exact by definition: 0.45359237 kg × 9.80665 m/s²).
 pub const POUND_FORCE: f64 = 4.4482216152605;
+/// Metres per foot (exact).
+pub const FOOT: f64 = 0.3048;
+/// Pascals per psi (lbf/in²).
+pub const PSI: f64 = POUND_FORCE / (INCH * INCH);
+/// Joules per International Table Btu (exact).
+pub const BTU: f64 = 1_055.055_852_62;
+/// Seconds per hour.
+pub const HOUR: f64 = 3600.0;
+/// Kelvin per degree Fahrenheit of temperature difference (exact).
+pub const FAHRENHEIT_DEGREE: f64 = 5.0 / 9.0;
 
 /// A consistent system of length, stress and force units.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -73,7 +83,7 @@ impl UnitSystem {
     /// W/(m·K) per conductivity unit: Btu/(hr·ft·°F) in in-psi-lbf, W/(m·K) otherwise.
     pub fn conductivity(self) -> f64 {
         match self {
-            Self::InPsiLbf => crate::heat::units::Conductivity::btu_per_hr_ft_f(1.0).si(),
+            Self::InPsiLbf => BTU / HOUR / FOOT / FAHRENHEIT_DEGREE,
             Self::MmMpaN | Self::MPaN => 1.0,
         }
     }
@@ -81,7 +91,7 @@ impl UnitSystem {
     /// W/K per thermal conductance unit: Btu/(hr·°F) in in-psi-lbf, W/K otherwise.
     pub fn conductance(self) -> f64 {
         match self {
-            Self::InPsiLbf => crate::heat::units::Conductance::btu_per_hr_f(1.0).si(),
+            Self::InPsiLbf => BTU / HOUR / FAHRENHEIT_DEGREE,
             Self::MmMpaN | Self::MPaN => 1.0,
         }
     }

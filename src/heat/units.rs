@@ -29,20 +29,8 @@
 
 use serde::Serialize;
 
-/// Metres per inch (exact).
-pub const INCH: f64 = 0.0254;
-/// Metres per foot (exact).
-pub const FOOT: f64 = 0.3048;
-/// Newtons per pound-force (exact: 0.45359237 kg × 9.80665 m/s²).
-pub const POUND_FORCE: f64 = 0.453_592_37 * 9.806_65;
-/// Pascals per psi (lbf/in²).
-pub const PSI: f64 = POUND_FORCE / (INCH * INCH);
-/// Joules per International Table Btu (exact).
-pub const BTU: f64 = 1_055.055_852_62;
-/// Seconds per hour.
-pub const HOUR: f64 = 3600.0;
-/// Kelvin per degree Fahrenheit of temperature difference (exact).
-pub const FAHRENHEIT_DEGREE: f64 = 5.0 / 9.0;
+/// The exact factors, defined once at the bottom layer ([`crate::units`]).
+pub use crate::units::{BTU, FAHRENHEIT_DEGREE, FOOT, HOUR, INCH, POUND_FORCE, PSI};
 
 macro_rules! quantity {
     ($(#[$doc:meta])* $name:ident, $si:literal, $( $(#[$udoc:meta])* ($from:ident, $to:ident, $factor:expr) ),* ) => {

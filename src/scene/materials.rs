@@ -22,7 +22,7 @@
 //! assert!(al.youngs_modulus > 6e10 && al.youngs_modulus < 8e10);
 //! ```
 
-use super::units::{INCH, POUND_FORCE};
+use super::units::PSI;
 
 /// One library material (SI units).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -42,8 +42,6 @@ pub struct LibraryMaterial {
     /// Where the numbers come from.
     pub source: &'static str,
 }
-
-const PSI: f64 = POUND_FORCE / (INCH * INCH);
 
 /// The library, in the order listed by `boltzone solve --help`.
 pub const LIBRARY: [LibraryMaterial; 6] = [

@@ -5,14 +5,21 @@
 //! - [`layer`]: the layer's Hankel kernels (bottom-face displacement under face pressures);
 //! - `system`: the Fredholm equation of a contact disk r ≤ c, by Nyström's method;
 //! - `search`: the scan and root search for R_o and the check of the unilateral conditions;
+//! - [`contact`]: the solver ([`Layer::receding_contact`]) and its results (derivation,
+//!   accuracy and cost there);
 //! - [`pair`]: two unequal plates without a hole (the kernels of both in series, [`layer::Stack`]);
 //! - [`layer_field`]: the layer's stresses at any height under a bottom (or top) pressure;
-//! - [`holed`]: the two-plate model with the hole (bilateral holed plate + crack field + its
-//!   hole correction, iterated); `crack`: one trial contact radius of it;
 //! - [`rim_bending`]: the exact non-decaying states (membrane, bending) and the far field by
-//!   reciprocity; [`rim`]: the finite rim r = C of the plate without a hole;
-//! - [`contact`]: the solver ([`Layer::receding_contact`]) and its results (derivation,
-//!   accuracy and cost there).
+//!   reciprocity; [`rim`]: the finite rim r = C of the plate without a hole; `prescribed`: a
+//!   prescribed displacement of the contact disk as a right-hand side (the rim's correction);
+//! - the two-plate model with the hole: [`holed`] (the entry points; bilateral holed plate +
+//!   crack field + its hole correction, iterated), `holed_params` (its knobs and reach),
+//!   `holed_record` (its answer and record), `holed_setup` (a geometry's fixed parts),
+//!   `holed_infinite` (the infinite plate's setup and search), `holed_search` (the search for
+//!   R_o and its error estimate), `crack` (one trial contact radius), `crack_tables` (that
+//!   radius's quadrature tables), `setup_tables` and `hole_tables` (the tables shared across
+//!   radii), `endpoint` (the crack load's transform beyond its panels), `anderson` (the
+//!   iteration's acceleration), [`rim_holed`] (the finite rim with the hole).
 //!
 //! # Accuracy
 //!
