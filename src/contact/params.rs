@@ -96,6 +96,9 @@ pub struct TwoPlateParams {
     pub both_plates: bool,
     /// LCP knobs.
     pub lcp: LcpParams,
+    /// R_o of each level from the fitted contact edge ([`super::edge_fit`]) where it applies
+    /// (frictionless or symmetric contact), else from the gap's shape (default false).
+    pub fitted_edge: bool,
 }
 
 impl Default for TwoPlateParams {
@@ -112,6 +115,7 @@ impl Default for TwoPlateParams {
             window: 3.0,
             both_plates: false,
             lcp: LcpParams::default(),
+            fitted_edge: false,
         }
     }
 }

@@ -56,6 +56,9 @@ pub struct TwoPlateLevel {
     pub time_linear: f64,
     /// Flexibility solves + LCP + recovery, seconds.
     pub time_contact: f64,
+    /// R_o from the fitted contact edge ([`super::edge_fit`]), where it applies.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub r_o_fit: Option<f64>,
 }
 
 /// One solved mesh level and its R_o.
@@ -78,6 +81,7 @@ pub(super) fn solve_level_at(
     let thermal = g.thermal.map(|t| t.apply(&mut model)).transpose()?;
     let nodes = model.mesh.n_nodes();
     let (sol, window, attempts) = solve_adaptive(&model, joint, g, params, prev, thermal.as_ref())?;
+    let fitted = fitted_edge(&model, &sol);
     let est = match separation(&sol) {
         Some(est) => est,
         // Closed out to the rim: full contact, R_o = C (an answer, not a failure).
@@ -90,6 +94,10 @@ pub(super) fn solve_level_at(
             spread: 0.0,
         },
         None => return Err(ContactError::WindowExhausted { radius: g.c }),
+    };
+    let est = match fitted {
+        Some(r) if params.fitted_edge => SeparationEstimate { r_o: r, ..est },
+        _ => est,
     };
     let record = TwoPlateLevel {
         h,
@@ -105,6 +113,7 @@ pub(super) fn solve_level_at(
         residual: sol.lcp.residual,
         time_linear: sol.time_linear.as_secs_f64(),
         time_contact: sol.time_contact.as_secs_f64(),
+        r_o_fit: fitted,
     };
     Ok(Level {
         model,
@@ -151,4 +160,12 @@ pub(super) fn closed_pressure(s: &LevelSolution) -> Vec<f64> {
         .zip(&s.closed)
         .map(|(&p, &c)| if c { p.max(f64::MIN_POSITIVE) } else { 0.0 })
         .collect()
+}
+
+/// R_o of the fitted edge ([`super::edge_fit`]) when the level has its Schur complement.
+fn fitted_edge(model: &MeshedJoint, sol: &LevelSolution) -> Option<f64> {
+    let sys = sol.edge.as_ref()?;
+    let step = if model.mesh.kind().nodes() == 9 { 2 } else { 1 };
+    let active: Vec<bool> = sys.window.iter().map(|&i| sol.closed[i]).collect();
+    super::edge_fit::fit(sys, &sol.radius, &active, step).map(|f| f.r_o)
 }

@@ -1,0 +1,164 @@
+//! R_o as the root of the contact edge's singular coefficient, on one mesh level.
+//!
+//! Hold the plates closed exactly on the interface nodes up to a trial edge ρ (a corner node)
+//! and open beyond. The exact solution of that bilateral problem has, at ρ, a pressure
+//! p ≈ K(ρ)/√(ρ − r) + c √(ρ − r) and a gap g ≈ −κK(ρ)√(r − ρ) + c′(r − ρ)^{3/2}: the
+//! inverse-square-root coefficient K(ρ) is positive for an edge short of the true one (the
+//! plates would overlap beyond it), negative beyond it (they would pull), and zero exactly at
+//! the smooth receding separation R_o (Signorini: p ≥ 0, g ≥ 0 on both sides). K is smooth in ρ.
+//!
+//! The level's interface Schur complement g = g⁰ + Fλ on the LCP window ([`super::level`])
+//! gives the bilateral solution for any trial edge at a node without a new factorization: the
+//! forces λ_J = −F_JJ⁻¹ g⁰_J of the closed set J and the gaps g⁰ + F λ beyond. For each corner
+//! node near the LCP's edge the gap's first open nodes are fitted by
+//! g = a s^{1/2} + b s^{3/2} + c s^{5/2} (s = r − ρ), a ∝ −K(ρ); R_o is the root of the
+//! quadratic through a(ρ) at the three corner edges nearest the sign change. The trial edges
+//! are corner nodes so that each trial meets the same discretization (an edge inside a
+//! quadratic element would not), and the root is interpolated between them, so no mesh is
+//! moved and no matrix refactored; the next level's mesh puts a node at the root.
+//!
+//! Units: those of the level (any consistent set).
+//!
+//! # Accuracy
+//!
+//! Measured by example 22 (`examples/22_fe_edge.rs`) against the receding contact and the
+//! holed semi-analytic route.
+//!
+//! # Cost
+//!
+//! A few dense solves of the closed window points per trial edge (the window holds < 40 points
+//! past the first level): negligible beside the level's factorization.
+//!
+//! ```
+//! // Internal to the study; reached through its entry point:
+//! use boltzone::contact::two_plate::{solve, TwoPlateParams};
+//! let _ = (solve, TwoPlateParams::default());
+//! ```
+
+use nalgebra::{DMatrix, DVector};
+
+/// The interface Schur complement of one level: gaps g = g⁰ + F λ of the window points
+/// (normal components only: frictionless or symmetric contact).
+#[derive(Debug, Clone, PartialEq)]
+pub struct EdgeSystem {
+    /// Radial line of each window point, increasing.
+    pub window: Vec<usize>,
+    /// Flexibility F (window × window).
+    pub flexibility: DMatrix<f64>,
+    /// Gaps under the load alone, g⁰.
+    pub gap0: DVector<f64>,
+}
+
+/// The fitted edge of one level.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EdgeFit {
+    /// The root of the edge coefficient: R_o on this level.
+    pub r_o: f64,
+    /// (trial edge ρ, gap coefficient a(ρ)) at the corner edges used.
+    pub trials: Vec<(f64, f64)>,
+}
+
+/// How many window points beyond a trial edge the gap fit reads.
+const FIT_POINTS: usize = 3;
+
+/// The fitted edge (module docs). `radius` are the interface node radii, `active` the LCP's
+/// closed state of each window point, `step` the radial lines per element (2 for quadratic
+/// elements, 1 for linear). None when the window does not hold the edge's neighbourhood.
+pub fn fit(sys: &EdgeSystem, radius: &[f64], active: &[bool], step: usize) -> Option<EdgeFit> {
+    let w = &sys.window;
+    let m = w.len();
+    let k = (0..m).rev().find(|&q| active[q])?;
+    // Window positions of corner nodes around the LCP's edge: two at or before it, two after.
+    let corners: Vec<usize> = (0..m)
+        .filter(|&q| w[q] % step == 0 && q + FIT_POINTS < m)
+        .filter(|&q| (0..=FIT_POINTS).all(|i| w[q + i] == w[q] + i))
+        .collect();
+    let at = corners.iter().rposition(|&q| q <= k)?;
+    let lo = at.checked_sub(1)?;
+    let hi = (at + 2).min(corners.len() - 1);
+    let first = corners[lo.saturating_sub(1)];
+    let mut trials = Vec::new();
+    for &e in &corners[lo..=hi] {
+        let closed: Vec<usize> = (0..m)
+            .filter(|&q| (q < first && active[q]) || (q >= first && q <= e))
+            .collect();
+        let a = coefficient(sys, radius, &closed, e)?;
+        trials.push((radius[w[e]], a));
+    }
+    let r_o = root(&trials)?;
+    Some(EdgeFit { r_o, trials })
+}
+
+/// The √ coefficient a of the gap beyond the edge at window position `e` with `closed` held.
+fn coefficient(sys: &EdgeSystem, radius: &[f64], closed: &[usize], e: usize) -> Option<f64> {
+    let n = closed.len();
+    let f = &sys.flexibility;
+    let fjj = DMatrix::from_fn(n, n, |i, j| f[(closed[i], closed[j])]);
+    let rhs = DVector::from_fn(n, |i, _| -sys.gap0[closed[i]]);
+    let lambda = fjj.cholesky()?.solve(&rhs);
+    let gap = |q: usize| {
+        sys.gap0[q]
+            + closed
+                .iter()
+                .zip(lambda.iter())
+                .map(|(&j, l)| f[(q, j)] * l)
+                .sum::<f64>()
+    };
+    let rho = radius[sys.window[e]];
+    let mut a = DMatrix::<f64>::zeros(FIT_POINTS, FIT_POINTS);
+    let mut b = DVector::<f64>::zeros(FIT_POINTS);
+    for i in 0..FIT_POINTS {
+        let q = e + 1 + i;
+        let s = radius[sys.window[q]] - rho;
+        for j in 0..FIT_POINTS {
+            a[(i, j)] = s.powf(0.5 + j as f64);
+        }
+        b[i] = gap(q);
+    }
+    let c = a.lu().solve(&b)?;
+    Some(c[0])
+}
+
+/// The root of a(ρ): the quadratic through the three trials nearest the sign change.
+fn root(t: &[(f64, f64)]) -> Option<f64> {
+    let i = t.windows(2).position(|p| p[0].1.signum() != p[1].1.signum())?;
+    let (x0, y0) = t[i];
+    let (x1, y1) = t[i + 1];
+    let lin = x0 - y0 * (x1 - x0) / (y1 - y0);
+    if t.len() < 3 {
+        return Some(lin);
+    }
+    // three points: i, i+1 and the neighbour on the side nearer the root
+    let j = if i + 2 < t.len() && (i == 0 || lin - x0 > x1 - lin) {
+        i + 2
+    } else {
+        i.checked_sub(1).unwrap_or(i + 2)
+    };
+    let mut p = [t[i], t[i + 1], *t.get(j)?];
+    p.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let q = |x: f64| {
+        let mut s = 0.0;
+        for a in 0..3 {
+            let mut l = p[a].1;
+            for b in 0..3 {
+                if a != b {
+                    l *= (x - p[b].0) / (p[a].0 - p[b].0);
+                }
+            }
+            s += l;
+        }
+        s
+    };
+    // Newton from the linear root, with a secant slope
+    let mut x = lin;
+    for _ in 0..20 {
+        let dx = 1e-7 * (x1 - x0);
+        let d = (q(x + dx) - q(x - dx)) / (2.0 * dx);
+        let step = q(x) / d;
+        x -= step;
+        if step.abs() <= 1e-15 * x.abs() {
+            break;
+        }
+    }
+    (x.is_finite() && x > x0 - (x1 - x0) && x < x1 + (x1 - x0)).then_some(x)
+}
