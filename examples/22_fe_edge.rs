@@ -50,7 +50,11 @@ pub fn exact(case: &Case) -> anyhow::Result<f64> {
 }
 
 /// (h, gap-shape R_o, fitted R_o) per level of one FE study of `levels` levels.
-pub fn levels(case: &Case, levels: usize, fitted: bool) -> anyhow::Result<Vec<(f64, f64, f64)>> {
+pub fn levels(
+    case: &Case,
+    levels: usize,
+    fitted: bool,
+) -> anyhow::Result<Vec<(f64, f64, f64, f64)>> {
     let plate = Plate::new(1.0, Material::unit(case.nu)?)?;
     let load = FaceLoad::uniform(case.a, case.b, 1.0)?;
     let joint = Joint::new(case.a, OuterRadius::Infinite, plate, plate, load)?;
@@ -69,7 +73,7 @@ pub fn levels(case: &Case, levels: usize, fitted: bool) -> anyhow::Result<Vec<(f
         .iter()
         .map(|l| {
             let fit = l.r_o_fit.context("no fitted edge")?;
-            Ok((l.h, l.r_o, fit))
+            Ok((l.h, l.r_o, fit, l.r_o_fit_force.context("no force root")?))
         })
         .collect()
 }
@@ -109,13 +113,21 @@ fn main() -> anyhow::Result<()> {
                 if fitted { "fitted" } else { "gap-shape" }
             );
             let mut prev: Option<(f64, f64)> = None;
-            for &(h, gap, fit) in &lv {
-                let (eg, ef) = ((gap - r) / r, (fit - r) / r);
+            let mut prev_force: Option<f64> = None;
+            for &(h, gap, fit, force) in &lv {
+                let (eg, ef, eq) = ((gap - r) / r, (fit - r) / r, (force - r) / r);
                 let ratio = prev.map_or(String::new(), |(pg, pf)| {
                     format!("  ratios {:6.2} {:6.2}", pg / eg, pf / ef)
                 });
-                println!("    h/D {h:.5}  gap {eg:+.3e}  fitted {ef:+.3e}{ratio}");
+                println!(
+                    "    h/D {h:.5}  gap {eg:+.3e}  fitted {ef:+.3e}  force {eq:+.3e}  f/q {:+.3}{ratio}",
+                    ef / eq
+                );
                 prev = Some((eg, ef));
+                if let Some(pq) = prev_force {
+                    println!("      Richardson of the force root {:+.3e}", 2.0 * eq - pq);
+                }
+                prev_force = Some(eq);
             }
         }
     }

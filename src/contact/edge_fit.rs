@@ -56,6 +56,8 @@ pub struct EdgeFit {
     pub r_o: f64,
     /// (trial edge ρ, gap coefficient a(ρ)) at the corner edges used.
     pub trials: Vec<(f64, f64)>,
+    /// The root of the edge node's force over √h (h the mean of its two elements).
+    pub r_o_force: Option<f64>,
 }
 
 /// How many window points beyond a trial edge the gap fit reads.
@@ -78,19 +80,28 @@ pub fn fit(sys: &EdgeSystem, radius: &[f64], active: &[bool], step: usize) -> Op
     let hi = (at + 2).min(corners.len() - 1);
     let first = corners[lo.saturating_sub(1)];
     let mut trials = Vec::new();
+    let mut forces = Vec::new();
     for &e in &corners[lo..=hi] {
         let closed: Vec<usize> = (0..m)
             .filter(|&q| (q < first && active[q]) || (q >= first && q <= e))
             .collect();
-        let a = coefficient(sys, radius, &closed, e)?;
-        trials.push((radius[w[e]], a));
+        let (a, f) = coefficient(sys, radius, &closed, e)?;
+        let i = w[e];
+        let h = 0.5 * (radius[(i + step).min(radius.len() - 1)] - radius[i.saturating_sub(step)]);
+        trials.push((radius[i], a));
+        forces.push((radius[i], f / h.sqrt()));
     }
     let r_o = root(&trials)?;
-    Some(EdgeFit { r_o, trials })
+    Some(EdgeFit { r_o, trials, r_o_force: root(&forces) })
 }
 
 /// The √ coefficient a of the gap beyond the edge at window position `e` with `closed` held.
-fn coefficient(sys: &EdgeSystem, radius: &[f64], closed: &[usize], e: usize) -> Option<f64> {
+fn coefficient(
+    sys: &EdgeSystem,
+    radius: &[f64],
+    closed: &[usize],
+    e: usize,
+) -> Option<(f64, f64)> {
     let n = closed.len();
     let f = &sys.flexibility;
     let fjj = DMatrix::from_fn(n, n, |i, j| f[(closed[i], closed[j])]);
@@ -116,7 +127,8 @@ fn coefficient(sys: &EdgeSystem, radius: &[f64], closed: &[usize], e: usize) -> 
         b[i] = gap(q);
     }
     let c = a.lu().solve(&b)?;
-    Some(c[0])
+    let edge_force = lambda[closed.iter().position(|&q| q == e)?];
+    Some((c[0], edge_force))
 }
 
 /// The root of a(ρ): the quadratic through the three trials nearest the sign change.

@@ -59,6 +59,9 @@ pub struct TwoPlateLevel {
     /// R_o from the fitted contact edge ([`super::edge_fit`]), where it applies.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub r_o_fit: Option<f64>,
+    /// R_o from the fitted edge's force at the edge node ([`super::edge_fit`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub r_o_fit_force: Option<f64>,
 }
 
 /// One solved mesh level and its R_o.
@@ -77,7 +80,14 @@ pub(super) fn solve_level_at(
     h: f64,
     prev: Option<&PreviousLevel>,
 ) -> Result<Level, ContactError> {
-    let mut model = mesh(joint, g, params.element, h, prev.map(|p| p.r_o))?;
+    let mut model = mesh(
+        joint,
+        g,
+        params.element,
+        h,
+        prev.map(|p| p.r_o),
+        params.fitted_edge,
+    )?;
     let thermal = g.thermal.map(|t| t.apply(&mut model)).transpose()?;
     let nodes = model.mesh.n_nodes();
     let (sol, window, attempts) = solve_adaptive(&model, joint, g, params, prev, thermal.as_ref())?;
@@ -95,8 +105,11 @@ pub(super) fn solve_level_at(
         },
         None => return Err(ContactError::WindowExhausted { radius: g.c }),
     };
-    let est = match fitted {
-        Some(r) if params.fitted_edge => SeparationEstimate { r_o: r, ..est },
+    let est = match &fitted {
+        Some(f) if params.fitted_edge => SeparationEstimate {
+            r_o: f.r_o_force.unwrap_or(f.r_o),
+            ..est
+        },
         _ => est,
     };
     let record = TwoPlateLevel {
@@ -113,7 +126,8 @@ pub(super) fn solve_level_at(
         residual: sol.lcp.residual,
         time_linear: sol.time_linear.as_secs_f64(),
         time_contact: sol.time_contact.as_secs_f64(),
-        r_o_fit: fitted,
+        r_o_fit: fitted.as_ref().map(|f| f.r_o),
+        r_o_fit_force: fitted.as_ref().and_then(|f| f.r_o_force),
     };
     Ok(Level {
         model,
@@ -163,9 +177,9 @@ pub(super) fn closed_pressure(s: &LevelSolution) -> Vec<f64> {
 }
 
 /// R_o of the fitted edge ([`super::edge_fit`]) when the level has its Schur complement.
-fn fitted_edge(model: &MeshedJoint, sol: &LevelSolution) -> Option<f64> {
+fn fitted_edge(model: &MeshedJoint, sol: &LevelSolution) -> Option<super::edge_fit::EdgeFit> {
     let sys = sol.edge.as_ref()?;
     let step = if model.mesh.kind().nodes() == 9 { 2 } else { 1 };
     let active: Vec<bool> = sys.window.iter().map(|&i| sol.closed[i]).collect();
-    super::edge_fit::fit(sys, &sol.radius, &active, step).map(|f| f.r_o)
+    super::edge_fit::fit(sys, &sol.radius, &active, step)
 }
