@@ -39,7 +39,10 @@ pub fn exact(case: &Case) -> anyhow::Result<f64> {
     let load = FaceLoad::uniform(case.a, case.b, 1.0)?;
     if case.a == 0.0 {
         let r = Layer::new(1.0, m, load)?.receding_contact(&RecedingParams::default())?;
-        ensure!(r.info.r_o_error < 1e-9 * r.r_o, "receding contact not converged");
+        ensure!(
+            r.info.r_o_error < 1e-9 * r.r_o,
+            "receding contact not converged"
+        );
         Ok(r.r_o)
     } else {
         let plate = SinglePlate::new(case.a, OuterRadius::Infinite, 1.0, m, load)?;
@@ -78,9 +81,28 @@ pub fn levels(
         .collect()
 }
 
+/// The fitted study of `case` at `tol`: (R_o, its estimate, converged, seconds).
+pub fn study(case: &Case, tol: f64) -> anyhow::Result<(f64, f64, bool, f64)> {
+    let plate = Plate::new(1.0, Material::unit(case.nu)?)?;
+    let load = FaceLoad::uniform(case.a, case.b, 1.0)?;
+    let joint = Joint::new(case.a, OuterRadius::Infinite, plate, plate, load)?;
+    let s = solve(
+        &joint,
+        &TwoPlateParams {
+            tolerance: tol,
+            fitted_edge: true,
+            ..Default::default()
+        },
+    )?;
+    Ok((s.r_o, s.r_o_error, s.converged, s.info.seconds))
+}
+
 fn main() -> anyhow::Result<()> {
     let quick = std::env::var("BOLTZONE_QUICK").is_ok();
-    let args: Vec<usize> = std::env::args().skip(1).filter_map(|a| a.parse().ok()).collect();
+    let args: Vec<usize> = std::env::args()
+        .skip(1)
+        .filter_map(|a| a.parse().ok())
+        .collect();
     let (n_levels, n_plates) = if quick {
         (4, 2)
     } else {
@@ -89,6 +111,7 @@ fn main() -> anyhow::Result<()> {
             args.get(1).copied().unwrap_or(10),
         )
     };
+    let levels_too = n_levels > 0;
     let mut rng = SplitMix64::new(36);
     for p in 0..n_plates {
         let holed = p % 5 >= 3;
@@ -106,28 +129,39 @@ fn main() -> anyhow::Result<()> {
             "plate {p}: A {:.4} B {:.4} ν {:.3}, exact R_o {r:.12}",
             case.a, case.b, case.nu
         );
-        for fitted in [false, true] {
-            let lv = levels(&case, n_levels, fitted)?;
+        for tol in [1e-4, 1e-5, 1e-6] {
+            let (v, e, conv, secs) = study(&case, tol)?;
             println!(
-                "  mesh graded at the {} estimate:",
-                if fitted { "fitted" } else { "gap-shape" }
+                "  fitted study at {tol:e}: error {:+.2e} R_o, estimate {:.2e} R_o, within {:.2}, converged {conv}, {secs:.2} s",
+                (v - r) / r,
+                e / r,
+                (v - r).abs() / e
             );
-            let mut prev: Option<(f64, f64)> = None;
-            let mut prev_force: Option<f64> = None;
-            for &(h, gap, fit, force) in &lv {
-                let (eg, ef, eq) = ((gap - r) / r, (fit - r) / r, (force - r) / r);
-                let ratio = prev.map_or(String::new(), |(pg, pf)| {
-                    format!("  ratios {:6.2} {:6.2}", pg / eg, pf / ef)
-                });
+        }
+        if levels_too {
+            for fitted in [false, true] {
+                let lv = levels(&case, n_levels, fitted)?;
                 println!(
+                    "  mesh graded at the {} estimate:",
+                    if fitted { "fitted" } else { "gap-shape" }
+                );
+                let mut prev: Option<(f64, f64)> = None;
+                let mut prev_force: Option<f64> = None;
+                for &(h, gap, fit, force) in &lv {
+                    let (eg, ef, eq) = ((gap - r) / r, (fit - r) / r, (force - r) / r);
+                    let ratio = prev.map_or(String::new(), |(pg, pf)| {
+                        format!("  ratios {:6.2} {:6.2}", pg / eg, pf / ef)
+                    });
+                    println!(
                     "    h/D {h:.5}  gap {eg:+.3e}  fitted {ef:+.3e}  force {eq:+.3e}  f/q {:+.3}{ratio}",
                     ef / eq
                 );
-                prev = Some((eg, ef));
-                if let Some(pq) = prev_force {
-                    println!("      Richardson of the force root {:+.3e}", 2.0 * eq - pq);
+                    prev = Some((eg, ef));
+                    if let Some(pq) = prev_force {
+                        println!("      Richardson of the force root {:+.3e}", 2.0 * eq - pq);
+                    }
+                    prev_force = Some(eq);
                 }
-                prev_force = Some(eq);
             }
         }
     }

@@ -92,16 +92,15 @@ pub fn fit(sys: &EdgeSystem, radius: &[f64], active: &[bool], step: usize) -> Op
         forces.push((radius[i], f / h.sqrt()));
     }
     let r_o = root(&trials)?;
-    Some(EdgeFit { r_o, trials, r_o_force: root(&forces) })
+    Some(EdgeFit {
+        r_o,
+        trials,
+        r_o_force: root(&forces),
+    })
 }
 
 /// The √ coefficient a of the gap beyond the edge at window position `e` with `closed` held.
-fn coefficient(
-    sys: &EdgeSystem,
-    radius: &[f64],
-    closed: &[usize],
-    e: usize,
-) -> Option<(f64, f64)> {
+fn coefficient(sys: &EdgeSystem, radius: &[f64], closed: &[usize], e: usize) -> Option<(f64, f64)> {
     let n = closed.len();
     let f = &sys.flexibility;
     let fjj = DMatrix::from_fn(n, n, |i, j| f[(closed[i], closed[j])]);
@@ -133,7 +132,9 @@ fn coefficient(
 
 /// The root of a(ρ): the quadratic through the three trials nearest the sign change.
 fn root(t: &[(f64, f64)]) -> Option<f64> {
-    let i = t.windows(2).position(|p| p[0].1.signum() != p[1].1.signum())?;
+    let i = t
+        .windows(2)
+        .position(|p| p[0].1.signum() != p[1].1.signum())?;
     let (x0, y0) = t[i];
     let (x1, y1) = t[i + 1];
     let lin = x0 - y0 * (x1 - x0) / (y1 - y0);
@@ -173,4 +174,13 @@ fn root(t: &[(f64, f64)]) -> Option<f64> {
         }
     }
     (x.is_finite() && x > x0 - (x1 - x0) && x < x1 + (x1 - x0)).then_some(x)
+}
+
+/// The study's R_o from the levels' fitted edges: the first level's, then the first-order
+/// Richardson values 2R_k − R_{k−1} (each level halves h; module docs).
+pub(crate) fn extrapolated(raw: &[f64]) -> Vec<f64> {
+    raw.iter()
+        .enumerate()
+        .map(|(k, &r)| if k == 0 { r } else { 2.0 * r - raw[k - 1] })
+        .collect()
 }

@@ -83,7 +83,11 @@ pub(crate) fn mesh(
     let (q, q_axial, shrink) = level_grading(h, g.d[0].min(g.d[1]), 1.25, 1.5);
     // (the fitted edge: the axial excess shrinks like the radial one, √h, so that the far
     // mesh's error falls at second order instead of the first that h^¼ leaves)
-    let q_axial = if uniform_edge { 1.0 + 0.5 * shrink } else { q_axial };
+    let q_axial = if uniform_edge {
+        1.0 + 0.5 * shrink
+    } else {
+        q_axial
+    };
     let mut foci = vec![g.a, g.b];
     // (a level in full contact estimates R_o = C: the next level is graded at the rim, where
     // the contact ends, as at any other R_o; a knot there is the rim's own node)
