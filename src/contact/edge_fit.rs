@@ -130,55 +130,55 @@ fn coefficient(sys: &EdgeSystem, radius: &[f64], closed: &[usize], e: usize) -> 
     Some((c[0], edge_force))
 }
 
-/// The root of a(ρ): the quadratic through the three trials nearest the sign change.
-fn root(t: &[(f64, f64)]) -> Option<f64> {
+/// The root of the coefficient sampled at `t` (ρ, value), ρ increasing: the quadratic through
+/// the sign change's two trials and the neighbour on the side nearer the root (linear with two
+/// trials). None without a sign change.
+pub fn root(t: &[(f64, f64)]) -> Option<f64> {
     let i = t
         .windows(2)
-        .position(|p| p[0].1.signum() != p[1].1.signum())?;
+        .position(|p| (p[0].1 > 0.0) != (p[1].1 > 0.0))?;
     let (x0, y0) = t[i];
     let (x1, y1) = t[i + 1];
     let lin = x0 - y0 * (x1 - x0) / (y1 - y0);
-    if t.len() < 3 {
+    let third = if i + 2 < t.len() && (i == 0 || lin - x0 > x1 - lin) {
+        Some(i + 2)
+    } else {
+        i.checked_sub(1).or((i + 2 < t.len()).then_some(i + 2))
+    };
+    let Some(j) = third else {
+        return Some(lin);
+    };
+    // Newton form through (x0, y0), (x1, y1), (x2, y2): q(x0 + u) = y0 + d1 u + d2 u (u − (x1 − x0))
+    let (x2, y2) = t[j];
+    let d1 = (y1 - y0) / (x1 - x0);
+    let d2 = ((y2 - y1) / (x2 - x1) - d1) / (x2 - x0);
+    let (qa, qb, qc) = (d2, d1 - d2 * (x1 - x0), y0);
+    let disc = qb * qb - 4.0 * qa * qc;
+    if qa == 0.0 || disc < 0.0 {
         return Some(lin);
     }
-    // three points: i, i+1 and the neighbour on the side nearer the root
-    let j = if i + 2 < t.len() && (i == 0 || lin - x0 > x1 - lin) {
-        i + 2
-    } else {
-        i.checked_sub(1).unwrap_or(i + 2)
-    };
-    let mut p = [t[i], t[i + 1], *t.get(j)?];
-    p.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let q = |x: f64| {
-        let mut s = 0.0;
-        for a in 0..3 {
-            let mut l = p[a].1;
-            for b in 0..3 {
-                if a != b {
-                    l *= (x - p[b].0) / (p[a].0 - p[b].0);
-                }
-            }
-            s += l;
-        }
-        s
-    };
-    // Newton from the linear root, with a secant slope
-    let mut x = lin;
-    for _ in 0..20 {
-        let dx = 1e-7 * (x1 - x0);
-        let d = (q(x + dx) - q(x - dx)) / (2.0 * dx);
-        let step = q(x) / d;
-        x -= step;
-        if step.abs() <= 1e-15 * x.abs() {
-            break;
-        }
-    }
-    (x.is_finite() && x > x0 - (x1 - x0) && x < x1 + (x1 - x0)).then_some(x)
+    // both roots, stably; the one nearer the linear root
+    let big = -0.5 * (qb + qb.signum() * disc.sqrt());
+    let roots = [big / qa, if big != 0.0 { qc / big } else { 0.0 }];
+    let u = roots
+        .into_iter()
+        .filter(|u| u.is_finite())
+        .min_by(|a, b| (x0 + a - lin).abs().total_cmp(&(x0 + b - lin).abs()))?;
+    let x = x0 + u;
+    // (a root outside the bracketing pair: the curvature is not resolved, keep the line)
+    Some(if x >= x0 && x <= x1 { x } else { lin })
 }
 
 /// The study's R_o from the levels' fitted edges: the first level's, then the first-order
 /// Richardson values 2R_k − R_{k−1} (each level halves h; module docs).
-pub(crate) fn extrapolated(raw: &[f64]) -> Vec<f64> {
+///
+/// ```
+/// use boltzone::contact::edge_fit::extrapolated;
+/// // R_k = 1 + 0.3 h_k, h halved per level: every extrapolated value after the first is 1
+/// let raw: Vec<f64> = (0..4).map(|k| 1.0 + 0.3 * 0.5f64.powi(k)).collect();
+/// assert!(extrapolated(&raw)[1..].iter().all(|r| (r - 1.0).abs() < 1e-15));
+/// ```
+pub fn extrapolated(raw: &[f64]) -> Vec<f64> {
     raw.iter()
         .enumerate()
         .map(|(k, &r)| if k == 0 { r } else { 2.0 * r - raw[k - 1] })
