@@ -1,38 +1,63 @@
-//! R_o as the root of the contact edge's singular coefficient, on one mesh level.
+//! R_o as the root of the contact edge's singular coefficient, on one mesh level, and the
+//! study's first-order extrapolation of those roots (issue 36).
 //!
 //! Hold the plates closed exactly on the interface nodes up to a trial edge ρ (a corner node)
 //! and open beyond. The exact solution of that bilateral problem has, at ρ, a pressure
-//! p ≈ K(ρ)/√(ρ − r) + c √(ρ − r) and a gap g ≈ −κK(ρ)√(r − ρ) + c′(r − ρ)^{3/2}: the
-//! inverse-square-root coefficient K(ρ) is positive for an edge short of the true one (the
-//! plates would overlap beyond it), negative beyond it (they would pull), and zero exactly at
-//! the smooth receding separation R_o (Signorini: p ≥ 0, g ≥ 0 on both sides). K is smooth in ρ.
+//! p ≈ K(ρ)/√(ρ − r) + c √(ρ − r) and a gap g ≈ −κK(ρ)√(r − ρ) + c′(r − ρ)^{3/2} (for equal
+//! plates the open interface is a crack in the mirrored plate and ρ its tip: K is the mode-I
+//! stress intensity). K(ρ) > 0 for an edge short of the true one (the plates would overlap
+//! beyond it), < 0 beyond it (they would pull), and zero exactly at the smooth receding
+//! separation R_o (Signorini: p ≥ 0, g ≥ 0 on both sides). K is smooth in ρ.
 //!
 //! The level's interface Schur complement g = g⁰ + Fλ on the LCP window ([`super::level`])
 //! gives the bilateral solution for any trial edge at a node without a new factorization: the
-//! forces λ_J = −F_JJ⁻¹ g⁰_J of the closed set J and the gaps g⁰ + F λ beyond. For each corner
-//! node near the LCP's edge the gap's first open nodes are fitted by
-//! g = a s^{1/2} + b s^{3/2} + c s^{5/2} (s = r − ρ), a ∝ −K(ρ); R_o is the root of the
-//! quadratic through a(ρ) at the three corner edges nearest the sign change. The trial edges
-//! are corner nodes so that each trial meets the same discretization (an edge inside a
-//! quadratic element would not), and the root is interpolated between them, so no mesh is
-//! moved and no matrix refactored; the next level's mesh puts a node at the root.
+//! forces λ_J = −F_JJ⁻¹ g⁰_J of the closed set J and the gaps g⁰ + F λ beyond. Trial edges are
+//! the corner nodes near the LCP's edge (two at or before it, two after), so that each trial
+//! meets the same elements (an edge inside a quadratic element would not); R_o is the root of
+//! the quadratic through the coefficient at the three trials nearest the sign change
+//! ([`root`]), so no mesh is moved and no matrix refactored.
+//!
+//! Two coefficients are read at each trial: the edge node's force over √h (h the mean of its
+//! two elements; [`EdgeFit::r_o_force`], what the study uses) and the √ coefficient a of a fit
+//! g = a s^{1/2} + b s^{3/2} + c s^{5/2} to the gap's first three open nodes ([`EdgeFit::r_o`],
+//! kept as a record). Both are local extractions, so both roots carry the elements' own
+//! first-order error β c h (the nodal fields of the s^{3/2} edge field are not exact at the
+//! scale of one element). Measured (example 22, five random infinite plates, levels down to
+//! h = D/1024): the force root's error is of one sign (positive) and falls 1.93–1.99× per
+//! level on every plate, the gap fit's changes sign with ν (as the gap-shape estimate of
+//! [`super::separation`] does) and falls irregularly (0.3–4.9×). So the study takes the force
+//! root and, with the elements at the edge the same in units of h on every level (the mesh of
+//! a fitted study has four elements of exactly h on either side of the previous root, and the axial grading shrinks like √h, not h^{1/4}, so the far
+//! mesh's error is second order), removes the first-order term by Richardson in h,
+//! 2R_k − R_{k−1} ([`extrapolated`]). The interaction-integral extraction, whose error would
+//! be a product of two FE errors, was not built (its axisymmetric terms).
 //!
 //! Units: those of the level (any consistent set).
 //!
 //! # Accuracy
 //!
-//! Measured by example 22 (`examples/22_fe_edge.rs`) against the receding contact and the
-//! holed semi-analytic route.
+//! Example 22 (`examples/22_fe_edge.rs`) against the receding contact and the holed
+//! semi-analytic route: the extrapolated values were +1.5e-7 … +5.0e-7 R_o at h = D/1024 and
+//! +1.3e-6 … +3.5e-6 at D/512 (the gap-shape estimate at D/512: |error| 3.4e-8 … 2.4e-5 of
+//! either sign); the studies with
+//! `fitted_edge` are within their estimates (at most 0.49 of them) on the survey of that
+//! example. `tests/contact/edge_fit.rs`: the root on quadratics, the trial edges on a
+//! synthetic system with a known root, the force root's first order and the study's estimate
+//! against the receding contact on two plates.
 //!
 //! # Cost
 //!
-//! A few dense solves of the closed window points per trial edge (the window holds < 40 points
-//! past the first level): negligible beside the level's factorization.
+//! One dense Cholesky of the closed window points per trial edge, four trials per level (the
+//! window holds < 40 points past the first level): small beside the level's factorization.
+//! The fitted study needs more levels than the gap-shape one at a tight tolerance (its
+//! estimate, of the extrapolated values, falls ~2× per level): Table 1's first row at 1e-6 took
+//! 11 levels (example 23).
 //!
 //! ```
-//! // Internal to the study; reached through its entry point:
-//! use boltzone::contact::two_plate::{solve, TwoPlateParams};
-//! let _ = (solve, TwoPlateParams::default());
+//! use boltzone::contact::edge_fit::root;
+//! // a coefficient falling through zero at 0.345 between corner trials 0.01 apart
+//! let t: Vec<(f64, f64)> = (0..4).map(|i| 0.33 + 0.01 * i as f64).map(|x| (x, 0.345 - x)).collect();
+//! assert!((root(&t).unwrap() - 0.345).abs() < 1e-15);
 //! ```
 
 use nalgebra::{DMatrix, DVector};

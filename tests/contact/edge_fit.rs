@@ -12,7 +12,10 @@ use nalgebra::{DMatrix, DVector};
 fn the_root_is_exact_on_quadratics_and_lines() {
     for r_o in [0.31, 0.3456, 0.399] {
         let q = |x: f64| (r_o - x) * (2.0 + 5.0 * x);
-        let t: Vec<(f64, f64)> = (0..5).map(|i| 0.3 + 0.03 * i as f64).map(|x| (x, q(x))).collect();
+        let t: Vec<(f64, f64)> = (0..5)
+            .map(|i| 0.3 + 0.03 * i as f64)
+            .map(|x| (x, q(x)))
+            .collect();
         let r = root(&t).expect("a sign change");
         // rounding of a few divided differences of O(1) values
         assert!((r - r_o).abs() < 1e-14, "{r} against {r_o}");
@@ -42,7 +45,9 @@ fn trial_edges_find_the_root_of_the_edge_force() {
     assert!((r - r_o).abs() < 1e-14, "{r} against {r_o}");
     // and every extrapolated value of a first-order sequence is its limit
     let raw: Vec<f64> = (0..5).map(|k| r_o - 0.02 * 0.5f64.powi(k)).collect();
-    assert!(extrapolated(&raw)[1..].iter().all(|x| (x - r_o).abs() < 1e-15));
+    assert!(extrapolated(&raw)[1..]
+        .iter()
+        .all(|x| (x - r_o).abs() < 1e-15));
 }
 
 /// The fitted levels of an infinite plate without a hole: (level R_o, exact R_o) and the
@@ -56,7 +61,10 @@ fn plate(b: f64, nu: f64) -> (f64, Joint) {
         .unwrap()
         .r_o;
     let p = Plate::new(1.0, m).unwrap();
-    (exact, Joint::new(0.0, OuterRadius::Infinite, p, p, load).unwrap())
+    (
+        exact,
+        Joint::new(0.0, OuterRadius::Infinite, p, p, load).unwrap(),
+    )
 }
 
 #[test]
@@ -93,7 +101,14 @@ fn the_edge_force_root_is_first_order_and_the_study_within_its_estimate() {
         )
         .unwrap();
         let err = (t.r_o - exact).abs();
-        println!("  study at 1e-4: error {err:.2e}, estimate {:.2e}", t.r_o_error);
-        assert!(t.converged && err <= t.r_o_error, "{err:e} beyond {:e}", t.r_o_error);
+        println!(
+            "  study at 1e-4: error {err:.2e}, estimate {:.2e}",
+            t.r_o_error
+        );
+        assert!(
+            t.converged && err <= t.r_o_error,
+            "{err:e} beyond {:e}",
+            t.r_o_error
+        );
     }
 }
