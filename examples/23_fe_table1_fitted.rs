@@ -8,7 +8,7 @@
 //! 5e-4 with and without the fitted edge (best of three, one thread).
 //!
 //! Arguments: `[tolerance] [row index …]` (default 1e-6 and 1e-7 on every row; a 1e-6 study
-//! of 11 levels took 159 s on a loaded machine). `BOLTZONE_QUICK=1` runs two rows at 1e-5 against the route at 1e-6 (the
+//! of 11 levels took 159 s on a loaded machine). `BOLTZONE_QUICK=1` runs the first row at 1e-4 against the route at 1e-6 (the
 //! test suite does). Self-check (error): every difference within the two bars added.
 
 use anyhow::ensure;
@@ -33,7 +33,7 @@ fn main() -> anyhow::Result<()> {
     let quick = std::env::var("BOLTZONE_QUICK").is_ok();
     let args: Vec<String> = std::env::args().skip(1).collect();
     let (rows, tols, reference_tol) = if quick {
-        (reference::table1()[..2].to_vec(), vec![1e-5], 1e-6)
+        (reference::table1()[..1].to_vec(), vec![1e-4], 1e-6)
     } else {
         let all = reference::table1();
         let tols = match args.first() {

@@ -91,7 +91,11 @@ pub(super) fn solve_level_at(
     let thermal = g.thermal.map(|t| t.apply(&mut model)).transpose()?;
     let nodes = model.mesh.n_nodes();
     let (sol, window, attempts) = solve_adaptive(&model, joint, g, params, prev, thermal.as_ref())?;
-    let fitted = fitted_edge(&model, &sol);
+    // (only when asked: the default study's records and cost stay as they were)
+    let fitted = params
+        .fitted_edge
+        .then(|| fitted_edge(&model, &sol))
+        .flatten();
     let est = match separation(&sol) {
         Some(est) => est,
         // Closed out to the rim: full contact, R_o = C (an answer, not a failure).
@@ -106,7 +110,7 @@ pub(super) fn solve_level_at(
         None => return Err(ContactError::WindowExhausted { radius: g.c }),
     };
     let est = match &fitted {
-        Some(f) if params.fitted_edge => SeparationEstimate {
+        Some(f) => SeparationEstimate {
             r_o: f.r_o_force.unwrap_or(f.r_o),
             ..est
         },
