@@ -29,7 +29,7 @@ fn best_of_three(joint: &Joint, params: &TwoPlateParams) -> anyhow::Result<f64> 
     Ok(best)
 }
 
-fn main() -> anyhow::Result<()> {
+pub fn main() -> anyhow::Result<()> {
     let quick = std::env::var("BOLTZONE_QUICK").is_ok();
     let args: Vec<String> = std::env::args().skip(1).collect();
     let (rows, tols, reference_tol) = if quick {

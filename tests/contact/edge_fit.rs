@@ -50,9 +50,9 @@ fn trial_edges_find_the_root_of_the_edge_force() {
         .all(|x| (x - r_o).abs() < 1e-15));
 }
 
-/// The fitted levels of an infinite plate without a hole: (level R_o, exact R_o) and the
-/// study at `tol`.
-fn plate(b: f64, nu: f64) -> (f64, Joint) {
+/// Equal infinite plates 1 thick without a hole, pressed on r ≤ `b`, Poisson ratio `nu`: the
+/// exact R_o (the receding contact) and the joint.
+pub(crate) fn plate(b: f64, nu: f64) -> (f64, Joint) {
     let m = Material::unit(nu).unwrap();
     let load = FaceLoad::uniform(0.0, b, 1.0).unwrap();
     let exact = Layer::new(1.0, m, load.clone())
