@@ -100,8 +100,16 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let Some(path) = args.file.as_ref() else {
         return super::exit::usage("FILE", "(none)", "a deck file is required");
     };
-    let text =
-        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    let text = match std::fs::read_to_string(path) {
+        Ok(text) => text,
+        Err(e) => {
+            return super::exit::usage(
+                "FILE",
+                path.display(),
+                &format!("cannot read the deck: {e}"),
+            )
+        }
+    };
     if args.appendix == Some(Format::D) {
         return network_decks(&text, path, &args, start);
     }

@@ -14,7 +14,7 @@
 //!
 //! That of the map's points (example 13).
 
-use super::exit::Status;
+use super::exit::{num, Status};
 use super::{check, progress, write_output};
 use boltzone::compare::map::{check_reach, compute, log_spaced, DesignMap, MapParams};
 use boltzone::compare::{Method, Route};
@@ -55,29 +55,8 @@ pub struct Args {
     /// below --tol 3e-5 and where it applies, as `two --method auto`; fem where hankel does
     /// not converge).
     /// The CSV says which method produced each value.
-    #[arg(long, value_enum, default_value_t = MethodArg::Fem)]
-    method: MethodArg,
-}
-
-/// Values of `--method`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-enum MethodArg {
-    /// Finite elements for both models.
-    Fem,
-    /// The Hankel routes for both models.
-    Hankel,
-    /// Hankel where it applies and converges, else fem.
-    Auto,
-}
-
-impl From<MethodArg> for Method {
-    fn from(m: MethodArg) -> Self {
-        match m {
-            MethodArg::Fem => Method::Fem,
-            MethodArg::Hankel => Method::Hankel,
-            MethodArg::Auto => Method::Auto,
-        }
-    }
+    #[arg(long, value_enum, default_value_t = Method::Fem)]
+    method: Method,
 }
 
 /// Runs `boltzone map`.
@@ -96,9 +75,32 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         }
     }
     for &x in &args.b_over_a {
-        if x <= 1.0 {
-            return super::exit::usage("--b-over-a", x, "B/A must exceed 1");
+        if x <= 1.0 + 1e-6 {
+            return super::exit::usage(
+                "--b-over-a",
+                num(x),
+                "B/A must exceed 1 + 1e-6 (the bearing face wider than 1e-6·B beyond the hole)",
+            );
         }
+    }
+    // the domain of `two` (check::domain) over the whole map, named by the map's own flags
+    for &x in &args.a_over_d {
+        if !(1e-3..=1e3).contains(&x) {
+            return super::exit::usage("--a-over-d", num(x), "A/D must lie within 1e-3..1e3");
+        }
+    }
+    let widest = |list: &[f64], default: f64| list.iter().copied().fold(default, f64::max);
+    let b_over_d = widest(&args.a_over_d, 5.0) * widest(&args.b_over_a, 5.0);
+    if b_over_d > check::B_OVER_D_TWO {
+        return super::exit::usage(
+            "--b-over-a",
+            num(widest(&args.b_over_a, 5.0)),
+            &format!(
+                "the widest point's B/D = (A/D)(B/A) = {b_over_d:e} is beyond the two-plate \
+                 model's {:e} plate thicknesses",
+                check::B_OVER_D_TWO
+            ),
+        );
     }
     let b_max = args.b_over_a.iter().copied().fold(5.0, f64::max);
     if args.c_over_a <= b_max {
@@ -122,8 +124,8 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             .as_ref()
             .and_then(|p| p.extension())
             .and_then(|e| e.to_str());
-        if let (Some(p), Some(e)) = (p, ext) {
-            if !e.eq_ignore_ascii_case(&flag[2..]) {
+        if let Some(p) = p {
+            if !ext.is_some_and(|e| e.eq_ignore_ascii_case(&flag[2..])) {
                 return super::exit::usage(
                     flag,
                     p.display(),
@@ -147,7 +149,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         b_over_a: axis(&args.b_over_a, 1.1, 5.0),
         c_over_a: args.c_over_a,
         tolerance: args.tol,
-        method: args.method.into(),
+        method: args.method,
         ..MapParams::default()
     };
     if let Err(e) = check_reach(&params) {
@@ -192,11 +194,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     println!(
         "methods (--method {}): single plate hankel at {sh}, fem at {sf} of {n} points; \
          two plates hankel at {th}, fem at {tf} of {n} points",
-        match args.method {
-            MethodArg::Fem => "fem",
-            MethodArg::Hankel => "hankel",
-            MethodArg::Auto => "auto",
-        }
+        args.method.as_str()
     );
     if let Some(p) = &args.csv {
         write_output(p, &map.csv())?;

@@ -120,7 +120,8 @@ fn an_infinite_plate_holds_its_error_bar_against_the_receding_contact_solution()
     // error of the mesh away from the foci being the same on every level (fem::spacing::level_grading)
     for tol in ["1e-3", "1e-4", "1e-5", "1e-6"] {
         let v = json(&go(&[
-            "two", "--a", "0", "--b", "0.1", "--d", "0.1", "--tol", tol, "--json",
+            "two", "--method", "fem", "--a", "0", "--b", "0.1", "--d", "0.1", "--tol", tol,
+            "--json",
         ]));
         // (at 1e-5 and 1e-6 not converged: every two-plate estimate carries 2e-5 of R_o,
         // `contact::two_plate::TRANSIENT_FLOOR`)
@@ -299,14 +300,15 @@ fn an_unreached_tolerance_is_not_called_an_overlap() {
     // the cut of the infinite plate is out of reach) but printed the welded-plates warning,
     // "the plates overlap by 2.08e-28 in": a round-off negative gap read as an overlap.
     let r = go(&[
-        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--tol", "1e-6", "--json",
+        "two", "--method", "fem", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--tol", "1e-6",
+        "--json",
     ]);
     assert!([0, 3].contains(&code(&r)), "{}", r.stderr);
     let v = json(&r);
     assert_eq!(v["overlapping"], false, "{v}");
     assert_eq!(v["report_rule"], false, "{v}");
     let text = go(&[
-        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--tol", "1e-6",
+        "two", "--method", "fem", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--tol", "1e-6",
     ]);
     assert!(!text.stdout.contains("sign-consistent"), "{}", text.stdout);
 }
@@ -373,4 +375,65 @@ fn a_vanishing_bearing_face_is_bad_input() {
     // the floor: B = 1e-3 D is answered
     let r = go(&["two", "--a", "0", "--b", "0.001", "--d", "1", "--c", "10"]);
     assert_eq!(code(&r), 0, "{}", r.stderr);
+}
+
+#[test]
+fn input_faults_the_fuzz_found_exit_2_naming_the_flag() {
+    // was: exit 1 (a solver's failure, or an I/O error) or 134 (a rayon worker out of memory)
+    // where the input is at fault
+    for (args, flag) in [
+        (
+            &[
+                "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--e", "5e-324",
+            ][..],
+            "--e = 5e-324",
+        ),
+        (
+            &[
+                "two",
+                "--a",
+                "0.1",
+                "--b",
+                "0.31",
+                "--d",
+                "0.1",
+                "--nut-displacement",
+                "5e-324",
+            ],
+            "--nut-displacement = 5e-324",
+        ),
+        (
+            &["map", "--n", "2", "--a-over-d", "1e-308"],
+            "--a-over-d = 1e-308",
+        ),
+        (
+            &["map", "--n", "2", "--a-over-d", "1e308"],
+            "--a-over-d = 1e308",
+        ),
+        (&["map", "--n", "2", "--svg=outfile"], "--svg = outfile"),
+        (
+            &[
+                "single",
+                "--a",
+                "0.1",
+                "--b",
+                "0.31",
+                "--d",
+                "0.1",
+                "--method",
+                "hankel",
+                "--c",
+                "0.3100000001",
+            ],
+            "--c = 0.3100000001",
+        ),
+        (
+            &["deck", "/nonexistent/x.deck"],
+            "FILE = /nonexistent/x.deck",
+        ),
+    ] {
+        let r = go(args);
+        assert_eq!(code(&r), 2, "{args:?}: {}", r.stderr);
+        assert!(r.stderr.contains(flag), "{args:?}: {}", r.stderr);
+    }
 }
