@@ -55,6 +55,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use super::edge_fit::EdgeSystem;
 use super::error::ContactError;
 use super::friction_level;
 use super::lcp::{solve_lcp, Lcp};
@@ -188,6 +189,7 @@ pub(crate) fn solve_level_mu(
         }
     }
     let flexibility = (&flex + flex.transpose()) * 0.5;
+    let mut edge = None;
     let (sol, states) = match mu {
         None => {
             let lcp = Lcp {
@@ -195,7 +197,15 @@ pub(crate) fn solve_level_mu(
                 gap0: g0,
                 welded: setup.welded,
             };
-            (solve_lcp(&lcp, &setup.lcp)?, None)
+            let sol = solve_lcp(&lcp, &setup.lcp)?;
+            if !setup.welded {
+                edge = Some(EdgeSystem {
+                    window: setup.window.to_vec(),
+                    flexibility: lcp.flexibility,
+                    gap0: lcp.gap0,
+                });
+            }
+            (sol, None)
         }
         Some(mu) => {
             let (s, st) = friction_level::solve(model, setup, mu, flexibility, g0, loads)?;
@@ -286,6 +296,7 @@ pub(crate) fn solve_level_mu(
         time_contact: t1.elapsed(),
         u,
         friction: states,
+        edge,
     })
 }
 

@@ -93,4 +93,7 @@ pub struct LevelSolution {
     pub u: Vec<[f64; 2]>,
     /// With friction ([`super::friction`]): the state of each interface node.
     pub friction: Option<Vec<PointState>>,
+    /// The window's Schur complement for the fitted edge ([`super::edge_fit`]; frictionless
+    /// or symmetric contact only, None otherwise).
+    pub edge: Option<super::edge_fit::EdgeSystem>,
 }

@@ -40,6 +40,7 @@
 //! ```
 
 mod cut;
+pub mod edge_fit;
 mod error;
 pub mod field;
 pub mod friction;

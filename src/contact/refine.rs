@@ -76,16 +76,29 @@ pub(crate) fn mesh(
     kind: ElementKind,
     h: f64,
     r_est: Option<f64>,
+    uniform_edge: bool,
 ) -> Result<MeshedJoint, ContactError> {
     // growth ratios 1.25 radially, 1.5 axially (the fields vary more slowly across the
     // plates near R_o), shrinking on the finest levels ([`level_grading`])
-    let (q, q_axial, _) = level_grading(h, g.d[0].min(g.d[1]), 1.25, 1.5);
+    let (q, q_axial, shrink) = level_grading(h, g.d[0].min(g.d[1]), 1.25, 1.5);
+    // (the fitted edge: the axial excess shrinks like the radial one, √h, so that the far
+    // mesh's error falls at second order instead of the first that h^¼ leaves)
+    let q_axial = if uniform_edge {
+        1.0 + 0.5 * shrink
+    } else {
+        q_axial
+    };
     let mut foci = vec![g.a, g.b];
     // (a level in full contact estimates R_o = C: the next level is graded at the rim, where
     // the contact ends, as at any other R_o; a knot there is the rim's own node)
     foci.extend(r_est.filter(|&r| r > g.a && r <= g.c));
     let h_max = ((g.c - g.a) / 10.0).min(H_MAX_OVER_D * g.d[0].max(g.d[1]));
-    let r = Spacing::graded(g.a, g.c, &foci[1..], &foci, h, q, h_max)?;
+    let mut knots = foci[1..].to_vec();
+    if uniform_edge {
+        knots.extend(uniform_edge_knots(g, h, r_est));
+    }
+    knots.sort_by(f64::total_cmp);
+    let r = Spacing::graded(g.a, g.c, &knots, &foci, h, q, h_max)?;
     let zs =
         |z0: f64, z1: f64| Spacing::graded(z0, z1, &[], &[z0, z1], h, q_axial, (z1 - z0) / 3.0);
     let upper_mat = joint.upper().material();
@@ -121,6 +134,22 @@ pub(crate) fn mesh(
         }
     };
     Ok(model)
+}
+
+/// Elements of exactly `h` on either side of the estimated R_o ([`super::edge_fit`]).
+pub(crate) const UNIFORM_EDGE_ELEMENTS: usize = 4;
+
+/// Knots at R_o ± i·h, i = 1..=[`UNIFORM_EDGE_ELEMENTS`], inside (A, C) and at least h from
+/// A, B and C: the trial edges of the fitted edge then meet the same elements, scaled by h, on
+/// every level.
+fn uniform_edge_knots(g: &MeshLayout, h: f64, r_est: Option<f64>) -> Vec<f64> {
+    let Some(r) = r_est.filter(|&r| r > g.a && r < g.c) else {
+        return Vec::new();
+    };
+    (1..=UNIFORM_EDGE_ELEMENTS)
+        .flat_map(|i| [r - i as f64 * h, r + i as f64 * h])
+        .filter(|&x| [g.a, g.b, g.c].iter().all(|&y| (x - y).abs() >= h))
+        .collect()
 }
 
 /// Solves one level, choosing tied and window points from the previous level and widening the

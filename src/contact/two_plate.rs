@@ -25,6 +25,8 @@
 //! ([`crate::numerics::convergence::cautious_level_estimate`]: below ~1e-4 of R_o the error's
 //! two first- and second-order parts of opposite sign cross, and the turn of the sequence
 //! defeats the first), plus a floor of 2e-5 R_o for what no level change shows.
+//! With [`TwoPlateParams::fitted_edge`] a level's R_o is the root of the edge force instead,
+//! the study's value its first-order extrapolation, without the floor ([`super::edge_fit`]).
 //! Welded dissimilar plates may have no sign-consistent contact edge; the level record then says
 //! that the report's rule decided ([`TwoPlateLevel::report_rule`]).
 //!
@@ -56,6 +58,7 @@
 //! ```
 
 use super::cut::{check_cut_allowed, cut_at, cut_error};
+use super::edge_fit::extrapolated;
 use super::error::ContactError;
 pub use super::field::TwoPlateField;
 use super::field::UnitField;
@@ -330,7 +333,7 @@ fn solve_unit(
     (g.c, g.exterior) = (cut, exterior);
     let mut truncation_error = 0.0;
     let mut levels = Vec::new();
-    let mut values = Vec::new();
+    let (mut raw, mut values, mut fitted) = (Vec::new(), Vec::new(), true);
     let mut prev: Option<PreviousLevel> = None;
     let mut r_o_error = f64::INFINITY;
     let mut converged = false;
@@ -344,12 +347,20 @@ fn solve_unit(
             est,
             record,
         } = solve_level_at(joint, &g, params, h, prev.as_ref())?;
-        values.push(est.r_o);
+        raw.push(est.r_o);
+        fitted &= params.fitted_edge && record.r_o_fit_force.is_some();
+        values = if fitted {
+            extrapolated(&raw)
+        } else {
+            raw.clone()
+        };
         levels.push(record);
         if values.len() >= 2 {
             let n = values.len();
             r_o_error = (values[n - 1] - values[n - 2]).abs();
-            let estimate = if params.tolerance < CAUTIOUS_BELOW {
+            let estimate = if fitted {
+                cautious_level_estimate(&values[1..])
+            } else if params.tolerance < CAUTIOUS_BELOW {
                 cautious_level_estimate(&values)
             } else {
                 level_estimate(&values)
@@ -360,10 +371,16 @@ fn solve_unit(
             if exterior.is_some() {
                 truncation_error = cut_error(cut, est.r_o, d[0].max(d[1]));
             }
-            let floor = TRANSIENT_FLOOR * est.r_o.abs();
+            let floor = if fitted {
+                0.0
+            } else {
+                TRANSIENT_FLOOR * est.r_o.abs()
+            };
             r_o_error += truncation_error + floor;
             rate = fitted_rate(&values, 2.0);
-            if n >= params.min_levels && r_o_error <= params.tolerance * est.r_o {
+            // (fitted: three extrapolated values, four levels, before any claim)
+            let enough = n >= params.min_levels && (!fitted || n >= 4);
+            if enough && r_o_error <= params.tolerance * est.r_o {
                 converged = true;
                 last = Some((model, sol));
                 break;

@@ -56,6 +56,12 @@ pub struct TwoPlateLevel {
     pub time_linear: f64,
     /// Flexibility solves + LCP + recovery, seconds.
     pub time_contact: f64,
+    /// R_o from the fitted contact edge ([`super::edge_fit`]), where it applies.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub r_o_fit: Option<f64>,
+    /// R_o from the fitted edge's force at the edge node ([`super::edge_fit`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub r_o_fit_force: Option<f64>,
 }
 
 /// One solved mesh level and its R_o.
@@ -74,10 +80,22 @@ pub(super) fn solve_level_at(
     h: f64,
     prev: Option<&PreviousLevel>,
 ) -> Result<Level, ContactError> {
-    let mut model = mesh(joint, g, params.element, h, prev.map(|p| p.r_o))?;
+    let mut model = mesh(
+        joint,
+        g,
+        params.element,
+        h,
+        prev.map(|p| p.r_o),
+        params.fitted_edge,
+    )?;
     let thermal = g.thermal.map(|t| t.apply(&mut model)).transpose()?;
     let nodes = model.mesh.n_nodes();
     let (sol, window, attempts) = solve_adaptive(&model, joint, g, params, prev, thermal.as_ref())?;
+    // (only when asked: the default study's records and cost stay as they were)
+    let fitted = params
+        .fitted_edge
+        .then(|| fitted_edge(&model, &sol))
+        .flatten();
     let est = match separation(&sol) {
         Some(est) => est,
         // Closed out to the rim: full contact, R_o = C (an answer, not a failure).
@@ -90,6 +108,13 @@ pub(super) fn solve_level_at(
             spread: 0.0,
         },
         None => return Err(ContactError::WindowExhausted { radius: g.c }),
+    };
+    let est = match &fitted {
+        Some(f) => SeparationEstimate {
+            r_o: f.r_o_force.unwrap_or(f.r_o),
+            ..est
+        },
+        _ => est,
     };
     let record = TwoPlateLevel {
         h,
@@ -105,6 +130,8 @@ pub(super) fn solve_level_at(
         residual: sol.lcp.residual,
         time_linear: sol.time_linear.as_secs_f64(),
         time_contact: sol.time_contact.as_secs_f64(),
+        r_o_fit: fitted.as_ref().map(|f| f.r_o),
+        r_o_fit_force: fitted.as_ref().and_then(|f| f.r_o_force),
     };
     Ok(Level {
         model,
@@ -151,4 +178,12 @@ pub(super) fn closed_pressure(s: &LevelSolution) -> Vec<f64> {
         .zip(&s.closed)
         .map(|(&p, &c)| if c { p.max(f64::MIN_POSITIVE) } else { 0.0 })
         .collect()
+}
+
+/// R_o of the fitted edge ([`super::edge_fit`]) when the level has its Schur complement.
+fn fitted_edge(model: &MeshedJoint, sol: &LevelSolution) -> Option<super::edge_fit::EdgeFit> {
+    let sys = sol.edge.as_ref()?;
+    let step = if model.mesh.kind().nodes() == 9 { 2 } else { 1 };
+    let active: Vec<bool> = sys.window.iter().map(|&i| sol.closed[i]).collect();
+    super::edge_fit::fit(sys, &sol.radius, &active, step)
 }

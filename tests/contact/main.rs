@@ -2,6 +2,7 @@
 //! two-plate model, its agreement with the semi-analytic receding contact, and the `two` command.
 
 mod cli;
+mod edge_fit;
 mod exterior;
 mod friction;
 mod friction_cli;

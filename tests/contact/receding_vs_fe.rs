@@ -186,15 +186,7 @@ fn the_axis_pressure_of_a_solid_plate_is_finite_and_the_hankel_value() {
 fn levels_are_first_order_and_within_every_estimate() {
     // (B/D, ν): a hump at low ν, clean geometric at high ν, a wide and a narrow load
     for (b, nu) in [(1.0, 0.01), (1.0, 0.46), (0.3, 0.12), (3.0, 0.3)] {
-        let m = Material::unit(nu).unwrap();
-        let load = FaceLoad::uniform(0.0, b, 1.0).unwrap();
-        let exact = Layer::new(1.0, m, load.clone())
-            .unwrap()
-            .receding_contact(&RecedingParams::default())
-            .unwrap()
-            .r_o;
-        let plate = Plate::new(1.0, m).unwrap();
-        let joint = Joint::new(0.0, OuterRadius::Infinite, plate, plate, load).unwrap();
+        let (exact, joint) = super::edge_fit::plate(b, nu);
         let mut errors = Vec::new();
         for k in 4..=9 {
             let s = solve(

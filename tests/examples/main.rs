@@ -234,3 +234,23 @@ fn ex21_friction() {
     quick();
     ex21::main().unwrap();
 }
+
+#[allow(dead_code)]
+#[path = "../../examples/22_fe_edge.rs"]
+mod ex22;
+
+#[test]
+fn ex22_fe_edge() {
+    quick();
+    ex22::main().unwrap();
+}
+
+#[allow(dead_code)]
+#[path = "../../examples/23_fe_table1_fitted.rs"]
+mod ex23;
+
+#[test]
+fn ex23_fe_table1_fitted() {
+    quick();
+    ex23::main().unwrap();
+}
