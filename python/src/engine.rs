@@ -213,6 +213,7 @@ pub fn solve(scene: &Scene, start: Instant) -> Result<Answer, Failure> {
     no_sweep(scene)?;
     let s: Solution = boltzone::solve(scene)?;
     let mut json = serde_json::to_value(&s).map_err(|e| Failure::Solver(e.to_string()))?;
+    drop_nulls(&mut json);
     if let serde_json::Value::Object(m) = &mut json {
         m.insert("command".into(), COMMAND.into());
         m.insert("seconds".into(), start.elapsed().as_secs_f64().into());
@@ -280,9 +281,23 @@ fn check_tolerance(tol: f64) -> Result<(), Failure> {
     })
 }
 
+/// `v` without its null object members, at every depth: absent optional values, as the CLI's
+/// `print_json` leaves them out.
+fn drop_nulls(v: &mut serde_json::Value) {
+    match v {
+        serde_json::Value::Object(m) => {
+            m.retain(|_, x| !x.is_null());
+            m.values_mut().for_each(drop_nulls);
+        }
+        serde_json::Value::Array(a) => a.iter_mut().for_each(drop_nulls),
+        _ => {}
+    }
+}
+
 /// Rows serialized, each with `units = "in-psi-lbf"` (the tables' lengths are in inches).
 fn rows_json(rows: &impl serde::Serialize) -> Result<serde_json::Value, Failure> {
     let mut v = serde_json::to_value(rows).map_err(|e| Failure::Solver(e.to_string()))?;
+    drop_nulls(&mut v);
     if let serde_json::Value::Array(rows) = &mut v {
         for row in rows.iter_mut() {
             if let serde_json::Value::Object(m) = row {
