@@ -39,11 +39,20 @@ def same_as_single(frame, scenes):
                 assert pd.isna(row[k]) or (k == "converged"), (i, k, row[k])
 
 
-def test_thousand_joints_equal_one_by_one():
-    scenes = joints(1000, 1)
+def check_batch_equals_single(n):
+    scenes = joints(n, 1)
     frame = boltzone.solve_many(scenes, threads=2, progress=False)
-    assert len(frame) == 1000 and frame["error"].isna().all()
+    assert len(frame) == n and frame["error"].isna().all()
     same_as_single(frame, scenes)
+
+
+def test_two_hundred_joints_equal_one_by_one():
+    check_batch_equals_single(200)
+
+
+@pytest.mark.slow
+def test_thousand_joints_equal_one_by_one():
+    check_batch_equals_single(1000)
 
 
 def test_dataframe_of_dotted_keys_keeps_columns_and_index():
@@ -112,5 +121,8 @@ def test_scaling_and_memory_on_thousand_joints():
         boltzone.solve_many(scenes, threads=2, progress=False)
     after = rss_mib()
     print("RSS before %.1f MiB, after 5 more batches %.1f MiB" % (before, after))
-    assert after - before < 20.0, (before, after)
+    # 1,200 rows of results are ~1 MiB; a leak of one scene or result per joint would grow
+    # RSS by >= 6,000 x a few KiB = tens of MiB over the 5 batches
+    assert after - before < 10.0, (before, after)
+    # two cores, independent joints: anything under 1.3 means the GIL or a lock serialises
     assert t1 / t2 > 1.3, times
