@@ -93,7 +93,7 @@ class Scene:
     ``heat``, ``temperature``.
     """
 
-    __slots__ = ("_data", "_understood")
+    __slots__ = ("_data", "_understood", "_core")
 
     def __init__(self, scene: Union[None, "Scene", Mapping[str, Any]] = None, **keys: Any):
         if scene is None:
@@ -107,7 +107,7 @@ class Scene:
                                % type(scene).__name__)
         data.update(keys)
         self._data = data
-        self._understood = _core.check_scene(data)
+        self._core, self._understood = _core.check_scene(data)
 
     @classmethod
     def from_toml(cls, path: Union[str, os.PathLike]) -> "Scene":
@@ -137,7 +137,7 @@ class Scene:
 
     def __setstate__(self, data):
         self._data = data
-        self._understood = _core.check_scene(data)
+        self._core, self._understood = _core.check_scene(data)
 
 
 class Result:
@@ -153,38 +153,41 @@ class Result:
     DataFrames, unit-named columns) and ``field`` (a meshio Mesh) when the scene asks for them.
     """
 
-    def __init__(self, raw: Dict[str, Any]):
-        self._json = raw["json"]
-        self._raw = raw
+    __slots__ = ("_answer",)
+
+    def __init__(self, answer):
+        self._answer = answer  # held in Rust: keys are converted when read
 
     def __getattr__(self, name: str) -> Any:
+        if name.startswith("__"):
+            raise AttributeError(name)
         try:
-            return self.__dict__["_json"][name]
+            return self._answer.get(name)
         except KeyError:
             raise AttributeError(name) from None
 
     def __dir__(self):
-        return sorted(set(super().__dir__()) | set(self._json))
+        return sorted(set(super().__dir__()) | set(self._answer.keys()))
 
     def __repr__(self) -> str:
         return "Result(r_o=%r +- %r %s, converged=%r, %s, %s)" % (
             self.r_o, self.r_o_error, self.length_unit, self.converged, self.model, self.method)
 
     def to_dict(self) -> Dict[str, Any]:
-        """Every key of ``boltzone solve --json`` (a deep copy)."""
-        return copy.deepcopy(self._json)
+        """Every key of ``boltzone solve --json``, as a new dict."""
+        return self._answer.to_dict()
 
     @property
     def interface(self):
         """The two-plate interface curve as a DataFrame: ``r [L]``, ``p [S]`` (pressure,
         compression > 0) and ``g [L]`` (gap), L and S the scene's length and stress units;
         ``None`` unless the scene sets ``outputs.interface_pressure``."""
-        c = self._raw.get("interface")
+        c = self._answer.interface()
         if c is None:
             return None
         import pandas as pd
 
-        l, s = self._raw["length_unit"], self._raw["stress_unit"]
+        l, s = self._answer.symbols()
         return pd.DataFrame({"r [%s]" % l: c["radius"], "p [%s]" % s: c["pressure"],
                              "g [%s]" % l: c["gap"]})
 
@@ -192,12 +195,12 @@ class Result:
     def midplane(self):
         """The midplane normal stress as a DataFrame: ``r [L]``, ``sigma_z [S]`` (compression
         negative) and, from the slab, ``sigma_z_error [S]``; ``None`` unless asked."""
-        m = self._raw.get("midplane")
+        m = self._answer.midplane()
         if m is None:
             return None
         import pandas as pd
 
-        l, s = self._raw["length_unit"], self._raw["stress_unit"]
+        l, s = self._answer.symbols()
         cols = {"r [%s]" % l: m["radius"], "sigma_z [%s]" % s: m["sigma_z"]}
         if m["error"] is not None:
             cols["sigma_z_error [%s]" % s] = m["error"]
@@ -209,7 +212,7 @@ class Result:
         length unit, stresses in the stress unit, compression negative); point data
         ``displacement`` and the scalars (``sigma_r``, ..., ``von_mises``), cell data ``plate``;
         ``None`` unless the scene sets ``outputs.field``."""
-        g = self._raw.get("field")
+        g = self._answer.field()
         if g is None:
             return None
         import meshio
@@ -255,11 +258,12 @@ def solve(scene: Union[Scene, Mapping[str, Any]], strict: bool = False) -> Resul
     ``Result.interface`` / ``Result.midplane``). ``strict=True`` raises :class:`NotConverged`
     when ``r_o_error`` missed the tolerance; otherwise check ``converged``."""
     scene = _as_scene(scene)
-    result = Result(_core.solve(scene._data))
-    outputs = scene._understood.get("outputs", {})
-    for key, frame in (("interface_pressure", "interface"), ("midplane", "midplane")):
-        if outputs.get(key) is not None and getattr(result, frame) is not None:
-            _write_whole(outputs[key], getattr(result, frame))
+    result = Result(_core.solve(scene._core))
+    outputs = scene._understood["outputs"]
+    if "interface_pressure" in outputs or "midplane" in outputs:
+        for key, frame in (("interface_pressure", "interface"), ("midplane", "midplane")):
+            if outputs.get(key) is not None and getattr(result, frame) is not None:
+                _write_whole(outputs[key], getattr(result, frame))
     if strict and not result.converged:
         raise NotConverged(result)
     return result
@@ -380,7 +384,9 @@ def solve_many(
         inputs = None
         dicts = []
         for s in scenes:
-            if isinstance(s, Scene):
+            if isinstance(s, Scene) and base is None:
+                d = s._core
+            elif isinstance(s, Scene):
                 d = s._data
             elif isinstance(s, Mapping):
                 d = dict(s)

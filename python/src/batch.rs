@@ -42,7 +42,7 @@ pub fn guarded<T>(f: impl FnOnce() -> Result<T, Failure>) -> Result<T, Failure> 
 /// One joint: its scene (or why it has none) solved.
 fn one(scene: &Result<Scene, Failure>) -> Row {
     match scene {
-        Ok(s) => guarded(|| engine::solve(s, Instant::now()).map(|a| a.json)),
+        Ok(s) => guarded(|| engine::solve(s, Instant::now()).map(|a| a.json().clone())),
         Err(f) => Err(f.clone()),
     }
 }

@@ -16,9 +16,7 @@
 use boltzone::compare::{table1, table2, CompareParams};
 use boltzone::contact::two_plate::InterfaceModel;
 use boltzone::io::vtu::Grid;
-use boltzone::scene::field::MidplaneStress;
 use boltzone::scene::file::{path_name, Seg};
-use boltzone::scene::run::InterfaceCurve;
 use boltzone::scene::{Scene, SceneError, Solution};
 use std::time::Instant;
 
@@ -63,19 +61,45 @@ impl From<SceneError> for Failure {
     }
 }
 
-/// The answer to a scene: the JSON object of `boltzone solve --json` and the curves and field
-/// it leaves out (scene units).
+/// The answer to a scene: the library's [`Solution`] and the call's wall time; its JSON
+/// object (that of `boltzone solve --json`) is built on first use.
 pub struct Answer {
-    /// The object of `solve --json` (with `command` = [`COMMAND`] and `seconds`).
-    pub json: serde_json::Value,
-    /// The interface curve (two-plate, `[outputs] interface_pressure` asked).
-    pub interface: Option<InterfaceCurve>,
-    /// The finest mesh's field (`[outputs] field` asked).
-    pub field: Option<Grid>,
-    /// The midplane σ_z (`[outputs] midplane` asked).
-    pub midplane: Option<MidplaneStress>,
+    /// What [`boltzone::solve`] returned (curves and field included).
+    pub solution: Solution,
+    /// Wall time of the call, seconds.
+    pub seconds: f64,
     /// The length and stress symbols of the scene's units (`in`, `psi`).
     pub symbols: (&'static str, &'static str),
+    json: std::sync::OnceLock<serde_json::Value>,
+}
+
+impl Answer {
+    /// The object of `solve --json` (with `command` = [`COMMAND`] and `seconds`).
+    pub fn json(&self) -> &serde_json::Value {
+        self.json.get_or_init(|| {
+            // Solution holds plain numbers, strings and the scene: serialising cannot fail
+            let mut v = serde_json::to_value(&self.solution).unwrap_or_default();
+            drop_nulls(&mut v);
+            if let serde_json::Value::Object(m) = &mut v {
+                m.insert("command".into(), COMMAND.into());
+                m.insert("seconds".into(), self.seconds.into());
+            }
+            v
+        })
+    }
+
+    /// One key of [`Answer::json`]; the scalars read first without building the object.
+    pub fn key(&self, key: &str) -> Option<serde_json::Value> {
+        let s = &self.solution;
+        match key {
+            "r_o" => Some(s.r_o.into()),
+            "r_o_error" => Some(s.r_o_error.into()),
+            "converged" => Some(s.converged.into()),
+            "length_unit" => Some(s.length_unit.into()),
+            "seconds" => Some(self.seconds.into()),
+            _ => self.json().get(key).cloned(),
+        }
+    }
 }
 
 /// Parses a dotted key as `[sweep]` and `--geometries` do (`plates[1].thickness`).
@@ -211,20 +235,13 @@ fn no_sweep(scene: &Scene) -> Result<(), Failure> {
 /// Answers `scene` ([`boltzone::solve`]); `start` is when the call began (for `seconds`).
 pub fn solve(scene: &Scene, start: Instant) -> Result<Answer, Failure> {
     no_sweep(scene)?;
-    let s: Solution = boltzone::solve(scene)?;
-    let mut json = serde_json::to_value(&s).map_err(|e| Failure::Solver(e.to_string()))?;
-    drop_nulls(&mut json);
-    if let serde_json::Value::Object(m) = &mut json {
-        m.insert("command".into(), COMMAND.into());
-        m.insert("seconds".into(), start.elapsed().as_secs_f64().into());
-    }
+    let solution: Solution = boltzone::solve(scene)?;
     let (l, st, _) = scene.units.symbols();
     Ok(Answer {
-        json,
-        interface: s.interface,
-        field: s.field,
-        midplane: s.midplane,
+        solution,
+        seconds: start.elapsed().as_secs_f64(),
         symbols: (l, st),
+        json: std::sync::OnceLock::new(),
     })
 }
 

@@ -70,13 +70,20 @@ fn scene_of(d: &Bound<'_, PyDict>) -> PyResult<Result<boltzone::scene::Scene, Fa
     Ok(batch::guarded(|| engine::scene(table)))
 }
 
-/// Checks the scene dict as a scene file is checked and returns it as understood (defaults
-/// filled in, materials of every plate written out). Raises InputError naming the key.
+/// A checked scene, held in Rust so that `solve` needs no conversion (built by
+/// `check_scene`).
+#[pyclass(frozen, module = "boltzone._boltzone")]
+struct CoreScene(boltzone::scene::Scene);
+
+/// Checks the scene dict as a scene file is checked; returns the scene held in Rust and the
+/// scene as understood (defaults filled in, materials of every plate written out). Raises
+/// InputError naming the key.
 #[pyfunction]
-fn check_scene<'py>(d: &Bound<'py, PyDict>) -> PyResult<Bound<'py, PyAny>> {
+fn check_scene<'py>(d: &Bound<'py, PyDict>) -> PyResult<(CoreScene, Bound<'py, PyAny>)> {
     let py = d.py();
     let scene = scene_of(d)?.map_err(|f| raise(py, f))?;
-    convert::to_py(py, &engine::understood(&scene))
+    let understood = convert::to_py(py, &engine::understood(&scene))?;
+    Ok((CoreScene(scene), understood))
 }
 
 /// Parses the TOML text of a scene file (errors name the key and the line) and returns it as a
@@ -87,34 +94,52 @@ fn scene_file<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAny>> {
     convert::toml_to_py(py, &toml::Value::Table(table))
 }
 
-/// Answers the scene: the object of `boltzone solve --json`, the interface curve
-/// (`radius`, `pressure`, `gap`), the field (`points`, `cells`, `plate`, `displacement`,
-/// `scalars`) and the midplane stress (`radius`, `sigma_z`, `error`), in the scene's units.
-/// The field's VTU is written to `[outputs] field` when the scene names it.
-#[pyfunction]
-fn solve<'py>(d: &Bound<'py, PyDict>) -> PyResult<Bound<'py, PyAny>> {
-    let py = d.py();
-    let start = Instant::now();
-    let scene = scene_of(d)?.map_err(|f| raise(py, f))?;
-    let answer = py
-        .detach(|| batch::guarded(|| engine::solve(&scene, start)))
-        .map_err(|f| raise(py, f))?;
-    if let (Some(path), Some(grid)) = (&scene.outputs.field, &answer.field) {
-        let text = engine::vtu(grid, answer.symbols);
-        engine::write(path, &text).map_err(|e| {
-            pyo3::exceptions::PyOSError::new_err(format!("{}: {e}", path.display()))
-        })?;
+/// The answer to a scene, held in Rust; its keys are converted to Python when asked.
+#[pyclass(frozen, module = "boltzone._boltzone")]
+struct Answer(engine::Answer);
+
+#[pymethods]
+impl Answer {
+    /// The value of one key of `solve --json` (KeyError when the answer has none).
+    fn get<'py>(&self, py: Python<'py>, key: &str) -> PyResult<Bound<'py, PyAny>> {
+        match self.0.key(key) {
+            Some(v) => convert::to_py(py, &v),
+            None => Err(pyo3::exceptions::PyKeyError::new_err(key.to_string())),
+        }
     }
-    let out = PyDict::new(py);
-    out.set_item("json", convert::to_py(py, &answer.json)?)?;
-    if let Some(c) = &answer.interface {
+
+    /// The keys of `solve --json` this answer has.
+    fn keys(&self) -> Vec<String> {
+        self.0.json().as_object().map_or(Vec::new(), |m| m.keys().cloned().collect())
+    }
+
+    /// Every key of `solve --json`, as a new dict.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        convert::to_py(py, self.0.json())
+    }
+
+    /// The length and stress symbols of the scene's units (`in`, `psi`).
+    fn symbols(&self) -> (&'static str, &'static str) {
+        self.0.symbols
+    }
+
+    /// The interface curve: `radius`, `pressure`, `gap` (None unless asked).
+    fn interface<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(c) = &self.0.solution.interface else {
+            return Ok(None);
+        };
         let d = PyDict::new(py);
         d.set_item("radius", &c.radius)?;
         d.set_item("pressure", &c.pressure)?;
         d.set_item("gap", &c.gap)?;
-        out.set_item("interface", d)?;
+        Ok(Some(d))
     }
-    if let Some(g) = &answer.field {
+
+    /// The field: `points`, `cells`, `plate`, `displacement`, `scalars` (None unless asked).
+    fn field<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(g) = &self.0.solution.field else {
+            return Ok(None);
+        };
         let d = PyDict::new(py);
         d.set_item("points", &g.points)?;
         d.set_item("cells", &g.cells)?;
@@ -125,18 +150,38 @@ fn solve<'py>(d: &Bound<'py, PyDict>) -> PyResult<Bound<'py, PyAny>> {
             scalars.set_item(name, v)?;
         }
         d.set_item("scalars", scalars)?;
-        out.set_item("field", d)?;
+        Ok(Some(d))
     }
-    if let Some(m) = &answer.midplane {
+
+    /// The midplane stress: `radius`, `sigma_z`, `error` (None unless asked).
+    fn midplane<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(m) = &self.0.solution.midplane else {
+            return Ok(None);
+        };
         let d = PyDict::new(py);
         d.set_item("radius", &m.radius)?;
         d.set_item("sigma_z", &m.sigma_z)?;
         d.set_item("error", &m.error)?;
-        out.set_item("midplane", d)?;
+        Ok(Some(d))
     }
-    out.set_item("length_unit", answer.symbols.0)?;
-    out.set_item("stress_unit", answer.symbols.1)?;
-    Ok(out.into_any())
+}
+
+/// Answers a checked scene with the library, the GIL released. The field's VTU is written to
+/// `[outputs] field` when the scene names it.
+#[pyfunction]
+fn solve(py: Python<'_>, scene: &CoreScene) -> PyResult<Answer> {
+    let start = Instant::now();
+    let scene = &scene.0;
+    let answer = py
+        .detach(|| batch::guarded(|| engine::solve(scene, start)))
+        .map_err(|f| raise(py, f))?;
+    if let (Some(path), Some(grid)) = (&scene.outputs.field, &answer.solution.field) {
+        let text = engine::vtu(grid, answer.symbols);
+        engine::write(path, &text).map_err(|e| {
+            pyo3::exceptions::PyOSError::new_err(format!("{}: {e}", path.display()))
+        })?;
+    }
+    Ok(Answer(answer))
 }
 
 /// Solves the scene dicts in parallel on `threads` threads (0: all cores), the GIL released.
@@ -153,12 +198,16 @@ fn solve_many<'py>(
     let py = scenes.py();
     let mut items = Vec::with_capacity(scenes.len());
     for (i, s) in scenes.iter().enumerate() {
+        if let Ok(held) = s.cast::<CoreScene>() {
+            items.push(Ok(held.get().0.clone()));
+            continue;
+        }
         let d = s.cast::<PyDict>().map_err(|_| {
             raise(
                 py,
                 Failure::Input {
                     key: format!("scenes[{i}]"),
-                    reason: "not a dict".into(),
+                    reason: "not a scene dict".into(),
                 },
             )
         })?;
@@ -244,6 +293,8 @@ fn _boltzone(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("SolverError", py.get_type::<SolverError>())?;
     m.add("COMMAND", engine::COMMAND)?;
     m.add("POLL_SECONDS", batch::POLL.as_secs_f64())?;
+    m.add_class::<CoreScene>()?;
+    m.add_class::<Answer>()?;
     m.add_function(wrap_pyfunction!(check_scene, m)?)?;
     m.add_function(wrap_pyfunction!(scene_file, m)?)?;
     m.add_function(wrap_pyfunction!(solve, m)?)?;
