@@ -35,7 +35,9 @@ pub fn guarded<T>(f: impl FnOnce() -> Result<T, Failure>) -> Result<T, Failure> 
             .map(|s| s.to_string())
             .or_else(|| p.downcast_ref::<String>().cloned())
             .unwrap_or_else(|| "(no message)".into());
-        Err(Failure::Solver(format!("internal error (a panic in boltzone): {msg}")))
+        Err(Failure::Solver(format!(
+            "internal error (a panic in boltzone): {msg}"
+        )))
     })
 }
 

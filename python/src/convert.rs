@@ -76,7 +76,9 @@ pub fn to_toml(obj: &Bound<'_, PyAny>, at: &str, depth: usize) -> PyResult<Optio
         _ => {}
     }
     let ty = obj.get_type().name()?;
-    Err(bad(format!("a {ty} is not a scene value (number, string, bool, list or dict)")))
+    Err(bad(format!(
+        "a {ty} is not a scene value (number, string, bool, list or dict)"
+    )))
 }
 
 /// The dict `d` as a TOML table (keys must be strings; `None` values are left out).
@@ -137,8 +139,10 @@ pub fn toml_to_py<'py>(py: Python<'py>, v: &toml::Value) -> PyResult<Bound<'py, 
         toml::Value::Boolean(b) => PyBool::new(py, *b).to_owned().into_any(),
         toml::Value::Datetime(d) => PyString::new(py, &d.to_string()).into_any(),
         toml::Value::Array(a) => {
-            let items: Vec<Bound<'py, PyAny>> =
-                a.iter().map(|x| toml_to_py(py, x)).collect::<PyResult<_>>()?;
+            let items: Vec<Bound<'py, PyAny>> = a
+                .iter()
+                .map(|x| toml_to_py(py, x))
+                .collect::<PyResult<_>>()?;
             PyList::new(py, items)?.into_any()
         }
         toml::Value::Table(t) => {

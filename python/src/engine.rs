@@ -16,7 +16,7 @@
 use boltzone::compare::{table1, table2, CompareParams};
 use boltzone::contact::two_plate::InterfaceModel;
 use boltzone::io::vtu::Grid;
-use boltzone::scene::file::{path_name, Seg};
+use boltzone::scene::file::Seg;
 use boltzone::scene::{Scene, SceneError, Solution};
 use std::time::Instant;
 
@@ -167,18 +167,12 @@ pub fn scene(table: toml::Table) -> Result<Scene, Failure> {
         }
     }
     let scene: Scene = serde_path_to_error::deserialize(toml::Value::Table(t)).map_err(|e| {
-        let path: Vec<Seg> = e
-            .path()
-            .iter()
-            .filter_map(|s| match s {
-                serde_path_to_error::Segment::Seq { index } => Some(Seg::Index(*index)),
-                serde_path_to_error::Segment::Map { key } => Some(Seg::Key(key.clone())),
-                _ => None,
-            })
-            .collect();
+        // serde_path_to_error writes `plates[0].thickness`, and `.` for the top level
+        let path = e.path().to_string();
+        let path = if path == "." { String::new() } else { path };
         let reason = e.into_inner().message().trim().to_string();
         Failure::Input {
-            key: with_unknown(path_name(&path), &reason),
+            key: with_unknown(path, &reason),
             reason,
         }
     })?;
@@ -318,7 +312,10 @@ fn rows_json(rows: &impl serde::Serialize) -> Result<serde_json::Value, Failure>
     if let serde_json::Value::Array(rows) = &mut v {
         for row in rows.iter_mut() {
             if let serde_json::Value::Object(m) = row {
-                m.insert("units".into(), boltzone::scene::UnitSystem::default().name().into());
+                m.insert(
+                    "units".into(),
+                    boltzone::scene::UnitSystem::default().name().into(),
+                );
             }
         }
     }

@@ -110,7 +110,10 @@ impl Answer {
 
     /// The keys of `solve --json` this answer has.
     fn keys(&self) -> Vec<String> {
-        self.0.json().as_object().map_or(Vec::new(), |m| m.keys().cloned().collect())
+        self.0
+            .json()
+            .as_object()
+            .map_or(Vec::new(), |m| m.keys().cloned().collect())
     }
 
     /// Every key of `solve --json`, as a new dict.
