@@ -107,7 +107,7 @@ def rss_mib():
 
 
 @pytest.mark.slow
-def test_scaling_and_memory_on_thousand_joints():
+def test_two_threads_against_one_on_thousand_joints():
     scenes = joints(1000, 4, two_plate=False) + joints(200, 5, two_plate=True)
     times = {}
     for threads in (1, 2, 1, 2):
@@ -115,14 +115,29 @@ def test_scaling_and_memory_on_thousand_joints():
         boltzone.solve_many(scenes, threads=threads, progress=False)
         times.setdefault(threads, []).append(time.perf_counter() - t)
     t1, t2 = min(times[1]), min(times[2])
-    print("\n1,200 joints: 1 thread %.2f s, 2 threads %.2f s, ratio %.2f" % (t1, t2, t1 / t2))
-    before = rss_mib()
-    for _ in range(5):
+    print("\n1,200 joints: 1 thread %.2f s, 2 threads %.2f s, ratio %.2f (load %.1f)"
+          % (t1, t2, t1 / t2, os.getloadavg()[0]))
+    # two cores, independent joints: under 1.3 on an idle machine means the GIL or a lock
+    # serialises the batch (on a loaded machine the ratio says only how loaded it is)
+    if os.getloadavg()[0] < 1.5:
+        assert t1 / t2 > 1.3, times
+
+
+@pytest.mark.slow
+def test_memory_is_flat_over_fifteen_thousand_joints():
+    import gc
+
+    scenes = joints(1000, 4)
+    for _ in range(3):  # warm-up: the allocator's arenas of the pool's threads settle
         boltzone.solve_many(scenes, threads=2, progress=False)
+    gc.collect()
+    before = rss_mib()
+    for _ in range(15):
+        boltzone.solve_many(scenes, threads=2, progress=False)
+    gc.collect()
     after = rss_mib()
-    print("RSS before %.1f MiB, after 5 more batches %.1f MiB" % (before, after))
-    # 1,200 rows of results are ~1 MiB; a leak of one scene or result per joint would grow
-    # RSS by >= 6,000 x a few KiB = tens of MiB over the 5 batches
+    print("\nRSS after 3 warm-up batches %.1f MiB, after 15 more (15,000 joints) %.1f MiB"
+          % (before, after))
+    # a leak of the smallest thing kept per joint (a result: the scene and the plan, > 1 KiB)
+    # grows RSS by > 15 MiB over 15,000 joints; the allocator's own swing here is ~7 MiB
     assert after - before < 10.0, (before, after)
-    # two cores, independent joints: anything under 1.3 means the GIL or a lock serialises
-    assert t1 / t2 > 1.3, times
