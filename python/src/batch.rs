@@ -9,8 +9,14 @@
 //! are never started, the at most `threads` joints running finish on the pool's thread and are
 //! dropped. A joint that fails, or panics, is a row with its message.
 //!
-//! Accuracy: each row is the single call's (`python/tests/test_many.py`, 1,000 joints). Cost:
-//! the joints' costs over the threads; the caller's polling wakes every [`POLL`].
+//! # Accuracy
+//!
+//! Each row is the single call's, bit for bit: `python/tests/test_many.py` (200 joints in CI,
+//! 1,000 in its slow test).
+//!
+//! # Cost
+//!
+//! The joints' costs over the threads; the caller's polling wakes every [`POLL`].
 
 use crate::engine::{self, Failure};
 use boltzone::scene::Scene;

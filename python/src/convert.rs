@@ -7,8 +7,13 @@
 //! is an error naming the key path. JSON → Python: null → `None`, numbers → `int`/`float`
 //! (the f64 unchanged), strings, lists, dicts (key order kept).
 //!
-//! Accuracy: exact (no rounding: an f64 goes through as the same 64 bits); tested by
-//! `python/tests/test_cli_identity.py`. Cost: linear in the object.
+//! # Accuracy
+//!
+//! Exact (an f64 goes through as the same 64 bits): `python/tests/test_cli_identity.py`.
+//!
+//! # Cost
+//!
+//! Linear in the object.
 
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;

@@ -9,9 +9,14 @@
 //! serialized with `serde_json::to_value`, stamped with `command` and `seconds` as the CLI
 //! stamps it.
 //!
-//! Accuracy: no numerics of its own; `python/tests/test_cli_identity.py` finds every key
-//! bit-identical to the CLI's on Table 1, Table 2 and random scenes. Cost: the solver's, plus
-//! microseconds for the conversion.
+//! # Accuracy
+//!
+//! No numerics of its own: `python/tests/test_cli_identity.py` finds every key bit-identical
+//! to the CLI's on Table 1, Table 2, the example scenes and 50 random scenes.
+//!
+//! # Cost
+//!
+//! The solver's, plus microseconds for the conversion (`docs/python.md`, Speed).
 
 use boltzone::compare::{table1, table2, CompareParams};
 use boltzone::contact::two_plate::InterfaceModel;

@@ -8,8 +8,13 @@
 //! `boltzone.SolverError`, never a Rust panic in Python. Bad input raises `boltzone.InputError`
 //! with `.key` (the scene key path, `plates[0].thickness`) and the message naming the value.
 //!
-//! Accuracy: `python/tests/` (pytest): bit-identity with the CLI, batches, bad input, fuzz.
-//! Cost: the library's; the conversion is linear in the answer (microseconds per joint).
+//! # Accuracy
+//!
+//! `python/tests/` (pytest): bit-identity with the CLI, batches, bad input, fuzz.
+//!
+//! # Cost
+//!
+//! The library's; keys are converted when read (microseconds per joint).
 
 mod batch;
 mod convert;
