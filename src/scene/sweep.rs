@@ -39,8 +39,9 @@ pub struct SweepPoint {
     pub scene: Scene,
 }
 
-/// Parses a sweep key: `load.outer_radius`, `plates[1].thickness` or `plates.1.thickness`.
-fn parse_key(key: &str) -> Option<Vec<Seg>> {
+/// Parses a sweep key: `load.outer_radius`, `plates[1].thickness` or `plates.1.thickness` (None
+/// when it is not one). Also the dotted columns of the Python `solve_many`.
+pub fn parse_key(key: &str) -> Option<Vec<Seg>> {
     let mut out = Vec::new();
     for part in key.split('.') {
         let (name, rest) = part.split_once('[').unwrap_or((part, ""));
