@@ -78,6 +78,7 @@ pub mod plot;
 pub mod reference;
 pub mod rules;
 pub mod scene;
+pub mod table;
 pub mod units;
 pub mod value;
 

@@ -1,0 +1,38 @@
+//! The decay study behind the far table's handover bound (example 22 prints it whole).
+
+#[allow(dead_code)]
+#[path = "../../examples/22_hole_decay.rs"]
+mod ex22;
+
+use boltzone::table::decay::{fit_decay, HANDOVER_RATE};
+use boltzone::table::far::{HANDOVER_K_SINGLE, HANDOVER_K_TWO};
+
+/// (B − A)/D = 0.5 … 8 in steps of 0.5: x from ≈ 1 to ≈ 8.5, where Δ reaches the routes' floor.
+fn widths() -> Vec<f64> {
+    (1..=16).map(|k| 0.5 * k as f64).collect()
+}
+
+#[test]
+#[ignore = "study: about 10 minutes of CPU (the two-plate route at 1e-8 out to B/D = 12)"]
+fn the_hole_decays_at_the_round_trip_rate_within_the_handover_bound() {
+    let widths = widths();
+    for (model, k_bound) in [("two", HANDOVER_K_TWO), ("single", HANDOVER_K_SINGLE)] {
+        for a in [0.25, 1.0, 4.0] {
+            let pts = if model == "two" {
+                ex22::two_plate_points(a, 0.3, &widths).unwrap()
+            } else {
+                ex22::single_plate_points(a, 0.3, &widths).unwrap()
+            };
+            let f = fit_decay(&pts, 1.0, HANDOVER_RATE).unwrap();
+            // the fit's own one-sigma uncertainty, three of them
+            assert!(
+                (f.alpha - HANDOVER_RATE).abs() <= 3.0 * f.alpha_sigma,
+                "{model}, A/D {a}: α = {} ± {}",
+                f.alpha,
+                f.alpha_sigma
+            );
+            let k = ex22::prefactor(&pts);
+            assert!(k <= k_bound, "{model}, A/D {a}: prefactor {k} over {k_bound}");
+        }
+    }
+}
