@@ -31,6 +31,7 @@ use boltzone::hankel::receding::holed::two_plate_hole_to;
 use boltzone::hankel::receding::{Layer, RecedingParams};
 use boltzone::hankel::{SeparationParams, Slab};
 use boltzone::table::decay::{fit_decay, sign_changes, DecayPoint, HANDOVER_RATE};
+use boltzone::table::far::{HANDOVER_K_SINGLE, HANDOVER_K_TWO};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 use std::time::Instant;
 
@@ -40,9 +41,16 @@ pub fn main() -> Result<(), Box<dyn std::error::Error>> {
     let which = args.get(2).map_or("both", |s| s.as_str()).to_string();
     let quick = std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1");
     let max = if quick { 2.0 } else { max };
-    let widths: Vec<f64> = (1..).map(|k| 0.5 * k as f64).take_while(|w| *w <= max).collect();
-    let holes: &[f64] = if quick { &[1.0] } else { &[0.25, 0.5, 1.0, 2.0, 4.0] };
-    let mut all = Vec::new();
+    let widths: Vec<f64> = (1..)
+        .map(|k| 0.5 * k as f64)
+        .take_while(|w| *w <= max)
+        .collect();
+    let holes: &[f64] = if quick {
+        &[1.0]
+    } else {
+        &[0.25, 0.5, 1.0, 2.0, 4.0]
+    };
+    let (mut all, mut two) = (Vec::new(), Vec::new());
     if which != "single" {
         for nu in [0.3, 0.0, 0.45] {
             if quick && nu != 0.3 {
@@ -52,7 +60,7 @@ pub fn main() -> Result<(), Box<dyn std::error::Error>> {
             for &a in holes {
                 let pts = two_plate_points(a, nu, &widths)?;
                 report("two plates", a, nu, &pts);
-                all.extend(pts);
+                two.extend(pts);
             }
         }
     }
@@ -63,10 +71,15 @@ pub fn main() -> Result<(), Box<dyn std::error::Error>> {
             all.extend(pts);
         }
     }
-    println!(
-        "\nlargest |Δ|/D·e^(4.212392 x) over x ≥ 2, resolved points: {:.3e}",
-        prefactor(&all)
-    );
+    let (k_two, k_single) = (prefactor(&two), prefactor(&all));
+    println!("\nlargest |Δ|/D·e^(4.212392 x) over x ≥ 2, resolved points: two plates {k_two:.3e}, single plate {k_single:.3e}");
+    // the self-check: the handover bounds of the far table hold on every point measured
+    if k_two > HANDOVER_K_TWO || k_single > HANDOVER_K_SINGLE {
+        return Err(format!(
+            "handover prefactor over its bound ({HANDOVER_K_TWO}, {HANDOVER_K_SINGLE})"
+        )
+        .into());
+    }
     Ok(())
 }
 
@@ -139,7 +152,10 @@ fn report(model: &str, a: f64, nu: f64, pts: &[DecayPoint]) {
         );
     }
     let zeros = sign_changes(pts);
-    let spacing: Vec<String> = zeros.windows(2).map(|z| format!("{:.3}", z[1] - z[0])).collect();
+    let spacing: Vec<String> = zeros
+        .windows(2)
+        .map(|z| format!("{:.3}", z[1] - z[0]))
+        .collect();
     println!("sign changes at x = {zeros:.3?}, spacings {spacing:?} (π/1.125364 = 2.792)");
     match fit_decay(pts, 1.0, HANDOVER_RATE) {
         Some(f) => println!(
@@ -158,7 +174,13 @@ fn two_plates(
     nu: f64,
 ) -> Result<(f64, f64, f64, f64), Box<dyn std::error::Error>> {
     let m = Material::unit(nu)?;
-    let plate = SinglePlate::new(a, OuterRadius::Infinite, d, m, FaceLoad::uniform(a, b, 1.0)?)?;
+    let plate = SinglePlate::new(
+        a,
+        OuterRadius::Infinite,
+        d,
+        m,
+        FaceLoad::uniform(a, b, 1.0)?,
+    )?;
     let (h, _) = two_plate_hole_to(&plate, 1e-8, &[])?;
     let layer = Layer::new(d, m, FaceLoad::uniform(0.0, b, 1.0)?)?;
     let c = layer.receding_contact(&RecedingParams::default())?;
@@ -173,7 +195,13 @@ fn single_plate(
     nu: f64,
 ) -> Result<(f64, f64, f64, f64), Box<dyn std::error::Error>> {
     let m = Material::unit(nu)?;
-    let plate = SinglePlate::new(a, OuterRadius::Infinite, d, m, FaceLoad::uniform(a, b, 1.0)?)?;
+    let plate = SinglePlate::new(
+        a,
+        OuterRadius::Infinite,
+        d,
+        m,
+        FaceLoad::uniform(a, b, 1.0)?,
+    )?;
     let sep = SeparationParams {
         rel_tol: 1e-11,
         ..Default::default()

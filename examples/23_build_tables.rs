@@ -27,16 +27,24 @@ const B_MIN: f64 = 2.0;
 /// Largest B/D sampled for two plates (the receding solver takes up to about 60).
 const T_LO_TWO: f64 = 48.0;
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
+pub fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
     let quick = std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1");
-    if args.iter().any(|a| a == "show") {
+    if quick || args.iter().any(|a| a == "show") {
         return show();
     }
     // points per table: two plates' coefficients reach their build's floor (≈ 2e-10) near
     // k = 19, the single plate's fall to ≈ 1e-11 by k = 28 (measured)
-    let n_two: usize = if quick { 6 } else { args.get(1).map_or(Ok(20), |s| s.parse())? };
-    let n_single: usize = if quick { 6 } else { args.get(2).map_or(Ok(28), |s| s.parse())? };
+    let n_two: usize = if quick {
+        6
+    } else {
+        args.get(1).map_or(Ok(20), |s| s.parse())?
+    };
+    let n_single: usize = if quick {
+        6
+    } else {
+        args.get(2).map_or(Ok(28), |s| s.parse())?
+    };
     if args.iter().any(|a| a == "time") {
         for b in [2.0, 8.0, 32.0, 128.0, 512.0] {
             let t = Instant::now();
@@ -44,7 +52,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let t1 = t.elapsed().as_secs_f64();
             let t = Instant::now();
             let (h, f) = single_plate(b)?;
-            println!("B/D {b}: two g {g:.12} ± {e:.1e} {t1:.2} s; single g {h:.12} ± {f:.1e} {:.2} s", t.elapsed().as_secs_f64());
+            println!(
+                "B/D {b}: two g {g:.12} ± {e:.1e} {t1:.2} s; single g {h:.12} ± {f:.1e} {:.2} s",
+                t.elapsed().as_secs_f64()
+            );
         }
         return Ok(());
     }
@@ -72,7 +83,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
         let c = FarTable::from_samples(*t_lo, t_hi, &values, build).coefficients;
         let mags: Vec<String> = c.iter().map(|x| format!("{:.1e}", x.abs())).collect();
-        println!("{name}: build error ≤ {build:.1e} D, {:.1} s", t0.elapsed().as_secs_f64());
+        println!(
+            "{name}: build error ≤ {build:.1e} D, {:.1} s",
+            t0.elapsed().as_secs_f64()
+        );
         println!("  |c_k|: {}", mags.join(" "));
         out += &format!(
             "  \"{name}\": {{ \"t_lo\": {t_lo:e}, \"t_hi\": {t_hi:e}, \"build_error\": {build:e}, \"coefficients\": [{}] }}{}\n",
@@ -84,7 +98,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     if !quick {
         let path = std::path::Path::new("src/table/data/far.json");
         boltzone::fsutil::write_atomic(path, out.as_bytes())?;
-        println!("wrote {} in {:.1} s", path.display(), start.elapsed().as_secs_f64());
+        println!(
+            "wrote {} in {:.1} s",
+            path.display(),
+            start.elapsed().as_secs_f64()
+        );
     }
     Ok(())
 }
@@ -97,7 +115,10 @@ fn show() -> Result<(), Box<dyn std::error::Error>> {
         println!("{model:?}:");
         for b in [2.0, 5.0, 10.0, 48.0, 60.0, 100.0, 1e3, 1e4, f64::INFINITY] {
             let (g, bar) = table.g(1.0 / b);
-            println!("  B/D {b:>8}: g = {g:.10}, bar {bar:.2e} D, of R_o {:.1e}", bar / (b + g));
+            println!(
+                "  B/D {b:>8}: g = {g:.10}, bar {bar:.2e} D, of R_o {:.1e}",
+                bar / (b + g)
+            );
         }
     }
     Ok(())
@@ -115,7 +136,10 @@ fn two_plates(b: f64) -> Result<(f64, f64), Box<dyn std::error::Error>> {
 /// (g, its error) of the single plate 2D thick, disk load 0..B, D = 1.
 fn single_plate(b: f64) -> Result<(f64, f64), Box<dyn std::error::Error>> {
     let slab = Slab::new(1.0, Material::unit(0.3)?, FaceLoad::uniform(0.0, b, 1.0)?)?;
-    let p = SeparationParams { rel_tol: 1e-12, ..Default::default() };
+    let p = SeparationParams {
+        rel_tol: 1e-12,
+        ..Default::default()
+    };
     let s = slab.separation_radius(&p)?;
     Ok((s.r_o - b, s.r_o_error))
 }

@@ -276,6 +276,9 @@ mod tests {
         let c: Vec<f64> = (0..16).map(|k| 0.7 * 3f64.powi(-k)).collect();
         let (big_c, rho) = envelope(&c);
         // exact geometric data: limited by round-off in the logarithms
-        assert!((rho - 3.0).abs() < 1e-12 && (big_c - 0.7).abs() < 1e-11, "{big_c} {rho}");
+        assert!(
+            (rho - 3.0).abs() < 1e-12 && (big_c - 0.7).abs() < 1e-11,
+            "{big_c} {rho}"
+        );
     }
 }

@@ -234,3 +234,24 @@ fn ex21_friction() {
     quick();
     ex21::main().unwrap();
 }
+
+#[allow(dead_code)]
+#[path = "../../examples/22_hole_decay.rs"]
+mod ex22;
+
+#[test]
+fn ex22_hole_decay() {
+    quick();
+    ex22::main().unwrap();
+}
+
+#[allow(dead_code)]
+#[path = "../../examples/23_build_tables.rs"]
+mod ex23;
+
+#[test]
+fn ex23_build_tables() {
+    // quick: the shipped tables printed and each checked against one fresh solve
+    quick();
+    ex23::main().unwrap();
+}

@@ -14,7 +14,7 @@ fn widths() -> Vec<f64> {
 
 #[test]
 #[ignore = "study: about 10 minutes of CPU (the two-plate route at 1e-8 out to B/D = 12)"]
-fn the_hole_decays_at_the_round_trip_rate_within_the_handover_bound() {
+fn the_hole_decays_at_least_at_the_round_trip_rate_within_the_handover_bound() {
     let widths = widths();
     for (model, k_bound) in [("two", HANDOVER_K_TWO), ("single", HANDOVER_K_SINGLE)] {
         for a in [0.25, 1.0, 4.0] {
@@ -24,15 +24,20 @@ fn the_hole_decays_at_the_round_trip_rate_within_the_handover_bound() {
                 ex22::single_plate_points(a, 0.3, &widths).unwrap()
             };
             let f = fit_decay(&pts, 1.0, HANDOVER_RATE).unwrap();
-            // the fit's own one-sigma uncertainty, three of them
+            // the handover bound needs the decay at least as fast as the round trip's rate:
+            // within three of the fit's own one-sigma uncertainties of it, or faster (the
+            // survey's fits: 3.9–5.2, the second mode's 5.36 mixing in on two plates)
             assert!(
-                (f.alpha - HANDOVER_RATE).abs() <= 3.0 * f.alpha_sigma,
+                f.alpha >= HANDOVER_RATE - 3.0 * f.alpha_sigma,
                 "{model}, A/D {a}: α = {} ± {}",
                 f.alpha,
                 f.alpha_sigma
             );
             let k = ex22::prefactor(&pts);
-            assert!(k <= k_bound, "{model}, A/D {a}: prefactor {k} over {k_bound}");
+            assert!(
+                k <= k_bound,
+                "{model}, A/D {a}: prefactor {k} over {k_bound}"
+            );
         }
     }
 }

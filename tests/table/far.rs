@@ -8,15 +8,23 @@ use boltzone::table::far::{separation_radius, FarModel, FarTable};
 use boltzone::{FaceLoad, InputError, Material, OuterRadius, SinglePlate};
 
 fn two_plates_no_hole(b: f64) -> (f64, f64) {
-    let layer = Layer::new(1.0, Material::unit(0.3).unwrap(), FaceLoad::uniform(0.0, b, 1.0).unwrap())
-        .unwrap();
+    let layer = Layer::new(
+        1.0,
+        Material::unit(0.3).unwrap(),
+        FaceLoad::uniform(0.0, b, 1.0).unwrap(),
+    )
+    .unwrap();
     let c = layer.receding_contact(&RecedingParams::default()).unwrap();
     (c.r_o, c.info.r_o_error)
 }
 
 fn single_plate_no_hole(b: f64) -> (f64, f64) {
-    let slab = Slab::new(1.0, Material::unit(0.3).unwrap(), FaceLoad::uniform(0.0, b, 1.0).unwrap())
-        .unwrap();
+    let slab = Slab::new(
+        1.0,
+        Material::unit(0.3).unwrap(),
+        FaceLoad::uniform(0.0, b, 1.0).unwrap(),
+    )
+    .unwrap();
     let p = SeparationParams {
         rel_tol: 1e-12,
         ..Default::default()
@@ -91,13 +99,20 @@ fn an_extrapolated_bar_holds_on_the_single_plate_out_to_b_over_d_infinite() {
 fn the_holed_single_plate_lies_within_the_bar_where_the_hole_is_far() {
     let m = Material::unit(0.3).unwrap();
     for (a, b) in [(1.0, 4.5), (0.5, 5.5), (4.0, 9.0)] {
-        let plate = SinglePlate::new(a, OuterRadius::Infinite, 1.0, m, FaceLoad::uniform(a, b, 1.0).unwrap())
-            .unwrap();
+        let plate = SinglePlate::new(
+            a,
+            OuterRadius::Infinite,
+            1.0,
+            m,
+            FaceLoad::uniform(a, b, 1.0).unwrap(),
+        )
+        .unwrap();
         let sep = SeparationParams {
             rel_tol: 1e-11,
             ..Default::default()
         };
-        let (s, _) = single_plate_separation(&plate, &sep, &HoleParams::for_tolerance(1e-10)).unwrap();
+        let (s, _) =
+            single_plate_separation(&plate, &sep, &HoleParams::for_tolerance(1e-10)).unwrap();
         let t = separation_radius(FarModel::SinglePlate, a, b, 1.0, 1e-6).unwrap();
         assert!(
             (t.value - s.r_o).abs() <= t.error + s.r_o_error,
@@ -115,8 +130,14 @@ fn the_holed_two_plate_route_lies_within_the_bar_where_the_hole_is_far() {
     // one geometry (the 1e-8 route takes ~2 s here); the survey is example 22
     let (a, b) = (0.5, 4.5);
     let m = Material::unit(0.3).unwrap();
-    let plate = SinglePlate::new(a, OuterRadius::Infinite, 1.0, m, FaceLoad::uniform(a, b, 1.0).unwrap())
-        .unwrap();
+    let plate = SinglePlate::new(
+        a,
+        OuterRadius::Infinite,
+        1.0,
+        m,
+        FaceLoad::uniform(a, b, 1.0).unwrap(),
+    )
+    .unwrap();
     let (h, _) = two_plate_hole_to(&plate, 1e-8, &[]).unwrap();
     let t = separation_radius(FarModel::TwoPlates, a, b, 1.0, 1e-6).unwrap();
     assert!(
@@ -132,9 +153,27 @@ fn the_holed_two_plate_route_lies_within_the_bar_where_the_hole_is_far() {
 #[test]
 fn the_far_table_refuses_what_it_does_not_cover_naming_the_ratio() {
     let e = separation_radius(FarModel::TwoPlates, 0.1, 0.15, 0.1, 1e-6).unwrap_err();
-    assert!(matches!(e, InputError::Parameter { field: "B/D (far table)", .. }), "{e}");
+    assert!(
+        matches!(
+            e,
+            InputError::Parameter {
+                field: "B/D (far table)",
+                ..
+            }
+        ),
+        "{e}"
+    );
     let e = separation_radius(FarModel::TwoPlates, 0.5, 0.6, 0.1, 1e-6).unwrap_err();
-    assert!(matches!(e, InputError::Parameter { field: "A/D (far table)", .. }), "{e}");
+    assert!(
+        matches!(
+            e,
+            InputError::Parameter {
+                field: "A/D (far table)",
+                ..
+            }
+        ),
+        "{e}"
+    );
     let e = separation_radius(FarModel::TwoPlates, 0.1, 0.2, 0.1, 1e-6).unwrap_err();
     assert!(e.to_string().contains("(R_o − A)/D"), "{e}");
     let e = separation_radius(FarModel::SinglePlate, 0.3, 0.2, 0.1, 1e-6).unwrap_err();
