@@ -36,11 +36,19 @@ use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 use std::time::Instant;
 
 pub fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let args: Vec<String> = std::env::args().collect();
-    let max: f64 = args.get(1).map_or(Ok(8.0), |s| s.parse())?;
-    let which = args.get(2).map_or("both", |s| s.as_str()).to_string();
     let quick = std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1");
-    let max = if quick { 2.0 } else { max };
+    // quick (the examples' test): the arguments are the test harness's, ignored
+    let args: Vec<String> = if quick {
+        Vec::new()
+    } else {
+        std::env::args().collect()
+    };
+    let max: f64 = if quick {
+        2.0
+    } else {
+        args.get(1).map_or(Ok(8.0), |s| s.parse())?
+    };
+    let which = args.get(2).map_or("both", |s| s.as_str()).to_string();
     let widths: Vec<f64> = (1..)
         .map(|k| 0.5 * k as f64)
         .take_while(|w| *w <= max)
@@ -58,7 +66,9 @@ pub fn main() -> Result<(), Box<dyn std::error::Error>> {
             }
             let holes: &[f64] = if nu == 0.3 { holes } else { &[0.5, 2.0] };
             for &a in holes {
-                let pts = two_plate_points(a, nu, &widths)?;
+                // quick: one two-plate width (the 1e-8 route takes ~1 s there)
+                let two_widths = if quick { &widths[2..3] } else { &widths[..] };
+                let pts = points(true, a, nu, two_widths)?;
                 report("two plates", a, nu, &pts);
                 two.extend(pts);
             }
@@ -66,7 +76,7 @@ pub fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     if which != "two" {
         for &a in holes {
-            let pts = single_plate_points(a, 0.3, &widths)?;
+            let pts = points(false, a, 0.3, &widths)?;
             report("single plate", a, 0.3, &pts);
             all.extend(pts);
         }
@@ -93,22 +103,16 @@ pub fn prefactor(points: &[DecayPoint]) -> f64 {
         .fold(0.0f64, f64::max)
 }
 
-/// Δ of two plates (D = 1) for each load width (B − A)/D.
-pub fn two_plate_points(
+/// Δ (D = 1) for each load width (B − A)/D: two plates when `two`, else the single plate 2D
+/// thick.
+pub fn points(
+    two: bool,
     a: f64,
     nu: f64,
     widths: &[f64],
 ) -> Result<Vec<DecayPoint>, Box<dyn std::error::Error>> {
-    survey(a, widths, |b| two_plates(a, b, 1.0, nu))
-}
-
-/// Δ of the single plate 2D thick (D = 1) for each load width (B − A)/D.
-pub fn single_plate_points(
-    a: f64,
-    nu: f64,
-    widths: &[f64],
-) -> Result<Vec<DecayPoint>, Box<dyn std::error::Error>> {
-    survey(a, widths, |b| single_plate(a, b, 1.0, nu))
+    let solve = if two { two_plates } else { single_plate };
+    survey(a, widths, |b| solve(a, b, nu))
 }
 
 /// Δ for each width, with both runs' estimates.
@@ -166,47 +170,40 @@ fn report(model: &str, a: f64, nu: f64, pts: &[DecayPoint]) {
     }
 }
 
-/// Two plates: (R_o holed, its estimate, R_o of the disk load, its estimate).
-fn two_plates(
-    a: f64,
-    b: f64,
-    d: f64,
-    nu: f64,
-) -> Result<(f64, f64, f64, f64), Box<dyn std::error::Error>> {
-    let m = Material::unit(nu)?;
-    let plate = SinglePlate::new(
+/// The holed plate of the reflected picture (D = `d`, C = ∞, uniform load on A..B).
+fn holed(a: f64, b: f64, d: f64, m: Material) -> Result<SinglePlate, boltzone::InputError> {
+    SinglePlate::new(
         a,
         OuterRadius::Infinite,
         d,
         m,
         FaceLoad::uniform(a, b, 1.0)?,
-    )?;
-    let (h, _) = two_plate_hole_to(&plate, 1e-8, &[])?;
+    )
+}
+
+/// (R_o holed, its estimate, R_o of the disk load, its estimate), D = 1.
+type Solved = Result<(f64, f64, f64, f64), Box<dyn std::error::Error>>;
+
+/// Two plates: [`Solved`].
+fn two_plates(a: f64, b: f64, nu: f64) -> Solved {
+    let d = 1.0;
+    let m = Material::unit(nu)?;
+    let (h, _) = two_plate_hole_to(&holed(a, b, d, m)?, 1e-8, &[])?;
     let layer = Layer::new(d, m, FaceLoad::uniform(0.0, b, 1.0)?)?;
     let c = layer.receding_contact(&RecedingParams::default())?;
     Ok((h.r_o, h.info.r_o_error, c.r_o, c.info.r_o_error))
 }
 
 /// Single plate 2D thick: the same four numbers.
-fn single_plate(
-    a: f64,
-    b: f64,
-    d: f64,
-    nu: f64,
-) -> Result<(f64, f64, f64, f64), Box<dyn std::error::Error>> {
+fn single_plate(a: f64, b: f64, nu: f64) -> Solved {
+    let d = 1.0;
     let m = Material::unit(nu)?;
-    let plate = SinglePlate::new(
-        a,
-        OuterRadius::Infinite,
-        d,
-        m,
-        FaceLoad::uniform(a, b, 1.0)?,
-    )?;
     let sep = SeparationParams {
         rel_tol: 1e-11,
         ..Default::default()
     };
-    let (s, _) = single_plate_separation(&plate, &sep, &HoleParams::for_tolerance(1e-10))?;
+    let hole = HoleParams::for_tolerance(1e-10);
+    let (s, _) = single_plate_separation(&holed(a, b, d, m)?, &sep, &hole)?;
     let slab = Slab::new(d, m, FaceLoad::uniform(0.0, b, 1.0)?)?;
     let n = slab.separation_radius(&sep)?;
     Ok((s.r_o, s.r_o_error, n.r_o, n.r_o_error))

@@ -18,11 +18,7 @@ fn the_hole_decays_at_least_at_the_round_trip_rate_within_the_handover_bound() {
     let widths = widths();
     for (model, k_bound) in [("two", HANDOVER_K_TWO), ("single", HANDOVER_K_SINGLE)] {
         for a in [0.25, 1.0, 4.0] {
-            let pts = if model == "two" {
-                ex22::two_plate_points(a, 0.3, &widths).unwrap()
-            } else {
-                ex22::single_plate_points(a, 0.3, &widths).unwrap()
-            };
+            let pts = ex22::points(model == "two", a, 0.3, &widths).unwrap();
             let f = fit_decay(&pts, 1.0, HANDOVER_RATE).unwrap();
             // the handover bound needs the decay at least as fast as the round trip's rate:
             // within three of the fit's own one-sigma uncertainties of it, or faster (the

@@ -33,35 +33,32 @@ fn single_plate_no_hole(b: f64) -> (f64, f64) {
     (s.r_o, s.r_o_error)
 }
 
+/// The table's answer for the disk load 0..B (A = 0) against a fresh solve (r_o, its error),
+/// and its bar within `tol`.
+fn assert_table_holds(model: FarModel, b: f64, (r_o, err): (f64, f64), tol: f64) {
+    let t = separation_radius(model, 0.0, b, 1.0, tol).unwrap();
+    assert!(
+        (t.value - r_o).abs() <= t.error + err,
+        "{model:?}, B/D {b}: table {} ± {:.1e}, solve {r_o} ± {err:.1e}",
+        t.value,
+        t.error
+    );
+    assert!(t.converged, "{model:?}, B/D {b}: bar {:.1e}", t.error);
+}
+
 #[test]
 fn the_two_plate_table_holds_against_fresh_no_hole_solves() {
     // B/D not among the table's nodes (first-kind points in D/B on [1/48, 1/2])
     for b in [2.3, 3.7, 6.1] {
-        let (r_o, err) = two_plates_no_hole(b);
-        let t = separation_radius(FarModel::TwoPlates, 0.0, b, 1.0, 1e-8).unwrap();
-        assert!(
-            (t.value - r_o).abs() <= t.error + err,
-            "B/D {b}: table {} ± {:.1e}, solve {r_o} ± {err:.1e}",
-            t.value,
-            t.error
-        );
-        assert!(t.converged, "B/D {b}: bar {:.1e}", t.error);
+        assert_table_holds(FarModel::TwoPlates, b, two_plates_no_hole(b), 1e-8);
     }
 }
 
 #[test]
 fn the_single_plate_table_holds_against_fresh_no_hole_solves_out_to_wide_loads() {
+    // the build's own estimate is 4e-10 D, times the Lebesgue function: 1e-9 of R_o ≥ 2D
     for b in [2.2, 4.9, 17.0, 333.0, 4100.0] {
-        let (r_o, err) = single_plate_no_hole(b);
-        // the build's own estimate is 4e-10 D, times the Lebesgue function: 1e-9 of R_o ≥ 2D
-        let t = separation_radius(FarModel::SinglePlate, 0.0, b, 1.0, 1e-9).unwrap();
-        assert!(
-            (t.value - r_o).abs() <= t.error + err,
-            "B/D {b}: table {} ± {:.1e}, solve {r_o} ± {err:.1e}",
-            t.value,
-            t.error
-        );
-        assert!(t.converged, "B/D {b}: bar {:.1e}", t.error);
+        assert_table_holds(FarModel::SinglePlate, b, single_plate_no_hole(b), 1e-9);
     }
 }
 
