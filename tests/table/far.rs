@@ -179,3 +179,48 @@ fn the_far_table_refuses_what_it_does_not_cover_naming_the_ratio() {
         assert!(separation_radius(FarModel::SinglePlate, 0.0, 1.0, bad, 1e-6).is_err());
     }
 }
+
+/// σ_z(x, 0)/(−P) of the plane-strain slab 2D thick (D = 1) pressed on both faces over x < 0:
+/// 1/2 − (1/π)∫₀^∞ K(k) sin(kx)/k dk, K the slab's midplane kernel (the same K as the Hankel
+/// route's: the z-dependence of the symmetric slab does not know the transform), by
+/// Gauss–Legendre panels of width `panel` out to k = `end` (K ~ 2k e^(−k)).
+fn plane_strain_midplane(x: f64, panel: f64, end: f64) -> f64 {
+    let rule = boltzone::numerics::quadrature::gauss_legendre(20);
+    let mut sum = 0.0;
+    let mut a = 0.0;
+    while a < end {
+        let (h, m) = (0.5 * panel, a + 0.5 * panel);
+        for &(s, w) in rule.iter() {
+            let k = m + h * s;
+            sum += w * h * boltzone::hankel::kernel::midplane(k) * (k * x).sin() / k;
+        }
+        a += panel;
+    }
+    0.5 - sum / std::f64::consts::PI
+}
+
+#[test]
+fn the_single_plate_limit_is_the_plane_strain_edge_of_a_half_plane_load() {
+    // B/D → ∞: the load edge of the single plate is the plane-strain slab's edge of a load on
+    // x < 0, whose midplane σ_z changes sign at x₀ = g(∞): an independent formulation (a Fourier
+    // sine integral instead of the Hankel route's root beyond a disk)
+    let root = |panel: f64, end: f64| {
+        let mut f = |x: f64| Ok::<f64, ()>(plane_strain_midplane(x, panel, end));
+        let (fa, fb) = (f(0.5).unwrap(), f(1.5).unwrap());
+        assert!(
+            fa > 0.0 && fb < 0.0,
+            "no sign change on [0.5, 1.5]: {fa} {fb}"
+        );
+        boltzone::numerics::root::brent(&mut f, 0.5, fa, 1.5, fb, 1e-13, 200).unwrap()
+    };
+    let fine = root(0.25, 80.0);
+    let coarse = root(0.5, 60.0);
+    let quadrature = (fine.x - coarse.x).abs() + fine.half_width;
+    let (g, bar) = FarTable::of(FarModel::SinglePlate).g(0.0);
+    eprintln!("g(∞): table {g} ± {bar:.1e}, plane strain {} ± {quadrature:.1e}", fine.x);
+    assert!(
+        (g - fine.x).abs() <= bar + quadrature,
+        "table g(∞) = {g} ± {bar:.1e}, plane strain {} ± {quadrature:.1e}",
+        fine.x
+    );
+}
