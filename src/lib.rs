@@ -21,15 +21,18 @@
 //!    and 2 recomputed, the design map | heat through the joint: contact conductance, the
 //!    Appendix D network, conduction | the 1970 card decks of Appendices B and C, read, run and
 //!    written, and the VTU field writer;
-//! 4. [`contact`]: the report's two-plate model on the finite elements, unilateral contact
+//! 4. [`route`]: the route layer: one typed question (joint, load, interface, outputs,
+//!    [`route::Method`], tolerance) → the route that answers it and why; each route's reach and
+//!    the `auto` choice are stated here and nowhere else, and every front end asks it;
+//! 5. [`contact`]: the report's two-plate model on the finite elements, unilateral contact
 //!    found automatically, R_o resolved below one element (`boltzone two`);
-//! 5. [`hankel`] | [`fem`]: the semi-analytic slab solutions (the slab, `hankel::hole`, the
+//! 6. [`hankel`] | [`fem`]: the semi-analytic slab solutions (the slab, `hankel::hole`, the
 //!    receding contact `hankel::receding`) | the axisymmetric finite elements (the report's
 //!    Appendices A and B, the single plate);
-//! 6. [`joint`]: the plates and the joint;
-//! 7. [`material`], [`load`], [`rules`] (the 45° cone of Rötscher, the VDI 2230 cone and other
+//! 7. [`joint`]: the plates and the joint;
+//! 8. [`material`], [`load`], [`rules`] (the 45° cone of Rötscher, the VDI 2230 cone and other
 //!    cone rules), [`plot`] (SVG/PNG figures);
-//! 8. [`numerics`] (quadrature, roots, special functions, interpolation, convergence
+//! 9. [`numerics`] (quadrature, roots, special functions, interpolation, convergence
 //!    estimates), [`fortran`] (the 1970 punched cards: one fixed-column field reader, one blank
 //!    policy, the one deck error type [`fortran::DeckError`]), [`error`] (typed input
 //!    errors), [`reference`](mod@reference) (the report's Tables 1 and 2 and the Chapter V
@@ -76,11 +79,17 @@ pub mod material;
 pub mod numerics;
 pub mod plot;
 pub mod reference;
+pub mod route;
 pub mod rules;
 pub mod scene;
 pub mod table;
 pub mod units;
 pub mod value;
+
+/// README.md's Rust example, compiled and run as a doctest.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
 
 pub use error::InputError;
 pub use joint::{Joint, OuterRadius, Plate, SinglePlate};

@@ -16,7 +16,8 @@
 
 use super::exit::Status;
 use super::{
-    deck, default_case, figures, map, reference, serve, single, slab, solve, table1, table2, two,
+    deck, default_case, figures, map, materials, reference, serve, single, slab, solve, table1,
+    table2, two,
 };
 use clap::{Parser, Subcommand};
 
@@ -54,6 +55,8 @@ enum Command {
     Solve(solve::Args),
     /// Print the report's tables as stored in reference/ (data, not results).
     Reference,
+    /// List the material library scenes name: E, ν, α, k, hardness, with sources.
+    Materials(materials::Args),
 }
 
 /// Runs the chosen command; with none, the built-in default case. The status says whether
@@ -72,5 +75,6 @@ pub fn run(cli: Cli) -> anyhow::Result<Status> {
         Some(Command::Deck(a)) => deck::run(a),
         Some(Command::Solve(a)) => solve::run(a),
         Some(Command::Reference) => reference::run().map(|()| Status::Converged),
+        Some(Command::Materials(a)) => materials::run(a).map(|()| Status::Converged),
     }
 }

@@ -16,7 +16,8 @@
 
 use super::exit::usage;
 use boltzone::plot::{write_figure, Curve, CurveFigure, Marker, PALETTE};
-use boltzone::rules;
+use boltzone::route::rules_beside;
+use boltzone::OuterRadius;
 use std::path::{Path, PathBuf};
 
 /// Pixel size of the figure.
@@ -146,16 +147,10 @@ pub fn radius_figure(
 /// `d2` thick and plate radius `c` (None: infinite): the 45° cone, VDI 2230 (finite plates
 /// only: it needs the plate's diameter) and the 30° cone, each with its name.
 pub fn rule_radii((b, d, d2, c): (f64, f64, f64, Option<f64>)) -> Vec<(&'static str, f64)> {
-    let c_rule = c.unwrap_or(f64::INFINITY);
-    [
-        ("45° cone", Some(rules::roetscher(b, d, c_rule))),
-        ("VDI 2230", c.map(|c| rules::vdi2230(b, d, d2, c))),
-        (
-            "30° cone",
-            Some(rules::cone_radius(b, d, 30f64.to_radians(), c_rule)),
-        ),
-    ]
-    .into_iter()
-    .filter_map(|(name, r)| Some((name, r?.ok()?.radius)))
-    .collect()
+    let c = c.map_or(OuterRadius::Infinite, OuterRadius::Finite);
+    rules_beside::radii((b, d, d2, c), 30.0)
+        .0
+        .into_iter()
+        .map(|(name, cone)| (name, cone.radius))
+        .collect()
 }

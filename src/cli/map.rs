@@ -55,29 +55,8 @@ pub struct Args {
     /// below --tol 3e-5 and where it applies, as `two --method auto`; fem where hankel does
     /// not converge).
     /// The CSV says which method produced each value.
-    #[arg(long, value_enum, default_value_t = MethodArg::Fem)]
-    method: MethodArg,
-}
-
-/// Values of `--method`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-enum MethodArg {
-    /// Finite elements for both models.
-    Fem,
-    /// The Hankel routes for both models.
-    Hankel,
-    /// Hankel where it applies and converges, else fem.
-    Auto,
-}
-
-impl From<MethodArg> for Method {
-    fn from(m: MethodArg) -> Self {
-        match m {
-            MethodArg::Fem => Method::Fem,
-            MethodArg::Hankel => Method::Hankel,
-            MethodArg::Auto => Method::Auto,
-        }
-    }
+    #[arg(long, value_enum, default_value_t = Method::Fem)]
+    method: Method,
 }
 
 /// Runs `boltzone map`.
@@ -147,7 +126,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         b_over_a: axis(&args.b_over_a, 1.1, 5.0),
         c_over_a: args.c_over_a,
         tolerance: args.tol,
-        method: args.method.into(),
+        method: args.method,
         ..MapParams::default()
     };
     if let Err(e) = check_reach(&params) {
@@ -192,11 +171,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     println!(
         "methods (--method {}): single plate hankel at {sh}, fem at {sf} of {n} points; \
          two plates hankel at {th}, fem at {tf} of {n} points",
-        match args.method {
-            MethodArg::Fem => "fem",
-            MethodArg::Hankel => "hankel",
-            MethodArg::Auto => "auto",
-        }
+        args.method.as_str()
     );
     if let Some(p) = &args.csv {
         write_output(p, &map.csv())?;

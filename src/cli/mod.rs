@@ -21,6 +21,7 @@ mod friction_out;
 mod hankel_curve;
 mod joint_figs;
 mod map;
+mod materials;
 mod output;
 mod print;
 mod reference;

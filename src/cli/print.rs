@@ -79,3 +79,28 @@ pub fn write_output(path: &Path, text: &str) -> anyhow::Result<()> {
     eprintln!("wrote {}", path.display());
     Ok(())
 }
+
+/// The rules of thumb beside an R_o as one text line: each rule's radius in the length unit `l`
+/// and its error against R_o in percent, then the rules left out with the reason.
+pub fn rules_line(r: &boltzone::route::rules_beside::Rules, l: &str) -> String {
+    let applied = r.rules.iter().map(|x| {
+        let name = match x.name {
+            "cone" => format!("{:.0}° cone", x.half_angle_degrees),
+            other => other.to_string(),
+        };
+        format!(
+            "{name} {} {l} ({:+.1} ± {:.1} %)",
+            super::exit::sig(x.radius, 5),
+            x.error_percent.value,
+            x.error_percent.error
+        )
+    });
+    let left = r
+        .left_out
+        .iter()
+        .map(|x| format!("{} left out: {}", x.name, x.reason));
+    format!(
+        "rules: {}",
+        applied.chain(left).collect::<Vec<_>>().join("; ")
+    )
+}

@@ -27,18 +27,8 @@ use boltzone::fem::single::{
 };
 use boltzone::fem::ElementKind;
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
-use boltzone::hankel::SeparationParams;
+use boltzone::route::{single_plate, Method};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
-
-/// Which solver computes R_o.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Method {
-    /// Axisymmetric finite elements.
-    Fem,
-    /// Hankel transforms with a hole correction.
-    Hankel,
-}
 
 /// How the bolt head loads the faces (fem).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
@@ -65,7 +55,8 @@ pub struct Args {
     /// Plate outer radius C (default: infinite, truncated at B + 30 D).
     #[arg(long)]
     c: Option<f64>,
-    /// Solver.
+    /// Solver: fem, hankel (R_o and the midplane curve, milliseconds), or auto (hankel unless
+    /// --field, --plot or --nut rigid ask for the finite elements).
     #[arg(long, value_enum, default_value_t = Method::Fem)]
     method: Method,
     /// Element family (fem).
@@ -95,11 +86,22 @@ pub struct Args {
     out: OutputFiles,
 }
 
-/// --tol, or the method's default.
+/// The route that answers (the route layer's choice for the method asked).
+fn route(args: &Args) -> Method {
+    single_plate::plan(&single_plate::Question {
+        method: args.method,
+        field: args.out.field.is_some() || args.out.plot.is_some(),
+        rigid_nut: args.nut == Nut::Rigid,
+        thermal: false,
+    })
+    .method
+}
+
+/// --tol, or the route's default.
 fn tolerance(args: &Args) -> f64 {
-    args.tol.unwrap_or(match args.method {
-        Method::Fem => 5e-4,
+    args.tol.unwrap_or(match route(args) {
         Method::Hankel => 1e-6,
+        _ => 5e-4,
     })
 }
 
@@ -111,7 +113,7 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     if let Some(c) = args.c {
         check::outer_radius("--c", c, g.b)?;
     }
-    let nu_max = if args.method == Method::Fem {
+    let nu_max = if route(args) == Method::Fem {
         check::NU_MAX_FEM
     } else {
         0.5
@@ -125,14 +127,14 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     if args.corner_terms > 6 {
         return super::exit::usage("--corner-terms", args.corner_terms, "must lie in 0..=6");
     }
-    if args.method == Method::Hankel && args.nut != Nut::Pressure {
+    if route(args) == Method::Hankel && args.nut != Nut::Pressure {
         return super::exit::usage(
             "--nut",
             "rigid",
             "needs --method fem (the Hankel route loads the faces by a pressure)",
         );
     }
-    if (args.out.field.is_some() || args.out.plot.is_some()) && args.method == Method::Hankel {
+    if (args.out.field.is_some() || args.out.plot.is_some()) && route(args) == Method::Hankel {
         return super::exit::usage(
             "--field/--plot",
             "given",
@@ -156,7 +158,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         Material::unit(args.geom.nu)?,
         load,
     )?;
-    if args.method == Method::Hankel {
+    if route(&args) == Method::Hankel {
         return run_hankel(&args, &plate, start);
     }
     let kind = ElementKind::from(args.element);
@@ -253,15 +255,10 @@ fn run_hankel(
     plate: &SinglePlate,
     start: std::time::Instant,
 ) -> anyhow::Result<Status> {
+    let (search, params) = single_plate::hankel_params(tolerance(args));
     let params = HoleParams {
         corner_terms: args.corner_terms,
-        ..HoleParams::for_tolerance(tolerance(args))
-    };
-    let search = SeparationParams {
-        rel_tol: SeparationParams::default()
-            .rel_tol
-            .max(1e-3 * tolerance(args)),
-        ..Default::default()
+        ..params
     };
     // Every flag was checked: what the route rejects now is a plate outside its reach (e.g.
     // too thin for its quadrature budget), a limit of the method (exit 1), not bad input.

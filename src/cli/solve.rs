@@ -12,8 +12,9 @@
 //! That of the scene's routes (example 17).
 
 use super::exit::{sig, Status, UsageError};
+use boltzone::route::sanity;
 use boltzone::scene::sweep::{points, rows, solve_all, SweepPoint};
-use boltzone::scene::{read, SceneError, Solution};
+use boltzone::scene::{read, Scene, SceneError, Solution};
 use std::path::{Path, PathBuf};
 
 /// Arguments of `boltzone solve`.
@@ -31,6 +32,54 @@ pub struct Args {
     /// `plates[0].thickness`), one point per further row, in the scene's units.
     #[arg(long)]
     geometries: Option<PathBuf>,
+    /// Treat a plausibility warning (a modulus or pressure that looks like a unit slip, a
+    /// deflection beyond 1 % of the plate) as bad input: exit 2 instead of a warning on stderr.
+    #[arg(long)]
+    strict: bool,
+}
+
+/// The plausibility warnings of `scene` naming the scene keys: before solving (`s` None) of its
+/// moduli and bearing pressure in its own units, after (`s` its solution) of its deflection
+/// under the nut; with `strict` the first is refused as bad input (exit 2).
+fn warn(scene: &Scene, s: Option<&Solution>, strict: bool) -> anyhow::Result<()> {
+    let st = scene.units.stress();
+    let e = |i: usize| boltzone::scene::si::material(scene, i).map(|m| m.youngs_modulus() / st);
+    let last = scene.plates.len().saturating_sub(1);
+    let (a, b) = (scene.hole.radius, scene.load.outer_radius);
+    let p = match (scene.load.pressure, scene.load.force) {
+        (Some(p), _) => p,
+        (None, Some(f)) => f / (std::f64::consts::PI * (b * b - a * a)),
+        (None, None) => 0.0,
+    };
+    let thinner = scene
+        .plates
+        .iter()
+        .map(|p| p.thickness)
+        .fold(f64::INFINITY, f64::min);
+    let w = match s {
+        None => {
+            let e = [e(0).map_err(classify)?, e(last).map_err(classify)?];
+            sanity::inputs(scene.units, e, p)
+        }
+        Some(s) => s
+            .nut_deflection
+            .and_then(|d| sanity::deflection(d, thinner))
+            .into_iter()
+            .collect(),
+    };
+    for w in w {
+        let key = match w.slip {
+            sanity::Slip::Modulus { plate } => format!("plates[{}].material", plate.min(last)),
+            sanity::Slip::Pressure if scene.load.force.is_some() => "load.force".into(),
+            sanity::Slip::Pressure => "load.pressure".into(),
+            sanity::Slip::Deflection => "load".into(),
+        };
+        if strict {
+            return Err(UsageError(format!("{key}: {} (--strict)", w.message)).into());
+        }
+        eprintln!("warning: {key}: {}", w.message);
+    }
+    Ok(())
 }
 
 /// Bad input becomes a [`UsageError`] (exit 2); a solver failure stays as it is (exit 1).
@@ -51,8 +100,10 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         None => points(&text).map_err(classify)?,
     };
     let base = &pts[0].scene;
+    warn(base, None, args.strict)?;
     if pts.len() == 1 && pts[0].values.is_empty() {
         let s = boltzone::solve(base).map_err(classify)?;
+        warn(base, Some(&s), args.strict)?;
         if let Some(path) = &base.outputs.interface_pressure {
             super::write_output(path, &curve_csv(&pts, &[Ok(s.clone())], &args.scene))?;
         }
@@ -159,6 +210,7 @@ fn print_text(s: &Solution) {
     if let Some(d) = s.nut_deflection {
         println!("deflection under the nut: {d:.4e} {}", s.length_unit);
     }
+    println!("{}", super::print::rules_line(&s.rules, s.length_unit));
     if let (Some(g), Some(u)) = (s.joint_conductance, s.conductance_unit) {
         println!(
             "joint conductance (integral of h_c dA over the contact zone): {} {u}",

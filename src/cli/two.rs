@@ -23,13 +23,13 @@ use super::args::Units;
 use super::check;
 use super::exit::{sig, usage, Status};
 use super::joint_figs::JointFigure;
-use super::two_args::Method;
 pub use super::two_args::{Args, Interface, Shape};
 use boltzone::contact::two_plate::{
-    solve, solve_field, EdgeSupport, InterfaceModel, Loading, TwoPlateField, TwoPlateParams,
-    TwoPlateSolution,
+    solve, solve_field, InterfaceModel, Loading, TwoPlateField, TwoPlateParams, TwoPlateSolution,
 };
 use boltzone::fem::ElementKind;
+use boltzone::route::{rules_beside, sanity, two_plate, Method};
+use boltzone::Value;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Peak, Plate};
 use std::f64::consts::PI;
 
@@ -116,7 +116,7 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     }
     if args.method == Method::Hankel {
         if let Some((flag, value, why)) = super::two_hankel::unsupported(args) {
-            return super::exit::usage(flag, value, why);
+            return super::exit::usage(flag, value, &why);
         }
     }
     args.out.check()?;
@@ -126,59 +126,94 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Runs the command.
-pub fn run(args: Args) -> anyhow::Result<Status> {
-    let start = std::time::Instant::now();
-    check_args(&args)?;
+/// The bearing pressure P of the arguments (--p, or --force spread over the bearing face).
+fn pressure(args: &Args) -> f64 {
+    match args.force {
+        Some(f) => f / (PI * (args.geom.b * args.geom.b - args.geom.a * args.geom.a)),
+        None => args.p,
+    }
+}
+
+/// The joint of checked arguments (the --units lengths and stresses).
+pub(super) fn joint(args: &Args) -> anyhow::Result<Joint> {
     let upper_mat = Material::new(args.e(), args.geom.nu)?;
     let lower_mat = Material::new(
         args.e2.unwrap_or(args.e()),
         args.nu2.unwrap_or(args.geom.nu),
     )?;
-    let p = match args.force {
-        Some(f) => f / (PI * (args.geom.b * args.geom.b - args.geom.a * args.geom.a)),
-        None => args.p,
-    };
+    let (a, b, p) = (args.geom.a, args.geom.b, pressure(args));
     let load = match args.load {
-        Shape::Uniform => FaceLoad::uniform(args.geom.a, args.geom.b, p)?,
-        Shape::PeakA => FaceLoad::triangular(args.geom.a, args.geom.b, p, Peak::AtA)?,
-        Shape::PeakB => FaceLoad::triangular(args.geom.a, args.geom.b, p, Peak::AtB)?,
+        Shape::Uniform => FaceLoad::uniform(a, b, p)?,
+        Shape::PeakA => FaceLoad::triangular(a, b, p, Peak::AtA)?,
+        Shape::PeakB => FaceLoad::triangular(a, b, p, Peak::AtB)?,
     };
-    let hankel = match args.method {
-        Method::Fem => false,
-        Method::Hankel => true,
-        Method::Auto => {
-            args.tol < boltzone::scene::two_hankel::AUTO_BELOW
-                && super::two_hankel::unsupported(&args).is_none()
-        }
-    };
-    // `auto` hands a joint the semi-analytic route declines to the finite elements, saying why
-    let mut fallback = None;
-    if hankel {
-        let ran = match (args.geom.a <= 0.0, args.c) {
-            (true, Some(c)) => super::two_rim::run(&args, c, load.clone(), start),
-            (true, None) => super::two_pair::run(&args, load.clone(), start),
-            (false, _) => super::two_hankel::run(&args, load.clone(), start),
-        };
-        match ran {
-            Err(e) if args.method == Method::Auto => {
-                let why = e.downcast::<super::exit::Declined>()?.0;
-                fallback = Some(format!(
-                    "the Hankel route declined ({why}); the finite elements answer"
-                ));
-            }
-            ran => return ran,
-        }
-    }
-    let joint = Joint::new(
-        args.geom.a,
+    Ok(Joint::new(
+        a,
         args.c.map_or(OuterRadius::Infinite, OuterRadius::Finite),
         Plate::new(args.geom.d, upper_mat)?,
         Plate::new(args.d2.unwrap_or(args.geom.d), lower_mat)?,
         load,
-    )?;
-    let params = TwoPlateParams {
-        element: ElementKind::from(args.element),
+    )?)
+}
+
+/// The rules of thumb beside `r_o` (the route layer's [`rules_beside::beside`], the 30° cone
+/// third) for the arguments' B, D, D₂, C.
+pub(super) fn rules(args: &Args, r_o: Value) -> rules_beside::Rules {
+    let g = &args.geom;
+    let c = args.c.map_or(OuterRadius::Infinite, OuterRadius::Finite);
+    rules_beside::beside((g.b, g.d, args.d2.unwrap_or(g.d), c), 30.0, r_o)
+}
+
+/// Adds the rules of thumb beside the JSON answer `out` (its `r_o`, `r_o_error`, `converged`):
+/// keys `rules` ([{name, half_angle_degrees, radius, truncated, error_percent}]) and, where a
+/// rule does not apply, `rules_left_out` ([{name, reason}]).
+pub(super) fn add_rules(out: &mut serde_json::Value, args: &Args) -> anyhow::Result<()> {
+    let r_o = Value {
+        value: out["r_o"].as_f64().unwrap_or(f64::NAN),
+        error: out["r_o_error"].as_f64().unwrap_or(f64::NAN),
+        converged: out["converged"].as_bool().unwrap_or(false),
+    };
+    if let (serde_json::Value::Object(m), serde_json::Value::Object(r)) =
+        (out, serde_json::to_value(rules(args, r_o))?)
+    {
+        m.extend(r);
+    }
+    Ok(())
+}
+
+/// Prints the rules of thumb beside `r_o`, one line (text output).
+pub(super) fn print_rules(args: &Args, r_o: Value) {
+    println!(
+        "{}",
+        super::print::rules_line(&rules(args, r_o), args.units.length())
+    );
+}
+
+/// Prints the plausibility warnings `w` on stderr naming their flags, or with `--strict`
+/// refuses the first as bad input (exit 2).
+pub(super) fn warn(args: &Args, w: &[sanity::Warning]) -> anyhow::Result<()> {
+    for w in w {
+        let (flag, value) = match w.slip {
+            sanity::Slip::Modulus { plate: 0 } => ("--e", args.e()),
+            sanity::Slip::Modulus { .. } => ("--e2", args.e2.unwrap_or(args.e())),
+            sanity::Slip::Pressure => match args.force {
+                Some(f) => ("--force", f),
+                None => ("--p", args.p),
+            },
+            sanity::Slip::Deflection => ("--p/--force/--e", pressure(args)),
+        };
+        if args.strict {
+            return super::exit::usage(flag, value, &format!("{} (--strict)", w.message));
+        }
+        eprintln!("warning: {flag} = {value}: {}", w.message);
+    }
+    Ok(())
+}
+
+/// The route layer's question of the arguments on their `joint`.
+pub(super) fn question<'a>(args: &Args, joint: &'a Joint) -> two_plate::Question<'a> {
+    two_plate::Question {
+        joint,
         interface: match args.interface {
             Interface::Welded => InterfaceModel::Welded,
             Interface::Frictionless => InterfaceModel::Frictionless,
@@ -189,19 +224,56 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         loading: args
             .nut_displacement
             .map_or(Loading::Pressure, Loading::NutDisplacement),
-        edge: if args.fixed_edge {
-            EdgeSupport::Fixed
-        } else {
-            EdgeSupport::Free
-        },
+        fixed_edge: args.fixed_edge,
+        thermal: false,
+        field: args.out.field.is_some() || args.out.plot.is_some() || args.report.is_some(),
+        conductance: false,
+        method: args.method,
         tolerance: args.tol,
-        ..Default::default()
+    }
+}
+
+/// Runs the command.
+pub fn run(args: Args) -> anyhow::Result<Status> {
+    let start = std::time::Instant::now();
+    check_args(&args)?;
+    let p_given = match args.nut_displacement {
+        Some(_) => 0.0,
+        None => pressure(&args),
+    };
+    let e = [args.e(), args.e2.unwrap_or(args.e())];
+    warn(&args, &sanity::inputs(args.units.units, e, p_given))?;
+    let joint = joint(&args)?;
+    let q = question(&args, &joint);
+    let p = pressure(&args);
+    let load = joint.load().clone();
+    let hankel = two_plate::plan(&q).is_ok_and(|plan| plan.method == Method::Hankel);
+    // `auto` hands a joint the semi-analytic route declines to the finite elements, saying why
+    let mut fallback = None;
+    if hankel {
+        let ran = match (args.geom.a <= 0.0, args.c) {
+            (true, Some(c)) => super::two_rim::run(&args, c, load.clone(), start),
+            (true, None) => super::two_pair::run(&args, load.clone(), start),
+            (false, _) => super::two_hankel::run(&args, load.clone(), start),
+        };
+        match ran {
+            Err(e) if two_plate::fall_back(args.method, true, true) => {
+                let why = e.downcast::<super::exit::Declined>()?.0;
+                fallback = Some(format!(
+                    "the Hankel route declined ({why}); the finite elements answer"
+                ));
+            }
+            ran => return ran,
+        }
+    }
+    let params = TwoPlateParams {
+        element: ElementKind::from(args.element),
+        ..q.fem_params()
     };
     let html = args.report.as_ref().is_some_and(|p| is_html(p));
     // welded dissimilar plates: the contact problem can be defective (an oscillatory edge
     // singularity); the message says what to use instead
-    let welded_dissimilar =
-        matches!(args.interface, Interface::Welded) && !super::two_pair::equal_plates(&args);
+    let welded_dissimilar = matches!(args.interface, Interface::Welded) && !q.equal_plates();
     let hint = |e: boltzone::contact::ContactError| -> anyhow::Error {
         match welded_dissimilar {
             true => anyhow::anyhow!(
@@ -271,6 +343,13 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         };
         super::write_output(path, &text)?;
     }
+    let thinner = args.d2.map_or(args.geom.d, |d2| d2.min(args.geom.d));
+    warn(
+        &args,
+        &sanity::deflection(s.nut_deflection, thinner)
+            .into_iter()
+            .collect::<Vec<_>>(),
+    )?;
     let Some(last) = s.info.levels.last() else {
         anyhow::bail!("the two-plate solver returned no mesh level");
     };
@@ -305,6 +384,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             super::friction_out::json(&mut out, &s, f)?;
         }
         out["bearing_pressure"] = p.into();
+        add_rules(&mut out, &args)?;
         super::output::stamp(&mut out, &args.inputs()?, start)?;
         super::print_json(&out)?;
     } else {
@@ -349,6 +429,12 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             println!("{}", super::friction_out::summary(&s, f, l));
         }
         println!("deflection under the nut: {:.4e} {l}", s.nut_deflection);
+        let r_o = Value {
+            value: s.r_o,
+            error: s.r_o_error,
+            converged: s.converged,
+        };
+        print_rules(&args, r_o);
         if let Some(why) = &fallback {
             println!("method auto: {why}");
         }

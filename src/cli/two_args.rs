@@ -15,21 +15,8 @@ use super::args::{Element, Geometry, OutputFiles, Units};
 use clap::ValueEnum;
 use std::path::PathBuf;
 
-/// Which solver computes R_o.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Method {
-    /// Axisymmetric finite elements with unilateral contact.
-    Fem,
-    /// Hankel transforms: bilateral holed plate + crack field + hole correction.
-    Hankel,
-    /// Hankel where it applies (equal plates with a hole, or any two plates without one in
-    /// frictionless contact; a pressure load; R_o and the curve only) and the tolerance is
-    /// below 3e-5 (where the FE's estimate, which carries 2e-5 of R_o, cannot claim it), else
-    /// fem; also fem, with the reason in the output (JSON `fallback`), where the Hankel route
-    /// declines the joint: no contact radius found, or with a hole its modes left unresolved.
-    Auto,
-}
+/// Which solver computes R_o: the route layer's one method enum.
+pub use boltzone::route::Method;
 
 /// Interface model between unequal or dissimilar plates.
 #[derive(Debug, Clone, Copy, ValueEnum, serde::Serialize)]
@@ -112,10 +99,11 @@ pub struct Args {
     /// Wanted relative error of R_o.
     #[arg(long, default_value_t = 5e-4)]
     pub(super) tol: f64,
-    /// Solver: fem, hankel (infinite plates, R_o only: equal plates with a hole, seconds not
-    /// milliseconds; or, with --a 0, any two plates in frictionless contact, milliseconds) or
-    /// auto (hankel where it applies and --tol is below 3e-5).
-    #[arg(long, value_enum, default_value_t = Method::Fem)]
+    /// Solver: fem, hankel (R_o and the interface pressure: equal plates with a hole, seconds
+    /// not milliseconds; or, with --a 0, any two plates in frictionless contact, milliseconds)
+    /// or auto (the default: hankel where it applies and --tol is below 3e-5, else fem; fem
+    /// also where the Hankel route declines the joint, with the reason in JSON `fallback`).
+    #[arg(long, value_enum, default_value_t = Method::Auto)]
     pub(super) method: Method,
     /// Curve, field and figure files.
     #[command(flatten)]
@@ -129,4 +117,8 @@ pub struct Args {
     /// Print the result as JSON.
     #[arg(long)]
     pub(super) json: bool,
+    /// Treat a plausibility warning (a modulus or pressure that looks like a unit slip, a
+    /// deflection beyond 1 % of the plate) as bad input: exit 2 instead of a warning on stderr.
+    #[arg(long)]
+    pub(super) strict: bool,
 }

@@ -13,95 +13,47 @@
 //!
 //! The holed route's with the knobs for --tol ([`two_plate_hole_to`]: tighter knobs only where
 //! those fall short, none of Table 1's rows), per Table 1
-//! geometry (2026-11-25, load 1.5–2.5; module `hankel::receding::holed`'s Cost): 0.06–0.11 s
+//! geometry (load 1.5–2.5; module `hankel::receding::holed`'s Cost): 0.06–0.11 s
 //! of CPU at --tol 1e-3, 0.35–0.77 s at 1e-6 (all twelve converged), with --c 1.54 1.0–2.0 s at
 //! 1e-6; 1.4–2.2 s at 1e-8 (every row converged there; load 9–12, before the hole tables);
 //! timed by example 19.
 
 use super::exit::{declined, sig, Status};
-use super::two_args::{Args, Method};
+use super::two_args::Args;
 use boltzone::hankel::receding::holed::two_plate_hole_to;
-use boltzone::hankel::receding::{MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
+use boltzone::route::two_plate::{self, Key};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+use clap::ValueEnum;
 
-/// Why the Hankel route does not apply to these arguments: (flag, value, reason).
-pub fn unsupported(args: &Args) -> Option<(&'static str, String, &'static str)> {
+/// Why the Hankel routes do not take these arguments: (flag, value, reason), the route layer's
+/// [`two_plate::hankel_blocker`] with its input named by the flag. Arguments whose joint
+/// cannot be built are left to the other checks.
+pub fn unsupported(args: &Args) -> Option<(&'static str, String, String)> {
+    let joint = super::two::joint(args).ok()?;
+    let b = two_plate::hankel_blocker(&super::two::question(args, &joint))?;
     let g = &args.geom;
-    let why = "needs --method fem (the Hankel route: infinite plates pressed by a pressure, R_o \
-               only; with a hole two equal plates, without one (--a 0) any two plates in \
-               frictionless contact)";
-    let differs = |x: Option<f64>, y: f64| x.is_some_and(|v| v != y);
-    let unequal = [
-        ("--d2", args.d2, differs(args.d2, g.d)),
-        ("--e2", args.e2, differs(args.e2, args.e())),
-        ("--nu2", args.nu2, differs(args.nu2, g.nu)),
-    ];
-    let refusal = if g.a <= 0.0 {
-        super::two_pair::unsupported(args, why)
-    } else {
-        unequal
-            .into_iter()
-            .find(|u| u.2)
-            .map(|(flag, value, _)| (flag, format!("{value:?}"), why))
+    let given = || "given".to_string();
+    let (flag, value) = match b.key {
+        Key::LowerThickness => ("--d2", args.d2.unwrap_or(g.d).to_string()),
+        Key::LowerModulus => ("--e2", args.e2.unwrap_or(args.e()).to_string()),
+        Key::LowerPoisson => ("--nu2", args.nu2.unwrap_or(g.nu).to_string()),
+        Key::Interface => (
+            "--interface",
+            args.interface
+                .to_possible_value()
+                .map_or_else(String::new, |v| v.get_name().to_string()),
+        ),
+        Key::OuterRadius => ("--c", args.c.map_or_else(given, |c| c.to_string())),
+        Key::HoleRadius => ("--a", g.a.to_string()),
+        Key::LoadOuterRadius => ("--b", g.b.to_string()),
+        Key::NutDisplacement => (
+            "--nut-displacement",
+            args.nut_displacement.map_or_else(given, |n| n.to_string()),
+        ),
+        Key::OuterEdge => ("--fixed-edge", given()),
+        Key::Field | Key::Temperature | Key::Conductance => ("--field/--plot/--report", given()),
     };
-    if refusal.is_some() {
-        return refusal;
-    }
-    if g.a > 0.0 && g.a < MIN_A_OVER_D * g.d {
-        return Some((
-            "--a",
-            g.a.to_string(),
-            "is below the Hankel route's smallest hole (A at least 0.04 plate thicknesses: \
-             smaller holes left residual tractions of 1e1-1e4 P on the hole); use --method fem \
-             or --a 0 (the receding contact, within A² of it)",
-        ));
-    }
-    if g.a > 0.0 && g.b > MAX_B_OVER_D * g.d {
-        return Some((
-            "--b",
-            g.b.to_string(),
-            "is beyond the Hankel route's reach with a hole (B at most 16 plate thicknesses: \
-             its cost grows like (B/D)², 4.7 s and 0.6 GB at 16, 18 s and 2.0 GB at 32); use \
-             --method fem",
-        ));
-    }
-    if let Some(c) = args.c {
-        if g.a <= 0.0 && !super::two_pair::equal_plates(args) {
-            return Some((
-                "--c",
-                c.to_string(),
-                "needs --method fem with unequal plates (the Hankel route's finite rim takes \
-                 two equal plates, with or without a hole)",
-            ));
-        }
-        if g.b > MAX_B_OVER_D_RIM * g.d {
-            return Some((
-                "--b",
-                g.b.to_string(),
-                "is beyond the Hankel route's reach with a finite rim --c (B at most 8 plate \
-                 thicknesses: the rim's cost grows like (B/D)², with a hole 10.5 s at 8, 35 s \
-                 at 16; without one 1.6 s at 8, 9.9 s at 16, 55 s at 32); use --method fem",
-            ));
-        }
-        if c <= g.b + g.d {
-            return Some((
-                "--c",
-                c.to_string(),
-                "must exceed --b by more than --d for the Hankel route's finite rim (its rim \
-                 residue decays over C - R_o); use --method fem",
-            ));
-        }
-    }
-    if let Some(n) = args.nut_displacement {
-        return Some(("--nut-displacement", n.to_string(), why));
-    }
-    if args.fixed_edge {
-        return Some(("--fixed-edge", "given".into(), why));
-    }
-    if args.out.field.is_some() || args.out.plot.is_some() || args.report.is_some() {
-        return Some(("--field/--plot/--report", "given".into(), why));
-    }
-    None
+    Some((flag, value, format!("{}; use --method fem", b.reason)))
 }
 
 /// Points of the `--curve` (plus one).
@@ -127,8 +79,8 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
         None => Vec::new(),
     };
     let (out, curve) = two_plate_hole_to(&plate, args.tol, &at).map_err(declined)?;
-    if args.method == Method::Auto && !out.info.hole_resolved {
-        return Err(declined(boltzone::scene::two_hankel::UNRESOLVED));
+    if two_plate::fall_back(args.method, false, out.info.hole_resolved) {
+        return Err(declined(two_plate::UNRESOLVED));
     }
     let converged = out.meets(args.tol);
     if let Some(path) = &args.out.curve {
@@ -153,6 +105,7 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
             "seconds": out.info.seconds,
             "units": args.units.units.name(),
         });
+        super::two::add_rules(&mut v, args)?;
         super::output::stamp(&mut v, &args.inputs()?, start)?;
         super::print_json(&v)?;
     } else {
@@ -180,6 +133,12 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
             out.info.solves,
             out.info.seconds
         );
+        let r_o = boltzone::Value {
+            value: out.r_o,
+            error: out.info.r_o_error,
+            converged,
+        };
+        super::two::print_rules(args, r_o);
         if let Some(rim) = out.info.rim {
             println!(
                 "rim C = {} {l}: R_o - R_o(infinite plate) = {:+.4e} {l} (bending correction; its \

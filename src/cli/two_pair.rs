@@ -16,46 +16,12 @@
 //! seconds at B ≈ 8 thicknesses of the thinner plate.
 
 use super::exit::{sig, Status};
-use super::two_args::{Args, Interface};
+use super::two_args::Args;
 use boltzone::hankel::receding::{Pair, RecedingParams};
 use boltzone::{FaceLoad, Material, Plate};
-use clap::ValueEnum;
 
 /// Points of the `--curve` (plus one).
 const CURVE_POINTS: usize = 100;
-
-/// Why the route does not take these arguments (the flags shared with the holed route are
-/// checked by [`super::two_hankel::unsupported`]): an interface other than frictionless
-/// between unequal plates, or a load wider than the route's basis reaches.
-pub fn unsupported(args: &Args, why: &'static str) -> Option<(&'static str, String, &'static str)> {
-    let g = &args.geom;
-    if !equal_plates(args) && !matches!(args.interface, Interface::Frictionless) {
-        let name = args
-            .interface
-            .to_possible_value()
-            .map_or_else(String::new, |v| v.get_name().to_string());
-        return Some(("--interface", name, why));
-    }
-    let reach = "is beyond the Hankel route's reach without a hole (B + 2D of the thicker \
-                 plate at most 64 thicknesses of the thinner); use --method fem";
-    let fits = || -> Option<usize> {
-        let pair = Pair::new(
-            Plate::new(g.d, Material::unit(0.3).ok()?).ok()?,
-            Plate::new(args.d2.unwrap_or(g.d), Material::unit(0.3).ok()?).ok()?,
-            FaceLoad::uniform(0.0, g.b, 1.0).ok()?,
-        );
-        pair.basis_size(&RecedingParams::default()).ok()
-    };
-    fits().is_none().then(|| ("--b", g.b.to_string(), reach))
-}
-
-/// Whether the lower plate's --d2, --e2, --nu2 (where given) equal the upper plate's.
-pub fn equal_plates(args: &Args) -> bool {
-    let g = &args.geom;
-    args.d2.is_none_or(|d| d == g.d)
-        && args.e2.is_none_or(|e| e == args.e())
-        && args.nu2.is_none_or(|n| n == g.nu)
-}
 
 /// The `--curve`'s radii on [0, R_o], denser toward R_o (q ~ √(R_o − r)).
 pub fn curve_radii(r_o: f64) -> Vec<f64> {
@@ -64,8 +30,14 @@ pub fn curve_radii(r_o: f64) -> Vec<f64> {
         .collect()
 }
 
-/// The text output's first line: R_o, its estimate, 2R_o, in the length unit.
+/// The text output's first lines: R_o, its estimate, 2R_o, in the length unit, and the rules of
+/// thumb beside it.
 pub fn print_r_o(args: &Args, r_o: f64, error: f64, converged: bool) {
+    let value = boltzone::Value {
+        value: r_o,
+        error,
+        converged,
+    };
     let l = args.units.length();
     let note = if converged {
         ""
@@ -77,6 +49,7 @@ pub fn print_r_o(args: &Args, r_o: f64, error: f64, converged: bool) {
         sig(r_o, 10),
         sig(2.0 * r_o, 10),
     );
+    super::two::print_rules(args, value);
 }
 
 /// Runs the route on checked arguments with bearing pressure `load`.
@@ -147,6 +120,7 @@ pub fn print_json(
         "seconds": seconds,
         "units": args.units.units.name(),
     });
+    super::two::add_rules(&mut v, args)?;
     super::output::stamp(&mut v, &args.inputs()?, start)?;
     super::print_json(&v)?;
     Ok(Status::from_converged(converged))

@@ -23,7 +23,7 @@ use super::route::{self, Method, Route};
 use super::{single, CompareError, Geometry};
 use crate::error::positive;
 use crate::joint::OuterRadius;
-use crate::rules;
+use crate::route::rules_beside;
 use crate::value::Value;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -54,20 +54,9 @@ impl Default for CompareParams {
     }
 }
 
-/// A rule of thumb's contact radius and its error against the two-plate R_o.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct RuleResult {
-    /// "45° (Rötscher)", "VDI 2230" or "30° cone".
-    pub name: &'static str,
-    /// Cone half-angle, degrees.
-    pub half_angle_degrees: f64,
-    /// The rule's contact radius.
-    pub radius: f64,
-    /// Whether the cone reached the rim C (radius = C).
-    pub truncated: bool,
-    /// (R_rule − R_two)/R_two·100, with the two-plate error propagated.
-    pub error_percent: Value,
-}
+/// A rule of thumb's contact radius and its error against the two-plate R_o (the route
+/// layer's, as every front end prints them).
+pub use crate::route::rules_beside::RuleResult;
 
 /// Timings and sizes of one comparison.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -185,21 +174,20 @@ pub fn compare(g: &Geometry, params: &CompareParams) -> Result<Comparison, Compa
     let pair = route::two(&g, params.method, params.tolerance)?;
     let two = pair.value;
     let seconds_two = t.elapsed().as_secs_f64();
-    let rule = |name, cone: rules::ConeRadius| RuleResult {
-        name,
-        half_angle_degrees: cone.half_angle.to_degrees(),
-        radius: cone.radius,
-        truncated: cone.truncated,
-        error_percent: percent_difference(Value::exact(cone.radius), two),
+    let beside = rules_beside::beside(
+        (g.b, g.d, g.d, OuterRadius::Finite(g.c)),
+        params.cone_degrees,
+        two,
+    );
+    let rules: [RuleResult; 3] = match (beside.rules.try_into(), beside.left_out.first()) {
+        (Ok(rules), _) => rules,
+        (Err(_), left_out) => {
+            return Err(CompareError::Rule {
+                geometry: label(),
+                reason: left_out.map_or_else(String::new, |r| format!("{}: {}", r.name, r.reason)),
+            })
+        }
     };
-    let rules = [
-        rule("45° (Rötscher)", rules::roetscher(g.b, g.d, g.c)?),
-        rule("VDI 2230", rules::vdi2230(g.b, g.d, g.d, g.c)?),
-        rule(
-            "cone",
-            rules::cone_radius(g.b, g.d, params.cone_degrees.to_radians(), g.c)?,
-        ),
-    ];
     Ok(Comparison {
         geometry: g,
         single,

@@ -69,6 +69,15 @@ pub enum CompareError {
         /// What failed.
         source: ContactError,
     },
+    /// A rule of thumb cannot be applied to the geometry (bad input: VDI 2230's correlation
+    /// gives no cone there).
+    #[error("rules of thumb at {geometry}: {reason}")]
+    Rule {
+        /// The geometry.
+        geometry: String,
+        /// The rule and why.
+        reason: String,
+    },
 }
 
 impl CompareError {
@@ -80,7 +89,7 @@ impl CompareError {
             Self::Hankel { source, .. } => source.is_input(),
             Self::Two { source, .. } => source.is_input(),
             Self::TwoHankel { source, .. } => source.is_input(),
-            Self::OutOfReach { .. } => true,
+            Self::OutOfReach { .. } | Self::Rule { .. } => true,
         }
     }
 }

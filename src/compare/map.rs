@@ -21,7 +21,7 @@
 //!
 //! About 20 ms of CPU per point at 1e-3 by the FE, both models (the default 40 × 40 map: 31.6 s of
 //! CPU, 15.9 s of wall time on the two cores; 42.0 s and 21.1 s before the FE's assembly and
-//! factorization work, measured by turns on 2026-11-25 at load 0.6–1.5, means of two rounds);
+//! factorization work, measured by turns at load 0.6–1.5, means of two rounds);
 //! example 13 times both models point by point against the error they achieve. By `hankel` the
 //! two-plate route with the rim dominates: 1.1–3.2 s of CPU per point at 1e-3, growing with B/D
 //! (10 × 10 map, every two-plate point by that route where it reaches: 143 s of CPU against the

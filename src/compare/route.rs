@@ -6,19 +6,20 @@
 //!
 //! - **single plate** (2D thick, both faces pressed): by FE, [`super::single::single_fem`]; by
 //!   Hankel, [`crate::hankel::hole::single_plate_separation`] with `OuterRadius::Finite(C)` and
-//!   [`HoleParams::for_tolerance`] (what `single --method hankel` and the scenes use): the rim
+//!   the route layer's knobs for the tolerance ([`single_plate::hankel_params`], what
+//!   `single --method hankel` and the scenes use): the rim
 //!   is bounded when it is too far to move R_o by a tenth of the tolerance and fitted
 //!   otherwise ([`crate::hankel::hole::rim`]), so the route has no reach limit of its own;
 //! - **two plates** (frictionless, equal): by FE, [`crate::contact::two_plate::solve`]; by
 //!   Hankel, [`crate::hankel::receding::holed::two_plate_hole_to`] with its rim C (module
 //!   `rim_holed`): the knobs for the tolerance, tighter ones when they fall short. Its reach
-//!   ([`two_hankel_reach`]): A/D ≥ [`MIN_A_OVER_D`], B/D ≤ [`MAX_B_OVER_D_RIM`] (a finite
-//!   rim), C > B + D.
+//!   ([`two_hankel_reach`]) is the route layer's [`two_plate::hankel_blocker`], named by the
+//!   ratio that blocks it.
 //!
 //! [`Method::Auto`] takes the single plate's Hankel route, and the two plates' Hankel route
-//! where it applies — decided up front by the reach above — and below a tolerance of
-//! [`AUTO_BELOW`] (3e-5), as `two --method auto` and a scene's `method = "auto"` do
-//! ([`two_takes_hankel`]: above it the FE is several times faster and claims the tolerance);
+//! where it applies and below a tolerance of [`two_plate::AUTO_BELOW`] (3e-5), the route layer's
+//! choice ([`two_plate::takes_hankel`], as `two` and a scene's `method = "auto"`: above it the
+//! FE is several times faster and claims the tolerance);
 //! it falls back to the FE when a Hankel route fails or returns an estimate above the tolerance
 //! (`converged = false`). [`Method::Hankel`] refuses a point out of reach as bad
 //! input naming the point ([`super::CompareError::OutOfReach`]) and keeps a not-converged
@@ -49,7 +50,7 @@
 //!
 //! ```
 //! use boltzone::compare::{two_hankel_reach, Geometry, Method};
-//! assert_eq!(Method::default(), Method::Fem);
+//! assert_eq!(Method::default(), Method::Auto);
 //! let g = Geometry::from_ratios(0.1, 1.0, 2.2, 1.54, 0.3)?;        // B/D = 2.2
 //! assert!(two_hankel_reach(&g).is_ok());
 //! let wide = Geometry::from_ratios(0.1, 5.0, 2.2, 1.54, 0.3)?;     // B/D = 11 with a rim
@@ -60,69 +61,33 @@
 use super::single::{single_fem, FemStudy};
 use super::{CompareError, Geometry};
 use crate::contact::two_plate::{solve as solve_two, TwoPlateParams};
-use crate::hankel::hole::{single_plate_separation, HoleParams};
+use crate::hankel::hole::single_plate_separation;
 use crate::hankel::receding::holed::two_plate_hole_to;
-use crate::hankel::receding::{AUTO_BELOW, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
-use crate::hankel::separation::SeparationParams;
 use crate::joint::OuterRadius;
+use crate::route::single_plate;
+use crate::route::two_plate::{self, Key};
 use crate::value::Value;
-use serde::Serialize;
 
-/// How a comparison computes each model's R_o (module docs).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Method {
-    /// Finite elements for both models (the default).
-    #[default]
-    Fem,
-    /// The Hankel routes for both models; a point beyond a route's reach is refused.
-    Hankel,
-    /// Each model's Hankel route where it applies and converges, else the FE.
-    Auto,
-}
+pub use crate::route::{Method, Route};
 
-/// The method that produced one model's value.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Route {
-    /// Finite elements.
-    Fem,
-    /// The semi-analytic Hankel route.
-    Hankel,
-}
-
-impl Route {
-    /// "fem" or "hankel" (the CSV's spelling).
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Self::Fem => "fem",
-            Self::Hankel => "hankel",
-        }
-    }
-}
-
-/// Why the two-plate Hankel route with a rim does not reach `g` (module docs), or Ok.
+/// Why the two-plate Hankel route with a rim does not reach `g` (the route layer's
+/// [`two_plate::hankel_blocker`], named by the ratio that blocks it), or Ok.
 pub fn two_hankel_reach(g: &Geometry) -> Result<(), String> {
-    let (ad, bd) = (g.a / g.d, g.b / g.d);
-    if ad < MIN_A_OVER_D {
-        return Err(format!(
-            "A/D = {ad} is below the two-plate Hankel route's smallest hole ({MIN_A_OVER_D})"
-        ));
-    }
-    if bd > MAX_B_OVER_D_RIM {
-        return Err(format!(
-            "B/D = {bd} is beyond the two-plate Hankel route's reach with a finite rim \
-             (at most {MAX_B_OVER_D_RIM})"
-        ));
-    }
-    if g.c <= g.b + g.d {
-        return Err(format!(
-            "C = {} is within one plate thickness of B = {} (the two-plate Hankel route's \
-             rim needs C > B + D)",
-            g.c, g.b
-        ));
-    }
-    Ok(())
+    let joint = g.joint().map_err(|e| e.to_string())?;
+    let q = two_plate::Question {
+        method: Method::Hankel,
+        ..two_plate::Question::new(&joint, 1e-3)
+    };
+    let Some(b) = two_plate::hankel_blocker(&q) else {
+        return Ok(());
+    };
+    let what = match b.key {
+        Key::HoleRadius => format!("A/D = {}", g.a / g.d),
+        Key::LoadOuterRadius => format!("B/D = {}", g.b / g.d),
+        Key::OuterRadius => format!("C = {} (B = {}, D = {})", g.c, g.b, g.d),
+        other => format!("{other:?}"),
+    };
+    Err(format!("{what}: {}", b.reason))
 }
 
 /// One model's R_o, the route that produced it, and the FE study's sizes (zero for Hankel).
@@ -135,28 +100,28 @@ pub(super) struct ModelResult {
 }
 
 /// A Hankel route's outcome under `method`: kept by [`Method::Hankel`] (its failure as the
-/// comparison's error, `error`), kept by `auto` only when it converged (else None: the FE).
+/// comparison's error, `error`), kept by `auto` only when it converged (else None: the FE,
+/// [`two_plate::fall_back`]).
 fn keep<E>(
     method: Method,
     outcome: Result<ModelResult, E>,
     error: impl FnOnce(E) -> CompareError,
 ) -> Result<Option<ModelResult>, CompareError> {
-    match outcome {
-        Ok(r) if method == Method::Hankel || r.value.converged => Ok(Some(r)),
-        Err(e) if method == Method::Hankel => Err(error(e)),
-        _ => Ok(None),
+    let (failed, trusted) = match &outcome {
+        Ok(r) => (false, r.value.converged),
+        Err(_) => (true, false),
+    };
+    if two_plate::fall_back(method, failed, trusted) {
+        return Ok(None);
     }
+    outcome.map(Some).map_err(error)
 }
 
 /// The single plate's R_o by `method` at relative tolerance `tol` (module docs).
 pub(super) fn single(g: &Geometry, method: Method, tol: f64) -> Result<ModelResult, CompareError> {
     let plate = g.single_plate(OuterRadius::Finite(g.c))?;
     if method != Method::Fem {
-        let hole = HoleParams::for_tolerance(tol);
-        let sep = SeparationParams {
-            rel_tol: SeparationParams::default().rel_tol.max(1e-3 * tol),
-            ..Default::default()
-        };
+        let (sep, hole) = single_plate::hankel_params(tol);
         let outcome = single_plate_separation(&plate, &sep, &hole).map(|(s, h)| ModelResult {
             value: Value::with_tolerance(s.r_o, s.r_o_error, tol),
             route: Route::Hankel,
@@ -187,15 +152,9 @@ pub(super) fn single(g: &Geometry, method: Method, tol: f64) -> Result<ModelResu
 }
 
 /// Whether `method` tries the two-plate Hankel route at tolerance `tol` on a point it reaches
-/// (`in_reach`) or not: `hankel` always (a point out of reach is refused before), `auto` within
-/// reach and below [`AUTO_BELOW`], as `two --method auto` and a scene's `method = "auto"` (above
-/// it the FE is faster and claims the tolerance), `fem` never.
+/// (`in_reach`) or not: the route layer's [`two_plate::takes_hankel`].
 pub fn two_takes_hankel(method: Method, tol: f64, in_reach: bool) -> bool {
-    match method {
-        Method::Fem => false,
-        Method::Hankel => true,
-        Method::Auto => in_reach && tol < AUTO_BELOW,
-    }
+    two_plate::takes_hankel(method, tol, in_reach)
 }
 
 /// The two-plate R_o by `method` at relative tolerance `tol` (module docs).

@@ -30,7 +30,7 @@
 //! # Cost
 //!
 //! `cargo bench --bench hankel` (the 1000-radius curve to 1e-10); example 01. J₀ from the
-//! grid's rows instead of [`libm::j0`] per node (2026-11-25): the curve built per setup by the
+//! grid's rows instead of [`libm::j0`] per node: the curve built per setup by the
 //! holed two-plate route fell from 7.0 % to 1.1 % of the samples of `two --method hankel --a
 //! 0.1 --b 0.13 --d 0.1 --tol 1e-6` (one thread, `perf record`); the `slab --curve` values of
 //! four geometries moved ≤ 2.3e-15 P, against their estimates of 1.2e-12 P.

@@ -46,7 +46,7 @@
 //! approximations (libm's J₀ was 19 % of the holed route's CPU at the knobs for 1e-3, under 2 %
 //! after; Table 1 at those knobs 1.82–1.90 s instead of 2.16–2.76 s for all twelve rows, by
 //! turns at load 8, R_o unchanged to the 10 digits printed). The fewer terms per panel at
-//! larger x and the reciprocals per node (2026-11-25): [`PanelGrid::j0_row`]'s own share of
+//! larger x and the reciprocals per node: [`PanelGrid::j0_row`]'s own share of
 //! the CPU of `two --method hankel --a 0.1 --b 0.13 --d 0.1 --tol 1e-6` (one thread, `perf
 //! record`) from 20.7 % to 8.9 %, R_o moved by 5e-17 of R_o; [`dot`], the
 //! rows' products with a vector, in four partial sums. The holed route's timing: example 19.

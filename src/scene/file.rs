@@ -40,18 +40,8 @@ pub enum Model {
     Slab,
 }
 
-/// Which route computes the answer.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Method {
-    /// The cheapest route that serves the outputs asked.
-    #[default]
-    Auto,
-    /// Axisymmetric finite elements.
-    Fem,
-    /// Hankel transforms (single plate and slab).
-    Hankel,
-}
+/// Which route computes the answer: the route layer's one method enum.
+pub use crate::route::Method;
 
 /// Shape of the bearing pressure under head and nut.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]

@@ -25,7 +25,7 @@
 use super::units::{INCH, POUND_FORCE};
 
 /// One library material (SI units).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct LibraryMaterial {
     /// Name as written in a scene.
     pub name: &'static str,

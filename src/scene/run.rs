@@ -22,64 +22,42 @@ use super::error::SceneError;
 use super::field;
 use super::file::{Method, Model, Scene};
 use crate::fem::single::{self as fem_single, FaceCondition, SingleParams};
-use crate::hankel::hole::{single_plate_separation, HoleParams};
+use crate::hankel::hole::single_plate_separation;
 use crate::hankel::{SeparationParams, Slab};
 use crate::joint::Joint;
+use crate::route::{single_plate, two_plate};
 use std::time::Instant;
 
 pub use super::si::joint_si;
 pub use super::solution::{InterfaceCurve, Solution, Step};
 pub use super::two_fem::two_plate_params;
 
-/// The Hankel search and hole parameters the single-plate route uses at `tolerance` (as
-/// `boltzone single --method hankel`).
-pub fn hankel_params(tolerance: f64) -> (SeparationParams, HoleParams) {
-    let search = SeparationParams {
-        rel_tol: SeparationParams::default().rel_tol.max(1e-3 * tolerance),
-        ..SeparationParams::default()
-    };
-    (search, HoleParams::for_tolerance(tolerance))
-}
+pub use crate::route::single_plate::hankel_params;
 
-/// What `method` resolves to for `scene`, and why.
+/// What `method` resolves to for `scene`, and why: the route layer's choice
+/// ([`two_plate::plan`], [`single_plate::plan`]) on the scene's question.
 pub fn pick(scene: &Scene) -> (Method, &'static str) {
-    match (scene.model, scene.method) {
-        (Model::TwoPlate, Method::Hankel) => (
-            Method::Hankel,
-            "semi-analytic two plates (asked; with a hole, or the receding contact without one): R_o and the interface pressure",
-        ),
-        (Model::TwoPlate, Method::Auto) if super::two_hankel::auto_takes(scene) => (
-            Method::Hankel,
-            "semi-analytic two plates (with a hole, or the receding contact without one): below a tolerance of 3e-5 the FE cannot claim it",
-        ),
-        (Model::TwoPlate, _) => (
-            Method::Fem,
-            "finite elements: the two-plate model's route; the interface curve comes from the same levels",
-        ),
-        (Model::Slab, _) => (Method::Hankel, "Hankel transforms: the slab's exact route"),
-        (Model::SinglePlate, Method::Fem) => (Method::Fem, "finite elements (asked)"),
-        (Model::SinglePlate, Method::Hankel) => (Method::Hankel, "Hankel + hole correction (asked)"),
-        (Model::SinglePlate, Method::Auto) if scene.temperature.is_some() => (
-            Method::Fem,
-            "finite elements: the thermal strains of [temperature] are in the FE model only",
-        ),
-        (Model::SinglePlate, Method::Auto)
-            if scene.outputs.field.is_some() || scene.outputs.midplane.is_some() =>
-        {
-            (
-                Method::Fem,
-                "finite elements: the field or midplane asked comes from the FE levels (Hankel gives R_o alone)",
-            )
+    let plan = match scene.model {
+        Model::Slab => return (Method::Hankel, "Hankel transforms: the slab's exact route"),
+        Model::SinglePlate => single_plate::plan(&single_plate::Question {
+            method: scene.method,
+            field: scene.outputs.field.is_some() || scene.outputs.midplane.is_some(),
+            rigid_nut: scene.load.nut_displacement.is_some(),
+            thermal: scene.temperature.is_some(),
+        }),
+        Model::TwoPlate => {
+            // a scene whose joint cannot be built, or that asks `hankel` out of reach, is refused
+            // by its checks before it is solved
+            let Ok((joint, nut)) = joint_si(scene) else {
+                return (Method::Fem, "finite elements");
+            };
+            match two_plate::plan(&super::two_hankel::question(scene, &joint, nut)) {
+                Ok(plan) => plan,
+                Err(b) => return (Method::Hankel, b.reason),
+            }
         }
-        (Model::SinglePlate, Method::Auto) if scene.load.nut_displacement.is_some() => (
-            Method::Fem,
-            "finite elements: the Hankel route loads the faces by a pressure only",
-        ),
-        (Model::SinglePlate, Method::Auto) => (
-            Method::Hankel,
-            "Hankel + hole correction: R_o alone is a root search of milliseconds, no FE solve",
-        ),
-    }
+    };
+    (plan.method, plan.why)
 }
 
 /// Answers `scene`. A scene built in code is checked here as [`Scene::parse`] checks a file
@@ -113,6 +91,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         heat_passes: None,
         heat_flow: None,
         heat_flow_unit: None,
+        rules: Default::default(),
         plan: Vec::new(),
         interface: None,
         field: None,
@@ -123,10 +102,16 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
     let other = match (scene.model, method) {
         (Model::TwoPlate, Method::Hankel) => {
             let scale = (l, scene.units.stress());
-            let declined = match super::two_hankel::solve(scene, &joint, scale, &mut out) {
-                Err(SceneError::Receding(e)) if scene.method == Method::Auto => Some(e.to_string()),
-                Ok(false) if scene.method == Method::Auto => {
-                    Some(super::two_hankel::UNRESOLVED.into())
+            let ran = super::two_hankel::solve(scene, &joint, scale, &mut out);
+            let (failed, resolved) = (ran.is_err(), *ran.as_ref().unwrap_or(&true));
+            let declined = match ran {
+                Err(SceneError::Receding(e))
+                    if two_plate::fall_back(scene.method, failed, resolved) =>
+                {
+                    Some(e.to_string())
+                }
+                Ok(_) if two_plate::fall_back(scene.method, failed, resolved) => {
+                    Some(two_plate::UNRESOLVED.into())
                 }
                 r => r.map(|_| None)?,
             };
@@ -280,8 +265,26 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
             });
         }
     }
+    out.rules = rules_of(scene, &out);
     out.plan = plan;
     Ok(out)
+}
+
+/// The rules of thumb beside the answer `out` (the scene's units: B, the plates' thicknesses
+/// and C as written).
+fn rules_of(scene: &Scene, out: &Solution) -> crate::route::rules_beside::Rules {
+    let d1 = scene.plates.first().map_or(0.0, |p| p.thickness);
+    let d2 = scene.plates.last().map_or(d1, |p| p.thickness);
+    let c = scene.joint.outer_radius.map_or(
+        crate::joint::OuterRadius::Infinite,
+        crate::joint::OuterRadius::Finite,
+    );
+    let r_o = crate::value::Value {
+        value: out.r_o,
+        error: out.r_o_error,
+        converged: out.converged,
+    };
+    crate::route::rules_beside::beside((scene.load.outer_radius, d1, d2, c), 30.0, r_o)
 }
 
 /// The single-plate substitute of a symmetric joint.

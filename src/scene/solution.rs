@@ -92,6 +92,12 @@ pub struct Solution {
     /// The unit of `heat_flow` (W; Btu/hr in in-psi-lbf).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub heat_flow_unit: Option<&'static str>,
+    /// The rules of thumb beside R_o (the route layer's [`crate::route::rules_beside`]: 45°,
+    /// VDI 2230, the 30° cone, each with its radius in the length unit and its error against
+    /// R_o in percent; JSON `rules`), and the rules left out with the reason
+    /// (`rules_left_out`).
+    #[serde(flatten)]
+    pub rules: crate::route::rules_beside::Rules,
     /// The plan: routes that ran and were skipped, time per step.
     pub plan: Vec<Step>,
     /// Interface curve (two-plate; written as CSV, not printed).

@@ -42,147 +42,81 @@
 //! # Cost
 //!
 //! With a hole one semi-analytic solve, 0.06–0.11 s of CPU per Table 1 geometry at a
-//! tolerance of 1e-3, 0.35–0.77 s at 1e-6 (2026-11-25, module
+//! tolerance of 1e-3, 0.35–0.77 s at 1e-6 (module
 //! [`crate::hankel::receding::holed`]'s Cost); the curve adds one evaluation per point.
 //! Without a hole one receding solve, 0.1–0.2 s at B ≈ D; with a rim 0.1–0.3 s, twice with the
 //! curve (its radii need R_o); timed by `tests/scene/two_hankel_no_hole.rs`.
 
 use super::error::SceneError;
-use super::file::{InterfaceKind, Model, Scene};
+use super::file::{Model, Scene};
+use super::si::joint_si;
 use super::solution::{InterfaceCurve, Solution};
 use crate::hankel::receding::holed::two_plate_hole_to;
 use crate::hankel::receding::rim::rim_contact;
-use crate::hankel::receding::{Pair, RecedingParams, MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
-use crate::joint::{Joint, OuterRadius, Plate};
-use crate::load::FaceLoad;
-use crate::material::Material;
+use crate::hankel::receding::{Pair, RecedingParams};
+use crate::joint::{Joint, OuterRadius};
+use crate::route::two_plate::{self, Key};
 
-/// `method = "auto"` takes this route only below this tolerance (its reasons where it is
-/// defined, beside the route's other limits).
-pub use crate::hankel::receding::AUTO_BELOW;
+/// `method = "auto"` takes this route only below this tolerance (the route layer's choice).
+pub use crate::route::two_plate::AUTO_BELOW;
 
 /// Points of the interface curve (plus one), denser toward R_o where q ~ √(R_o − r).
 const CURVE_POINTS: usize = 100;
 
 /// The first scene key that keeps a two-plate scene from this route, with the reason; None
-/// when the route applies. The limits are `boltzone two --method hankel`'s, flag for key: with
-/// a hole two equal plates, A ≥ 0.04 D, B ≤ 16 D; without one two plates of any thickness and
-/// material in frictionless contact (equal plates with any interface: they carry no shear),
-/// B + 2D of the thicker plate within the receding solver's reach; a finite rim (equal plates)
-/// with C − B > D and B ≤ 8 D; a pressure load, a free rim, R_o and the interface curve only.
+/// when the route applies: the route layer's [`two_plate::hankel_blocker`] on the scene's
+/// question ([`question`]), its input named by the scene key. A scene whose joint cannot be
+/// built is left to the scene's other checks.
 pub fn blocker(scene: &Scene) -> Option<(&'static str, &'static str)> {
-    let equal = match scene.plates.as_slice() {
-        [_] => true,
-        [up, lo] => up.thickness == lo.thickness && scene.material_of(0) == scene.material_of(1),
-        _ => false,
-    };
-    let holed = scene.hole.radius > 0.0;
-    let d = scene.plates.first().map_or(0.0, |p| p.thickness);
-    let b = scene.load.outer_radius;
-    let rim = scene.joint.outer_radius;
-    let o = &scene.outputs;
-    [
-        (
-            scene.model != Model::TwoPlate,
-            "model",
-            "the route is the two-plate model's",
-        ),
-        (
-            holed && !equal,
-            "plates",
-            "with a hole the route needs two equal plates",
-        ),
-        (
-            !holed && !equal && scene.joint.interface != InterfaceKind::Frictionless,
-            "joint.interface",
-            "without a hole the route takes two unequal plates in frictionless contact only \
-             (equal plates carry no interface shear: any interface)",
-        ),
-        (
-            !holed && !equal && rim.is_some(),
-            "joint.outer_radius",
-            "the route's finite rim takes two equal plates, with or without a hole",
-        ),
-        (
-            holed && scene.hole.radius < MIN_A_OVER_D * d,
-            "hole.radius",
-            "the route takes holes of at least 0.04 plate thicknesses (smaller ones left \
-             residual tractions of 1e1-1e4 P on the hole); or a hole radius 0 (the receding \
-             contact, within A² of it)",
-        ),
-        (
-            holed && b > MAX_B_OVER_D * d,
-            "load.outer_radius",
-            "with a hole the route takes loads up to 16 plate thicknesses wide (its cost grows \
-             like (B/D)²: 4.7 s and 0.6 GB at 16)",
-        ),
-        (
-            !holed && rim.is_none() && !pair_reaches(scene),
-            "load.outer_radius",
-            "without a hole the route takes B + 2D of the thicker plate up to 64 thicknesses \
-             of the thinner",
-        ),
-        (
-            rim.is_some() && b > MAX_B_OVER_D_RIM * d,
-            "load.outer_radius",
-            "with a finite joint.outer_radius the route takes loads up to 8 plate thicknesses \
-             wide (the rim's cost grows like (B/D)²: with a hole 10.5 s at 8, without one 1.6 s)",
-        ),
-        (
-            rim.is_some_and(|c| c <= b + d),
-            "joint.outer_radius",
-            "the route's finite rim needs C beyond B by more than D (or omit outer_radius)",
-        ),
-        (
-            scene.load.nut_displacement.is_some(),
-            "load.nut_displacement",
-            "the route loads the plates by a pressure",
-        ),
-        (
-            scene.joint.fixed_edge,
-            "joint.fixed_edge",
-            "the route's rim is free (a fixed edge is in the finite-element model only)",
-        ),
-        (
-            scene.temperature.is_some(),
-            "temperature",
-            "thermal strains are in the finite-element model only",
-        ),
-        (
-            o.field.is_some(),
-            "outputs.field",
-            "the field comes from the finite elements",
-        ),
-        (
-            o.conductance,
-            "outputs.conductance",
-            "the conductance integrates the finite elements' interface pressure",
-        ),
-    ]
-    .into_iter()
-    .find_map(|(blocks, key, reason)| blocks.then_some((key, reason)))
-}
-
-/// Whether the receding solver of two plates without a hole reaches the scene's load width
-/// ([`Pair::basis_size`]; it depends on B and the thicknesses only). Plates that cannot be
-/// built are left to the scene's other checks.
-fn pair_reaches(scene: &Scene) -> bool {
-    let plate = |i: usize| {
-        let t = scene.plates.get(i).or(scene.plates.first())?.thickness;
-        Plate::new(t, Material::unit(0.3).ok()?).ok()
-    };
-    let load = FaceLoad::uniform(0.0, scene.load.outer_radius, 1.0).ok();
-    match (plate(0), plate(1), load) {
-        (Some(up), Some(lo), Some(load)) => Pair::new(up, lo, load)
-            .basis_size(&RecedingParams::default())
-            .is_ok(),
-        _ => true,
+    if scene.model != Model::TwoPlate {
+        return Some(("model", "the route is the two-plate model's"));
     }
+    let (joint, nut) = joint_si(scene).ok()?;
+    let b = two_plate::hankel_blocker(&question(scene, &joint, nut))?;
+    let key = match b.key {
+        Key::LowerThickness | Key::LowerModulus | Key::LowerPoisson => "plates",
+        Key::Interface => "joint.interface",
+        Key::OuterRadius => "joint.outer_radius",
+        Key::HoleRadius => "hole.radius",
+        Key::LoadOuterRadius => "load.outer_radius",
+        Key::NutDisplacement => "load.nut_displacement",
+        Key::OuterEdge => "joint.fixed_edge",
+        Key::Temperature => "temperature",
+        Key::Field => "outputs.field",
+        Key::Conductance => "outputs.conductance",
+    };
+    Some((key, b.reason))
 }
 
-/// Whether `method = "auto"` takes this route for `scene`.
+/// Whether `method = "auto"` takes this route for `scene` (the route layer's choice,
+/// [`two_plate::plan`]).
 pub fn auto_takes(scene: &Scene) -> bool {
-    scene.tolerance < AUTO_BELOW && blocker(scene).is_none()
+    let Ok((joint, nut)) = joint_si(scene) else {
+        return false;
+    };
+    let q = two_plate::Question {
+        method: crate::route::Method::Auto,
+        ..question(scene, &joint, nut)
+    };
+    scene.model == Model::TwoPlate
+        && two_plate::plan(&q).is_ok_and(|p| p.method == crate::route::Method::Hankel)
+}
+
+/// The two-plate question of `scene` (its SI joint `joint`, nut displacement `nut` in m) for
+/// the route layer.
+pub fn question<'a>(scene: &Scene, joint: &'a Joint, nut: Option<f64>) -> two_plate::Question<'a> {
+    let params = super::two_fem::two_plate_params(scene, nut);
+    two_plate::Question {
+        joint,
+        interface: params.interface,
+        loading: params.loading,
+        fixed_edge: scene.joint.fixed_edge,
+        thermal: scene.temperature.is_some(),
+        field: scene.outputs.field.is_some(),
+        conductance: scene.outputs.conductance,
+        method: scene.method,
+        tolerance: scene.tolerance,
+    }
 }
 
 /// The curve's radii as fractions of its span, denser toward R_o (q ~ √(R_o − r)).
@@ -190,10 +124,7 @@ fn curve_fractions() -> impl Iterator<Item = f64> {
     (0..=CURVE_POINTS).map(|k| 1.0 - (1.0 - k as f64 / CURVE_POINTS as f64).powi(2))
 }
 
-/// Why `method = "auto"` leaves a holed run whose modes stopped short of their residual target
-/// to the finite elements: its ± is then no bound, where the FE's is.
-pub const UNRESOLVED: &str =
-    "the hole modes stopped short of their residual target, so its estimate is not trusted";
+pub use crate::route::two_plate::UNRESOLVED;
 
 /// Solves `joint` (SI) by the route and fills `out`'s R_o, error, `converged` and, when asked,
 /// the interface curve (scene units: lengths divided by `length`, pressures by `stress`);

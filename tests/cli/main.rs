@@ -7,5 +7,6 @@ mod out_of_reach;
 mod readme;
 mod regressions;
 mod rim_no_hole;
+mod sanity;
 mod thin_plates;
 mod tour;

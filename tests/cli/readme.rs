@@ -1,8 +1,9 @@
-//! Every `boltzone …` and `cargo run --release -- …` command in README's ```sh blocks runs and
-//! exits 0, in a temporary directory (so the files it writes land there); the README's
+//! Every `boltzone …` and `cargo run --release -- …` command in the ```sh blocks of README.md
+//! and of the user guide (`docs/guide.md`) runs and exits 0, in a temporary directory (so the files it writes land there); the README's
 //! placeholder inputs (`scene.toml`, `rows.csv`) are made from Table 1's first row. Skipped with
-//! a note: `cargo test`, `cargo install`, `cargo bench`, `bash .ci/run` and the examples (each
-//! example runs at its quick size in `tests/examples/`). Only `map`'s grid is made smaller
+//! a note: `cargo test`, `cargo install`, `cargo bench`, `bash .ci/run`, `serve` (a server that
+//! runs until stopped: `tests/figures/server.rs`) and the examples (each example runs at its
+//! quick size in `tests/examples/`). Only `map`'s grid is made smaller
 //! (`--n 4`): its 16 points took 1.0 s here, so the README's 1600 would take about 100 s, and
 //! they are the same solver as `two`. A README line that is none of these fails the test, so
 //! that new commands are run too.
@@ -11,10 +12,13 @@ use std::path::Path;
 use std::process::Command;
 use std::time::Instant;
 
-/// The command lines of README's ```sh blocks, without comments and blank lines.
+/// The command lines of the ```sh blocks of README.md and docs/guide.md, without comments and
+/// blank lines.
 fn readme_commands() -> Vec<String> {
-    let dir = env!("CARGO_MANIFEST_DIR");
-    let text = std::fs::read_to_string(Path::new(dir).join("README.md")).unwrap();
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let text = ["README.md", "docs/guide.md"]
+        .map(|f| std::fs::read_to_string(dir.join(f)).unwrap())
+        .join("\n");
     let mut out = Vec::new();
     let mut inside = false;
     for line in text.lines() {
@@ -40,6 +44,9 @@ fn readme_commands() -> Vec<String> {
 fn boltzone_args(line: &str) -> Result<Vec<String>, &'static str> {
     let words: Vec<&str> = line.split_whitespace().collect();
     let rest = match words.as_slice() {
+        ["cargo", "run", "--release", "--", "serve", ..] | ["boltzone", "serve", ..] => {
+            return Err("a server that runs until stopped (tests/figures/server.rs)")
+        }
         ["boltzone", rest @ ..] => rest,
         ["cargo", "run", "--release", "--", rest @ ..] => rest,
         ["cargo", "run", "--release"] => &[],

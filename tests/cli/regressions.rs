@@ -120,7 +120,8 @@ fn an_infinite_plate_holds_its_error_bar_against_the_receding_contact_solution()
     // error of the mesh away from the foci being the same on every level (fem::spacing::level_grading)
     for tol in ["1e-3", "1e-4", "1e-5", "1e-6"] {
         let v = json(&go(&[
-            "two", "--a", "0", "--b", "0.1", "--d", "0.1", "--tol", tol, "--json",
+            "two", "--method", "fem", "--a", "0", "--b", "0.1", "--d", "0.1", "--tol", tol,
+            "--json",
         ]));
         // (at 1e-5 and 1e-6 not converged: every two-plate estimate carries 2e-5 of R_o,
         // `contact::two_plate::TRANSIENT_FLOOR`)
@@ -299,14 +300,15 @@ fn an_unreached_tolerance_is_not_called_an_overlap() {
     // the cut of the infinite plate is out of reach) but printed the welded-plates warning,
     // "the plates overlap by 2.08e-28 in": a round-off negative gap read as an overlap.
     let r = go(&[
-        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--tol", "1e-6", "--json",
+        "two", "--method", "fem", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--tol", "1e-6",
+        "--json",
     ]);
     assert!([0, 3].contains(&code(&r)), "{}", r.stderr);
     let v = json(&r);
     assert_eq!(v["overlapping"], false, "{v}");
     assert_eq!(v["report_rule"], false, "{v}");
     let text = go(&[
-        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--tol", "1e-6",
+        "two", "--method", "fem", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--tol", "1e-6",
     ]);
     assert!(!text.stdout.contains("sign-consistent"), "{}", text.stdout);
 }

@@ -1,7 +1,7 @@
-//! README's "A short tour" names every folder of the project once and no folder that is not
+//! The user guide's "A short tour" (`docs/guide.md`) names every folder of the project once and no folder that is not
 //! there: its table's first column is compared with the folders on disk (`src/` and its
 //! subfolders, and the top-level folders a newcomer opens: `reference/`, `assets/`, `tests/`,
-//! `examples/`, `benches/`). Its numbered-examples range is compared with `examples/` too, and
+//! `examples/`, `benches/`, `docs/`). Its numbered-examples range is compared with `examples/` too, and
 //! the sequence has no gap.
 
 use std::collections::BTreeSet;
@@ -13,10 +13,10 @@ fn root() -> &'static Path {
 
 /// The tour table's folder column (`src/cli/`), without the `src/*.rs` row.
 fn tour_folders() -> BTreeSet<String> {
-    let text = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let text = std::fs::read_to_string(root().join("docs/guide.md")).unwrap();
     let start = text
         .find("## A short tour")
-        .expect("README has a short tour");
+        .expect("the guide has a short tour");
     let section = &text[start..];
     let end = section[3..].find("\n## ").map_or(section.len(), |k| k + 3);
     section[..end]
@@ -43,7 +43,14 @@ fn folders_under(dir: &Path, prefix: &str, out: &mut BTreeSet<String>) {
 fn tour_names_every_folder_once() {
     let mut on_disk = BTreeSet::new();
     folders_under(&root().join("src"), "src", &mut on_disk);
-    for top in ["reference", "assets", "tests", "examples", "benches"] {
+    for top in [
+        "reference",
+        "assets",
+        "tests",
+        "examples",
+        "benches",
+        "docs",
+    ] {
         assert!(root().join(top).is_dir(), "{top}/ missing");
         on_disk.insert(top.to_string());
     }
@@ -52,7 +59,7 @@ fn tour_names_every_folder_once() {
     let stale: Vec<_> = tour.difference(&on_disk).collect();
     assert!(
         missing.is_empty(),
-        "folders not in README's tour: {missing:?}"
+        "folders not in the guide's tour: {missing:?}"
     );
     assert!(stale.is_empty(), "tour rows with no folder: {stale:?}");
 }
@@ -73,10 +80,10 @@ fn examples_are_numbered_without_gaps_as_the_tour_says() {
         numbers, expected,
         "examples/NN_*.rs must run 01, 02, … without gaps"
     );
-    let text = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let text = std::fs::read_to_string(root().join("docs/guide.md")).unwrap();
     let range = format!("numbered programs 01–{:02}", numbers.len());
     assert!(
         text.contains(&range),
-        "README's tour should say \"{range}\""
+        "the guide's tour should say \"{range}\""
     );
 }

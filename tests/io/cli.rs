@@ -1,12 +1,12 @@
-//! `boltzone deck` (issue 12): the README's commands, the JSON contract, `--emit` → run round
+//! `boltzone deck` (issue 12): the guide's commands, the JSON contract, `--emit` → run round
 //! trip through files, and the exit codes (2 with line, columns and field on a bad deck).
 
 use crate::common::boltzone;
 
 #[test]
 fn readme_command_runs_the_example_decks() {
-    // README, "1970 card decks": its first command, and that the README still holds it
-    let readme = std::fs::read_to_string("README.md").unwrap();
+    // the guide, "1970 card decks": its first command, and that the guide still holds it
+    let readme = std::fs::read_to_string("docs/guide.md").unwrap();
     assert!(readme.contains("cargo run --release -- deck tests/data/decks/ring.deck "));
     let out = boltzone(&["deck", "tests/data/decks/ring.deck"]);
     assert!(

@@ -144,7 +144,13 @@ fn curves_and_text_name_the_units() {
     assert_eq!(two.status.code(), Some(0));
     let text = String::from_utf8_lossy(&two.stdout);
     assert!(
-        text.contains(" mm   (") && text.contains("nut: ") && text.ends_with(" mm\n"),
+        text.contains(" mm   (")
+            && text
+                .lines()
+                .any(|l| l.contains("nut: ") && l.ends_with(" mm"))
+            && text
+                .lines()
+                .any(|l| l.starts_with("rules: ") && l.contains(" mm (")),
         "{text}"
     );
     let csv = std::fs::read_to_string(dir.join("t.csv")).unwrap();

@@ -11,6 +11,7 @@ mod examples;
 mod field;
 mod from_heat;
 mod fuzz;
+mod guide_keys;
 mod heat;
 mod joint_units;
 mod temperature;

@@ -27,6 +27,7 @@
 use crate::cli::check;
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
 use boltzone::fem::single::{midplane_of, solve_with_field, SingleParams};
+use boltzone::route::rules_beside;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate, SinglePlate, Value};
 use serde_json::json;
 
@@ -138,10 +139,6 @@ pub fn parse(query: &str) -> anyhow::Result<JointQuery> {
     Ok(q)
 }
 
-fn value_json(v: Value) -> serde_json::Value {
-    json!({"value": v.value, "error": v.error, "converged": v.converged})
-}
-
 /// Answers the joint `q` (module docs).
 pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
     let start = std::time::Instant::now();
@@ -175,17 +172,12 @@ pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
     let two = two?;
     let (single, mid) = plate_single?;
     let two_value = Value::with_tolerance(two.r_o, two.r_o_error, TOLERANCE);
-    let rules: Vec<_> = crate::cli::figure::rule_radii((q.b, q.d, d2, q.c))
-        .into_iter()
-        .map(|(name, radius)| {
-            let e = Value::exact(radius).percent_difference(two_value);
-            json!({"name": name, "radius": radius, "error_percent": value_json(e)})
-        })
-        .collect();
+    let rules = rules_beside::beside((q.b, q.d, d2, outer), 30.0, two_value);
     let reach = 1.6
         * rules
+            .rules
             .iter()
-            .filter_map(|r| r["radius"].as_f64())
+            .map(|r| r.radius)
             .fold(single.r_o.max(two.r_o), f64::max);
     let clip = |r: &[f64], y: &[f64]| -> (Vec<f64>, Vec<f64>) {
         r.iter()
@@ -213,12 +205,15 @@ pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
             "tolerance": TOLERANCE, "method": "fem", "thickness": 2.0 * q.d,
             "seconds": single.info.seconds,
         },
-        "rules": rules,
+        "rules": rules.rules,
         "curves": {
             "pressure": {"r": pr, "p": pp},
             "sigma_z": {"r": sr, "sigma_z": ss},
         },
     });
+    if !rules.left_out.is_empty() {
+        out["rules_left_out"] = serde_json::to_value(&rules.left_out)?;
+    }
     // no null in the answer: optional quantities are left out
     if let Some(c) = q.c {
         out["inputs"]["c"] = c.into();

@@ -60,7 +60,7 @@
 //! 32 (example 05). R_o's actual error (against N = 256) falls 2.8× or more per doubling and is
 //! 2.1e-6 R_o or less already at N = 4; at the default tolerance six of Table 1's rows stop at N =
 //! 8 and six at N = 16, with estimates of 1.3e-8–8.8e-7 R_o and actual errors of 9e-14–3.2e-8
-//! R_o (example 14, 2026-11-25; ten and two before one change was trusted alone only with the
+//! R_o (example 14; ten and two before one change was trusted alone only with the
 //! residual met: that cost 1.3–1.4× on the four rows it moved to N = 16). Beyond Table 1, over
 //! random geometries across the reach and random narrow loads (B/A 1.001–1.1;
 //! `tests/hankel/hole_reach_survey.rs`, in CI): every error within its estimate plus the
@@ -72,7 +72,7 @@
 //!
 //! (R_o to 1e-6, default parameters; `cargo bench --bench hole` and example 14, one thread):
 //! 4.0–5.7 ms for the six Table 1 rows that stop at N = 8, 6.6–8.3 ms for the six at N = 16, 74 ms
-//! for all twelve (example 14, idle machine, 2026-11-25; before: ten rows at N = 8 in 4.6–6.5 ms,
+//! for all twelve (example 14, idle machine; before: ten rows at N = 8 in 4.6–6.5 ms,
 //! two at 16 in 8.7 ms, 72 ms). About 30 % goes to the slab's traction on the hole at M/2 + 1
 //! Chebyshev–Lobatto heights (M = 24–72, [`profile`]; 4–12 thousand ξ-nodes, 1.1–3.0 ms), 25–35 % to the corner fields'
 //! tractions, the rest to the fit (Householder QR), the residual and the root search on

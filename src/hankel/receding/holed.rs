@@ -105,26 +105,11 @@
 //!
 //! # Cost
 //!
-//! Measured 2026-11-25 on all twelve Table 1 rows by `boltzone two --method hankel --tol T`
-//! ([`HoledParams::for_tolerance`]), this route's binary and the one before the hole tables
-//! by turns in one session, the CPU (user + sys) per row (median of two rounds at 1e-3, one
-//! at 1e-6), load 9–11 on the 2 cores (three other agents building):
-//!
-//! | T, C | CPU per row | before | in total | R_o moved (of R_o) | estimates |
-//! |------|-------------|--------|----------|--------------------|-----------|
-//! | 1e-6, ∞ | 0.28–0.65 s | 0.38–0.74 s | 1.35× | ≤ 4.5e-13 | unchanged (3.8e-10 … 1.3e-6 R_o) |
-//! | 1e-3, ∞ | 0.075–0.17 s | 0.11–0.22 s | 1.35× | ≤ 2.0e-10 | unchanged (6.1e-5 … 2.1e-4 R_o) |
-//! | 1e-6, 1.54 in | 1.4–2.1 s | 2.1–3.0 s | 1.41× | ≤ 8.1e-12 | unchanged (5.4e-10 … 1.4e-6 R_o) |
-//!
-//! With the search by secant steps from a fitted first slope and the tier for 1e-6's mode
-//! doubling and separate variants (module `holed_search`'s Cost, merged after this round):
-//! all twelve rows, the binary before both rounds and after, by turns, one round, load
-//! 1.5–2.5: at 1e-6, C = ∞, 5.67 → 5.73 s in total (0.99×: the separate variants' two
-//! solves per row spend what the tables saved; all twelve rows converge, (0.5, 1.3), 1.3e-6 R_o
-//! not converged before, now 2.1e-7); at 1e-3, C = ∞, 1.64 → 1.08 s (1.52×, 4–5 solves per
-//! row instead of 5–7); at 1e-6, C = 1.54 in, 31.9 → 15.9 s (2.01×, 17–19 solves instead of
-//! 23–24). R_o moved ≤ 4.6e-10 R_o at 1e-6 except (0.5, 1.3), 5.3e-8 (its modes 16 → 32).
-//! The issue's 10 ms at 1e-6 is still 35–75× off (0.35–0.77 s per row).
+//! Per Table 1 row at `--tol 1e-6` (C = ∞, [`HoledParams::for_tolerance`]): 0.15–0.32 s of CPU,
+//! 7–9 crack solves, every row converged (estimates 3.8e-10 … 3.6e-7 R_o); at 1e-3 about a
+//! third of that; with the rim C = 1.54 in several times more (module `rim_holed`). The
+//! bilateral holed plate alone (the single plate with its hole) is about 9 ms of it; the
+//! measurements behind these figures, and their history, are in `CHANGELOG.md`.
 //!
 //! **Where the time goes** (row (1, 1.3) at 1e-6, one thread, `perf record`): 6 search radii
 //! and 2 of the estimate's variants, of which the fewer-nodes variant (at R_o, where the search
@@ -134,139 +119,6 @@
 //! per geometry the setup
 //! (16 %: the bilateral plate of each variant 5 %, the slab's midplane curve, the corner
 //! table) and the hole tables' panels (9 %, module `hole_tables`).
-//!
-//! **This round.** (a) The hole's part of every iteration through tables independent of c
-//! (module `hole_tables`): σ_r, τ_rz at the Chebyshev heights per unit Abel function at t and
-//! per unit ring load at s, tabulated once per geometry on panels of 2.5π/ξ_max, built where
-//! a radius first needs them, and interpolated at each radius's t- and s-rule (measured error
-//! 2.5e-15 of their scale, bound 3e-12); this removed the per-radius hole tables (cos ξt − 1 on
-//! the hole rule × the t-rule, J₀ rows of its nodes up to ξ_l × the s-rule) and the hole rule
-//! per radius, which with the per-iteration sums over them were 30 % of the CPU (profile). (b) A setup keeps its last radius's
-//! tables (module `crack_tables`): the fewer-nodes variant at R_o and the finite rim's two
-//! solves per radius (module `rim_holed`) build them once. (c) H_l's weights near c take the
-//! v-substitution on l's first panel only (beyond it the s-rule converges, ρ ≥ 5.8). Earlier
-//! rounds (3.5× in total): wider Nyström panels and a shorter graded cap, the
-//! Anderson-accelerated iteration, the corner table, rayon over table rows and the two
-//! variants, H_l's weights on the s-rule away from c, l's transform beyond ξ_l by its endpoint
-//! expansion, J₀ by Horner's rule and a Chebyshev table ([`crate::numerics::panel_grid`]), the search by
-//! step-stopping inverse interpolation from B + 0.45D, each radius warm-started, the
-//! variants sharing the setup, the tolerance tiers.
-//!
-//! **Tables round** (2026-11-25; modules `numerics::panel_grid`, `setup_tables`): J₀'s asymptotic expansion
-//! with only the terms each panel's smallest argument needs and per-node reciprocals, the
-//! bilateral plate's modes at the s-rule from the correction's table of the same modes, the
-//! graded cap's cosines by the addition theorem along the Nyström rule's ξ-panels. All twelve
-//! Table 1 rows, main's binary and this one by turns, two rounds, load 3.3–3.5 on the 2 cores
-//! (total CPU per round): at 1e-6, C = ∞, 2.93–3.04 → 2.52–2.64 s (1.16×; per row 0.19–0.39 →
-//! 0.16–0.42 s); at 1e-3, 0.51–0.53 → 0.43–0.46 s (1.17×); at 1e-6, C = 1.54 in, 8.37–8.98 →
-//! 7.96–8.23 s (1.07×). The same solves per row; R_o moved ≤ 2.4e-13 of R_o at 1e-6 (≤ 1.2e-6
-//! of its estimate), ≤ 1.3e-11 at C = 1.54 in, at 1e-3 ≤ 5.6e-15 except (0.75, 1.6), 8.5e-10
-//! (6e-6 of its estimate: a round-off's different search step); every estimate the same to
-//! three digits; the tiers survey (`two_plate_hole_tiers`, 40 geometries, 57 s at load ~3):
-//! largest error/estimate 0.37, 0.37, 0.39, 0.21 at 1e-3, 1e-4, 1e-5, 1e-6. Where the time goes after it (row (1, 1.3) at 1e-6, one thread, `perf
-//! record`): the hole tables' panels 20 %, the crack iterations 14 %, the Nyström rule's cosine rows on the t-rule 10 %, the J₀ rows of
-//! l's transform 9 %, the modes at the s-rule 6 %, H_l's weights 4 %; per setup the bilateral
-//! plate, its fit and the slab's midplane curve about 24 %.
-//!
-//! **The variants at the search's last radius** (2026-11-25, after the tables round): where
-//! the search extrapolated R_o from its last radius x (module `holed_search`), the
-//! estimate's variants are solved at x, so the fewer-nodes variant takes the tables the setup
-//! kept there; the modes variant takes the setup's hole tables (its hole ξ-rule, heights and
-//! tail are the run's). Solves per row unchanged (7–9 at 1e-6, 4–5 at 1e-3, 17–19 at 1e-6
-//! with C = 1.54 in). All twelve rows, main's binary (94a0563) and this one by turns per row,
-//! three rounds, the median CPU (user + sys), load 2.1–2.8 on the 2 cores: at 1e-6, C = ∞,
-//! 2.43 → 2.19 s in total (1.11×; 0.15–0.27 s per row against 0.16–0.31 s); at 1e-3,
-//! 0.46 → 0.43 s (1.07×, 0.03–0.05 s per row); at 1e-6, C = 1.54 in, 7.68 → 7.27 s (1.06×,
-//! 0.45–1.10 s per row against 0.50–1.10 s). R_o the same bit for bit on every row at all
-//! three; the estimates the same but on (1, 3.1) at 1e-6 (3.85e-10 → 3.76e-10 R_o; at
-//! C = 1.54 in 5.44e-10 → 5.35e-10) and (0.5, 1.6) at 1e-3 (1.30e-4 → 1.18e-4 R_o: the
-//! variants' changes at R_o had held the extrapolated root's own error, 1.6e-6 in, which the
-//! root tolerance, 1e-4 D = 2e-5 in, counts apart); at 1e-8 (C = ∞, one round, the tiers' survey
-//! beside) R_o bit for bit, the estimates within 0.3 %, 7.77 → 6.78 s. The tiers' survey after it
-//! (`tests/hankel/two_plate_hole_tiers.rs`, 40 random geometries): error/estimate at most
-//! 0.37, 0.37, 0.39, 0.21 at 1e-3 … 1e-6, as before, converged on 40, 40, 39, 40; the rim
-//! survey at most 0.16 (1e-3) and 0.76 (1e-6; 0.75 before). At 1e-6 the issue's 10 ms is
-//! 15–27× off. Row (1, 1.3) at 1e-6, one thread, `perf record`, three runs of each binary
-//! (shares of each one's samples): the estimate 42 % → 35 %, its radius tables 27 % → 21 %,
-//! its hole-table panels 14 % → 10 % (now the heights and ξ_l variants' own); the search
-//! 20 → 22 %, the setup 16 → 18 %.
-//!
-//! **Tables round 2** (2026-11-25; modules `numerics::panel_grid`, `system`, `crack`): the crack iteration's
-//! Nyström matrix (its n × m cosine tables, the kernel product and the LU) built once per
-//! radius instead of once per iteration (the same arithmetic: R_o of row (1, 1.3) at 1e-6
-//! identical to the last digit with and without it); the panel grids' per-panel sines and
-//! cosines beyond 8 panels from every 8th panel and one rotation each, cos − 1 of offsets and
-//! midpoints from the same sine and cosine instead of another sin call. All twelve Table 1
-//! rows, main's binary (f139e81) and this one by turns, two rounds, load 3.5–4.1 on the 2
-//! cores (total CPU per round): at 1e-6, C = ∞, 2.28–2.32 → 2.17–2.19 s (1.05–1.06×; per row
-//! 0.14–0.30 → 0.14–0.28 s); at 1e-3, 0.45–0.46 → 0.45–0.47 s (no gain within the noise,
-//! 0.96–1.02×); at 1e-6, C = 1.54 in, 7.44–7.52 → 6.99–7.04 s (1.06–1.08×; per row 0.46–1.13
-//! → 0.42–0.97 s). The same solves per row (7–9, 4–5, 17–19), every row converged; R_o moved
-//! ≤ 5.1e-13 of R_o at 1e-6 (≤ 1.4e-6 of its estimate), ≤ 1.5e-11 at C = 1.54 in (4.1e-5 of
-//! its estimate), at 1e-3 ≤ 1.4e-13 except (0.75, 1.6), 8.5e-10 (6.3e-6 of its estimate, the
-//! row and amount of the first tables round: a round-off's different search step); estimates
-//! within 8.4e-5 of themselves. Row (1, 1.3) at 1e-6, one thread (`perf stat`, five runs of
-//! each binary by turns, two rounds, load ~1.1): 843–889 → 789–818 ms. What is left of the
-//! trigonometry (libm's sin and sin/cos pairs, 12.5 % of that row's samples, `perf record`):
-//! mostly cos ξt − 1 computed directly at the 5 nodes per cosine row nearest t = 0 (where the
-//! addition theorem would cancel), the cosine and J₀ rows' per-offset pairs, the panels'
-//! anchors and rotations, and per setup the corner table's Bessel K and the eigenmodes'
-//! fields; the J₀ rows' own arithmetic 8.7 %, the crack iterations' sums 5.1 %, libm's J₀
-//! (mostly the slab's midplane curve) 4.5 %.
-//! The tiers' survey (`two_plate_hole_tiers`, 40 random geometries, 40 s at load ~1.5):
-//! error/estimate at most 0.37, 0.37, 0.39, 0.21 at 1e-3 … 1e-6, converged on 40, 40, 39, 40,
-//! as before.
-//!
-//! **Tables round 3** (2026-11-25; module [`crate::hankel::midplane`]): the slab's midplane
-//! curve, built per setup, takes its J₀(ξ_i r) as rows of the panel grid's J₀ (table below 25,
-//! Hankel's expansion beyond, the sines and cosines by the addition theorem) instead of
-//! [`libm::j0`] at every ξ-node and radius: its share of row (1, 1.3) at 1e-6 (one thread,
-//! `perf record`) 7.0 % → 1.1 %, libm's J₀ 3.6 % → 0.5 %. All twelve Table 1 rows, main's
-//! binary (889b72e) and this one by turns per row (`perf stat`, 3 runs each, task-clock
-//! summed over the rows), two rounds, load 1.1–1.5 on the 2 cores: at 1e-6, C = ∞,
-//! 2.91–2.39 → 2.66–2.23 s (1.07–1.10×); at 1e-3, 0.59–0.54 → 0.51–0.48 s (1.13–1.17×; the
-//! curve is per setup, a larger part of the fewer solves); at 1e-6, C = 1.54 in
-//! (`/usr/bin/time`, whole sets by turns) 8.50–7.58 → 8.50–7.05 s (1.00–1.08×, within the
-//! noise). The same solves per row (7–9, 4–5, 17–19), every row converged; R_o moved
-//! ≤ 6.3e-13 of R_o at 1e-6 (≤ 9.6e-6 of its estimate), ≤ 2.1e-13 at 1e-3 (≤ 7.7e-10 of its
-//! estimate), ≤ 2.0e-11 at C = 1.54 in (≤ 4.9e-5 of its estimate); the `slab --curve` values
-//! of four geometries ≤ 2.3e-15 P against estimates of 1.2e-12 P. The hole tables' panels
-//! (`HoleTable::values`, 15–18 % of the row's samples) are unchanged. The tiers' survey
-//! (`two_plate_hole_tiers`, 40 random geometries, 41 s at load ~1.5): error/estimate at most
-//! 0.37, 0.37, 0.39, 0.21 at 1e-3 … 1e-6, converged on 40 of 40 at every tier, as before.
-//!
-//! **The four rounds together** (2026-11-25, the session's first binary, a88b227, against main
-//! after them, b178692, by turns per row with `/usr/bin/time`, CPU user + sys, an idle machine,
-//! load ≤ 1.6): at 1e-6, C = ∞, 3.07–3.74 → 2.11–2.14 s for the twelve rows in two rounds
-//! (1.5×; per row 0.14–0.27 s); at 1e-3, 0.59–0.69 → 0.49–0.51 s (1.2–1.4×, 0.03–0.05 s per
-//! row); at 1e-6, C = 1.54 in, one round, 9.45 → 7.36 s (1.28×, 0.45–0.98 s per row). The same
-//! solves per row; R_o moved ≤ 7e-13 R_o at 1e-6, ≤ 7.9e-14 at 1e-3, ≤ 6.6e-12 at C = 1.54 in;
-//! every row converged, the largest estimates 3.6e-7, 2.8e-4, 5.3e-7 R_o. The FE two-plate
-//! model at --tol 1e-6 in the same session, same rows: 6.42 s (none converged, its 2e-5
-//! floor), so this route is 3.0× faster there, against the issue's 20×; one geometry at
-//! 1e-6 is 14–27× the issue's 10 ms. Of a row's time the bilateral holed plate alone (the
-//! single plate with the hole, `single --method hankel --tol 1e-6` on row (1, 1.3): 7 ms,
-//! its JSON `seconds`) is already most of that 10 ms, and the search and the estimate need 7–9 crack
-//! solves besides.
-//!
-//! **Where the issue's speed targets stand** (2026-11-25, main d0b1c39, `/usr/bin/time`, an
-//! idle machine, load 0.6–1.3). All twelve Table 1 rows at 1e-6, C = ∞: 0.11–0.24 s wall,
-//! 0.15–0.32 s CPU per row, 7–9 crack solves each, all converged (estimates 3.8e-10 …
-//! 3.6e-7 R_o). The FE two-plate model on the same rows at --tol 1e-6: 0.29–0.68 s, none
-//! converged (its 2e-5 R_o floor); so this route is 1.9–4.4× faster there, not the issue's
-//! 20×. The issue's 10 ms per row is out of this formulation's reach: its bilateral holed
-//! plate alone, the single plate with the hole at the same tolerance (`single --method hankel
-//! --tol 1e-6` on row (1, 1.3), its JSON `seconds`), takes 9.2 ms, and the rest of the row's
-//! 0.13 s goes to its 8 crack solves and the setup they share (row (1, 1.3), `perf record`:
-//! the crack solves 52 % of the samples, of them the c-independent hole tables 24 %, the
-//! setup's sharing 12 %; no single item above a quarter). The 40 × 40 map with the two plates by this route is further still: 224 of its
-//! 1600 points have B/D > 8, beyond [`super::MAX_B_OVER_D_RIM`] (17 s of CPU at B/D = 11, 35 s at
-//! 16), and on points within reach (A/D 0.5, 1, 2 × B/A 1.3, 2, 3, `map --method hankel`)
-//! both models take 0.29 s of CPU per point: at that rate 230 s of wall time for 1600 points on the
-//! two cores, against the issue's 10 s. Both targets need a formulation whose cost does not
-//! grow with the contact radius in plate thicknesses and does not re-solve the holed plate
-//! per radius: the items below trim the crack solves' tables, and removing the crack solves'
-//! whole 52 % would give 2.1×, against the 11–24× asked.
 //!
 //! **Next** (structural; not done): the Nyström ξ-rule fixed per table epoch (its ω from the
 //! epoch's largest c, as the hole rule's) with the J₀ rows of l's transform and its cosine
@@ -279,10 +131,6 @@
 //! midplane rows), and the heights and ξ_l variants' hole tables; fewer radii, which needs a
 //! start within a few 1e-3 D of R_o (module `holed_search`'s Cost: neither B + 0.45D nor the
 //! no-hole receding solution is one).
-//!
-//! Re-measured after earlier rounds: A → 0 (`small_holes_approach_the_receding_solution`)
-//! −8.255e-8, −1.973e-8, −4.965e-9; the 10 × 10 grid study against the FE at 1e-4
-//! (`tests/hankel/grid_study.rs`) median ratio 0.02, max 0.08, in 146 s.
 //!
 //! ```no_run
 //! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};

@@ -161,7 +161,7 @@ impl HoledParams {
     /// geometries:
     /// `tests/hankel/two_plate_hole_tiers.rs`.
     ///
-    /// **The loose tiers' modes over the whole reach** (2026-11-25): with 6 and 8 modes always,
+    /// **The loose tiers' modes over the whole reach**: with 6 and 8 modes always,
     /// the survey over everything the route takes at C = ∞
     /// (`tests/hankel/two_plate_hole_reach_survey.rs`: A/D 0.04–15, B/A 1.02–20, ν −0.95 to
     /// 0.499, 30 random geometries) found the tier for 1e-3 short on small holes (A/D 0.05–0.19):
@@ -184,7 +184,7 @@ impl HoledParams {
     /// tolerance to the next tier. On Table 1 and the tiers' survey nothing changed (40 of 40
     /// resolved and converged at every tier; Table 1's R_o and estimates bit for bit).
     ///
-    /// **The tier for 1e-5's modes** (2026-11-25): with 16 modes always its survey left
+    /// **The tier for 1e-5's modes**: with 16 modes always its survey left
     /// (A/D, B/A, ν) = (0.341, 1.175, 0.388) not converged, error 1.6e-6 against an estimate
     /// of 1.6e-5 R_o (the half-modes variant, 8 modes, on a plate 3A thick), as the tier for
     /// 1e-6 had been; it now doubles the modes from 16 to the same 2e-6 P: there error 3.5e-8,

@@ -39,7 +39,7 @@
 //!
 //! # Cost
 //!
-//! Measured 2026-11-25 on all twelve Table 1 rows by `boltzone two --method hankel --tol T`
+//! Measured on all twelve Table 1 rows by `boltzone two --method hankel --tol T`
 //! (C = ∞ and C = 1.54 in), this search's binary and main's by turns per row in one session,
 //! two rounds, the median CPU (user + sys), load 5–10 on the 2 cores (the other helpers'
 //! builds), with the 1e-6 tier's modes doubled to 2e-6 P but one coarse variant (the tier's

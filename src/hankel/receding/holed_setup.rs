@@ -18,7 +18,7 @@
 //! knobs are the same (the heights and ξ_l variants) and the hole tables (with the panels
 //! built so far) where the hole ξ-rule, heights and tail are (the modes variant). The hole
 //! rule is built per hole table (module `hole_tables`), not per radius. At the knobs for 1e-6
-//! the setups are 16 % of the route's CPU on (1, 1.3) (`perf record`, 2026-11-25; the
+//! the setups are 16 % of the route's CPU on (1, 1.3) (`perf record`; the
 //! bilateral plates 5 %), the hole tables' panels 9 %. With the modes variant on the setup's
 //! hole tables (one thread, three runs each, this route's binary and main's after the tables
 //! round): the hole tables' panels under the estimate 14 % → 10 % of each binary's samples

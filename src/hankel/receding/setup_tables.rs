@@ -17,7 +17,7 @@
 //! # Cost
 //!
 //! Most of a radius's cost (module [`super::holed`]'s Cost, where the time goes); timed by
-//! example 19. Three savings per radius (2026-11-25; row (1, 1.3) at 1e-6, one thread, `perf
+//! example 19. Three savings per radius (row (1, 1.3) at 1e-6, one thread, `perf
 //! record`, shares of the whole run's CPU): the bilateral plate's modes at the s-rule taken
 //! from the correction's table of the same modes (`HolePlate::modes_midplane_with`; bit for
 //! bit the same s₀) instead of evaluated again, 5.4 % → 0.4 %; the graded cap's cos ξt by

@@ -1,0 +1,333 @@
+//! The two-plate model's routes (report Chapter II.B): which one answers a question, and why.
+//!
+//! Two routes compute the separation radius R_o of two plates in unilateral contact:
+//!
+//! - the **finite elements** ([`crate::contact::two_plate`]): any joint the library describes —
+//!   welded, frictionless or frictional interface, equal or unequal plates, a hole or none, a
+//!   finite rim free or fixed, a pressure or a nut displacement, temperatures, the field; every
+//!   estimate carries 2e-5 of R_o (the level sequence's slow component), so they cannot claim a
+//!   tolerance below [`AUTO_BELOW`];
+//! - the **semi-analytic Hankel routes** ([`crate::hankel::receding`]): with a hole, two equal
+//!   plates ([`crate::hankel::receding::holed`], its rim `rim_holed`); without one, the receding
+//!   contact of any two plates in series in frictionless contact (`Pair`; equal plates carry no
+//!   interface shear, so any interface), with a finite rim equal plates (`rim`); pressed by a
+//!   pressure on a free rim, answering R_o and the interface pressure only, to 1e-8.
+//!
+//! [`hankel_blocker`] is the one statement of the semi-analytic routes' reach: the first input of
+//! the question that keeps it from them, as a [`Key`] (each front end names it in its own words:
+//! a flag, a scene key) and a reason. [`plan`] makes the choice of a [`Method`]: `fem` and
+//! `hankel` as asked (`hankel` refused with the blocker where out of reach), `auto` the cheapest
+//! route that can meet the tolerance and serve the outputs — the Hankel routes within reach and
+//! below [`AUTO_BELOW`], the finite elements otherwise. Where `auto`'s Hankel run then declines
+//! the joint ([`fall_back`]), the finite elements answer and the answer says why.
+//!
+//! # Accuracy
+//!
+//! No numerics: the routes' own (their modules). The fronts' agreement on one question:
+//! `tests/route/` (the same joint through `two`, `solve` and the comparison, bit for bit).
+//!
+//! # Cost
+//!
+//! Microseconds; a pair without a hole checks its basis size (`Pair::basis_size`).
+//!
+//! ```
+//! use boltzone::route::{two_plate, Method};
+//! use boltzone::{Joint, Material};
+//! let joint = Joint::symmetric(0.1, 0.31, 0.1, Material::new(3e7, 0.3)?)?;
+//! let mut q = two_plate::Question::new(&joint, 1e-6);
+//! assert_eq!(two_plate::plan(&q).unwrap().method, Method::Hankel);   // below 3e-5
+//! q.tolerance = 5e-4;
+//! assert_eq!(two_plate::plan(&q).unwrap().method, Method::Fem);      // the FE is cheaper there
+//! q.fixed_edge = true;
+//! q.method = Method::Hankel;
+//! assert_eq!(two_plate::plan(&q).unwrap_err().key, two_plate::Key::OuterEdge);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use super::Method;
+use crate::contact::two_plate::{EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
+use crate::hankel::receding::{Pair, RecedingParams, MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
+use crate::joint::{Joint, OuterRadius, Plate};
+use crate::load::FaceLoad;
+use crate::material::Material;
+
+pub use crate::hankel::receding::AUTO_BELOW;
+
+/// A two-plate question: the joint (any consistent units), how it is loaded and supported, the
+/// outputs wanted beyond R_o, the method and the tolerance (relative, on R_o).
+#[derive(Debug, Clone, Copy)]
+pub struct Question<'a> {
+    /// The plates, hole, rim and bearing pressure.
+    pub joint: &'a Joint,
+    /// The interface between the plates.
+    pub interface: InterfaceModel,
+    /// A face pressure, or a nut displacement.
+    pub loading: Loading,
+    /// The outer edge is fixed (report Fig. 20(c)) rather than free.
+    pub fixed_edge: bool,
+    /// The plates carry temperatures (thermal strains).
+    pub thermal: bool,
+    /// The finite elements' field (or a figure drawn from it) is wanted.
+    pub field: bool,
+    /// The joint conductance (an integral of the FE interface pressure) is wanted.
+    pub conductance: bool,
+    /// The method asked for.
+    pub method: Method,
+    /// Wanted relative error of R_o.
+    pub tolerance: f64,
+}
+
+impl<'a> Question<'a> {
+    /// R_o of `joint` under its face pressure, frictionless, free rim, by `auto`.
+    pub fn new(joint: &'a Joint, tolerance: f64) -> Self {
+        Self {
+            joint,
+            interface: InterfaceModel::Frictionless,
+            loading: Loading::Pressure,
+            fixed_edge: false,
+            thermal: false,
+            field: false,
+            conductance: false,
+            method: Method::Auto,
+            tolerance,
+        }
+    }
+
+    /// The finite elements' parameters for this question (Q9, the tolerance, the interface,
+    /// loading and edge asked).
+    pub fn fem_params(&self) -> TwoPlateParams {
+        TwoPlateParams {
+            interface: self.interface,
+            loading: self.loading,
+            edge: if self.fixed_edge {
+                EdgeSupport::Fixed
+            } else {
+                EdgeSupport::Free
+            },
+            tolerance: self.tolerance,
+            ..TwoPlateParams::default()
+        }
+    }
+
+    /// Whether the two plates are alike (thickness and material).
+    pub fn equal_plates(&self) -> bool {
+        let (up, lo) = (self.joint.upper(), self.joint.lower());
+        up.thickness() == lo.thickness() && up.material() == lo.material()
+    }
+}
+
+/// The input of a question that keeps it from the Hankel routes (each front end names it: a
+/// flag, a scene key).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Key {
+    /// The lower plate's thickness differs from the upper plate's.
+    LowerThickness,
+    /// The lower plate's Young's modulus differs.
+    LowerModulus,
+    /// The lower plate's Poisson's ratio differs.
+    LowerPoisson,
+    /// The interface model.
+    Interface,
+    /// The plates' outer radius C.
+    OuterRadius,
+    /// The hole radius A.
+    HoleRadius,
+    /// The bearing face's outer radius B.
+    LoadOuterRadius,
+    /// The nut displacement (instead of a pressure).
+    NutDisplacement,
+    /// The fixed outer edge.
+    OuterEdge,
+    /// The plates' temperatures.
+    Temperature,
+    /// The field (or figures drawn from it).
+    Field,
+    /// The joint conductance.
+    Conductance,
+}
+
+/// Why the Hankel routes do not take a question: the input that blocks them and the reason.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Blocker {
+    /// The input that blocks the route.
+    pub key: Key,
+    /// Why (a sentence fragment: "needs two equal plates with a hole").
+    pub reason: &'static str,
+}
+
+/// The route chosen for a question, and why.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Plan {
+    /// [`Method::Fem`] or [`Method::Hankel`] (never `Auto`).
+    pub method: Method,
+    /// The reason, for the answer's plan or text.
+    pub why: &'static str,
+}
+
+/// The first input of `q` that keeps it from the Hankel routes (module docs), or None.
+pub fn hankel_blocker(q: &Question) -> Option<Blocker> {
+    let j = q.joint;
+    let (up, lo) = (j.upper(), j.lower());
+    let (a, b, d) = (j.hole_radius(), j.load().outer(), up.thickness());
+    let holed = a > 0.0;
+    let equal = q.equal_plates();
+    let rim = match j.outer_radius() {
+        OuterRadius::Finite(c) => Some(c),
+        OuterRadius::Infinite => None,
+    };
+    let frictionless = matches!(q.interface, InterfaceModel::Frictionless);
+    let lower = if lo.thickness() != d {
+        Key::LowerThickness
+    } else if lo.material().youngs_modulus() != up.material().youngs_modulus() {
+        Key::LowerModulus
+    } else {
+        Key::LowerPoisson
+    };
+    let checks = [
+        (
+            holed && !equal,
+            lower,
+            "with a hole the Hankel route takes two equal plates",
+        ),
+        (
+            !holed && !equal && !frictionless,
+            Key::Interface,
+            "without a hole the Hankel route takes two unequal plates in frictionless contact \
+             only (equal plates carry no interface shear: any interface)",
+        ),
+        (
+            !holed && !equal && rim.is_some(),
+            Key::OuterRadius,
+            "the Hankel route's finite rim takes two equal plates, with or without a hole",
+        ),
+        (
+            holed && a < MIN_A_OVER_D * d,
+            Key::HoleRadius,
+            "is below the Hankel route's smallest hole (A at least 0.04 plate thicknesses: \
+             smaller holes left residual tractions of 1e1-1e4 P on the hole); or a hole radius \
+             0 (the receding contact, within A² of it)",
+        ),
+        (
+            holed && b > MAX_B_OVER_D * d,
+            Key::LoadOuterRadius,
+            "is beyond the Hankel route's reach with a hole (B at most 16 plate thicknesses: \
+             its cost grows like (B/D)², 4.7 s and 0.6 GB at 16)",
+        ),
+        (
+            !holed && rim.is_none() && !pair_reaches(up, lo, b),
+            Key::LoadOuterRadius,
+            "is beyond the Hankel route's reach without a hole (B + 2D of the thicker plate \
+             at most 64 thicknesses of the thinner)",
+        ),
+        (
+            rim.is_some() && b > MAX_B_OVER_D_RIM * d,
+            Key::LoadOuterRadius,
+            "is beyond the Hankel route's reach with a finite rim (B at most 8 plate \
+             thicknesses: the rim's cost grows like (B/D)², with a hole 10.5 s at 8, without \
+             one 1.6 s)",
+        ),
+        (
+            rim.is_some_and(|c| c <= b + d),
+            Key::OuterRadius,
+            "must exceed the bearing radius B by more than the plate thickness D for the \
+             Hankel route's finite rim (its rim residue decays over C - R_o)",
+        ),
+        (
+            matches!(q.loading, Loading::NutDisplacement(_)),
+            Key::NutDisplacement,
+            "the Hankel route loads the plates by a pressure",
+        ),
+        (
+            q.fixed_edge,
+            Key::OuterEdge,
+            "the Hankel route's rim is free (a fixed edge is in the finite-element model only)",
+        ),
+        (
+            q.thermal,
+            Key::Temperature,
+            "thermal strains are in the finite-element model only",
+        ),
+        (
+            q.field,
+            Key::Field,
+            "the field and the figures drawn from it come from the finite elements",
+        ),
+        (
+            q.conductance,
+            Key::Conductance,
+            "the conductance integrates the finite elements' interface pressure",
+        ),
+    ];
+    checks
+        .into_iter()
+        .find_map(|(blocks, key, reason)| blocks.then_some(Blocker { key, reason }))
+}
+
+/// Whether the receding solver of two plates without a hole reaches the load width `b`
+/// ([`Pair::basis_size`]: it depends on B and the thicknesses only).
+fn pair_reaches(up: Plate, lo: Plate, b: f64) -> bool {
+    let plate = |p: Plate| Plate::new(p.thickness(), Material::unit(0.3).ok()?).ok();
+    match (plate(up), plate(lo), FaceLoad::uniform(0.0, b, 1.0).ok()) {
+        (Some(up), Some(lo), Some(load)) => Pair::new(up, lo, load)
+            .basis_size(&RecedingParams::default())
+            .is_ok(),
+        _ => true,
+    }
+}
+
+/// Whether `method` takes the Hankel routes at relative tolerance `tolerance` for a question
+/// they reach (`in_reach`) or not: `hankel` always (out of reach it is refused), `fem` never,
+/// `auto` within reach and below [`AUTO_BELOW`].
+pub fn takes_hankel(method: Method, tolerance: f64, in_reach: bool) -> bool {
+    match method {
+        Method::Fem => false,
+        Method::Hankel => true,
+        Method::Auto => in_reach && tolerance < AUTO_BELOW,
+    }
+}
+
+/// The route for `q` (module docs); `hankel` out of reach is refused with the blocker.
+pub fn plan(q: &Question) -> Result<Plan, Blocker> {
+    let blocker = hankel_blocker(q);
+    if q.method == Method::Auto && takes_hankel(q.method, q.tolerance, blocker.is_none()) {
+        return Ok(Plan {
+            method: Method::Hankel,
+            why: "semi-analytic two plates (with a hole, or the receding contact without \
+                  one): below a tolerance of 3e-5 the FE cannot claim it",
+        });
+    }
+    match (q.method, blocker) {
+        (Method::Fem, _) => Ok(Plan {
+            method: Method::Fem,
+            why: "finite elements (asked)",
+        }),
+        (Method::Hankel, Some(b)) => Err(b),
+        (Method::Hankel, None) => Ok(Plan {
+            method: Method::Hankel,
+            why: "semi-analytic two plates (asked; with a hole, or the receding contact \
+                  without one): R_o and the interface pressure",
+        }),
+        (Method::Auto, None) => Ok(Plan {
+            method: Method::Fem,
+            why: "finite elements: at this tolerance they are the cheaper route",
+        }),
+        (Method::Auto, Some(_)) => Ok(Plan {
+            method: Method::Fem,
+            why: "finite elements: the semi-analytic routes do not reach this question",
+        }),
+    }
+}
+
+/// Why `auto` hands a holed run whose modes stopped short of their residual target to the
+/// finite elements: its ± is then no bound, where the FE's is.
+pub const UNRESOLVED: &str =
+    "the hole modes stopped short of their residual target, so its estimate is not trusted";
+
+/// Whether `method`'s Hankel run, with this outcome, hands the joint to the finite elements:
+/// `auto` does when the route failed or its estimate is not trusted (`trusted` false: the hole
+/// modes left unresolved; the comparisons, whose every point of a map has the FE value to fall
+/// back on, also count a run that missed the tolerance as not trusted); `hankel` never (it
+/// reports the failure, or the unconverged value flagged).
+pub fn fall_back(method: Method, failed: bool, trusted: bool) -> bool {
+    method == Method::Auto && (failed || !trusted)
+}

@@ -1,0 +1,102 @@
+//! One question, one answer: the same joint through different front ends gets the same numbers
+//! from the route layer, bit for bit where the inputs are the same numbers — `two` and
+//! `table1`'s row, `two` and a scene in the same unit system — and the scene of Table 1's first
+//! row asked to 1e-5 and 1e-6 answers through the default route (`auto`, the semi-analytic
+//! route below the finite elements' 2e-5 floor).
+
+use crate::common::{boltzone, json_of};
+use serde_json::Value;
+
+/// `r_o`, `r_o_error` and each rule's radius and error of an answer, as bits.
+fn fingerprint(r_o: &Value, r_o_error: &Value, rules: &Value) -> Vec<u64> {
+    let mut v = vec![
+        r_o.as_f64().unwrap().to_bits(),
+        r_o_error.as_f64().unwrap().to_bits(),
+    ];
+    for r in rules.as_array().unwrap() {
+        v.push(r["radius"].as_f64().unwrap().to_bits());
+        v.push(r["error_percent"]["value"].as_f64().unwrap().to_bits());
+        v.push(r["error_percent"]["error"].as_f64().unwrap().to_bits());
+    }
+    v
+}
+
+#[test]
+fn two_and_table1_give_the_same_bits() {
+    let rows = json_of(&boltzone(&["table1", "--json"]));
+    // the first and the last row (thick and thin plates)
+    for row in [&rows[0], &rows[11]] {
+        let ours = &row["ours"];
+        let g = &ours["geometry"];
+        let f = |k: &str| g[k].as_f64().unwrap().to_string();
+        let (a, b, d, c, nu) = (f("a"), f("b"), f("d"), f("c"), f("nu"));
+        let two = json_of(&boltzone(&[
+            "two", "--a", &a, "--b", &b, "--d", &d, "--c", &c, "--nu", &nu, "--json",
+        ]));
+        let t = &ours["two"];
+        assert_eq!(
+            fingerprint(&two["r_o"], &two["r_o_error"], &two["rules"]),
+            fingerprint(&t["value"], &t["error"], &ours["rules"]),
+            "{g}"
+        );
+        assert_eq!(two["method"], ours["two_method"], "{g}");
+    }
+}
+
+#[test]
+fn two_and_a_scene_in_the_same_units_give_the_same_bits() {
+    let dir = std::env::temp_dir().join(format!("boltzone-one-question-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("joint.toml");
+    // an M8 bolt through two 6 mm aluminium plates, in SI
+    std::fs::write(
+        &scene,
+        "units = \"m-Pa-N\"\nmodel = \"two-plate\"\n[hole]\nradius = 0.0045\n\
+         [load]\nouter_radius = 0.0065\nforce = 10000.0\n\
+         [[plates]]\nthickness = 0.006\nmaterial = { E = 7.0e10, nu = 0.33 }\n\
+         [joint]\nouter_radius = 0.04\n",
+    )
+    .unwrap();
+    let solve = json_of(&boltzone(&["solve", scene.to_str().unwrap(), "--json"]));
+    let two = json_of(&boltzone(&[
+        "two", "--units", "m-Pa-N", "--a", "0.0045", "--b", "0.0065", "--d", "0.006", "--c",
+        "0.04", "--e", "7.0e10", "--nu", "0.33", "--force", "10000", "--json",
+    ]));
+    assert_eq!(
+        fingerprint(&two["r_o"], &two["r_o_error"], &two["rules"]),
+        fingerprint(&solve["r_o"], &solve["r_o_error"], &solve["rules"])
+    );
+    assert_eq!(two["method"], solve["method"]);
+    assert_eq!(two["nut_deflection"], solve["nut_deflection"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn table1_row1_scene_at_1e5_and_1e6_answers_through_the_default_route() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(root.join("examples/scenes/table1_row1.toml"))
+        .unwrap()
+        .replace("method = \"auto\"\n", "");
+    let dir = std::env::temp_dir().join(format!("boltzone-row1-tight-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for tol in ["1e-5", "1e-6"] {
+        let path = dir.join(format!("row1_{tol}.toml"));
+        std::fs::write(
+            &path,
+            text.replace("tolerance = 5e-4", &format!("tolerance = {tol}")),
+        )
+        .unwrap();
+        let out = boltzone(&["solve", path.to_str().unwrap(), "--json"]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{tol}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v = json_of(&out);
+        assert_eq!(v["method"], "hankel", "{tol}");
+        let tol: f64 = tol.parse().unwrap();
+        assert!(v["r_o_error"].as_f64().unwrap() <= tol * v["r_o"].as_f64().unwrap());
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
