@@ -217,7 +217,10 @@ fn the_single_plate_limit_is_the_plane_strain_edge_of_a_half_plane_load() {
     let coarse = root(0.5, 60.0);
     let quadrature = (fine.x - coarse.x).abs() + fine.half_width;
     let (g, bar) = FarTable::of(FarModel::SinglePlate).g(0.0);
-    eprintln!("g(∞): table {g} ± {bar:.1e}, plane strain {} ± {quadrature:.1e}", fine.x);
+    eprintln!(
+        "g(∞): table {g} ± {bar:.1e}, plane strain {} ± {quadrature:.1e}",
+        fine.x
+    );
     assert!(
         (g - fine.x).abs() <= bar + quadrature,
         "table g(∞) = {g} ± {bar:.1e}, plane strain {} ± {quadrature:.1e}",
