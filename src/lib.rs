@@ -26,9 +26,10 @@
 //!    the `auto` choice are stated here and nowhere else, and every front end asks it;
 //! 5. [`contact`]: the report's two-plate model on the finite elements, unilateral contact
 //!    found automatically, R_o resolved below one element (`boltzone two`);
-//! 6. [`hankel`] | [`fem`]: the semi-analytic slab solutions (the slab, `hankel::hole`, the
-//!    receding contact `hankel::receding`) | the axisymmetric finite elements (the report's
-//!    Appendices A and B, the single plate);
+//! 6. [`hankel`] | [`fem`] | [`table`]: the semi-analytic slab solutions (the slab,
+//!    `hankel::hole`, the receding contact `hankel::receding`) | the axisymmetric finite
+//!    elements (the report's Appendices A and B, the single plate) | R_o from tables built
+//!    offline by the semi-analytic routes, with error bars (the far region, the decay law);
 //! 7. [`joint`]: the plates and the joint;
 //! 8. [`material`], [`load`], [`rules`] (the 45° cone of Rötscher, the VDI 2230 cone and other
 //!    cone rules), [`plot`] (SVG/PNG figures);
@@ -82,6 +83,7 @@ pub mod reference;
 pub mod route;
 pub mod rules;
 pub mod scene;
+pub mod table;
 pub mod units;
 pub mod value;
 

@@ -71,6 +71,41 @@ pub fn lobatto_coefficients(values: &[f64]) -> Vec<f64> {
         .collect()
 }
 
+/// The N Chebyshev points of the first kind, s_j = cos(π(j + ½)/N), j = 0…N−1 (from near 1
+/// down to near −1; neither end is a point).
+pub fn first_kind_points(n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|j| (PI * (j as f64 + 0.5) / n as f64).cos())
+        .collect()
+}
+
+/// The coefficients c₀…c_{N−1} of the interpolant through `values` at
+/// [`first_kind_points`]`(N)` (the discrete cosine transform of type II, c₀ halved). O(N²).
+///
+/// ```
+/// use boltzone::numerics::chebyshev::{clenshaw, first_kind_coefficients, first_kind_points};
+/// let v: Vec<f64> = first_kind_points(6).iter().map(|x| 2.0 * x * x - 1.0).collect();
+/// let c = first_kind_coefficients(&v);
+/// assert!((c[2] - 1.0).abs() < 1e-15 && c[0].abs() < 1e-15 && c[4].abs() < 1e-15);
+/// ```
+pub fn first_kind_coefficients(values: &[f64]) -> Vec<f64> {
+    let n = values.len();
+    (0..n)
+        .map(|k| {
+            let s: f64 = values
+                .iter()
+                .enumerate()
+                .map(|(j, f)| f * (PI * k as f64 * (j as f64 + 0.5) / n as f64).cos())
+                .sum();
+            if k == 0 {
+                s / n as f64
+            } else {
+                2.0 * s / n as f64
+            }
+        })
+        .collect()
+}
+
 /// Σ c_k T_k(x) by Clenshaw's recurrence (x in [−1, 1]).
 pub fn clenshaw(c: &[f64], x: f64) -> f64 {
     let (mut b1, mut b2) = (0.0, 0.0);

@@ -254,3 +254,24 @@ fn ex23_fe_table1_fitted() {
     quick();
     ex23::main().unwrap();
 }
+
+#[allow(dead_code)]
+#[path = "../../examples/24_hole_decay.rs"]
+mod ex24;
+
+#[test]
+fn ex24_hole_decay() {
+    quick();
+    ex24::main().unwrap();
+}
+
+#[allow(dead_code)]
+#[path = "../../examples/25_build_tables.rs"]
+mod ex25;
+
+#[test]
+fn ex25_build_tables() {
+    // quick: the shipped tables printed and each checked against one fresh solve
+    quick();
+    ex25::main().unwrap();
+}
