@@ -26,7 +26,8 @@
 //! 5. [`hankel`] | [`fem`]: the semi-analytic slab solutions (the slab, `hankel::hole`, the
 //!    receding contact `hankel::receding`) | the axisymmetric finite elements (the report's
 //!    Appendices A and B, the single plate);
-//! 6. [`joint`]: the plates and the joint;
+//! 6. [`joint`]: the plates and the joint; [`bolt`]: the bolt's thread, resilience, load factor
+//!    and preload (VDI 2230);
 //! 7. [`material`], [`load`], [`rules`] (the 45° cone of Rötscher, the VDI 2230 cone and other
 //!    cone rules), [`plot`] (SVG/PNG figures);
 //! 8. [`numerics`] (quadrature, roots, special functions, interpolation, convergence
@@ -60,6 +61,7 @@
 //! ```
 #![warn(missing_docs)]
 
+pub mod bolt;
 pub mod compare;
 pub mod contact;
 pub mod error;

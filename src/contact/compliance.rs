@@ -172,7 +172,13 @@ pub fn member_compliance(
             });
         }
         // the levels still needed if the estimate keeps halving (at least one more)
-        let more = (error / (tol * value.abs())).log2().ceil().max(1.0) as usize;
+        // (an infinite estimate, too few levels for one: one level more)
+        let ratio = error / (tol * value.abs());
+        let more = if ratio.is_finite() {
+            ratio.log2().ceil().clamp(1.0, 14.0) as usize
+        } else {
+            1
+        };
         contact.min_levels = (n + more).min(contact.max_levels);
     }
 }

@@ -4,6 +4,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod bolt;
 mod compliance;
 mod compliance_study;
 mod rules;

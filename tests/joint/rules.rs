@@ -59,10 +59,11 @@ fn shigley_example_8_2_two_steel_members() {
         14.92,
         4
     ));
-    // the general stack procedure on one material with d_w = 1.5 d is Eq. 8-22
+    // the general stack procedure on one material with d_w = 1.5 d is Eq. 8-22, up to the
+    // printed constants: Eq. 8-20's 1.155 against Eq. 8-22's 2 × 0.5774 = 1.1548 (1.7e-4)
     let stack = members(&[(0.595, 30.0), (0.75, 30.0)], 0.5, 0.75).unwrap();
     let eq22 = two_equal_members(30.0, 0.5, l).unwrap();
-    assert!((stack / eq22 - 1.0).abs() < 1e-12, "{stack} vs {eq22}");
+    assert!((stack / eq22 - 1.0).abs() < 1.7e-4, "{stack} vs {eq22}");
 }
 
 /// δ_P of VDI's cone with sleeve by quadrature: ∫ dz/(E π (r(z)² − d_h²/4)) over the clamp
