@@ -64,7 +64,7 @@ pub fn preload_from_torque(
     positive("thread friction mu_G", mu_g)?;
     positive("head friction mu_K", mu_k)?;
     positive("hole diameter d_h", dh)?;
-    if !(dw > dh) {
+    if dw.partial_cmp(&dh) != Some(std::cmp::Ordering::Greater) {
         return Err(InputError::Parameter {
             field: "bearing diameter d_W",
             value: dw,

@@ -19,11 +19,11 @@
 //!
 //! Closed forms. `tests/joint/rules.rs` reproduces the published worked examples to their
 //! printed digits and checks the VDI closed forms against a quadrature of the cone;
-//! `examples/27_member_stiffness.rs` tabulates each rule's error against the exact k_P.
+//! `tests/joint/bolt.rs` sets VDI's cone beside the exact k_P of an M10 joint.
 //!
 //! # Cost
 //!
-//! O(1): tens of nanoseconds per rule (`examples/27_member_stiffness.rs` prints it).
+//! O(1): a few logarithms per rule.
 //!
 //! ```
 //! use boltzone::rules::{cone_radius, vdi2230_tan_phi};
