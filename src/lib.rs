@@ -30,7 +30,8 @@
 //!    `hankel::hole`, the receding contact `hankel::receding`) | the axisymmetric finite
 //!    elements (the report's Appendices A and B, the single plate) | R_o from tables built
 //!    offline by the semi-analytic routes, with error bars (the far region, the decay law);
-//! 7. [`joint`]: the plates and the joint;
+//! 7. [`joint`]: the plates and the joint; [`bolt`]: the bolt's thread, resilience, load factor
+//!    and preload (VDI 2230);
 //! 8. [`material`], [`load`], [`rules`] (the 45° cone of Rötscher, the VDI 2230 cone and other
 //!    cone rules), [`plot`] (SVG/PNG figures);
 //! 9. [`numerics`] (quadrature, roots, special functions, interpolation, convergence
@@ -64,6 +65,7 @@
 //! ```
 #![warn(missing_docs)]
 
+pub mod bolt;
 pub mod compare;
 pub mod contact;
 pub mod error;

@@ -15,6 +15,8 @@
 //!   welded or frictionless, the report's load variants), level after level of a mesh refined at
 //!   R_o; [`level`]: one mesh level on [`crate::fem`] (one factorization, a Schur complement on
 //!   the interface window, the LCP); [`tie`]: tied unknowns of closed pairs;
+//! - [`compliance`]: the member compliance δ_P and stiffness k_P of the joint from the contact
+//!   solution;
 //! - [`thermal`]: the model with a temperature field (uniform, linear through each plate, or
 //!   from heat conduction) and thermal strains.
 //!
@@ -39,6 +41,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod compliance;
 mod cut;
 pub mod edge_fit;
 mod error;

@@ -88,6 +88,9 @@ pub struct TwoPlateInfo {
     pub rate: Option<f64>,
     /// Where a plate wider than the mesh can hold (or infinite) was cut (None: meshed whole).
     pub cut: Option<f64>,
+    /// The member compliance δ_P of each level, coarse to fine (length per force; module
+    /// [`super::compliance`]); empty with a temperature field.
+    pub compliance: Vec<f64>,
     /// The cut's estimated error in R_o (included in `r_o_error`; 0 without a cut).
     pub truncation_error: f64,
     /// Wall time, seconds.
@@ -260,6 +263,10 @@ pub(crate) fn solve_keeping_with(
     }
     s.info.cut = s.info.cut.map(|c| c * length);
     s.info.truncation_error *= length;
+    s.info
+        .compliance
+        .iter_mut()
+        .for_each(|c| *c /= modulus * length);
     for l in &mut s.info.levels {
         l.h *= length;
         l.r_o *= length;
@@ -339,6 +346,7 @@ fn solve_unit(
     let mut converged = false;
     let mut rate = None;
     let mut last: Option<(MeshedJoint, LevelSolution)> = None;
+    let mut compliance = Vec::new();
     for k in 0..params.max_levels {
         let h = h0 / 2f64.powi(k as i32);
         let Level {
@@ -347,6 +355,11 @@ fn solve_unit(
             est,
             record,
         } = solve_level_at(joint, &g, params, h, prev.as_ref())?;
+        if thermal.is_none() {
+            compliance.push(super::compliance::level_compliance(
+                joint, params, &model, &sol,
+            )?);
+        }
         raw.push(est.r_o);
         fitted &= params.fitted_edge && record.r_o_fit_force.is_some();
         values = if fitted {
@@ -468,6 +481,7 @@ fn solve_unit(
             levels,
             rate,
             cut: (cut < c).then_some(cut),
+            compliance,
             truncation_error,
             seconds: start.elapsed().as_secs_f64(),
         },

@@ -21,6 +21,8 @@
 //! - [`thermal`]: temperatures per node, E(T), ν(T), α(T), thermal loads and stresses
 //!   σ = D (ε − ε_th) (Appendix C on every element);
 //! - [`single`]: the single-plate model (Fernlund's substitution) and its separation radius R_o;
+//!   [`single_compliance`]: its member compliance δ_P, with the level estimate of
+//!   [`compliance_estimate`] shared with the two-plate model;
 //! - [`lame`]: the Lamé cylinder, the closed-form check of the elements;
 //! - [`error`]: [`FemError`], the failures of all of the above.
 //!
@@ -56,6 +58,7 @@
 //! ```
 
 pub mod assemble;
+pub mod compliance_estimate;
 pub mod dofs;
 pub mod element;
 pub mod error;
@@ -68,6 +71,7 @@ pub mod ordering;
 pub mod plate_temperature;
 pub mod recover;
 pub mod single;
+pub mod single_compliance;
 pub mod single_levels;
 pub mod single_temperature;
 pub mod single_thermal;

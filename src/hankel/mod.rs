@@ -14,7 +14,8 @@
 //! - [`field`]: [`Slab`], every stress and displacement at any (r, z) with error estimates;
 //! - [`midplane`]: the midplane σ_z(r, 0) fast, on a node set shared by all radii, and the curve;
 //! - [`realspace`]: the midplane σ_z of thin slabs by a localised real-space point kernel;
-//! - [`separation`]: the separation radius R_o;
+//! - [`separation`]: the separation radius R_o; [`slab_compliance`]: the member compliance of
+//!   the slab without a hole (the single-plate substitute);
 //! - [`hole`]: the single plate with a hole (and a finite rim): Lamé and Papkovich–Fadle modes
 //!   fitted on r = A (and r = C), R_o with the hole residual as its error measure;
 //! - [`receding`]: the receding contact of a layer on a frictionless rigid base — the two-plate
@@ -63,6 +64,7 @@ pub mod midplane;
 pub mod realspace;
 pub mod receding;
 pub mod separation;
+pub mod slab_compliance;
 pub mod transform;
 
 // Former homes, kept so that old paths work.

@@ -35,6 +35,7 @@ fn uniform_contact(p0: f64) -> TwoPlateSolution {
             levels: Vec::new(),
             rate: None,
             cut: None,
+            compliance: Vec::new(),
             truncation_error: 0.0,
             seconds: 0.0,
         },

@@ -1,4 +1,4 @@
-//! Rules of thumb for the contact radius of a bolted joint: cones of pressure spreading from the
+//! Cone rules for the contact radius of a bolted joint: cones of pressure spreading from the
 //! edge of the bearing face (radius B) through the plate to the interface.
 //!
 //! - Rötscher's 45° cone (Rötscher 1927, report Fig. 2 and Chapter I): for two equal plates the
@@ -25,7 +25,7 @@
 //! O(1).
 //!
 //! ```
-//! use boltzone::rules::{cone_radius, vdi2230_tan_phi};
+//! use boltzone::rules::cone_radius::{cone_radius, vdi2230_tan_phi};
 //! let r = cone_radius(0.31, 0.1, 45f64.to_radians(), f64::INFINITY)?;
 //! assert!((r.radius - 0.41).abs() < 1e-15);
 //! // β_L = 2, y = 1: the logarithms vanish and tan φ = 0.362.

@@ -1,0 +1,10 @@
+//! Integration tests of the bolted-joint engineer's quantities: the member compliance δ_P and
+//! stiffness k_P (two-plate FE, single-plate FE, Hankel slab) and their exact limits.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod bolt;
+mod compliance;
+mod compliance_study;
+mod rules;
