@@ -29,7 +29,7 @@
 //!
 //! Each route's own estimate (the solvers' tests); the two methods agree within the sum of
 //! their estimates on a small map (`tests/compare/map_method.rs`) and over the map (example 13).
-//! `auto`'s fallback where the two-plate route is tried (below [`AUTO_BELOW`], within reach)
+//! `auto`'s fallback where the two-plate route is tried (below [`two_plate::AUTO_BELOW`], within reach)
 //! and does not converge: `tests/compare/map_fallback.rs` (a rim 2.45 D beyond the load at
 //! 2.9e-5: the route's estimate 3.5e-4 R_o, the FE's value taken bit for bit).
 //!
