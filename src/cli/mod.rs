@@ -39,6 +39,7 @@ mod two_curve;
 mod two_files;
 mod two_hankel;
 mod two_pair;
+mod two_question;
 mod two_rim;
 
 pub use command::{run, Cli};

@@ -29,8 +29,8 @@ use clap::ValueEnum;
 /// [`two_plate::hankel_blocker`] with its input named by the flag. Arguments whose joint
 /// cannot be built are left to the other checks.
 pub fn unsupported(args: &Args) -> Option<(&'static str, String, String)> {
-    let joint = super::two::joint(args).ok()?;
-    let b = two_plate::hankel_blocker(&super::two::question(args, &joint))?;
+    let joint = super::two_question::joint(args).ok()?;
+    let b = two_plate::hankel_blocker(&super::two_question::question(args, &joint))?;
     let g = &args.geom;
     let given = || "given".to_string();
     let (flag, value) = match b.key {
@@ -105,7 +105,7 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
             "seconds": out.info.seconds,
             "units": args.units.units.name(),
         });
-        super::two::add_rules(&mut v, args)?;
+        super::two_question::add_rules(&mut v, args)?;
         super::output::stamp(&mut v, &args.inputs()?, start)?;
         super::print_json(&v)?;
     } else {
@@ -138,7 +138,7 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
             error: out.info.r_o_error,
             converged,
         };
-        super::two::print_rules(args, r_o);
+        super::two_question::print_rules(args, r_o);
         if let Some(rim) = out.info.rim {
             println!(
                 "rim C = {} {l}: R_o - R_o(infinite plate) = {:+.4e} {l} (bending correction; its \

@@ -49,7 +49,7 @@ pub fn print_r_o(args: &Args, r_o: f64, error: f64, converged: bool) {
         sig(r_o, 10),
         sig(2.0 * r_o, 10),
     );
-    super::two::print_rules(args, value);
+    super::two_question::print_rules(args, value);
 }
 
 /// Runs the route on checked arguments with bearing pressure `load`.
@@ -120,7 +120,7 @@ pub fn print_json(
         "seconds": seconds,
         "units": args.units.units.name(),
     });
-    super::two::add_rules(&mut v, args)?;
+    super::two_question::add_rules(&mut v, args)?;
     super::output::stamp(&mut v, &args.inputs()?, start)?;
     super::print_json(&v)?;
     Ok(Status::from_converged(converged))

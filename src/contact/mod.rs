@@ -17,6 +17,7 @@
 //!   the interface window, the LCP); [`tie`]: tied unknowns of closed pairs;
 //! - [`compliance`]: the member compliance δ_P and stiffness k_P of the joint from the contact
 //!   solution;
+//! - `level_compliance`: δ_P of one solved level (by work, or the rigid head's reaction);
 //! - [`thermal`]: the model with a temperature field (uniform, linear through each plate, or
 //!   from heat conduction) and thermal strains.
 //!
@@ -50,6 +51,7 @@ pub mod friction;
 mod friction_level;
 pub mod lcp;
 pub mod level;
+mod level_compliance;
 mod level_types;
 pub mod params;
 pub mod pgs;

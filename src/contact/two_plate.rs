@@ -356,7 +356,7 @@ fn solve_unit(
             record,
         } = solve_level_at(joint, &g, params, h, prev.as_ref())?;
         if thermal.is_none() {
-            compliance.push(super::compliance::level_compliance(
+            compliance.push(super::level_compliance::level_compliance(
                 joint, params, &model, &sol,
             )?);
         }
