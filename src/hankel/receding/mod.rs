@@ -12,14 +12,8 @@
 //! - [`rim_bending`]: the exact non-decaying states (membrane, bending) and the far field by
 //!   reciprocity; [`rim`]: the finite rim r = C of the plate without a hole; `prescribed`: a
 //!   prescribed displacement of the contact disk as a right-hand side (the rim's correction);
-//! - the two-plate model with the hole: [`holed`] (the entry points; bilateral holed plate +
-//!   crack field + its hole correction, iterated), `holed_params` (its knobs and reach),
-//!   `holed_record` (its answer and record), `holed_setup` (a geometry's fixed parts),
-//!   `holed_infinite` (the infinite plate's setup and search), `holed_search` (the search for
-//!   R_o and its error estimate), `crack` (one trial contact radius), `crack_tables` (that
-//!   radius's quadrature tables), `setup_tables` and `hole_tables` (the tables shared across
-//!   radii), `endpoint` (the crack load's transform beyond its panels), `anderson` (the
-//!   iteration's acceleration), [`rim_holed`] (the finite rim with the hole).
+//! - [`holed`]: the two-plate model with the hole (bilateral holed plate + crack field + its
+//!   hole correction, iterated), a folder of its own whose module docs list its files.
 //!
 //! # Accuracy
 //!
@@ -42,32 +36,20 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-mod anderson;
 pub mod contact;
-mod crack;
-mod crack_tables;
-mod endpoint;
-mod hole_tables;
 pub mod holed;
-mod holed_infinite;
-mod holed_params;
-mod holed_record;
-mod holed_search;
-mod holed_setup;
 pub mod layer;
 pub mod layer_field;
 pub mod pair;
 mod prescribed;
 pub mod rim;
 pub mod rim_bending;
-pub mod rim_holed;
 mod search;
-mod setup_tables;
 mod system;
 
 pub use contact::{
     contact_radius, nodes, ContactSolution, Layer, RecedingContact, RecedingError, RecedingInfo,
     RecedingParams,
 };
-pub use holed_params::{AUTO_BELOW, MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
+pub use holed::{AUTO_BELOW, MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
 pub use pair::Pair;

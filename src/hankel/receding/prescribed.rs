@@ -1,6 +1,6 @@
 //! A prescribed displacement of the contact disk as a right-hand side of the layer's Fredholm
 //! equation (module `system`): the rim's bending correction S₂ of [`super::rim`] and
-//! [`super::rim_holed`] presses the plate onto the plane so that its bottom moves up by
+//! [`super::holed::rim`] presses the plate onto the plane so that its bottom moves up by
 //! w(r) = r²/2 + k ln r (+ a rigid translation) on the contact zone.
 //!
 //! **Abel form.** With q̄(ξ) = ∫₀^c φ(t) cos ξt dt the half-space part of (G/(1−ν))w is

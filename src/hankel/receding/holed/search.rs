@@ -1,4 +1,4 @@
-//! The search for R_o of the holed two-plate model ([`super::holed`]) and its error estimate:
+//! The search for R_o of the holed two-plate model ([`super`]) and its error estimate:
 //! Newton's method on the edge coefficient f(c) = c·φ(c)/p̄(0) of the trial contact radii of
 //! module `crack` ([`newton_root`]), from a predictor, every edge value kept so that none is
 //! computed twice, each radius's crack iteration started from the correction of the nearest
@@ -8,7 +8,7 @@
 //!   −min(0.35 + 0.45D/(B − A), 2)/D (`Setup::predictor`), then secants (inverse quadratic
 //!   interpolation through three points when it agrees with the secant), kept in the bracket
 //!   once there is one; when Newton fails (a slope not negative, a step out of range, ten
-//!   evaluations) the receding solver's scan ([`super::search::root`]) and step-stopping
+//!   evaluations) the receding solver's scan ([`crate::hankel::receding::search::root`]) and step-stopping
 //!   inverse interpolation ([`crate::numerics::secant::refine`]) as before. Also the solve at
 //!   R_o (or at the last radius, within the root tolerance of R_o, when no pressure is asked
 //!   for) and the edge values the search computed;
@@ -26,7 +26,7 @@
 //!   its change is −(f_v(x) − f(x))/f′: the two edge coefficients' slopes differ by about as
 //!   much as their roots, so the difference at x is their roots' difference to that order, the
 //!   extrapolated root's own error (counted apart, the root tolerance) left out. The finite
-//!   rim (module `rim_holed`) starts its own Newton search from the infinite plate's R_o with
+//!   rim (module `rim`) starts its own Newton search from the infinite plate's R_o with
 //!   its slope ([`Found::slope`]) and solves its variants likewise.
 //!
 //! # Accuracy
@@ -57,7 +57,7 @@
 //! solves instead of 20–24 in all, the rim's search from the infinite R_o and no re-solve at
 //! R_o. At 1e-3 R_o moves within the root
 //! tolerance (1e-4 D), which both searches meet differently; it is part of both estimates.
-//! The 1e-6 tier's split variants (module [`super::holed_params`]) add two solves per geometry
+//! The 1e-6 tier's split variants (module [`super::params`]) add two solves per geometry
 //! (four variants instead of two): by turns with main's binary once more (one round,
 //! load ~8, the tiers' survey running beside), at --tol 1e-6 C = ∞ 95 solves as main's (the
 //! search's 24 saved go to the variants), CPU per row 0.36–0.72 s against 0.34–0.80 s (1.01×
@@ -69,7 +69,7 @@
 //! The variants at the search's last radius, when R_o was extrapolated from it (the fewer-nodes
 //! variant on the tables kept there), and the modes variant on the setup's hole tables: the
 //! same solves, 1.11× less CPU in total at 1e-6 (C = ∞), 1.07× at 1e-3, 1.06× at 1e-6 with
-//! C = 1.54 in, R_o unchanged (module [`super::holed`]'s Cost, by turns with main's binary).
+//! C = 1.54 in, R_o unchanged (module [`super`]'s Cost, by turns with main's binary).
 //!
 //! **Why still four radii.** Traced at 1e-6 on Table 1 (C = ∞): the search takes four radii on
 //! nine rows, three on (0.75, 1.3) and (0.5, 3.1), where B + 0.45D lies within 3.4e-3 D and
@@ -88,12 +88,12 @@
 //! B + 0.45D instead of B bracketed R_o in two solves instead of three or four (all twelve rows
 //! 95 radii instead of 110 at --tol 1e-6). Timed by example 19.
 
-use super::contact::RecedingError;
-use super::holed_params::HoledParams;
-use super::holed_setup::{Crack, Setup};
-use super::search::{root, Scan};
+use super::params::HoledParams;
+use super::setup::{Crack, Setup};
 use crate::hankel::hole::fit::Fit;
 use crate::hankel::hole::HoleParams;
+use crate::hankel::receding::contact::RecedingError;
+use crate::hankel::receding::search::{root, Scan};
 use crate::joint::SinglePlate;
 use crate::numerics::secant::refine;
 

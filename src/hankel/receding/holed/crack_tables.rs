@@ -4,16 +4,16 @@
 //! depend on the radius c and the setup only, not on the Nyström points n nor on a prescribed
 //! lift: the setup keeps the last radius's (`Setup::radius_tables`, module `setup_tables`), which the estimate's
 //! fewer-nodes variant (at R_o, where the search ended), the pressure's solve at R_o and the
-//! finite rim's two solves per radius (module `rim_holed`) take instead of rebuilding them.
+//! finite rim's two solves per radius (module `rim`) take instead of rebuilding them.
 //!
 //! # Accuracy
 //!
 //! The same tables as before they were kept: R_o bit for bit the same
-//! (`tests/hankel/two_plate_hole_fast.rs`; module [`super::holed`]'s Cost).
+//! (`tests/hankel/two_plate_hole_fast.rs`; module [`super`]'s Cost).
 //!
 //! # Cost
 //!
-//! Most of a radius's cost (module [`super::holed`]'s Cost, where the time goes); timed by
+//! Most of a radius's cost (module [`super`]'s Cost, where the time goes); timed by
 //! example 19.
 //!
 //! ```
@@ -23,7 +23,7 @@
 //! ```
 
 use super::hole_tables::HoleTable;
-use super::system::XiRule;
+use crate::hankel::receding::system::XiRule;
 use crate::numerics::panel_grid::PanelInterp;
 use num_complex::Complex64;
 use std::sync::Arc;

@@ -1,9 +1,9 @@
-//! The knobs of the holed two-plate route ([`super::holed`]): [`HoledParams`], its defaults
+//! The knobs of the holed two-plate route ([`super`]): [`HoledParams`], its defaults
 //! and [`HoledParams::for_tolerance`], the knobs for a relative tolerance on R_o.
 //!
 //! # Accuracy
 //!
-//! What each knob buys is measured in [`super::holed`]'s docs; the knobs for 1e-6 against a run
+//! What each knob buys is measured in [`super`]'s docs; the knobs for 1e-6 against a run
 //! finer in every knob: `tests/hankel/two_plate_hole_fast.rs`
 //! (`knobs_for_1e6_are_within_their_estimate_of_a_finer_run`); every tier against a run at
 //! 1e-9 on random geometries: `tests/hankel/two_plate_hole_tiers.rs`.
@@ -40,10 +40,10 @@ pub const MAX_B_OVER_D: f64 = 16.0;
 /// error is within its estimate (at most 0.47 of it); at the limit the CI check
 /// `at_the_smallest_hole_the_estimate_covers_a_finer_run`. With a rim the estimate missed the
 /// Chebyshev heights at every A/D, not a small-hole effect, until it gained their variant
-/// (module `rim_holed`).
+/// (module `rim`).
 pub const MIN_A_OVER_D: f64 = 0.04;
 
-/// Widest load B/D that the route takes with a finite rim C (module `rim_holed`), whose cost is
+/// Widest load B/D that the route takes with a finite rim C (module `rim`), whose cost is
 /// 2–5× the infinite plate's: measured (release, A = D, C = 30D, with a CI build beside it)
 /// 2.2, 3.9, 6.6 s of CPU at B/D = 4, 6, 8 and --tol 1e-4, 4.1, 6.6, 10.5 s at 1e-6; 17 s at
 /// B/D = 11 and 35 s at 16 (over the fuzz's 30 s). Wider loads with a rim are refused as bad
@@ -58,7 +58,7 @@ pub const MAX_B_OVER_D_RIM: f64 = 8.0;
 /// it cannot claim the tolerance at all.
 pub const AUTO_BELOW: f64 = 3e-5;
 
-/// Knobs of [`two_plate_hole`](super::holed::two_plate_hole).
+/// Knobs of [`two_plate_hole`](super::two_plate_hole).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HoledParams {
     /// The hole correction: modes N (`terms`, default 16 here) and corner terms, for both the
@@ -178,9 +178,9 @@ impl HoledParams {
     /// 1e-6 double to 128 (as the tier for 1e-8), which resolves the small holes with wider
     /// loads (on the whole-reach survey 3 runs stopped at 64 with 3.2e-6 … 5e-5 P, at most
     /// 0.28 of their estimates; at 128 they meet 2e-6 P), and a run whose modes still stop short
-    /// claims no tolerance ([`HoledInfo::hole_resolved`](super::holed::HoledInfo::hole_resolved)):
+    /// claims no tolerance ([`HoledInfo::hole_resolved`](super::HoledInfo::hole_resolved)):
     /// narrow loads then at most 0.50 of the bar, converged on 19, 13, 16, 9 of 30.
-    /// [`two_plate_hole_to`](super::holed::two_plate_hole_to) hands a run short of its
+    /// [`two_plate_hole_to`](super::two_plate_hole_to) hands a run short of its
     /// tolerance to the next tier. On Table 1 and the tiers' survey nothing changed (40 of 40
     /// resolved and converged at every tier; Table 1's R_o and estimates bit for bit).
     ///
@@ -196,7 +196,7 @@ impl HoledParams {
     ///
     /// Re-measured on an idle machine with this session's rounds merged (tables, variants at the
     /// search's last radius, tables round 2), by turns with the session's first binary (module
-    /// [`super::holed`]'s Cost): CPU per row 0.14–0.28 s at 1e-6 (the twelve rows 3.14–3.43 →
+    /// [`super`]'s Cost): CPU per row 0.14–0.28 s at 1e-6 (the twelve rows 3.14–3.43 →
     /// 2.19–2.37 s per round, 1.44×), 0.08–0.21 s at 1e-5, 0.03–0.05 s at 1e-3 (0.54 → 0.43 s);
     /// the table's CPU column above is the older binaries'.
     ///
@@ -259,7 +259,7 @@ impl HoledParams {
     }
 
     /// The knobs of [`HoledParams::for_tolerance`]`(tol)` followed by each tighter tier's up to
-    /// the tier for 1e-6: what [`two_plate_hole_to`](super::holed::two_plate_hole_to) tries in
+    /// the tier for 1e-6: what [`two_plate_hole_to`](super::two_plate_hole_to) tries in
     /// turn until the estimate meets `tol`. The tier for 1e-8 only when asked for (`tol` below
     /// 1e-6): its cost at the reach (19.5 s of CPU at B/D = 16, 28 s with a rim at B/D = 8,
     /// below) after the looser tiers' would pass the 30 s a run may take

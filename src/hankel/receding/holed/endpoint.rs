@@ -10,7 +10,7 @@
 //!
 //! The three-term error falls at rate ≈ 6 in ξ_l (`tests/hankel/two_plate_hole_fast.rs`,
 //! `the_endpoint_expansion_converges_fast_in_its_cutoff`; derivation and figures in
-//! [`super::holed`]).
+//! [`super`]).
 //!
 //! # Cost
 //!
@@ -26,7 +26,7 @@
 use crate::numerics::panel_grid::PanelInterp;
 
 /// l's values at the contact edge for the endpoint expansion of its transform (module docs
-/// of [`super::holed`]): l(c), l′(c) and f = (s l′)′ = l′ + s l″ at c.
+/// of [`super`]): l(c), l′(c) and f = (s l′)′ = l′ + s l″ at c.
 pub(super) struct Endpoint {
     c: f64,
     lc: f64,

@@ -1,13 +1,13 @@
 //! The fixed parts of one geometry of the semi-analytic two-plate route with the hole
-//! ([`super::holed`]): the bilateral holed plate, the correction basis (hole modes, corner
+//! ([`super`]): the bilateral holed plate, the correction basis (hole modes, corner
 //! fields), the tables that every trial contact radius reuses ([`Setup`]), the hole's ξ-rule
 //! for the hole tables ([`Setup::hole_rule`]),
 //! and one contact radius solved ([`Crack`]). The root search over the radius is
-//! [`super::holed_search`]; the public entry points and their record are [`super::holed`].
+//! [`super::search`]; the public entry points and their record are [`super`].
 //!
 //! # Accuracy
 //!
-//! As [`super::holed`]: `tests/hankel/two_plate_hole.rs`, `tests/hankel/two_plate_hole_fast.rs`.
+//! As [`super`]: `tests/hankel/two_plate_hole.rs`, `tests/hankel/two_plate_hole_fast.rs`.
 //!
 //! # Cost
 //!
@@ -22,7 +22,7 @@
 //! bilateral plates 5 %), the hole tables' panels 9 %. With the modes variant on the setup's
 //! hole tables (one thread, three runs each, this route's binary and main's after the tables
 //! round): the hole tables' panels under the estimate 14 % → 10 % of each binary's samples
-//! (module [`super::holed`]'s Cost).
+//! (module [`super`]'s Cost).
 //!
 //! ```
 //! // Internal to the route; reached through its entry point:
@@ -30,18 +30,18 @@
 //! let _ = (two_plate_hole, HoledParams::default());
 //! ```
 
-use super::contact::RecedingError;
 use super::crack_tables::RadiusTables;
 use super::hole_tables::{HoleRule, HoleTable};
-use super::holed_params::HoledParams;
-use super::layer_field::bottom_kernels;
-use super::system::panels;
+use super::params::HoledParams;
 use crate::error::InputError;
 use crate::hankel::hole::corner::CornerLoads;
 use crate::hankel::hole::eigen::{symmetric_roots, Mode};
 use crate::hankel::hole::fit::{heights, Fit};
 use crate::hankel::hole::{HoleParams, HolePlate};
 use crate::hankel::midplane::MidplaneCurve;
+use crate::hankel::receding::contact::RecedingError;
+use crate::hankel::receding::layer_field::bottom_kernels;
+use crate::hankel::receding::system::panels;
 use crate::hankel::transform::LoadTransform;
 use crate::joint::{OuterRadius, SinglePlate};
 use crate::numerics::panel_grid::PanelInterp;
@@ -145,7 +145,7 @@ impl Setup {
             .into());
         }
         let b_over_d = plate.load().outer() / d;
-        if b_over_d > super::holed_params::MAX_B_OVER_D {
+        if b_over_d > super::params::MAX_B_OVER_D {
             return Err(InputError::Parameter {
                 field: "load outer radius over plate thickness B/D",
                 value: b_over_d,
@@ -155,7 +155,7 @@ impl Setup {
             .into());
         }
         let a_over_d = plate.hole_radius() / d;
-        if a_over_d < super::holed_params::MIN_A_OVER_D {
+        if a_over_d < super::params::MIN_A_OVER_D {
             return Err(InputError::Parameter {
                 field: "hole radius over plate thickness A/D",
                 value: a_over_d,

@@ -4,7 +4,7 @@
 //! **What is computed.** The crack field's σ_r and τ_rz on the hole r = A at the upper
 //! Chebyshev heights z_j are linear in its bottom load b = q + l (compression negative, the
 //! units of the load; lengths in those of D): with the hole ξ-rule (ξ_k, w_k) and the layer's
-//! bottom kernels R₀, R₁, T of [`super::layer_field::bottom_kernels`],
+//! bottom kernels R₀, R₁, T of [`crate::hankel::receding::layer_field::bottom_kernels`],
 //!
 //! σ_r(A, z_j) = Σ_k w_k b̃(ξ_k) [R₀ J₀(ξ_kA) − R₁ J₁(ξ_kA)/(ξ_kA)],  τ_rz = Σ_k w_k b̃(ξ_k) T J₁(ξ_kA),
 //!
@@ -17,7 +17,7 @@
 //! Gauss–Legendre panels of width 2.5π/ξ_max from 0 (ξ_max the rule's end for G, ξ_l for H),
 //! each panel computed the first time a radius needs it, and interpolated (barycentric
 //! formula, [`crate::numerics::panel_grid::PanelInterp`]) at each radius's t- and s-rule. The hole ξ-rule is
-//! `Setup::hole_rule` (module `holed_setup`) for a radius c_hi = c + 2D beyond the first radius asked (it resolves
+//! `Setup::hole_rule` (module `setup`) for a radius c_hi = c + 2D beyond the first radius asked (it resolves
 //! every radius up to c_hi); a radius beyond c_hi starts a new table.
 //!
 //! **Interpolation error.** G_j and H_j are band-limited to ξ_max: on a panel of width h the
@@ -31,13 +31,13 @@
 //! the sums at 400 points per band on Table 1 row (1, 1.3) at the knobs for 1e-6: 2.5e-15 (G)
 //! and 1.6e-15 (H) of Σ_k |w_k K_kj|, asserted below the bound (1e-11 with its Lebesgue
 //! constant rounded up); through the route, R_o moved by at most 8.1e-12 R_o from the
-//! per-radius tables it replaced on Table 1 (module [`super::holed`]'s Cost).
+//! per-radius tables it replaced on Table 1 (module [`super`]'s Cost).
 //!
 //! # Cost
 //!
 //! A panel of G costs 20 cosines per ξ-node (the addition theorem of [`crate::numerics::panel_grid`]), of H 20
 //! J₀ values per node up to ξ_l; the first radius of a setup builds about twice the entries of
-//! the per-radius tables it replaces, later radii a panel or two (module [`super::holed`]'s
+//! the per-radius tables it replaces, later radii a panel or two (module [`super`]'s
 //! Cost; example 19).
 //!
 //! ```
@@ -224,7 +224,7 @@ impl HoleTable {
     }
 }
 
-/// The hole's ξ-rule for one contact radius (`Setup::hole_rule`, module `holed_setup`).
+/// The hole's ξ-rule for one contact radius (`Setup::hole_rule`, module `setup`).
 pub(super) struct HoleRule {
     /// (ξ, w, J₀(ξA), J₁(ξA)/(ξA), J₁(ξA)).
     pub(super) xi: Vec<(f64, f64, f64, f64, f64)>,

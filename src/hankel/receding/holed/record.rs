@@ -1,11 +1,11 @@
-//! The record of the semi-analytic two-plate route with the hole ([`super::holed`]): R_o with
+//! The record of the semi-analytic two-plate route with the hole ([`super`]): R_o with
 //! its error estimate and cost ([`HoledContact`], [`HoledInfo`]) and, with a finite outer
-//! radius, the rim's terms ([`RimRecord`], module `rim_holed`). Lengths in the units of the
+//! radius, the rim's terms ([`RimRecord`], module `rim`). Lengths in the units of the
 //! plate; serialized into `two --method hankel --json` as `hankel`.
 //!
 //! # Accuracy
 //!
-//! What the estimate covers and how it was checked: [`super::holed`] and module `rim_holed`.
+//! What the estimate covers and how it was checked: [`super`] and module `rim`.
 //!
 //! # Cost
 //!
@@ -19,7 +19,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-/// What [`two_plate_hole`](super::holed::two_plate_hole) did and how well.
+/// What [`two_plate_hole`](super::two_plate_hole) did and how well.
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
 pub struct HoledInfo {
     /// Estimated absolute error of R_o (see the module docs).
@@ -52,7 +52,7 @@ pub struct HoledInfo {
     pub solves: usize,
     /// Wall-clock seconds.
     pub seconds: f64,
-    /// With a finite outer radius C: the rim's terms (module `rim_holed`); `None` for C = ∞.
+    /// With a finite outer radius C: the rim's terms (module `rim`); `None` for C = ∞.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rim: Option<RimRecord>,
 }
@@ -74,7 +74,7 @@ impl HoledContact {
     }
 }
 
-/// The rim's part of the record of [`super::holed::two_plate_hole`] with a finite C.
+/// The rim's part of the record of [`super::two_plate_hole`] with a finite C.
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
 pub struct RimRecord {
     /// The outer radius C.

@@ -1,11 +1,11 @@
-//! The finite rim r = C of the semi-analytic two-plate route with the hole ([`super::holed`]):
+//! The finite rim r = C of the semi-analytic two-plate route with the hole ([`super`]):
 //! R_o of Table 1's joints with the report's C = 1.54 in.
 //!
-//! **Method** (as [`super::rim`] for the solid plate; compression negative in stresses, q and
+//! **Method** (as [`crate::hankel::receding::rim`] for the solid plate; compression negative in stresses, q and
 //! p pressing positive, w upward, lengths in the units of D). For a trial contact radius c the
 //! finite plate is S_∞ + β(E + S₂) + εM up to a self-equilibrated rim residue:
 //! - S_∞: the holed route's infinite plate at contact radius c (bilateral plate + crack field +
-//!   hole correction, [`super::holed`]);
+//!   hole correction, [`super`]);
 //! - E: the bending state of [`RimStates`] (uniform + log bending, M_r(A) = 0, so the hole stays
 //!   free exactly), whose plane displacement −r²/2 − k ln r breaks the contact condition;
 //! - S₂: the same crack machinery without load and without bilateral part, its bottom lifted by
@@ -19,7 +19,7 @@
 //! Gauss–Legendre in u with r = c − (c − A)u², smooth for the √ or 1/√ edge), and
 //! β = −M_∞(C)/(M_E(C) + M₂(C)). R_o is the root of the total edge coefficient
 //! φ_∞(c) + βφ₂(c), by Newton's method from the infinite plate's R_o with the infinite plate's
-//! slope, then secants (module `holed_search`'s `newton_root`, its stop as the infinite
+//! slope, then secants (module `search`'s `newton_root`, its stop as the infinite
 //! route's; when it fails, bracketed about the infinite R_o and refined by step-stopping
 //! inverse interpolation, [`crate::numerics::secant::refine`]). With no pressure asked for, the
 //! last trial of the search (at R_o, or within the root tolerance of it) gives the record's β
@@ -30,9 +30,9 @@
 //! Nyström points and, on a second setup, with 2/3 of the Chebyshev heights (each one Newton
 //! step from R_o, the slope a secant through the search's edge values within 1e-5…1e-2 D of
 //! R_o, else a difference over 1e-3 D; solved at the search's last radius x when R_o was
-//! extrapolated from it, the change then −(f_v(x) − f(x))/f′ as module `holed_search`'s
+//! extrapolated from it, the change then −(f_v(x) − f(x))/f′ as module `search`'s
 //! estimate), plus the rim
-//! residue's D·e^(−4.21(C − R_o)/D) ([`super::rim`]). That bound, against the FE meshed to C
+//! residue's D·e^(−4.21(C − R_o)/D) ([`crate::hankel::receding::rim`]). That bound, against the FE meshed to C
 //! at --tol 1e-5 on (A/D, B/A) = (1, 2.2) (`tests/hankel/two_plate_rim_decay.rs`, ignored):
 //! at C − R_o = 0.6, 1.0, 1.5, 2.0 D, |FE − this| = 3.7e-4, 2.3e-5, 9.2e-7, 7.7e-7 D against
 //! bounds 6.9e-2, 1.3e-2, 1.6e-3, 2.0e-4 D (the FE's estimate 8.5e-5 D), and on (0.5, 1.6) at
@@ -93,19 +93,19 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::contact::RecedingError;
-use super::holed_infinite;
-use super::holed_params::{HoledParams, MAX_B_OVER_D_RIM};
-use super::holed_record::HoledContact;
-pub use super::holed_record::RimRecord;
-use super::holed_search::{fraction_radius, newton_root, secant_slope, NEWTON_EVALUATIONS};
-use super::holed_setup::Setup;
-use super::prescribed::Prescribed;
-use super::rim::PAPKOVICH_DECAY;
-use super::rim_bending::RimStates;
-use super::search::{root, Scan};
+use super::infinite;
+use super::params::{HoledParams, MAX_B_OVER_D_RIM};
+use super::record::HoledContact;
+pub use super::record::RimRecord;
+use super::search::{fraction_radius, newton_root, secant_slope, NEWTON_EVALUATIONS};
+use super::setup::Setup;
 use crate::error::InputError;
 use crate::hankel::hole::fit::Fit;
+use crate::hankel::receding::contact::RecedingError;
+use crate::hankel::receding::prescribed::Prescribed;
+use crate::hankel::receding::rim::PAPKOVICH_DECAY;
+use crate::hankel::receding::rim_bending::RimStates;
+use crate::hankel::receding::search::{root, Scan};
 use crate::joint::{OuterRadius, SinglePlate};
 use crate::numerics::quadrature::gauss_legendre;
 use crate::numerics::secant::refine;
@@ -185,7 +185,7 @@ impl Route<'_> {
     }
 }
 
-/// [`super::holed::two_plate_hole_pressure`] for a plate whose outer radius is `c_outer` (module docs).
+/// [`super::two_plate_hole_pressure`] for a plate whose outer radius is `c_outer` (module docs).
 pub(super) fn finite_rim(
     plate: &SinglePlate,
     c_outer: f64,
@@ -215,7 +215,7 @@ pub(super) fn finite_rim(
     let infinite = SinglePlate::new(a, OuterRadius::Infinite, d, plate.material(), load.clone())?;
     // one setup for the infinite plate's R_o, which brackets the search, and the rim's solves
     let setup = Setup::new(&infinite, params)?;
-    let (inf, _, inf_slope) = holed_infinite::solve_on(&setup, &infinite, params, &[])?;
+    let (inf, _, inf_slope) = infinite::solve_on(&setup, &infinite, params, &[])?;
     let mat = plate.material();
     let states = RimStates::new(a, d, mat)?;
     let gl = gauss_legendre(20);
@@ -323,7 +323,7 @@ pub(super) fn finite_rim(
         };
         // the variants solved at the search's last radius x when R_o was extrapolated from it
         // (the fewer-nodes trial takes its kept tables), their changes −(f_v(x) − f(x))/f′;
-        // at R_o otherwise, −f_v(R_o)/f′ as before (module `holed_search`'s estimate)
+        // at R_o otherwise, −f_v(R_o)/f′ as before (module `search`'s estimate)
         let (x, shift) = match (evaluated, seen.last()) {
             (false, Some(&(x, f_x))) => (x, f_x - f0),
             _ => (r_o, 0.0),

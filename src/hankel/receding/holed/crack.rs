@@ -1,14 +1,14 @@
-//! One trial contact radius of the holed two-plate model ([`super::holed`]; the search for R_o
-//! over them is module `holed_search`): the crack field's Fredholm equation with a bottom load,
+//! One trial contact radius of the holed two-plate model ([`super`]; the search for R_o
+//! over them is module `search`): the crack field's Fredholm equation with a bottom load,
 //! its traction on the hole at Chebyshev heights, the hole correction's fit, the iteration
-//! l ← s₀ + σ_z^Z (derivation in [`super::holed`], Anderson-accelerated, module `anderson`) and
+//! l ← s₀ + σ_z^Z (derivation in [`super`], Anderson-accelerated, module `anderson`) and
 //! the contact pressure, with the quadrature helpers they share; with a prescribed lift of the
 //! contact zone instead of the load ([`Setup::crack`], module `prescribed`) the finite
-//! rim's correction S₂ ([`super::rim_holed`]).
+//! rim's correction S₂ ([`super::rim`]).
 //!
 //! # Accuracy
 //!
-//! Measured through the holed route ([`super::holed`]): `tests/hankel/two_plate_hole.rs`
+//! Measured through the holed route ([`super`]): `tests/hankel/two_plate_hole.rs`
 //! (`bilateral_limit_is_the_slab`, and against the FE `agrees_with_the_fe_on_table1_first_row`,
 //! ignored, about 25 s).
 //!
@@ -21,16 +21,16 @@
 //! once per radius (module `system`'s `NystromMatrix`: only α, β and the total change between
 //! iterations; the same arithmetic, R_o bit for bit), the cosine tables' sums and the hole's
 //! part through module `hole_tables` (2nz sums over the t- and s-rule instead of sums over the
-//! hole rule); timed by example 19 (breakdown in [`super::holed`]'s Cost).
+//! hole rule); timed by example 19 (breakdown in [`super`]'s Cost).
 
 use super::anderson::{pack, unpack, Anderson};
-use super::contact::RecedingError;
 use super::endpoint::Endpoint;
-use super::holed_params::HoledParams;
-use super::holed_setup::{Crack, Setup};
-use super::prescribed::Prescribed;
-use super::system::{panels, Nystrom, NystromMatrix};
+use super::params::HoledParams;
+use super::setup::{Crack, Setup};
 use crate::hankel::hole::fit::{fit, Boundary, Fit, HoleData};
+use crate::hankel::receding::contact::RecedingError;
+use crate::hankel::receding::prescribed::Prescribed;
+use crate::hankel::receding::system::{panels, Nystrom, NystromMatrix};
 use crate::numerics::panel_grid::{dot, PanelInterp};
 use std::f64::consts::FRAC_2_PI;
 
@@ -39,7 +39,7 @@ impl Setup {
     /// points, iterating l ← s₀ + σ_z^Z from the correction `start` (a nearby radius's, or
     /// none); and the contact pressure at `radii` (A ≤ r). With `lift`, the unloaded plate (no
     /// bilateral part) whose bottom is lifted by `lift` on the contact zone: the rim's S₂
-    /// ([`super::rim_holed`]).
+    /// ([`super::rim`]).
     pub(super) fn crack(
         &self,
         c: f64,

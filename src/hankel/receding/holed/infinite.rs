@@ -1,11 +1,11 @@
-//! The infinite plate of the semi-analytic two-plate route with the hole ([`super::holed`]):
-//! the geometry's setup, the search for R_o over trial contact radii (module `holed_search`),
+//! The infinite plate of the semi-analytic two-plate route with the hole ([`super`]):
+//! the geometry's setup, the search for R_o over trial contact radii (module `search`),
 //! the error estimate's variant runs and the interface pressure at the radii asked for. The
-//! finite rim (module `rim_holed`) starts from it.
+//! finite rim (module `rim`) starts from it.
 //!
 //! # Accuracy
 //!
-//! As [`super::holed`]: `tests/hankel/two_plate_hole.rs`, `tests/hankel/two_plate_hole_fast.rs`,
+//! As [`super`]: `tests/hankel/two_plate_hole.rs`, `tests/hankel/two_plate_hole_fast.rs`,
 //! `tests/hankel/two_plate_hole_tiers.rs`.
 //!
 //! # Cost
@@ -18,16 +18,16 @@
 //! let _ = (two_plate_hole, HoledParams::default());
 //! ```
 
-use super::contact::RecedingError;
-use super::holed_params::HoledParams;
-use super::holed_record::{HoledContact, HoledInfo};
-use super::holed_search::{estimate, fraction_radius};
-use super::holed_setup::Setup;
+use super::params::HoledParams;
+use super::record::{HoledContact, HoledInfo};
+use super::search::{estimate, fraction_radius};
+use super::setup::Setup;
+use crate::hankel::receding::contact::RecedingError;
 use crate::joint::SinglePlate;
 use std::time::Instant;
 
 /// R_o of the infinite `plate` and the pressure at the fractions `at` of [A, R_o] (checked by
-/// the caller): [`super::holed::two_plate_hole_pressure`] at C = ∞.
+/// the caller): [`super::two_plate_hole_pressure`] at C = ∞.
 pub(super) fn solve(
     plate: &SinglePlate,
     params: &HoledParams,
@@ -43,7 +43,7 @@ pub(super) fn solve(
 /// R_o with its record, the pressure curve (r, q) and the edge coefficient's slope at R_o.
 pub(super) type Solved = (HoledContact, Vec<(f64, f64)>, Option<f64>);
 
-/// As [`solve`] on a `setup` built for `plate` and `params` (module `rim_holed` shares it with
+/// As [`solve`] on a `setup` built for `plate` and `params` (module `rim` shares it with
 /// the rim's solves); `seconds` counts from this call, not the setup's. Also the edge
 /// coefficient's slope at R_o, where the search's edge values give it (the rim's Newton start).
 pub(super) fn solve_on(

@@ -31,7 +31,7 @@
 //! endpoint expansion by parts, −l(c)cJ₁(ξc)/ξ − l′(c)cJ₀(ξc)/ξ² + (l′ + c l″)(c)J₁(ξc)/ξ³,
 //! exact to O(ξ^(−4.5)). The edge coefficient of the total is X's φ(c); R_o is its root, by
 //! Newton's method from a predictor with secant slopes, stopping when the step or the last
-//! secant step's own error is within the root tolerance (module `holed_search`; the receding
+//! secant step's own error is within the root tolerance (module `search`; the receding
 //! solver's scan and inverse interpolation when Newton fails).
 //!
 //! **Error control.** R_o's estimate adds (a) the change from a run with ⌈3n/4⌉ Nyström points,
@@ -42,7 +42,7 @@
 //! ∝ the change squared (≤ 1e-6 D: negligible; as full searches to 2e-12 D on Table 1 row 1); a
 //! change beyond 0.01 D gets the full search. When R_o was extrapolated from the search's last
 //! radius x, the variants are solved at x and their change is the difference of edge values
-//! there, −(f_v(x) − f(x))/f′ (module `holed_search`). [`HoledParams::for_tolerance`] picks the knobs for
+//! there, −(f_v(x) − f(x))/f′ (module `search`). [`HoledParams::for_tolerance`] picks the knobs for
 //! a tolerance; its tier for 1e-6 doubles N from 16 until the bilateral residual is 2e-6 P
 //! (the change from N/2 at N = 16 overstated a 5e-8 error 30× on (0.5, 1.3), which it left
 //! not converged at 1e-6) and coarsens the modes, the heights and ξ_l each alone, as the
@@ -87,7 +87,7 @@
 //! their estimates 3.8e-10 … 1.3e-6 R_o (over 1e-6, honestly not converged, on (0.5, 1.3) only);
 //! Anderson moves R_o by ≤ 3.7e-13 R_o (same file).
 //!
-//! **Finite rim C** (module `rim_holed`: the infinite plate plus the rim's bending correction,
+//! **Finite rim C** (module `rim`: the infinite plate plus the rim's bending correction,
 //! which the FE meshed to C measured as ∝ C⁻², `tests/hankel/two_plate_rim.rs`): on Table 1's
 //! first row R_o(C) − R_o(∞) = −2.6503e-4, −6.744e-5, −1.694e-5 in at C = 1.54, 3.08, 6.16 in
 //! (rates 1.97, 1.99; the FE at --tol 1e-4: −2.653e-4, −6.758e-5, −1.671e-5), and at
@@ -107,7 +107,7 @@
 //!
 //! Per Table 1 row at `--tol 1e-6` (C = ∞, [`HoledParams::for_tolerance`]): 0.15–0.32 s of CPU,
 //! 7–9 crack solves, every row converged (estimates 3.8e-10 … 3.6e-7 R_o); at 1e-3 about a
-//! third of that; with the rim C = 1.54 in several times more (module `rim_holed`). The
+//! third of that; with the rim C = 1.54 in several times more (module `rim`). The
 //! bilateral holed plate alone (the single plate with its hole) is about 9 ms of it; the
 //! measurements behind these figures, and their history, are in `CHANGELOG.md`.
 //!
@@ -129,7 +129,7 @@
 //! the variants' radius tables in parts (the heights and modes variants change neither the
 //! Nyström rule nor the J₀ rows of l's transform, only the hole's part and the modes'
 //! midplane rows), and the heights and ξ_l variants' hole tables; fewer radii, which needs a
-//! start within a few 1e-3 D of R_o (module `holed_search`'s Cost: neither B + 0.45D nor the
+//! start within a few 1e-3 D of R_o (module `search`'s Cost: neither B + 0.45D nor the
 //! no-hole receding solution is one).
 //!
 //! ```no_run
@@ -142,15 +142,28 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod anderson;
+mod crack;
+mod crack_tables;
+mod endpoint;
+mod hole_tables;
+mod infinite;
+mod params;
+mod record;
+pub mod rim;
+mod search;
+mod setup;
+mod setup_tables;
+
+pub use self::params::{HoledParams, AUTO_BELOW, MAX_B_OVER_D, MAX_B_OVER_D_RIM, MIN_A_OVER_D};
+pub use self::record::{HoledContact, HoledInfo};
 use super::contact::RecedingError;
-pub use super::holed_params::HoledParams;
-pub use super::holed_record::{HoledContact, HoledInfo};
 use crate::error::InputError;
 use crate::joint::SinglePlate;
 
 /// R_o of two equal plates with a hole on a frictionless interface: `plate` is the single plate
 /// of the reflected picture (its half-thickness is one plate's thickness D). See the module docs;
-/// a finite outer radius C adds the rim's terms (module `rim_holed`), C = ∞ is unchanged.
+/// a finite outer radius C adds the rim's terms (module `rim`), C = ∞ is unchanged.
 pub fn two_plate_hole(
     plate: &SinglePlate,
     params: &HoledParams,
@@ -166,7 +179,7 @@ pub fn two_plate_hole(
 /// ([`HoledParams::tiers_from`]); the first run that meets `tol`, else the last run (its
 /// estimate says what was reached) or its error. Bad input is returned at once; not handed on
 /// either: a run whose rim residue alone
-/// ([`RimRecord::decay_bound`](super::rim_holed::RimRecord::decay_bound), which no knob moves)
+/// ([`RimRecord::decay_bound`](self::rim::RimRecord::decay_bound), which no knob moves)
 /// is over `tol`, and a run whose hole modes stopped short of their target
 /// ([`HoledInfo::hole_resolved`]) when the next tier allows no more of them (the 10⁴ CLI fuzz
 /// found `two --method hankel --a 0.1 --b 0.102 --d 0.5 --c 3 --tol 1e-4`, a narrow load on a
@@ -179,7 +192,7 @@ pub fn two_plate_hole(
 /// tiers short: with 6 fixed modes the tier for 1e-3 found no contact radius on 5 of 30
 /// random geometries and on (A/D, B/A, ν) = (0.067, 1.58, −0.29) left 6.1 P on the hole,
 /// R_o off by 6.6e-3 against an estimate of 2.4e-3 R_o. The loose tiers now double their
-/// modes to a residual target (module `holed_params`), and a tier whose run still falls short
+/// modes to a residual target (module `params`), and a tier whose run still falls short
 /// hands over to the next.
 ///
 /// ```no_run
@@ -235,7 +248,7 @@ pub fn two_plate_hole_pressure(
         .into());
     }
     if let crate::joint::OuterRadius::Finite(c) = plate.outer_radius() {
-        return super::rim_holed::finite_rim(plate, c, params, at);
+        return self::rim::finite_rim(plate, c, params, at);
     }
-    super::holed_infinite::solve(plate, params, at)
+    self::infinite::solve(plate, params, at)
 }

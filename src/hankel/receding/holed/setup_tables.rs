@@ -2,7 +2,7 @@
 //! tables independent of the radius ([`HoleTable`], module `hole_tables`), kept by the setup
 //! until a radius lies beyond them, and the radius's own tables ([`RadiusTables`], module
 //! `crack_tables`), the last radius's kept so that the estimate's fewer-nodes variant at R_o,
-//! the pressure's solve at R_o and the finite rim's two solves per radius (module `rim_holed`)
+//! the pressure's solve at R_o and the finite rim's two solves per radius (module `rim`)
 //! take them instead of rebuilding them.
 //!
 //! # Accuracy
@@ -12,18 +12,18 @@
 //! tables, bit for bit (`tests/hankel/two_plate_hole_fast.rs`). The graded cap's cosines by
 //! the addition theorem along ξ differ from one `sin_cos` per entry by the rounding of the
 //! argument ξt (module `numerics::panel_grid`'s Accuracy): on Table 1 R_o moved by at most 2.4e-13 of R_o at
-//! 1e-6 (module [`super::holed`]'s Cost).
+//! 1e-6 (module [`super`]'s Cost).
 //!
 //! # Cost
 //!
-//! Most of a radius's cost (module [`super::holed`]'s Cost, where the time goes); timed by
+//! Most of a radius's cost (module [`super`]'s Cost, where the time goes); timed by
 //! example 19. Three savings per radius (row (1, 1.3) at 1e-6, one thread, `perf
 //! record`, shares of the whole run's CPU): the bilateral plate's modes at the s-rule taken
 //! from the correction's table of the same modes (`HolePlate::modes_midplane_with`; bit for
 //! bit the same s₀) instead of evaluated again, 5.4 % → 0.4 %; the graded cap's cos ξt by
 //! the addition theorem along the Nyström rule's ξ-panels ([`XiRule::grid`]) instead of one
 //! sin/cos pair per entry (the same values within the rounding of ξt); l's J₀ rows scaled
-//! in place. Through the route: module [`super::holed`]'s Cost.
+//! in place. Through the route: module [`super`]'s Cost.
 //!
 //! ```
 //! // Internal to the route; reached through its entry point:
@@ -31,14 +31,14 @@
 //! let _ = (two_plate_hole, HoledParams::default());
 //! ```
 
-use super::contact::RecedingError;
 use super::crack_tables::RadiusTables;
 use super::hole_tables::HoleTable;
-use super::holed_params::HoledParams;
-use super::holed_setup::Setup;
-use super::layer::Stack;
-use super::system::{panels, XiRule};
+use super::params::HoledParams;
+use super::setup::Setup;
 use crate::hankel::hole::eigen::Mode;
+use crate::hankel::receding::contact::RecedingError;
+use crate::hankel::receding::layer::Stack;
+use crate::hankel::receding::system::{panels, XiRule};
 use crate::hankel::transform::LoadTransform;
 use crate::load::FaceLoad;
 use crate::numerics::panel_grid::{cos_and_m1, j0_m1, PanelGrid, PanelInterp};
