@@ -295,7 +295,7 @@ pub fn run(rows: usize, tight: bool) -> anyhow::Result<Vec<Row>> {
 const C: f64 = 1.54;
 
 /// Table 1's two-plate column with the report's rim C = 1.54 in (C/A = 15.4): this route with
-/// the rim's bending correction (`hankel::receding::rim_holed`) beside its C = ∞, the FE meshed
+/// the rim's bending correction (`hankel::receding::holed::rim`) beside its C = ∞, the FE meshed
 /// to C (default tolerance and, with `tight`, 1e-6) and the report's values. Fails if the FE at
 /// its default tolerance is not within its estimate plus this route's of this route's R_o.
 pub fn rim_table(rows: usize, tight: bool) -> anyhow::Result<()> {

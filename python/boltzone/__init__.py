@@ -180,16 +180,22 @@ class Result:
     @property
     def interface(self):
         """The two-plate interface curve as a DataFrame: ``r [L]``, ``p [S]`` (pressure,
-        compression > 0) and ``g [L]`` (gap), L and S the scene's length and stress units;
-        ``None`` unless the scene sets ``outputs.interface_pressure``."""
+        compression > 0), ``g [L]`` (gap), ``tau [S]`` (interface shear on the upper plate, 0
+        in the frictionless model) and with friction ``s [L]`` (slip u_upper − u_lower) and
+        ``state [-]`` (0 open, 1 stick, 2 slip), L and S the scene's length and stress units
+        (the columns of ``boltzone solve``'s CSV); ``None`` unless the scene sets
+        ``outputs.interface_pressure``."""
         c = self._answer.interface()
         if c is None:
             return None
         import pandas as pd
 
         l, s = self._answer.symbols()
-        return pd.DataFrame({"r [%s]" % l: c["radius"], "p [%s]" % s: c["pressure"],
-                             "g [%s]" % l: c["gap"]})
+        columns = {"r [%s]" % l: c["radius"], "p [%s]" % s: c["pressure"],
+                   "g [%s]" % l: c["gap"], "tau [%s]" % s: c["shear"]}
+        if "slip" in c:
+            columns.update({"s [%s]" % l: c["slip"], "state [-]": c["state"]})
+        return pd.DataFrame(columns)
 
     @property
     def midplane(self):

@@ -54,9 +54,9 @@ impl std::fmt::Display for Failure {
 impl From<SceneError> for Failure {
     fn from(e: SceneError) -> Self {
         match e {
-            SceneError::Invalid { key, reason, .. } | SceneError::Geometry { key, reason, .. } => {
-                Self::Input { key, reason }
-            }
+            SceneError::Invalid { key, reason, .. }
+            | SceneError::Key { key, reason }
+            | SceneError::Geometry { key, reason, .. } => Self::Input { key, reason },
             e if e.is_input() => Self::Input {
                 key: "(scene)".into(),
                 reason: e.to_string(),

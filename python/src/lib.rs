@@ -131,7 +131,8 @@ impl Answer {
         self.0.symbols
     }
 
-    /// The interface curve: `radius`, `pressure`, `gap` (None unless asked).
+    /// The interface curve: `radius`, `pressure`, `gap`, `shear` and with friction `slip`,
+    /// `state` (None unless asked).
     fn interface<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
         let Some(c) = &self.0.solution.interface else {
             return Ok(None);
@@ -140,6 +141,11 @@ impl Answer {
         d.set_item("radius", &c.radius)?;
         d.set_item("pressure", &c.pressure)?;
         d.set_item("gap", &c.gap)?;
+        d.set_item("shear", &c.shear)?;
+        if !c.slip.is_empty() {
+            d.set_item("slip", &c.slip)?;
+            d.set_item("state", &c.state)?;
+        }
         Ok(Some(d))
     }
 

@@ -20,7 +20,7 @@ def test_notebook_cells_run(tmp_path, monkeypatch):
     runpy.run_path(str(EXAMPLES / "notebook.py"), run_name="__main__")
     assert (tmp_path / "interface_pressure.png").stat().st_size > 1000
     csv = pd.read_csv(tmp_path / "interface.csv")
-    assert list(csv.columns) == ["r [in]", "p [psi]", "g [in]"]
+    assert list(csv.columns) == ["r [in]", "p [psi]", "g [in]", "tau [psi]"]
     assert (tmp_path / "field.vtu").exists()
 
 

@@ -15,7 +15,7 @@ def test_interface_frame_is_the_curve_with_unit_columns(tmp_path):
         **{"outputs.interface_pressure": str(tmp_path / "i.csv")})
     r = boltzone.solve(scene)
     frame = r.interface
-    assert list(frame.columns) == ["r [in]", "p [psi]", "g [in]"]
+    assert list(frame.columns) == ["r [in]", "p [psi]", "g [in]", "tau [psi]"]
     # contact inside R_o, a gap outside it: the curve agrees with R_o (the root of p)
     inside = frame[frame["r [in]"] < r.r_o - r.r_o_error - 0.02]
     outside = frame[frame["r [in]"] > r.r_o + r.r_o_error + 0.02]
@@ -24,7 +24,7 @@ def test_interface_frame_is_the_curve_with_unit_columns(tmp_path):
         "hole.radius": 2.54, "load.outer_radius": 7.874, "load.pressure": 6.894757293168361,
         "plates[0].thickness": 2.54, "plates[0].material": {"E": 193053.2042, "nu": 0.3},
         "joint.outer_radius": 39.116}))
-    assert list(mm.interface.columns) == ["r [mm]", "p [MPa]", "g [mm]"]
+    assert list(mm.interface.columns) == ["r [mm]", "p [MPa]", "g [mm]", "tau [MPa]"]
 
 
 def test_field_is_a_meshio_mesh_of_the_vtu(tmp_path):

@@ -11,34 +11,15 @@
 //!
 //! Formatting only; the frictional solve it reports is timed by `examples/21_friction.rs`.
 
-use boltzone::contact::friction::{FrictionZones, PointState};
+use boltzone::contact::friction::FrictionZones;
 use boltzone::contact::two_plate::TwoPlateSolution;
 
-/// Runs of nodes in one kind of state as [first radius, last radius] intervals (in).
 fn zones(s: &TwoPlateSolution, f: &FrictionZones, slip: bool) -> Vec<[f64; 2]> {
-    let want = |st: PointState| match st {
-        PointState::Stick => !slip,
-        PointState::SlipOut | PointState::SlipIn => slip,
-        PointState::Open => false,
-    };
-    let mut out: Vec<[f64; 2]> = Vec::new();
-    let mut prev = false;
-    for (i, &st) in f.state.iter().enumerate() {
-        let on = want(st);
-        match (on, prev, out.last_mut()) {
-            (true, true, Some(z)) => z[1] = s.radius[i],
-            (true, _, _) => out.push([s.radius[i], s.radius[i]]),
-            _ => {}
-        }
-        prev = on;
-    }
-    out
+    f.zones(&s.radius, slip)
 }
 
 fn largest_slip(f: &FrictionZones, s: &TwoPlateSolution) -> f64 {
-    (0..f.slip.len())
-        .filter(|&i| f.state[i].closed() && s.pressure[i] > 0.0)
-        .fold(0.0, |m, i| m.max(f.slip[i].abs()))
+    f.max_slip(&s.pressure)
 }
 
 /// Adds `mu`, `stick_zones` and `slip_zones` ([r₁, r₂] in the --units length, node to node)

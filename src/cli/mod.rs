@@ -30,6 +30,7 @@ mod serve;
 mod single;
 mod slab;
 mod solve;
+mod solve_plot;
 mod table1;
 mod table2;
 mod table_units;

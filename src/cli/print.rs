@@ -26,8 +26,7 @@ pub fn progress(len: u64, what: &str) -> ProgressBar {
 }
 
 /// Keys whose value may be absent (printed as nothing rather than null).
-const OPTIONAL_KEYS: [&str; 9] = [
-    "rate",
+const OPTIONAL_KEYS: [&str; 8] = [
     "cut",
     "observed_order",
     "r_o_over_a",

@@ -118,6 +118,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         }
         let o = &base.outputs;
         write_fields(&s, (o.field.as_deref(), o.midplane.as_deref()), &args.scene)?;
+        if let Some(path) = &o.plot {
+            super::solve_plot::write(path, base, &s)?;
+        }
         if args.json {
             let mut v = serde_json::to_value(&s)?;
             super::output::stamp_run(&mut v, start)?;
@@ -129,6 +132,14 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             explain(&s);
         }
         return Ok(Status::from_converged(s.converged));
+    }
+    if let Some(p) = &base.outputs.plot {
+        return Err(UsageError(format!(
+            "scene key `outputs.plot` = {}: one joint per figure; a [sweep] or --geometries run \
+             writes outputs.results and outputs.interface_pressure instead",
+            p.display()
+        ))
+        .into());
     }
     let bar = super::progress(pts.len() as u64, "sweep");
     let results = solve_all(&pts, &|| bar.inc(1));
@@ -255,9 +266,21 @@ fn curve_csv(
 ) -> String {
     let (l, p, _) = pts[0].scene.units.symbols();
     let keys: String = pts[0].values.iter().map(|(k, _)| format!("{k},")).collect();
+    let friction = results
+        .iter()
+        .any(|r| r.as_ref().is_ok_and(|s| s.friction.is_some()));
+    let (cols, note) = if friction {
+        (
+            format!(",s [{l}],state [-]"),
+            "; s = slip u_upper - u_lower (outward > 0), state 0 open, 1 stick, 2 slip",
+        )
+    } else {
+        (String::new(), "")
+    };
     let mut out = format!(
-        "{keys}r [{l}],p [{p}],g [{l}]\n# boltzone {} solve {}: interface of the finest mesh; p > 0 \
-         compression, g = gap between the plates\n",
+        "{keys}r [{l}],p [{p}],g [{l}],tau [{p}]{cols}\n# boltzone {} solve {}: interface of the \
+         finest mesh; p > 0 compression, g = gap between the plates, tau = interface shear on the \
+         upper plate (0 in the frictionless model){note}\n",
         env!("CARGO_PKG_VERSION"),
         scene.display(),
     );
@@ -277,8 +300,17 @@ fn curve_csv(
             s.r_o, s.r_o_error, s.converged
         );
         let Some(c) = &s.interface else { continue };
-        for ((r, pr), g) in c.radius.iter().zip(&c.pressure).zip(&c.gap) {
-            out += &format!("{at}{r:.10e},{pr:.10e},{g:.10e}\n");
+        for i in 0..c.radius.len() {
+            let (r, pr, g, tau) = (c.radius[i], c.pressure[i], c.gap[i], c.shear[i]);
+            out += &format!("{at}{r:.10e},{pr:.10e},{g:.10e},{tau:.10e}");
+            if friction {
+                let (s, st) = (c.slip.get(i), c.state.get(i));
+                match (s, st) {
+                    (Some(s), Some(st)) => out += &format!(",{s:.10e},{st}"),
+                    _ => out += ",,",
+                }
+            }
+            out += "\n";
         }
     }
     out

@@ -54,6 +54,32 @@ fn is_html(path: &std::path::Path) -> bool {
         .is_some_and(|e| e.eq_ignore_ascii_case("html") || e.eq_ignore_ascii_case("htm"))
 }
 
+/// Fills --e, --nu (and --e2, --nu2) from --material (--material2): the library's SI values in
+/// the --units stress; an unknown name is bad input naming the flag.
+fn apply_materials(args: &mut Args) -> anyhow::Result<()> {
+    let stress = args.units.units.stress();
+    let lookup = |flag: &str, name: &str| match boltzone::scene::materials::lookup(name) {
+        Some(m) => Ok((m.youngs_modulus / stress, m.poisson_ratio)),
+        None => usage(
+            flag,
+            name,
+            &format!(
+                "not a library material (one of {}; `boltzone materials` lists them)",
+                boltzone::scene::materials::names()
+            ),
+        ),
+    };
+    if let Some(name) = &args.material {
+        let (e, nu) = lookup("--material", name)?;
+        (args.e, args.geom.nu) = (Some(e), nu);
+    }
+    if let Some(name) = &args.material2 {
+        let (e, nu) = lookup("--material2", name)?;
+        (args.e2, args.nu2) = (Some(e), Some(nu));
+    }
+    Ok(())
+}
+
 /// Checks every flag before any work starts (exit 2 naming the flag).
 fn check_args(args: &Args) -> anyhow::Result<()> {
     let g = &args.geom;
@@ -135,7 +161,8 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
 }
 
 /// Runs the command.
-pub fn run(args: Args) -> anyhow::Result<Status> {
+pub fn run(mut args: Args) -> anyhow::Result<Status> {
+    apply_materials(&mut args)?;
     let start = std::time::Instant::now();
     check_args(&args)?;
     let p_given = match args.nut_displacement {
@@ -284,7 +311,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             "nodes": last.nodes,
             "dofs": last.dofs,
             "levels": s.info.levels,
-            "rate": s.info.rate,
+            "observed_order": s.info.observed_order,
             "nut_deflection": s.nut_deflection,
             "seconds": s.info.seconds,
             "units": args.units.units.name(),
@@ -322,7 +349,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             s.info.levels.len(),
             last.nodes,
             last.dofs,
-            s.info.rate.map_or("—".into(), |r| format!("{r:.2}")),
+            s.info.observed_order.map_or("—".into(), |r| format!("{r:.2}")),
             s.info.seconds
         );
         if s.report_rule || s.overlapping {

@@ -63,6 +63,14 @@ pub struct Args {
     /// Young's modulus E (psi, or the --units stress; default 28e6 psi, 304 steel, converted).
     #[arg(long)]
     pub(super) e: Option<f64>,
+    /// Material of the plates by name (`boltzone materials` lists them): sets --e and --nu from
+    /// the library (converted to the --units stress); the lower plate's too unless --material2,
+    /// --e2 or --nu2 is given.
+    #[arg(long, conflicts_with_all = ["e", "nu"])]
+    pub(super) material: Option<String>,
+    /// Material of the lower plate by name: sets --e2 and --nu2 from the library.
+    #[arg(long, conflicts_with_all = ["e2", "nu2"])]
+    pub(super) material2: Option<String>,
     /// Poisson's ratio of the lower plate (default: --nu).
     #[arg(long)]
     pub(super) nu2: Option<f64>,

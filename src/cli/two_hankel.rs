@@ -1,7 +1,7 @@
 //! `boltzone two --method hankel|auto`: the two-plate model with the hole by the semi-analytic
 //! route ([`boltzone::hankel::receding::holed`]): equal plates, frictionless (exact for equal
 //! plates), infinite or with a free rim --c (beyond B + D: the rim's bending correction of
-//! `hankel::receding::rim_holed`), pressed by a pressure profile; R_o with its error estimate, and with
+//! `hankel::receding::holed::rim`), pressed by a pressure profile; R_o with its error estimate, and with
 //! `--curve` the interface pressure on A ≤ r ≤ R_o in the FE's CSV layout.
 //!
 //! # Accuracy

@@ -12,7 +12,7 @@
 //!   otherwise ([`crate::hankel::hole::rim`]), so the route has no reach limit of its own;
 //! - **two plates** (frictionless, equal): by FE, [`crate::contact::two_plate::solve`]; by
 //!   Hankel, [`crate::hankel::receding::holed::two_plate_hole_to`] with its rim C (module
-//!   `rim_holed`): the knobs for the tolerance, tighter ones when they fall short. Its reach
+//!   `holed::rim`): the knobs for the tolerance, tighter ones when they fall short. Its reach
 //!   ([`two_hankel_reach`]) is the route layer's [`two_plate::hankel_blocker`], named by the
 //!   ratio that blocks it.
 //!

@@ -133,6 +133,38 @@ pub struct FrictionZones {
     pub state: Vec<PointState>,
 }
 
+impl FrictionZones {
+    /// Runs of nodes that stick (`slip` false) or slip (true) as [first radius, last radius]
+    /// intervals, node to node, in the unit of `radius` (the interface nodes' radii).
+    pub fn zones(&self, radius: &[f64], slip: bool) -> Vec<[f64; 2]> {
+        let want = |st: PointState| match st {
+            PointState::Stick => !slip,
+            PointState::SlipOut | PointState::SlipIn => slip,
+            PointState::Open => false,
+        };
+        let mut out: Vec<[f64; 2]> = Vec::new();
+        let mut prev = false;
+        for (&st, &r) in self.state.iter().zip(radius) {
+            let on = want(st);
+            match (on, prev, out.last_mut()) {
+                (true, true, Some(z)) => z[1] = r,
+                (true, _, _) => out.push([r, r]),
+                _ => {}
+            }
+            prev = on;
+        }
+        out
+    }
+
+    /// The largest |slip| inside the contact zone (closed nodes under pressure; `pressure` the
+    /// interface pressure of each node, compression > 0), in the unit of [`FrictionZones::slip`].
+    pub fn max_slip(&self, pressure: &[f64]) -> f64 {
+        (0..self.slip.len().min(pressure.len()))
+            .filter(|&i| self.state[i].closed() && pressure[i] > 0.0)
+            .fold(0.0, |m, i| m.max(self.slip[i].abs()))
+    }
+}
+
 /// The solution of a [`FrictionProblem`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct FrictionSolution {

@@ -85,7 +85,7 @@ pub struct TwoPlateInfo {
     pub levels: Vec<TwoPlateLevel>,
     /// Observed convergence rate of R_o in the element size: least-squares slope of
     /// log |R_o,k+1 − R_o,k| against log h_k over all levels (None with fewer than three).
-    pub rate: Option<f64>,
+    pub observed_order: Option<f64>,
     /// Where a plate wider than the mesh can hold (or infinite) was cut (None: meshed whole).
     pub cut: Option<f64>,
     /// The member compliance δ_P of each level, coarse to fine (length per force; module
@@ -479,7 +479,7 @@ fn solve_unit(
                 "frictionless"
             },
             levels,
-            rate,
+            observed_order: rate,
             cut: (cut < c).then_some(cut),
             compliance,
             truncation_error,

@@ -8,7 +8,7 @@
 //!   estimate carries 2e-5 of R_o (the level sequence's slow component), so they cannot claim a
 //!   tolerance below [`AUTO_BELOW`];
 //! - the **semi-analytic Hankel routes** ([`crate::hankel::receding`]): with a hole, two equal
-//!   plates ([`crate::hankel::receding::holed`], its rim `rim_holed`); without one, the receding
+//!   plates ([`crate::hankel::receding::holed`], its rim `holed::rim`); without one, the receding
 //!   contact of any two plates in series in frictionless contact (`Pair`; equal plates carry no
 //!   interface shear, so any interface), with a finite rim equal plates (`rim`); pressed by a
 //!   pressure on a free rim, answering R_o and the interface pressure only, to 1e-8.

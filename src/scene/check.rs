@@ -412,15 +412,20 @@ fn check_outputs(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
         }
         c.output(&path, p)?;
     }
+    if let Some(p) = &o.plot {
+        let path = [k("outputs"), k("plot")];
+        if scene.model != Model::TwoPlate {
+            return Err(c.fail(&path, p.display(), "needs model = \"two-plate\""));
+        }
+        if !matches!(p.extension().and_then(|e| e.to_str()), Some("svg" | "png")) {
+            return Err(c.fail(&path, p.display(), "must end in .svg or .png"));
+        }
+        c.output(&path, p)?;
+    }
     if let Some(p) = &o.results {
         c.output(&[k("outputs"), k("results")], p)?;
     }
-    if !o.r_o
-        && o.interface_pressure.is_none()
-        && !o.conductance
-        && o.field.is_none()
-        && o.midplane.is_none()
-    {
+    if !o.r_o && !o.wants_curve() && !o.conductance && o.field.is_none() && o.midplane.is_none() {
         return Err(c.fail(
             &[k("outputs"), k("r_o")],
             false,

@@ -32,6 +32,14 @@ pub enum SceneError {
         /// What is wrong, with the value.
         reason: String,
     },
+    /// A bad value in a scene built in code ([`super::builder`]): the key path and what is wrong.
+    #[error("scene key `{key}`: {reason}")]
+    Key {
+        /// Key path (`plates[1].thickness`).
+        key: String,
+        /// What is wrong, with the value.
+        reason: String,
+    },
     /// A malformed row of a CSV of geometries: the message says the CSV line and column.
     #[error("geometries CSV line {line}, column `{key}`: {reason}")]
     Geometry {
@@ -71,9 +79,11 @@ impl SceneError {
     /// Whether the error is bad input (exit 2) rather than a failure of a solver (exit 1).
     pub fn is_input(&self) -> bool {
         match self {
-            Self::Invalid { .. } | Self::Geometry { .. } | Self::Read { .. } | Self::Input(_) => {
-                true
-            }
+            Self::Invalid { .. }
+            | Self::Key { .. }
+            | Self::Geometry { .. }
+            | Self::Read { .. }
+            | Self::Input(_) => true,
             Self::Contact(e) => e.is_input(),
             Self::Fem(e) => e.is_input(),
             Self::Separation(e) => e.is_input(),

@@ -169,6 +169,17 @@ pub struct OutputSpec {
     /// CSV of a sweep's results, one row per point.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub results: Option<PathBuf>,
+    /// SVG or PNG (by the extension) of the interface pressure against r with B, R_o and the
+    /// rules' radii marked, as `two --plot` (two-plate; written by `boltzone solve`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PathBuf>,
+}
+
+impl OutputSpec {
+    /// Whether the interface curve is needed: for its CSV or for the plot.
+    pub fn wants_curve(&self) -> bool {
+        self.interface_pressure.is_some() || self.plot.is_some()
+    }
 }
 
 fn yes() -> bool {
@@ -184,6 +195,7 @@ impl Default for OutputSpec {
             midplane: None,
             conductance: false,
             results: None,
+            plot: None,
         }
     }
 }

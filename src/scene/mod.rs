@@ -44,6 +44,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod builder;
 pub mod check;
 pub mod error;
 pub mod field;
@@ -63,6 +64,7 @@ pub mod two_fem;
 pub mod two_hankel;
 pub use crate::units;
 
+pub use builder::SceneBuilder;
 pub use error::SceneError;
 pub use file::{read, Method, Model, Scene};
 pub use run::{solve, Solution, Step};

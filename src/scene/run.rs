@@ -29,7 +29,7 @@ use crate::route::{single_plate, two_plate};
 use std::time::Instant;
 
 pub use super::si::joint_si;
-pub use super::solution::{InterfaceCurve, Solution, Step};
+pub use super::solution::{FrictionSummary, InterfaceCurve, Solution, Step};
 pub use super::two_fem::two_plate_params;
 
 pub use crate::route::single_plate::hankel_params;
@@ -92,6 +92,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         heat_flow: None,
         heat_flow_unit: None,
         rules: Default::default(),
+        friction: None,
         plan: Vec::new(),
         interface: None,
         field: None,
@@ -238,7 +239,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
     for (name, asked, served) in [
         (
             "interface curve",
-            o.interface_pressure.is_some(),
+            o.wants_curve(),
             scene.model == Model::TwoPlate,
         ),
         (

@@ -46,6 +46,28 @@ pub struct InterfaceCurve {
     pub pressure: Vec<f64>,
     /// Gap between the plates (length unit).
     pub gap: Vec<f64>,
+    /// Interface shear τ on the upper plate (stress unit; 0 in the frictionless model).
+    pub shear: Vec<f64>,
+    /// With friction: the slip s = u_upper − u_lower of each node (length unit, outward > 0);
+    /// empty otherwise.
+    pub slip: Vec<f64>,
+    /// With friction: each node's state, 0 open, 1 stick, 2 slip; empty otherwise.
+    pub state: Vec<f64>,
+}
+
+/// What friction adds to the answer (`joint.interface = "friction"`, the keys of `two
+/// --interface friction --json`): μ, the stick and slip zones as [r₁, r₂] node to node and the
+/// largest slip inside the contact zone (length unit).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrictionSummary {
+    /// The friction coefficient μ.
+    pub mu: f64,
+    /// Stick zones [r₁, r₂] (length unit).
+    pub stick_zones: Vec<[f64; 2]>,
+    /// Slip zones [r₁, r₂] (length unit).
+    pub slip_zones: Vec<[f64; 2]>,
+    /// Largest |slip| inside the contact zone (length unit).
+    pub max_slip: f64,
 }
 
 /// The answer to a scene, in the scene's units (the JSON of `boltzone solve --json`).
@@ -98,6 +120,10 @@ pub struct Solution {
     /// (`rules_left_out`).
     #[serde(flatten)]
     pub rules: crate::route::rules_beside::Rules,
+    /// With friction: μ, the stick and slip zones and the largest slip (JSON `mu`,
+    /// `stick_zones`, `slip_zones`, `max_slip`, as `two`'s).
+    #[serde(flatten)]
+    pub friction: Option<FrictionSummary>,
     /// The plan: routes that ran and were skipped, time per step.
     pub plan: Vec<Step>,
     /// Interface curve (two-plate; written as CSV, not printed).

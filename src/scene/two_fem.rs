@@ -28,7 +28,7 @@ use super::field;
 use super::file::InterfaceKind;
 use super::file::Scene;
 use super::si::material;
-use super::solution::{InterfaceCurve, Solution};
+use super::solution::{FrictionSummary, InterfaceCurve, Solution};
 use crate::contact::thermal;
 use crate::contact::two_plate::{self, EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use crate::joint::Joint;
@@ -72,12 +72,29 @@ pub fn solve(
     (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
     out.full_contact = Some(s.full_contact);
     out.nut_deflection = Some(s.nut_deflection / l);
-    if scene.outputs.interface_pressure.is_some() {
-        let st = scene.units.stress();
+    let st = scene.units.stress();
+    if let Some(f) = &s.friction {
+        out.friction = Some(FrictionSummary {
+            mu: f.mu,
+            stick_zones: scaled_zones(f.zones(&s.radius, false), l),
+            slip_zones: scaled_zones(f.zones(&s.radius, true), l),
+            max_slip: f.max_slip(&s.pressure) / l,
+        });
+    }
+    if scene.outputs.wants_curve() {
+        let (slip, state) = s.friction.as_ref().map_or((vec![], vec![]), |f| {
+            (
+                f.slip.iter().map(|x| x / l).collect(),
+                f.state.iter().map(|x| x.code()).collect(),
+            )
+        });
         out.interface = Some(InterfaceCurve {
             radius: s.radius.iter().map(|r| r / l).collect(),
             pressure: s.pressure.iter().map(|p| p / st).collect(),
             gap: s.gap.iter().map(|g| g / l).collect(),
+            shear: s.shear.iter().map(|t| t / st).collect(),
+            slip,
+            state,
         });
     }
     if scene.outputs.conductance {
@@ -94,6 +111,11 @@ pub fn solve(
         heat_step = Some(t.elapsed().as_secs_f64());
     }
     Ok(heat_step)
+}
+
+/// Zones [r₁, r₂] in SI divided by the length unit `l`.
+fn scaled_zones(z: Vec<[f64; 2]>, l: f64) -> Vec<[f64; 2]> {
+    z.into_iter().map(|[a, b]| [a / l, b / l]).collect()
 }
 
 /// The two-plate parameters of `scene` (SI nut displacement `nut`).

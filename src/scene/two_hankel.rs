@@ -137,7 +137,7 @@ pub fn solve(
     (length, stress): (f64, f64),
     out: &mut Solution,
 ) -> Result<bool, SceneError> {
-    let curve_asked = scene.outputs.interface_pressure.is_some();
+    let curve_asked = scene.outputs.wants_curve();
     // `resolved`: the hole's modes met their target (always, without a hole)
     let (r_o, error, resolved, curve) = if joint.hole_radius() <= 0.0 {
         let (r_o, error, curve) = solve_no_hole(scene.tolerance, joint, curve_asked)?;
@@ -166,6 +166,9 @@ pub fn solve(
             radius: curve.iter().map(|&(r, _)| r / length).collect(),
             pressure: curve.iter().map(|&(_, q)| q / stress).collect(),
             gap: vec![0.0; curve.len()],
+            shear: vec![0.0; curve.len()],
+            slip: Vec::new(),
+            state: Vec::new(),
         });
     }
     Ok(resolved)

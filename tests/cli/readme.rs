@@ -1,5 +1,5 @@
 //! Every `boltzone …` and `cargo run --release -- …` command in the ```sh blocks of README.md
-//! and of the user guide (`docs/guide.md`) runs and exits 0, in a temporary directory (so the files it writes land there); the README's
+//! and of every page of the guide (`docs/*.md`) runs and exits 0, in a temporary directory (so the files it writes land there); the README's
 //! placeholder inputs (`scene.toml`, `rows.csv`) are made from Table 1's first row. Skipped with
 //! a note: `cargo test`, `cargo install`, `cargo bench`, `bash .ci/run`, `serve` (a server that
 //! runs until stopped: `tests/figures/server.rs`) and the examples (each example runs at its
@@ -12,12 +12,22 @@ use std::path::Path;
 use std::process::Command;
 use std::time::Instant;
 
-/// The command lines of the ```sh blocks of README.md and docs/guide.md, without comments and
-/// blank lines.
+/// The command lines of the ```sh blocks of README.md and every page of docs/, without comments
+/// and blank lines.
 fn readme_commands() -> Vec<String> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let text = ["README.md", "docs/guide.md"]
-        .map(|f| std::fs::read_to_string(dir.join(f)).unwrap())
+    let mut files = vec![dir.join("README.md")];
+    let mut docs: Vec<_> = std::fs::read_dir(dir.join("docs"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "md"))
+        .collect();
+    docs.sort();
+    files.extend(docs);
+    let text = files
+        .iter()
+        .map(|f| std::fs::read_to_string(f).unwrap())
+        .collect::<Vec<_>>()
         .join("\n");
     let mut out = Vec::new();
     let mut inside = false;
@@ -57,6 +67,7 @@ fn boltzone_args(line: &str) -> Result<Vec<String>, &'static str> {
         ["cargo", "install", ..] => return Err("installs into ~/.cargo/bin"),
         ["cargo", "bench", ..] => return Err("a benchmark (minutes)"),
         ["bash", ".ci/run", ..] => return Err("the CI script"),
+        ["python", ..] => return Err("a Python command (python/tests/test_docs.py runs it)"),
         _ => panic!("README line neither run nor skipped by tests/cli/readme.rs: {line}"),
     };
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));

@@ -100,3 +100,86 @@ fn table1_row1_scene_at_1e5_and_1e6_answers_through_the_default_route() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn materials_by_name_on_two_equal_a_scene_with_those_names() {
+    let dir = std::env::temp_dir().join(format!("boltzone-named-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("joint.toml");
+    // steel over aluminium: the scene looks the names up itself
+    std::fs::write(
+        &scene,
+        "units = \"m-Pa-N\"\n[hole]\nradius = 0.0045\n[load]\nouter_radius = 0.0065\n\
+         force = 10000.0\n[[plates]]\nthickness = 0.006\nmaterial = \"steel-1018\"\n\
+         [[plates]]\nthickness = 0.006\nmaterial = \"aluminium-6061-t6\"\n\
+         [joint]\nouter_radius = 0.04\n",
+    )
+    .unwrap();
+    let solve = json_of(&boltzone(&["solve", scene.to_str().unwrap(), "--json"]));
+    let two = json_of(&boltzone(&[
+        "two",
+        "--units",
+        "m-Pa-N",
+        "--a",
+        "0.0045",
+        "--b",
+        "0.0065",
+        "--d",
+        "0.006",
+        "--c",
+        "0.04",
+        "--material",
+        "steel-1018",
+        "--material2",
+        "aluminium-6061-t6",
+        "--force",
+        "10000",
+        "--json",
+    ]));
+    assert_eq!(
+        fingerprint(&two["r_o"], &two["r_o_error"], &two["rules"]),
+        fingerprint(&solve["r_o"], &solve["r_o_error"], &solve["rules"])
+    );
+    // the E and ν the CLI took are the ones `boltzone materials --json` lists
+    let lib = json_of(&boltzone(&["materials", "--json"]));
+    let find = |n: &str| {
+        lib["materials"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|m| m["name"] == n)
+            .cloned()
+            .unwrap()
+    };
+    let (steel, al) = (find("steel-1018"), find("aluminium-6061-t6"));
+    assert_eq!(two["inputs"]["e"], steel["youngs_modulus"]);
+    assert_eq!(two["inputs"]["nu"], steel["poisson_ratio"]);
+    assert_eq!(two["inputs"]["e2"], al["youngs_modulus"]);
+    assert_eq!(two["inputs"]["nu2"], al["poisson_ratio"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+    for (args, flag) in [
+        (vec!["--material", "unobtainium"], "--material"),
+        (vec!["--material2", "steel"], "--material2"),
+    ] {
+        let mut a = vec!["two", "--a", "0.1", "--b", "0.31", "--d", "0.1"];
+        a.extend(args);
+        let out = boltzone(&a);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(err.contains(flag) && err.contains("steel-304"), "{err}");
+    }
+    let out = boltzone(&[
+        "two",
+        "--a",
+        "0.1",
+        "--b",
+        "0.31",
+        "--d",
+        "0.1",
+        "--material",
+        "steel-304",
+        "--e",
+        "1e7",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+}

@@ -6,7 +6,7 @@
 //! estimate honest there (error ≤ estimate)? Ignored (minutes); printed as a table. Found: at
 //! C = ∞ the residual grows smoothly and every error is within its estimate; with the rim the
 //! estimate misses the Chebyshev heights at every A/D (`rim_knobs_one_at_a_time`; module
-//! `hankel::receding::rim_holed`). In CI: the limit A/D = 0.04 against the tier for 1e-8.
+//! `hankel::receding::holed::rim`). In CI: the limit A/D = 0.04 against the tier for 1e-8.
 
 use boltzone::hankel::hole::HoleParams;
 use boltzone::hankel::receding::holed::{two_plate_hole, HoledContact, HoledParams};

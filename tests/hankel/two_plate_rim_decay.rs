@@ -1,4 +1,4 @@
-//! The rim's decay bound D·e^(−4.21(C − R_o)/D) (module `hankel::receding::rim_holed`), which
+//! The rim's decay bound D·e^(−4.21(C − R_o)/D) (module `hankel::receding::holed::rim`), which
 //! the holed route with a rim adds to R_o's estimate for the self-equilibrated residue its
 //! bending correction leaves: measured against the FE two-plate model meshed to C (shares no
 //! code) on rims near R_o, where the bound is large enough for the FE to see the residue's

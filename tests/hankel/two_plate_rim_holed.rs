@@ -1,5 +1,5 @@
 //! The finite rim r = C of the semi-analytic two-plate route with the hole
-//! (`hankel::receding::rim_holed`): Table 1's first row against the FE meshed to C, C⁻²,
+//! (`hankel::receding::holed::rim`): Table 1's first row against the FE meshed to C, C⁻²,
 //! equilibrium of the interface pressure, C = ∞ unchanged, the CLI, and the estimate against a
 //! finer run.
 

@@ -33,7 +33,7 @@ fn uniform_contact(p0: f64) -> TwoPlateSolution {
         info: TwoPlateInfo {
             model: "synthetic",
             levels: Vec::new(),
-            rate: None,
+            observed_order: None,
             cut: None,
             compliance: Vec::new(),
             truncation_error: 0.0,

@@ -186,7 +186,7 @@ fn a_sweep_writes_every_points_curve_to_one_file() {
     assert_eq!(results.len(), 2);
     let csv = std::fs::read_to_string(dir.join("p.csv")).unwrap();
     assert!(
-        csv.starts_with("load.outer_radius,r [mm],p [MPa],g [mm]\n#"),
+        csv.starts_with("load.outer_radius,r [mm],p [MPa],g [mm],tau [MPa]\n#"),
         "{csv}"
     );
     for (b, r) in [5.0, 6.0].iter().zip(results) {

@@ -104,7 +104,7 @@ fn chapter6_pair_through_the_command_writes_the_interface_csv() {
     assert_eq!(v["inputs"]["plates"][0]["material"], "steel-304");
     let csv = std::fs::read_to_string(dir.join("chapter6_pair_interface.csv")).unwrap();
     let mut lines = csv.lines();
-    assert_eq!(lines.next(), Some("r [in],p [psi],g [in]"));
+    assert_eq!(lines.next(), Some("r [in],p [psi],g [in],tau [psi]"));
     let rows: Vec<Vec<f64>> = lines
         .filter(|l| !l.starts_with('#'))
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())

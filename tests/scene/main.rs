@@ -4,6 +4,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod builder;
 mod chapter6;
 mod command_units;
 mod errors;
@@ -14,6 +15,7 @@ mod fuzz;
 mod guide_keys;
 mod heat;
 mod joint_units;
+mod outputs;
 mod temperature;
 mod thermal_single;
 mod two_hankel;

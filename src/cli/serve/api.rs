@@ -197,7 +197,7 @@ pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
             "full_contact": two.full_contact, "overlap": two.overlap, "report_rule": two.report_rule,
             "tolerance": TOLERANCE, "interface": two.info.model,
             "nodes": levels.map(|l| l.nodes), "dofs": levels.map(|l| l.dofs),
-            "rate": two.info.rate, "nut_deflection": two.nut_deflection,
+            "observed_order": two.info.observed_order, "nut_deflection": two.nut_deflection,
             "seconds": two.info.seconds,
         },
         "single": {
@@ -222,7 +222,7 @@ pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
         out["two"]["r_o_over_a"] = (two.r_o / q.a).into();
         out["single"]["r_o_over_a"] = (single.r_o / q.a).into();
     }
-    for key in ["nodes", "dofs", "rate"] {
+    for key in ["nodes", "dofs", "observed_order"] {
         if out["two"][key].is_null() {
             if let Some(m) = out["two"].as_object_mut() {
                 m.remove(key);
