@@ -77,7 +77,8 @@ fn a_built_scene_in_mm_equals_the_same_scene_in_inches() {
 
 #[test]
 fn bad_values_are_refused_naming_their_key() {
-    let cases: [(Box<dyn Fn() -> Result<Scene, SceneError>>, &str); 6] = [
+    type Build = Box<dyn Fn() -> Result<Scene, SceneError>>;
+    let cases: [(Build, &str); 6] = [
         (
             Box::new(|| table1_row1().tolerance(f64::NAN).build()),
             "tolerance",
