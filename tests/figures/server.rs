@@ -16,8 +16,14 @@ pub struct Server {
 impl Server {
     /// Starts the server and reads the port it printed.
     pub fn start() -> Self {
+        Self::start_with(&[])
+    }
+
+    /// Starts `boltzone serve --port 0 ARGS` and reads the port it printed.
+    pub fn start_with(args: &[&str]) -> Self {
         let mut child = Command::new(env!("CARGO_BIN_EXE_boltzone"))
             .args(["serve", "--port", "0"])
+            .args(args)
             .stdout(Stdio::piped())
             .spawn()
             .unwrap();
@@ -109,6 +115,12 @@ fn bad_queries_get_400_naming_the_field_and_the_server_survives() {
         ("a=0.1&b=0.3&d=0.1&c=0.2", "c"),
         ("a=%ZZ&b=0.3&d=0.1", "a"),
         ("a=1e400&b=0.3&d=0.1", "a"),
+        ("a=0.1&b=0.3&d=0.1&units=furlongs", "units = 'furlongs'"),
+        ("a=0.1&b=0.3&d=0.1&units=", "units = ''"),
+        (
+            "a=0.1&b=0.3&d=0.1&units=mm%2DMPa%2DN&units=m-Pa-N",
+            "units = m-Pa-N",
+        ),
     ] {
         let (status, body) = server.get(&format!("/api/joint?{query}"));
         assert_eq!(status, 400, "{query}: {body}");
@@ -131,4 +143,121 @@ fn bad_queries_get_400_naming_the_field_and_the_server_survives() {
     let (status, page) = server.get("/");
     assert_eq!(status, 200);
     assert!(page.contains("id=\"s-ad\"") && page.contains("/api/joint?"));
+}
+
+/// The `units` key of `two --json` and `unit_symbols` as the page's API gives them.
+fn symbols(api: &Value) -> (&str, &str, &str) {
+    let s = &api["unit_symbols"];
+    let f = |k: &str| s[k].as_str().unwrap_or("");
+    (f("length"), f("stress"), f("force"))
+}
+
+/// The API in mm-MPa-N answers what `two --units mm-MPa-N --json` prints for the same joint,
+/// bit for bit (R_o, its error, convergence, contact, the deflection under the nut, the mesh,
+/// the rules), and names its units; against the same joint asked in inches (every length
+/// divided by 25.4), R_o is 25.4 times larger within the two error bars, and the deflection
+/// scales as P·D/E (P = 1 and E = 28e6 psi in each system's stress, the psi built here from
+/// the inch and the pound-force).
+#[test]
+fn api_in_mm_is_two_in_mm_bit_for_bit() {
+    let server = Server::start();
+    let (status, body) = server.get("/api/joint?a=2.54&b=5.588&d=2.54&c=39.116&units=mm-MPa-N");
+    assert_eq!(status, 200, "{body}");
+    let api: Value = serde_json::from_str(&body).unwrap();
+    assert_eq!(api["units"], "mm-MPa-N");
+    assert_eq!(symbols(&api), ("mm", "MPa", "N"));
+    let two = json_of(&boltzone(&[
+        "two", "--a", "2.54", "--b", "5.588", "--d", "2.54", "--c", "39.116", "--units",
+        "mm-MPa-N", "--json",
+    ]));
+    assert_eq!(two["units"], "mm-MPa-N");
+    for key in [
+        "r_o",
+        "r_o_error",
+        "converged",
+        "full_contact",
+        "nut_deflection",
+        "nodes",
+        "dofs",
+        "rate",
+        "r_o_over_a",
+    ] {
+        assert!(!two[key].is_null(), "two --json has no {key}");
+        assert_eq!(api["two"][key], two[key], "two.{key}");
+    }
+    assert_eq!(api["rules"], two["rules"], "rules");
+    assert_eq!(api["inputs"]["e"], two["inputs"]["e"], "E");
+
+    let (status, body) = server.get("/api/joint?a=0.1&b=0.22&d=0.1&c=1.54");
+    assert_eq!(status, 200, "{body}");
+    let inch: Value = serde_json::from_str(&body).unwrap();
+    assert_eq!(inch["units"], "in-psi-lbf");
+    assert_eq!(symbols(&inch), ("in", "psi", "lbf"));
+    let f = |v: &Value, k: &str| v["two"][k].as_f64().unwrap();
+    let ratio = f(&api, "r_o") / (25.4 * f(&inch, "r_o"));
+    let bar = f(&api, "r_o_error") / f(&api, "r_o") + f(&inch, "r_o_error") / f(&inch, "r_o");
+    assert!(
+        (ratio - 1.0).abs() <= bar,
+        "R_o mm/in/25.4 = {ratio}, bars {bar}"
+    );
+    const PSI_IN_MPA: f64 = 0.453_592_37 * 9.806_65 / (0.0254 * 0.0254) / 1e6;
+    // δ ∝ P·D/E: D 25.4 times larger, E PSI_IN_MPA times smaller in number, P = 1 in both
+    let deflection = f(&api, "nut_deflection") / f(&inch, "nut_deflection") * PSI_IN_MPA / 25.4;
+    assert!(
+        (deflection - 1.0).abs() <= bar,
+        "deflection ratio / (25.4 / psi in MPa) = {deflection}"
+    );
+}
+
+/// The boot JSON the page embeds (between `<script id="boot" type="application/json">` and
+/// `</script>`).
+fn boot_of(page: &str) -> Value {
+    let start = "<script id=\"boot\" type=\"application/json\">";
+    let at = page.find(start).expect("no boot script") + start.len();
+    let end = page[at..].find("</script>").unwrap();
+    serde_json::from_str(&page[at..at + end]).unwrap()
+}
+
+/// The page embeds the answer to its opening joint (A = 0.1 in, B = 3.1 A, D = A, C = 15 A,
+/// ν = 0.3): the same bits as `two --json` for that joint and as the API's answer; with
+/// `serve --units mm-MPa-N` the opening joint is the same joint in mm (A = 2.54 mm) and the
+/// answer is `two --units mm-MPa-N --json`'s; a bad `--units` exits 2 naming the flag.
+#[test]
+fn the_page_embeds_the_opening_answer() {
+    for (flags, units, a, b, d, c) in [
+        (&[][..], "in-psi-lbf", "0.1", "0.31", "0.1", "1.5"),
+        (
+            &["--units", "mm-MPa-N"][..],
+            "mm-MPa-N",
+            "2.54",
+            "7.874",
+            "2.54",
+            "38.1",
+        ),
+    ] {
+        let server = Server::start_with(flags);
+        let (status, page) = server.get("/");
+        assert_eq!(status, 200);
+        let boot = boot_of(&page);
+        assert_eq!(boot["units"], units);
+        let answer = &boot["answer"];
+        assert_eq!(answer["units"], units);
+        let two = json_of(&boltzone(&[
+            "two", "--a", a, "--b", b, "--d", d, "--c", c, "--units", units, "--json",
+        ]));
+        for key in ["r_o", "r_o_error", "converged", "nut_deflection"] {
+            assert_eq!(answer["two"][key], two[key], "{units}: two.{key}");
+        }
+        let query = format!("a={a}&b={b}&d={d}&c={c}&nu=0.3&units={units}");
+        let (status, body) = server.get(&format!("/api/joint?{query}"));
+        assert_eq!(status, 200, "{body}");
+        let api: Value = serde_json::from_str(&body).unwrap();
+        assert_eq!(answer["two"], api["two"], "{units}: embedded vs API");
+        assert_eq!(answer["curves"], api["curves"], "{units}: curves");
+        let hole = boot["systems"][units]["hole"].as_f64().unwrap();
+        assert_eq!(hole, a.parse::<f64>().unwrap(), "{units}: the page's A");
+    }
+    let bad = boltzone(&["serve", "--port", "0", "--units", "furlongs"]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("--units"));
 }

@@ -1,21 +1,28 @@
-//! `GET /api/joint?a=…&b=…&d=…[&c=…&nu=…&d2=…]` (a contract): one joint, answered as
-//! `{"two": {"r_o", "r_o_error", "converged", …}, "single": {…}, "rules": […], "curves": {…}}`.
+//! `GET /api/joint?a=…&b=…&d=…[&c=…&nu=…&d2=…&units=…]` (a contract): one joint, answered as
+//! `{"two": {"r_o", "r_o_error", "converged", …}, "single": {…}, "rules": […], "curves": {…},
+//! "units", "unit_symbols"}`.
 //!
-//! `two` is what `boltzone two --a A --b B --d D [--c C] [--nu ν] [--d2 D2] --json` prints for
-//! the same joint (304 steel E = 28e6 psi, P = 1 psi, frictionless interface, Q9 elements,
-//! tolerance 5e-4: the command's defaults), by the same solver
-//! ([`boltzone::contact::two_plate::solve`]). `single` is Fernlund's single plate 2D thick (D
-//! of the upper plate) by [`boltzone::fem::single`] at the same tolerance; `rules` the 45°,
-//! VDI 2230 (finite plates) and 30° cones' contact radii with their error against the two-plate
-//! R_o (percent, with the error bar the R_o's error gives); `curves` the two-plate interface
-//! pressure `{"r", "p"}` and the single plate's midplane σ_z `{"r", "sigma_z"}` (P = 1 psi,
-//! compression negative), both out to 1.6 times the largest radius of interest. Lengths in
-//! inches, stresses in psi. Query errors name the field (HTTP 400).
+//! `two` is what `boltzone two --a A --b B --d D [--c C] [--nu ν] [--d2 D2] [--units U] --json`
+//! prints for the same joint (304 steel E = 28e6 psi converted to the units' stress, P = 1 in
+//! the units' stress, frictionless interface, Q9 elements, tolerance 5e-4: the command's
+//! defaults), by the same solver ([`boltzone::contact::two_plate::solve`]). `single` is
+//! Fernlund's single plate 2D thick (D of the upper plate) by [`boltzone::fem::single`] at the
+//! same tolerance; `rules` the 45°, VDI 2230 (finite plates) and 30° cones' contact radii with
+//! their error against the two-plate R_o (percent, with the error bar the R_o's error gives);
+//! `curves` the two-plate interface pressure `{"r", "p"}` and the single plate's midplane σ_z
+//! `{"r", "sigma_z"}` (P = 1, compression negative), both out to 1.6 times the largest radius
+//! of interest. `units` (`in-psi-lbf`, the default, `mm-MPa-N` or `m-Pa-N`) sets the length of
+//! a, b, d, c, d2 and of every length answered, and the stress of E, P and the curves; the
+//! answer names them (`units`, `unit_symbols: {length, stress, force}`). Query errors name the
+//! parameter and its value (HTTP 400).
+//!
+//! [`opening`] is the page's opening joint (its sliders' defaults), answered once by the
+//! server at start-up and embedded in the page.
 //!
 //! # Accuracy
 //!
 //! `tests/figures/server.rs`: `api_gives_the_cli_numbers` (the answer against `boltzone two --json`
-//! and `boltzone single --json` for the same joint) and
+//! and `boltzone single --json` for the same joint), `api_in_mm_is_two_in_mm_bit_for_bit` and
 //! `bad_queries_get_400_naming_the_field_and_the_server_survives`.
 //!
 //! # Cost
@@ -24,26 +31,29 @@
 //! `cargo bench --bench fem`); under load: `tests/figures/load.rs`
 //! (`api_load_2000_requests_8_concurrent`, ignored).
 
+use crate::cli::args::Units;
 use crate::cli::check;
+use crate::cli::exit::usage;
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
 use boltzone::fem::single::{midplane_of, solve_with_field, SingleParams};
 use boltzone::route::rules_beside;
+use boltzone::scene::UnitSystem;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate, SinglePlate, Value};
 use serde_json::json;
 
 /// The tolerance of `two`'s default, shared by both models here.
 pub const TOLERANCE: f64 = 5e-4;
-/// Young's modulus of `two`'s default (psi).
-const E: f64 = 28.0e6;
+/// Young's modulus of `two`'s default (psi; converted to the query's units).
+const E_PSI: f64 = 28.0e6;
 
-/// A joint asked for.
+/// A joint asked for (lengths in the length of `units`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct JointQuery {
-    /// Hole radius A (in).
+    /// Hole radius A.
     pub a: f64,
-    /// Bearing radius B (in).
+    /// Bearing radius B.
     pub b: f64,
-    /// Upper plate thickness D (in).
+    /// Upper plate thickness D.
     pub d: f64,
     /// Outer radius C (None: infinite).
     pub c: Option<f64>,
@@ -51,6 +61,34 @@ pub struct JointQuery {
     pub nu: f64,
     /// Lower plate thickness (None: D).
     pub d2: Option<f64>,
+    /// The unit system of the lengths asked and of everything answered.
+    pub units: UnitSystem,
+}
+
+/// `x` rounded to 12 significant digits, as the page's `x.toPrecision(12)` sends it.
+fn sent(x: f64) -> f64 {
+    format!("{x:.11e}").parse().unwrap_or(x)
+}
+
+/// The page's hole radius A in `units`: 0.1 in (the report's Table 1), as the page sends it.
+pub fn hole(units: UnitSystem) -> f64 {
+    sent(0.1 * UnitSystem::InPsiLbf.length() / units.length())
+}
+
+/// The page's opening joint in `units` (the sliders' defaults of `page.html`: A/D = 1,
+/// B/A = 3.1, C/A = 15, ν = 0.3, D₂ = D), with each length as the page's query sends it: in
+/// mm-MPa-N A = 2.54, B = 7.874, D = 2.54, C = 38.1.
+pub fn opening(units: UnitSystem) -> JointQuery {
+    let a = hole(units);
+    JointQuery {
+        a,
+        b: sent(a * 3.1),
+        d: sent(a),
+        c: Some(sent(a * 15.0)),
+        nu: 0.3,
+        d2: None,
+        units,
+    }
 }
 
 /// Decodes `%XX` and `+` of a query component.
@@ -78,16 +116,30 @@ fn decode(s: &str) -> String {
     String::from_utf8_lossy(&out).into_owned()
 }
 
-/// Parses the query string (a, b, d required; c, nu, d2 optional; no other keys): the error
-/// names the field and the value.
+/// Parses the query string (a, b, d required; c, nu, d2, units optional; no other keys): the
+/// error names the parameter and the value.
 pub fn parse(query: &str) -> anyhow::Result<JointQuery> {
     let (mut a, mut b, mut d, mut c, mut nu, mut d2) = (None, None, None, None, None, None);
+    let mut units = None;
     for pair in query.split('&').filter(|p| !p.is_empty()) {
         let (k, v) = pair.split_once('=').unwrap_or((pair, ""));
         let (k, v) = (decode(k), decode(v));
+        if k == "units" {
+            let Ok(u) = v.parse::<UnitSystem>() else {
+                return usage(
+                    "units",
+                    format!("'{v}'"),
+                    "is not a unit system (in-psi-lbf, mm-MPa-N, m-Pa-N)",
+                );
+            };
+            if units.replace(u).is_some() {
+                return usage("units", u.name(), "is given twice");
+            }
+            continue;
+        }
         let x: f64 = match v.trim().parse() {
             Ok(x) if f64::is_finite(x) => x,
-            _ => return crate::cli::exit::usage(&k, format!("'{v}'"), "must be a finite number"),
+            _ => return usage(&k, format!("'{v}'"), "must be a finite number"),
         };
         let slot = match k.as_str() {
             "a" => &mut a,
@@ -97,20 +149,24 @@ pub fn parse(query: &str) -> anyhow::Result<JointQuery> {
             "nu" => &mut nu,
             "d2" => &mut d2,
             _ => {
-                return crate::cli::exit::usage(
+                return usage(
                     &k,
                     format!("'{v}'"),
-                    "is not a parameter (a, b, d, c, nu, d2)",
+                    "is not a parameter (a, b, d, c, nu, d2, units)",
                 )
             }
         };
         if slot.replace(x).is_some() {
-            return crate::cli::exit::usage(&k, x, "is given twice");
+            return usage(&k, x, "is given twice");
         }
     }
     let need = |name: &str, v: Option<f64>| match v {
         Some(x) => Ok(x),
-        None => crate::cli::exit::usage(name, "missing", "is required (a, b, d in inches)"),
+        None => usage(
+            name,
+            "missing",
+            "is required (a, b, d in the length of units)",
+        ),
     };
     let q = JointQuery {
         a: need("a", a)?,
@@ -119,6 +175,7 @@ pub fn parse(query: &str) -> anyhow::Result<JointQuery> {
         c,
         nu: nu.unwrap_or(0.3),
         d2,
+        units: units.unwrap_or_default(),
     };
     check::annulus(q.a, q.b)?;
     check::positive("d", "plate thickness D", q.d)?;
@@ -142,7 +199,8 @@ pub fn parse(query: &str) -> anyhow::Result<JointQuery> {
 /// Answers the joint `q` (module docs).
 pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
     let start = std::time::Instant::now();
-    let mat = Material::new(E, q.nu)?;
+    let e = Units { units: q.units }.psi_in(E_PSI);
+    let mat = Material::new(e, q.nu)?;
     let outer = q.c.map_or(OuterRadius::Infinite, OuterRadius::Finite);
     let d2 = q.d2.unwrap_or(q.d);
     let load = FaceLoad::uniform(q.a, q.b, 1.0)?;
@@ -189,9 +247,11 @@ pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
     let (pr, pp) = clip(&two.radius, &two.pressure);
     let (sr, ss) = clip(&mid.r, &mid.sigma_z);
     let levels = two.info.levels.last();
+    let (length, stress, force) = q.units.symbols();
     let mut out = json!({
-        "inputs": {"a": q.a, "b": q.b, "d": q.d, "nu": q.nu, "d2": d2},
-        "units": crate::cli::output::UNITS,
+        "inputs": {"a": q.a, "b": q.b, "d": q.d, "nu": q.nu, "d2": d2, "e": e, "p": 1.0},
+        "units": q.units.name(),
+        "unit_symbols": {"length": length, "stress": stress, "force": force},
         "two": {
             "r_o": two.r_o, "r_o_error": two.r_o_error, "converged": two.converged,
             "full_contact": two.full_contact, "overlap": two.overlap, "report_rule": two.report_rule,

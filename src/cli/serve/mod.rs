@@ -1,8 +1,14 @@
-//! `boltzone serve [--port P] [--bind ADDR]`: the teaching page and its JSON API over HTTP/1.1
-//! on std::net (bound to 127.0.0.1 by default; `--port 0` takes a free port and prints it).
+//! `boltzone serve [--port P] [--bind ADDR] [--units U]`: the teaching page and its JSON API over
+//! HTTP/1.1 on std::net (bound to 127.0.0.1 by default; `--port 0` takes a free port and prints
+//! it).
 //!
-//! Routes: `GET /` the page (`page.html`, built into the binary: vanilla JavaScript and SVG, no
-//! network at run time), `GET /api/joint?…` the joint ([`api`], a contract), `GET /api/health`.
+//! Routes: `GET /` the page (`page.html` with the tick chooser `ticks.js` inlined, built into
+//! the binary: vanilla JavaScript and SVG, no network at run time), `GET /api/joint?…` the
+//! joint ([`api`], a contract), `GET /api/health`. `--units` is the page's opening unit system
+//! (a selector on the page changes it). The page's opening joint ([`api::opening`]) is answered
+//! once, in a thread started with the server, and embedded in the page as JSON, so that the
+//! page's first frame draws it without a request (a plain headless screenshot shows the plot);
+//! the first `GET /` waits for that answer.
 //! One thread per connection, at most [`MAX_CONNECTIONS`] at once (beyond: 503), requests read
 //! with a timeout and a size limit, every answer `Connection: close`. A bad query is answered
 //! 400 naming the field; a solver failure 500; a panic inside a request is caught and answered
@@ -12,7 +18,9 @@
 //! # Accuracy
 //!
 //! `tests/figures/server.rs` (`api_gives_the_cli_numbers`: the contract against the CLI; bad
-//! fields; survival) and `tests/figures/browser.rs` (the page in chromium).
+//! fields; survival; the embedded opening answer equal to the API's) and
+//! `tests/figures/browser.rs` (the page in chromium at 400 and 1280 px; the first paint of a
+//! plain headless chromium; the tick chooser over random ranges in Node).
 //!
 //! # Cost
 //!
@@ -26,7 +34,7 @@ use std::collections::{HashMap, VecDeque};
 use std::io::{Read, Write};
 use std::net::{TcpListener, TcpStream};
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Mutex, OnceLock};
 use std::time::Duration;
 
 /// Connections served at once; more are answered 503.
@@ -36,8 +44,10 @@ pub const CACHE_ENTRIES: usize = 512;
 /// Largest request head read (bytes).
 const MAX_REQUEST: usize = 16 * 1024;
 
-/// The teaching page.
+/// The teaching page (its markers `/*TICKS*/` and `BOOT_JSON` filled by [`page`]).
 const PAGE: &str = include_str!("page.html");
+/// The axes' tick chooser, inlined into the page (and tested alone in Node).
+const TICKS: &str = include_str!("ticks.js");
 
 /// Arguments of `boltzone serve`.
 #[derive(Debug, clap::Args)]
@@ -48,6 +58,35 @@ pub struct Args {
     /// Address to bind (127.0.0.1: this machine only).
     #[arg(long, default_value = "127.0.0.1")]
     bind: String,
+    /// The page's opening unit system.
+    #[command(flatten)]
+    units: super::args::Units,
+}
+
+/// The page as served: the tick chooser inlined and the boot JSON (the opening unit system, the
+/// page's hole radius and unit symbols per system, the opening joint's answer or null) embedded,
+/// `<` escaped so that no text inside it closes the script element.
+fn page(units: boltzone::scene::UnitSystem, cache: &Cache) -> String {
+    use boltzone::scene::UnitSystem;
+    let q = api::opening(units);
+    let (status, _, body) = joint_of(q, cache);
+    let answer: serde_json::Value = match status {
+        200 => serde_json::from_slice(&body).unwrap_or_default(),
+        _ => serde_json::Value::Null,
+    };
+    let systems: serde_json::Map<_, _> =
+        [UnitSystem::InPsiLbf, UnitSystem::MmMpaN, UnitSystem::MPaN]
+            .into_iter()
+            .map(|u| {
+                let (l, s, f) = u.symbols();
+                let v =
+                    serde_json::json!({"hole": api::hole(u), "length": l, "stress": s, "force": f});
+                (u.name().to_string(), v)
+            })
+            .collect();
+    let boot = serde_json::json!({"units": units.name(), "systems": systems, "answer": answer});
+    PAGE.replace("/*TICKS*/", TICKS)
+        .replace("BOOT_JSON", &boot.to_string().replace('<', "\\u003c"))
 }
 
 /// Runs the server until the process is stopped.
@@ -69,6 +108,12 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     std::io::stdout().flush()?;
     let busy = Arc::new(AtomicUsize::new(0));
     let cache = Arc::new(Cache::default());
+    let html = Arc::new(OnceLock::new());
+    let units = args.units.units;
+    {
+        let (html, cache) = (Arc::clone(&html), Arc::clone(&cache));
+        std::thread::spawn(move || html.get_or_init(|| page(units, &cache)).len());
+    }
     for stream in listener.incoming() {
         let Ok(stream) = stream else { continue };
         if busy.fetch_add(1, Ordering::SeqCst) >= MAX_CONNECTIONS {
@@ -77,10 +122,11 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             let _ = respond(&mut s, 503, "text/plain", b"busy: too many connections\n");
             continue;
         }
-        let (busy, cache) = (Arc::clone(&busy), Arc::clone(&cache));
+        let (busy, cache, html) = (Arc::clone(&busy), Arc::clone(&cache), Arc::clone(&html));
         let spawned = std::thread::Builder::new().spawn(move || {
             let mut s = stream;
-            let _ = handle(&mut s, &cache);
+            let page = || html.get_or_init(|| page(units, &cache)).as_str();
+            let _ = handle(&mut s, &cache, page);
             busy.fetch_sub(1, Ordering::SeqCst);
         });
         if spawned.is_err() {
@@ -90,8 +136,12 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     Ok(Status::Converged)
 }
 
-/// Reads one request head and answers it.
-fn handle(stream: &mut TcpStream, cache: &Cache) -> std::io::Result<()> {
+/// Reads one request head and answers it (`page` gives the page).
+fn handle<'a>(
+    stream: &mut TcpStream,
+    cache: &Cache,
+    page: impl FnOnce() -> &'a str,
+) -> std::io::Result<()> {
     stream.set_read_timeout(Some(Duration::from_secs(10)))?;
     stream.set_write_timeout(Some(Duration::from_secs(10)))?;
     let mut head = Vec::new();
@@ -114,7 +164,7 @@ fn handle(stream: &mut TcpStream, cache: &Cache) -> std::io::Result<()> {
     }
     let (path, query) = target.split_once('?').unwrap_or((target, ""));
     let (status, kind, body) = match path {
-        "/" | "/index.html" => (200, "text/html; charset=utf-8", PAGE.as_bytes().to_vec()),
+        "/" | "/index.html" => (200, "text/html; charset=utf-8", page().as_bytes().to_vec()),
         "/api/health" => (200, "application/json", b"{\"ok\":true}\n".to_vec()),
         "/api/joint" => joint(query, cache),
         _ => (404, "text/plain", b"not found\n".to_vec()),
@@ -123,12 +173,13 @@ fn handle(stream: &mut TcpStream, cache: &Cache) -> std::io::Result<()> {
     respond(stream, status, kind, &body)
 }
 
-/// Successful answers by joint (the bits of a, b, d, c, ν, d2), oldest first out.
+/// Successful answers by joint (the bits of a, b, d, c, ν, d2 and the unit system), oldest
+/// first out.
 #[derive(Default)]
 struct Cache(Mutex<Store>);
 
-/// A joint's key: the bits of a, b, d, ν, c and d2 (absent: all ones).
-type Key = [u64; 6];
+/// A joint's key: the bits of a, b, d, ν, c and d2 (absent: all ones) and the unit system.
+type Key = [u64; 7];
 /// The answers by key and the keys in the order they came.
 type Store = (HashMap<Key, Arc<Vec<u8>>>, VecDeque<Key>);
 
@@ -142,6 +193,7 @@ impl Cache {
             q.nu.to_bits(),
             bits(q.c),
             bits(q.d2),
+            q.units as u64,
         ]
     }
 
@@ -164,18 +216,24 @@ impl Cache {
     }
 }
 
+/// An error answer: (status, JSON content type, `{"error": message}`).
+fn error(status: u16, message: String) -> (u16, &'static str, Vec<u8>) {
+    let body = serde_json::json!({ "error": message })
+        .to_string()
+        .into_bytes();
+    (status, "application/json", body)
+}
+
 /// The API's answer: (status, content type, body); a panic is caught and answered 500.
 fn joint(query: &str, cache: &Cache) -> (u16, &'static str, Vec<u8>) {
-    let error = |status, message: String| {
-        let body = serde_json::json!({ "error": message })
-            .to_string()
-            .into_bytes();
-        (status, "application/json", body)
-    };
-    let q = match api::parse(query) {
-        Ok(q) => q,
-        Err(e) => return error(400, format!("{e:#}")),
-    };
+    match api::parse(query) {
+        Ok(q) => joint_of(q, cache),
+        Err(e) => error(400, format!("{e:#}")),
+    }
+}
+
+/// The answer to the parsed joint `q`, from the cache or solved (and kept).
+fn joint_of(q: api::JointQuery, cache: &Cache) -> (u16, &'static str, Vec<u8>) {
     let key = Cache::key(&q);
     if let Some(body) = cache.get(&key) {
         return (200, "application/json", body.to_vec());
