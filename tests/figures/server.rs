@@ -179,7 +179,7 @@ fn api_in_mm_is_two_in_mm_bit_for_bit() {
         "nut_deflection",
         "nodes",
         "dofs",
-        "rate",
+        "observed_order",
         "r_o_over_a",
     ] {
         assert!(!two[key].is_null(), "two --json has no {key}");
