@@ -44,6 +44,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod bolt_spec;
 pub mod check;
 pub mod error;
 pub mod field;

@@ -98,6 +98,11 @@ pub struct Solution {
     /// (`rules_left_out`).
     #[serde(flatten)]
     pub rules: crate::route::rules_beside::Rules,
+    /// The bolted-joint answer (`[outputs] stiffness`, `[bolt]`): k_P, δ_P, the stiffness rules,
+    /// the preload, δ_S, Φ, the bearing pressures ([`crate::route::joint::JointAnswer`]; its
+    /// keys only when computed).
+    #[serde(flatten)]
+    pub joint: crate::route::joint::JointAnswer,
     /// The plan: routes that ran and were skipped, time per step.
     pub plan: Vec<Step>,
     /// Interface curve (two-plate; written as CSV, not printed).
