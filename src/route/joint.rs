@@ -405,7 +405,8 @@ pub fn load_factor(delta_s: f64, delta_p: Value, n: f64) -> Value {
 /// percent, or why it was left out.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct StiffnessRule {
-    /// The rule's k_P (force per length), or null when left out.
+    /// The rule's k_P (force per length; absent when left out).
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub stiffness: Option<f64>,
     /// (k_rule − k_P)/k_P·100 with k_P's error carried.
     #[serde(skip_serializing_if = "Option::is_none")]
