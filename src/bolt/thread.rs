@@ -64,7 +64,7 @@ pub(crate) fn rows(table: &str) -> impl Iterator<Item = Vec<&str>> {
     table
         .lines()
         .skip(1)
-        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        .filter(|l| !l.starts_with("# ") && !l.trim().is_empty())
         .map(|l| l.split(',').map(str::trim).collect())
 }
 
