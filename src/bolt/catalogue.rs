@@ -132,7 +132,10 @@ fn row<'a>(
     size: &str,
     extra: Option<(usize, &str)>,
 ) -> Result<Vec<&'a str>, NotInCatalogue> {
-    named(table, what, &nominal(size), extra).map_err(|e| NotInCatalogue { name: size.into(), ..e })
+    named(table, what, &nominal(size), extra).map_err(|e| NotInCatalogue {
+        name: size.into(),
+        ..e
+    })
 }
 
 /// The row of `table` whose first cell is `key` (and whose column `extra.0` equals `extra.1`).
@@ -146,10 +149,7 @@ fn named<'a>(
     rows(table)
         .find(|f| f[0].eq_ignore_ascii_case(&key) && keep(f))
         .ok_or_else(|| {
-            let known: Vec<String> = rows(table)
-                .filter(keep)
-                .map(|f| f[0].to_string())
-                .collect();
+            let known: Vec<String> = rows(table).filter(keep).map(|f| f[0].to_string()).collect();
             NotInCatalogue::new(what, key, &known.join(", "))
         })
 }

@@ -75,7 +75,10 @@ pub(crate) fn cell(s: &str) -> f64 {
 
 /// The sizes a table lists, for messages.
 fn names(table: &str) -> String {
-    rows(table).map(|f| f[0].to_string()).collect::<Vec<_>>().join(", ")
+    rows(table)
+        .map(|f| f[0].to_string())
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 impl Thread {
@@ -119,7 +122,8 @@ impl Thread {
     /// ```
     pub fn lookup(size: &str) -> Result<Self, super::catalogue::NotInCatalogue> {
         let key = size.trim().replace('×', "x");
-        let bad = |e: InputError| super::catalogue::NotInCatalogue::new("thread", size, &e.to_string());
+        let bad =
+            |e: InputError| super::catalogue::NotInCatalogue::new("thread", size, &e.to_string());
         if key.contains('x') || key.contains('X') {
             for f in rows(FINE) {
                 if f[0].eq_ignore_ascii_case(&key) {

@@ -364,7 +364,10 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             converged: s.converged,
         };
         print_rules(&args, r_o);
-        for line in joint_answer.iter().flat_map(|a| super::two_bolt::lines(a, args.units.units)) {
+        for line in joint_answer
+            .iter()
+            .flat_map(|a| super::two_bolt::lines(a, args.units.units))
+        {
             println!("{line}");
         }
         if let Some(why) = &fallback {

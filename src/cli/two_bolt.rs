@@ -98,13 +98,23 @@ pub struct BoltArgs {
     #[arg(long, value_enum, requires = "bolt")]
     pub washer: Option<WasherFlag>,
     /// Unthreaded shank length l_1 inside the grip (in, or the --units length).
-    #[arg(long, default_value_t = 0.0, requires = "bolt", allow_negative_numbers = true)]
+    #[arg(
+        long,
+        default_value_t = 0.0,
+        requires = "bolt",
+        allow_negative_numbers = true
+    )]
     pub shank: f64,
     /// Bolt and nut modulus E_S (psi, or the --units stress; default 205 GPa converted).
     #[arg(long, requires = "bolt", allow_negative_numbers = true)]
     pub bolt_e: Option<f64>,
     /// Load-introduction factor n of the load factor Φ = n δ_P/(δ_S + δ_P).
-    #[arg(long, default_value_t = 1.0, requires = "bolt", allow_negative_numbers = true)]
+    #[arg(
+        long,
+        default_value_t = 1.0,
+        requires = "bolt",
+        allow_negative_numbers = true
+    )]
     pub load_introduction: f64,
     /// The preload F_M (lbf, or the --units force): the bolt force.
     #[arg(long, requires = "bolt", conflicts_with_all = ["force", "p", "torque", "utilisation", "nut_displacement"], allow_negative_numbers = true)]
@@ -266,8 +276,12 @@ pub fn resolve(mut args: Args) -> anyhow::Result<Args> {
 pub fn answer(
     args: &Args,
     q: &Question,
-) -> anyhow::Result<Option<(JointAnswer, Option<boltzone::contact::compliance::MemberCompliance>)>>
-{
+) -> anyhow::Result<
+    Option<(
+        JointAnswer,
+        Option<boltzone::contact::compliance::MemberCompliance>,
+    )>,
+> {
     if !q.stiffness && args.bolt.bolt.is_none() {
         return Ok(None);
     }
@@ -327,11 +341,9 @@ pub fn lines(a: &JointAnswer, units: boltzone::scene::UnitSystem) -> Vec<String>
         let shown: Vec<String> = rules
             .iter()
             .map(|(name, r)| match (r.stiffness, r.error_percent) {
-                (Some(k), Some(e)) => format!(
-                    "{name} {} ({:+.1} %)",
-                    super::exit::sig(k, 4),
-                    e.value
-                ),
+                (Some(k), Some(e)) => {
+                    format!("{name} {} ({:+.1} %)", super::exit::sig(k, 4), e.value)
+                }
                 _ => format!("{name} left out"),
             })
             .collect();
@@ -343,8 +355,10 @@ pub fn lines(a: &JointAnswer, units: boltzone::scene::UnitSystem) -> Vec<String>
             super::exit::sig(p, 6),
             ds,
             super::exit::sig(lk, 6),
-            a.load_factor
-                .map_or(String::new(), |phi| format!(", load factor Phi = {}", pm(phi)))
+            a.load_factor.map_or(String::new(), |phi| format!(
+                ", load factor Phi = {}",
+                pm(phi)
+            ))
         ));
     }
     if let Some(p) = a.bearing_pressure {
@@ -352,8 +366,10 @@ pub fn lines(a: &JointAnswer, units: boltzone::scene::UnitSystem) -> Vec<String>
             "bearing pressure: head {} {s}, nut {} {s}{}",
             super::exit::sig(p.head, 5),
             super::exit::sig(p.nut, 5),
-            p.limit
-                .map_or(String::new(), |g| format!(" (limit p_G {} {s})", super::exit::sig(g, 4)))
+            p.limit.map_or(String::new(), |g| format!(
+                " (limit p_G {} {s})",
+                super::exit::sig(g, 4)
+            ))
         ));
     }
     out

@@ -464,7 +464,10 @@ pub const CORNWELL_LEFT_OUT: &str = "Cornwell's joint-constant fit (J. Mech. Des
 /// material nearest in ν), Cornwell's (left out, [`CORNWELL_LEFT_OUT`]).
 pub fn stiffness_rules(joint: &Joint, dia: RuleDiameters, k_p: Value) -> StiffnessRules {
     let (up, lo) = (joint.upper(), joint.lower());
-    let (e1, e2) = (up.material().youngs_modulus(), lo.material().youngs_modulus());
+    let (e1, e2) = (
+        up.material().youngs_modulus(),
+        lo.material().youngs_modulus(),
+    );
     let one_material = up.material() == lo.material();
     let grip = up.thickness() + lo.thickness();
     let entry = |k: Result<f64, String>| match k {
@@ -493,8 +496,12 @@ pub fn stiffness_rules(joint: &Joint, dia: RuleDiameters, k_p: Value) -> Stiffne
                 .map_err(|e| e.to_string())
         }
     };
-    let shigley = shigley::members(&[(up.thickness(), e1), (lo.thickness(), e2)], dia.d, dia.bearing)
-        .map_err(|e| e.to_string());
+    let shigley = shigley::members(
+        &[(up.thickness(), e1), (lo.thickness(), e2)],
+        dia.d,
+        dia.bearing,
+    )
+    .map_err(|e| e.to_string());
     let wileman = match one_material {
         false => Err(one("Wileman's fit")),
         true => wileman::member_stiffness(
@@ -608,7 +615,11 @@ pub fn answer(
     bolt: Option<BoltQuestion>,
     scale: Scale,
 ) -> Result<(JointAnswer, Option<MemberCompliance>), AnswerError> {
-    let member = if q.stiffness { Some(stiffness(q)?) } else { None };
+    let member = if q.stiffness {
+        Some(stiffness(q)?)
+    } else {
+        None
+    };
     let mut out = JointAnswer::default();
     if let Some(m) = &member {
         out.member_stiffness = Some(m.stiffness);

@@ -156,7 +156,11 @@ fn spec(scene: &Scene, text: &str, (l, s): (f64, f64)) -> Result<Option<BoltSpec
 }
 
 /// The preload of `[preload]`, forces scaled by `force` and lengths by `l`.
-fn preload(scene: &Scene, text: &str, (l, force): (f64, f64)) -> Result<Option<Preload>, SceneError> {
+fn preload(
+    scene: &Scene,
+    text: &str,
+    (l, force): (f64, f64),
+) -> Result<Option<Preload>, SceneError> {
     let Some(p) = &scene.preload else {
         return Ok(None);
     };
@@ -178,7 +182,11 @@ fn preload(scene: &Scene, text: &str, (l, force): (f64, f64)) -> Result<Option<P
     };
     match given.as_slice() {
         ["force"] => {
-            unused("mu_thread", p.mu_thread, "a given preload needs no friction")?;
+            unused(
+                "mu_thread",
+                p.mu_thread,
+                "a given preload needs no friction",
+            )?;
             unused("mu_head", p.mu_head, "a given preload needs no friction")?;
             Ok(Some(Preload::Force(p.force.unwrap_or(0.0) * force)))
         }
@@ -188,7 +196,11 @@ fn preload(scene: &Scene, text: &str, (l, force): (f64, f64)) -> Result<Option<P
             mu_head: need("mu_head", p.mu_head, "the head friction mu_K")?,
         })),
         ["utilisation"] => {
-            unused("mu_head", p.mu_head, "the utilisation needs the thread friction only")?;
+            unused(
+                "mu_head",
+                p.mu_head,
+                "the utilisation needs the thread friction only",
+            )?;
             Ok(Some(Preload::Utilisation {
                 nu: p.utilisation.unwrap_or(0.0),
                 mu_thread: mu_g()?,
@@ -251,7 +263,11 @@ pub fn resolve(scene: &mut Scene, text: &str) -> Result<(), SceneError> {
     let given = l.force;
     match (preload(scene, text, (1.0, 1.0))?, &spec, g) {
         (Some(_), None, _) => {
-            return Err(at(text, &["preload"], "a preload needs a [bolt] (its thread)"));
+            return Err(at(
+                text,
+                &["preload"],
+                "a preload needs a [bolt] (its thread)",
+            ));
         }
         (Some(p), Some(s), Some(g)) => {
             let sizes = (2.0 * scene.hole.radius, 2.0 * scene.load.outer_radius);
@@ -280,7 +296,13 @@ pub fn answer(
     scene: &Scene,
     joint: &Joint,
     q: &Question,
-) -> Result<(JointAnswer, Option<crate::contact::compliance::MemberCompliance>), SceneError> {
+) -> Result<
+    (
+        JointAnswer,
+        Option<crate::contact::compliance::MemberCompliance>,
+    ),
+    SceneError,
+> {
     let u = scene.units;
     let (l, f) = (u.length(), u.force());
     let si = Scale::of(UnitSystem::MPaN);
@@ -293,7 +315,10 @@ pub fn answer(
         Some(p) => p,
         None => Preload::Force(joint.load().total_force()),
     };
-    let limit = scene.preload.as_ref().and_then(|p| p.limit_material.as_deref());
+    let limit = scene
+        .preload
+        .as_ref()
+        .and_then(|p| p.limit_material.as_deref());
     let bolt = match (&spec, &geometry) {
         (Some(spec), Some(geometry)) => Some(BoltQuestion {
             spec,

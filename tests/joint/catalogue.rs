@@ -32,7 +32,11 @@ fn fine_pitch_stress_areas_match_iso_898_1_table_5() {
         assert_eq!(t.form, Form::Metric);
         let a = t.stress_area();
         let scale = 10f64.powi(printed.log10().floor() as i32 - 2);
-        assert_eq!((a / scale).round(), (printed / scale).round(), "{size}: {a}");
+        assert_eq!(
+            (a / scale).round(),
+            (printed / scale).round(),
+            "{size}: {a}"
+        );
     }
     assert!(Thread::lookup("M10x1.75").is_err());
 }
@@ -48,8 +52,11 @@ fn unified_stress_areas_follow_asme_b1_1() {
     let mut n_rows = 0;
     for line in UNIFIED.lines().skip(1).filter(|l| !l.starts_with("# ")) {
         let f: Vec<&str> = line.split(',').collect();
-        let (d, n, printed): (f64, f64, f64) =
-            (f[2].parse().unwrap(), f[3].parse().unwrap(), f[4].parse().unwrap());
+        let (d, n, printed): (f64, f64, f64) = (
+            f[2].parse().unwrap(),
+            f[3].parse().unwrap(),
+            f[4].parse().unwrap(),
+        );
         let by_formula = std::f64::consts::FRAC_PI_4 * (d - 0.9743 / n).powi(2);
         let decimals = f[4].split('.').nth(1).map_or(0, str::len) as i32;
         let allowed = match f[0].starts_with('#') {
@@ -108,7 +115,10 @@ fn bearing_faces_lie_between_the_hole_and_the_hexagon() {
         head_bearing_diameter("M10", HeadKind::Hex).unwrap()
     );
     let e = head_bearing_diameter("M11", HeadKind::Hex).unwrap_err();
-    assert!(e.to_string().contains("M10") && e.to_string().contains("M11"), "{e}");
+    assert!(
+        e.to_string().contains("M10") && e.to_string().contains("M11"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -117,10 +127,20 @@ fn washers_cover_the_head_and_clear_the_bolt() {
         let d = Thread::lookup(size).unwrap().d;
         let normal = washer(size, WasherSeries::Iso7089).unwrap();
         // ISO 7089's bore is ISO 273's fine clearance hole
-        assert_eq!(normal.d1, clearance_hole(size, HoleSeries::Fine).unwrap(), "{size}");
-        assert!(d < normal.d1 && normal.d1 < normal.d2 && normal.h > 0.0, "{size}");
+        assert_eq!(
+            normal.d1,
+            clearance_hole(size, HoleSeries::Fine).unwrap(),
+            "{size}"
+        );
+        assert!(
+            d < normal.d1 && normal.d1 < normal.d2 && normal.h > 0.0,
+            "{size}"
+        );
         // the washer carries the whole head: d2 exceeds the head's d_w
-        assert!(normal.d2 > head_bearing_diameter(size, HeadKind::Hex).unwrap(), "{size}");
+        assert!(
+            normal.d2 > head_bearing_diameter(size, HeadKind::Hex).unwrap(),
+            "{size}"
+        );
         if let Ok(large) = washer(size, WasherSeries::Iso7093) {
             assert!(large.d2 > normal.d2 && large.h >= normal.h, "{size}");
             assert!(large.d1 >= normal.d1, "{size}");

@@ -12,8 +12,26 @@ const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/scenes/m10_bo
 
 /// The `two` line of the example scene (its header says so).
 const LINE: &[&str] = &[
-    "two", "--units", "m-Pa-N", "--bolt", "M10", "--grade", "8.8", "--d", "0.01", "--c", "0.02",
-    "--e", "205e9", "--torque", "40", "--mu-thread", "0.12", "--mu-head", "0.12", "--stiffness",
+    "two",
+    "--units",
+    "m-Pa-N",
+    "--bolt",
+    "M10",
+    "--grade",
+    "8.8",
+    "--d",
+    "0.01",
+    "--c",
+    "0.02",
+    "--e",
+    "205e9",
+    "--torque",
+    "40",
+    "--mu-thread",
+    "0.12",
+    "--mu-head",
+    "0.12",
+    "--stiffness",
     "--json",
 ];
 
@@ -40,7 +58,9 @@ fn m10_example_scene_and_two_line_agree_bit_for_bit() {
     for rule in ["vdi2230", "shigley", "wileman", "cornwell"] {
         assert!(scene["rules_member_stiffness"][rule].is_object(), "{rule}");
     }
-    assert!(scene["bearing_pressure"]["head"].is_f64() && scene["bearing_pressure"]["nut"].is_f64());
+    assert!(
+        scene["bearing_pressure"]["head"].is_f64() && scene["bearing_pressure"]["nut"].is_f64()
+    );
 }
 
 #[test]
@@ -84,14 +104,33 @@ fn m10_example_against_the_library_and_the_closed_forms() {
     assert!((bp["nut"].as_f64().unwrap() * area(14.6e-3) / preload - 1.0).abs() < 1e-12);
     // the figures of the issue's example: VDI's cone is stiffer than the exact k_P
     let vdi = &v["rules_member_stiffness"]["vdi2230"];
-    assert!(vdi["error_percent"]["value"].as_f64().unwrap() > 10.0, "{vdi}");
+    assert!(
+        vdi["error_percent"]["value"].as_f64().unwrap() > 10.0,
+        "{vdi}"
+    );
 }
 
 #[test]
 fn millimetres_and_metres_give_the_same_joint() {
     let mm = json_of(&boltzone(&[
-        "two", "--units", "mm-MPa-N", "--bolt", "M10", "--d", "10", "--c", "20", "--e", "205e3",
-        "--torque", "40e3", "--mu-thread", "0.12", "--mu-head", "0.12", "--json",
+        "two",
+        "--units",
+        "mm-MPa-N",
+        "--bolt",
+        "M10",
+        "--d",
+        "10",
+        "--c",
+        "20",
+        "--e",
+        "205e3",
+        "--torque",
+        "40e3",
+        "--mu-thread",
+        "0.12",
+        "--mu-head",
+        "0.12",
+        "--json",
     ]));
     let m = json_of(&boltzone(LINE));
     let close = |a: f64, b: f64, what: &str| {
@@ -104,7 +143,11 @@ fn millimetres_and_metres_give_the_same_joint() {
         1e-3 * m["member_stiffness"]["value"].as_f64().unwrap(),
         "k_P (N/mm vs N/m)",
     );
-    close(f(&mm, "bolt_compliance"), 1e3 * f(&m, "bolt_compliance"), "delta_S");
+    close(
+        f(&mm, "bolt_compliance"),
+        1e3 * f(&m, "bolt_compliance"),
+        "delta_S",
+    );
     close(
         mm["bearing_pressure"]["head"].as_f64().unwrap(),
         1e-6 * m["bearing_pressure"]["head"].as_f64().unwrap(),
@@ -119,7 +162,13 @@ fn text_output_names_the_quantities() {
     let out = boltzone(&line);
     assert!(out.status.success());
     let text = String::from_utf8_lossy(&out.stdout);
-    for word in ["member stiffness k_P", "k_P rules", "preload F_M", "load factor Phi", "bearing pressure: head"] {
+    for word in [
+        "member stiffness k_P",
+        "k_P rules",
+        "preload F_M",
+        "load factor Phi",
+        "bearing pressure: head",
+    ] {
         assert!(text.contains(word), "{word}: {text}");
     }
 }
@@ -131,12 +180,45 @@ fn bad_bolt_flags_exit_2_naming_the_flag() {
         (&["--bolt", "M11"][..], "--bolt"),
         (&["--bolt", "M10", "--grade", "9.9"], "--grade"),
         (&["--bolt", "M10", "--preload", "-5"], "--preload"),
-        (&["--bolt", "M10", "--torque", "40e3", "--mu-thread", "0.12"], "--mu-head"),
-        (&["--bolt", "M10", "--torque", "40e3", "--mu-thread", "-1", "--mu-head", "0.1"], "--mu-thread"),
-        (&["--bolt", "M10", "--utilisation", "1.5", "--mu-thread", "0.1", "--grade", "8.8"], "--utilisation"),
+        (
+            &["--bolt", "M10", "--torque", "40e3", "--mu-thread", "0.12"],
+            "--mu-head",
+        ),
+        (
+            &[
+                "--bolt",
+                "M10",
+                "--torque",
+                "40e3",
+                "--mu-thread",
+                "-1",
+                "--mu-head",
+                "0.1",
+            ],
+            "--mu-thread",
+        ),
+        (
+            &[
+                "--bolt",
+                "M10",
+                "--utilisation",
+                "1.5",
+                "--mu-thread",
+                "0.1",
+                "--grade",
+                "8.8",
+            ],
+            "--utilisation",
+        ),
         (&["--bolt", "M10", "--shank", "30"], "--shank"),
-        (&["--bolt", "M10", "--load-introduction", "0"], "--load-introduction"),
-        (&["--bolt", "M10", "--limit-material", "cheese"], "--limit-material"),
+        (
+            &["--bolt", "M10", "--load-introduction", "0"],
+            "--load-introduction",
+        ),
+        (
+            &["--bolt", "M10", "--limit-material", "cheese"],
+            "--limit-material",
+        ),
         (&["--bolt", "1/2-13"], "--a"),
         (&["--b", "8"], "--a"),
     ] {
@@ -152,7 +234,8 @@ fn bad_bolt_flags_exit_2_naming_the_flag() {
 
 #[test]
 fn bad_bolt_keys_are_named_with_their_line() {
-    let scene = |body: &str| format!("units = \"mm-MPa-N\"\n{body}\n[[plates]]\nthickness = 10.0\n");
+    let scene =
+        |body: &str| format!("units = \"mm-MPa-N\"\n{body}\n[[plates]]\nthickness = 10.0\n");
     for (body, key, line) in [
         ("[bolt]\nsize = \"M11\"", "bolt.size", 3),
         ("[bolt]\nsize = \"M10\"\ngrade = \"9.9\"", "bolt.grade", 4),
