@@ -147,7 +147,7 @@ fn named<'a>(
 ) -> Result<Vec<&'a str>, NotInCatalogue> {
     let keep = |f: &Vec<&str>| extra.is_none_or(|(i, v)| f.get(i) == Some(&v));
     rows(table)
-        .find(|f| f[0].eq_ignore_ascii_case(&key) && keep(f))
+        .find(|f| f[0].eq_ignore_ascii_case(key) && keep(f))
         .ok_or_else(|| {
             let known: Vec<String> = rows(table).filter(keep).map(|f| f[0].to_string()).collect();
             NotInCatalogue::new(what, key, &known.join(", "))
