@@ -1,14 +1,19 @@
-//! ISO metric threads: the basic profile's diameters from the nominal diameter d and the pitch
-//! P (ISO 724: d₂ = d − 0.649519 P, d₃ = d − 1.226869 P for the external thread's root), the
-//! stress area A_s = π/4 ((d₂ + d₃)/2)² (ISO 898-1), and the coarse pitches of ISO 262
-//! (`reference/bolts/iso262_coarse.csv`, M3–M36).
+//! ISO metric and Unified inch threads: the basic profile's diameters from the nominal diameter
+//! d and the pitch P (ISO 724: d₂ = d − 0.649519 P, d₃ = d − 1.226869 P for the external
+//! thread's root; the Unified form of ASME B1.1 has the same 60° profile), the stress area
+//! (ISO 898-1: A_s = π/4 ((d₂ + d₃)/2)²; ASME B1.1: A_t = π/4 (d − 0.9743 P)²), and the
+//! catalogue sizes: the coarse pitches of ISO 262 (`reference/bolts/iso262_coarse.csv`,
+//! M3–M36), its fine pitches (`iso262_fine.csv`, M8×1 … M36×3) and the UNC/UNF series #4 to
+//! 1-1/2 (`unified_inch.csv`, ASME B1.1). [`Thread::lookup`] reads "M10", "M10x1.25",
+//! "1/2-13" or "1/2-13 UNC".
 //!
-//! Units: millimetres.
+//! Units: millimetres (the inch sizes converted at 25.4 mm/in).
 //!
 //! # Accuracy
 //!
 //! `tests/joint/bolt.rs`: A_s against ISO 898-1's Table 4 values for M3–M36 to their printed
-//! digits.
+//! digits; `tests/joint/catalogue.rs`: the fine pitches against ISO 898-1's Table 5 and the
+//! Unified sizes' tabulated A_t against ASME B1.1's formula.
 //!
 //! # Cost
 //!
@@ -25,14 +30,55 @@ use crate::error::InputError;
 
 /// The coarse-pitch table of ISO 262 (size, d, P).
 const COARSE: &str = include_str!("../../reference/bolts/iso262_coarse.csv");
+/// The fine-pitch table of ISO 262 (size, d, P).
+const FINE: &str = include_str!("../../reference/bolts/iso262_fine.csv");
+/// The UNC/UNF table of ASME B1.1 (size, series, d in, threads per inch, A_t in²).
+pub const UNIFIED: &str = include_str!("../../reference/bolts/unified_inch.csv");
 
-/// An ISO metric thread.
+/// Millimetres per inch.
+const MM_PER_INCH: f64 = 25.4;
+
+/// The thread form, which fixes the stress area's formula.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Form {
+    /// ISO metric (ISO 68-1, ISO 724): A_s = π/4 ((d₂ + d₃)/2)².
+    #[default]
+    Metric,
+    /// Unified inch (ASME B1.1): A_t = π/4 (d − 0.9743 P)².
+    Unified,
+}
+
+/// A screw thread (ISO metric or Unified inch; lengths in mm).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Thread {
     /// Nominal diameter d, mm.
     pub d: f64,
     /// Pitch P, mm.
     pub pitch: f64,
+    /// The form (metric unless made by [`Thread::unified`] or looked up as an inch size).
+    pub form: Form,
+}
+
+/// The data rows of a catalogue table (the header and `#` comments skipped), split at commas.
+pub(crate) fn rows(table: &str) -> impl Iterator<Item = Vec<&str>> {
+    table
+        .lines()
+        .skip(1)
+        .filter(|l| !l.starts_with("# ") && !l.trim().is_empty())
+        .map(|l| l.split(',').map(str::trim).collect())
+}
+
+/// A number of a catalogue table (NaN where a cell does not parse: the constructors refuse it).
+pub(crate) fn cell(s: &str) -> f64 {
+    s.parse::<f64>().unwrap_or(f64::NAN)
+}
+
+/// The sizes a table lists, for messages.
+fn names(table: &str) -> String {
+    rows(table)
+        .map(|f| f[0].to_string())
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 impl Thread {
@@ -46,16 +92,77 @@ impl Thread {
                 reason: "must lie in (0, d/4)",
             });
         }
-        Ok(Self { d, pitch })
+        Ok(Self {
+            d,
+            pitch,
+            form: Form::Metric,
+        })
+    }
+
+    /// A Unified inch thread of major diameter `d` (mm) and pitch `pitch` (mm), 0 < P < d/4.
+    pub fn unified(d: f64, pitch: f64) -> Result<Self, InputError> {
+        Ok(Self {
+            form: Form::Unified,
+            ..Self::new(d, pitch)?
+        })
+    }
+
+    /// The catalogue thread of `size`: "M10" (ISO 262 coarse), "M10x1.25" (ISO 262 fine; `×`
+    /// or `x`), "1/2-13" or "1/2-13 UNC", "#10-32" (ASME B1.1 UNC/UNF). The error lists the
+    /// sizes known.
+    ///
+    /// ```
+    /// use boltzone::bolt::thread::{Form, Thread};
+    /// let fine = Thread::lookup("M10x1.25")?;
+    /// assert_eq!((fine.d, fine.pitch), (10.0, 1.25));
+    /// let unc = Thread::lookup("1/2-13 UNC")?;
+    /// assert_eq!(unc.form, Form::Unified);
+    /// assert!((unc.d - 12.7).abs() < 1e-12);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn lookup(size: &str) -> Result<Self, super::catalogue::NotInCatalogue> {
+        let key = size.trim().replace('×', "x");
+        let bad =
+            |e: InputError| super::catalogue::NotInCatalogue::new("thread", size, &e.to_string());
+        if key.contains('x') || key.contains('X') {
+            for f in rows(FINE) {
+                if f[0].eq_ignore_ascii_case(&key) {
+                    return Self::new(cell(f[1]), cell(f[2])).map_err(bad);
+                }
+            }
+            return Err(super::catalogue::NotInCatalogue::new(
+                "ISO 262 fine thread",
+                size,
+                &names(FINE),
+            ));
+        }
+        if key.starts_with(['M', 'm']) {
+            return Self::metric_coarse(&key).map_err(|_| {
+                super::catalogue::NotInCatalogue::new("ISO 262 coarse thread", size, &names(COARSE))
+            });
+        }
+        let (name, series) = match key.split_once(' ') {
+            Some((n, s)) => (n.trim(), Some(s.trim())),
+            None => (key.as_str(), None),
+        };
+        for f in rows(UNIFIED) {
+            if f[0] == name && series.is_none_or(|s| s.eq_ignore_ascii_case(f[1])) {
+                return Self::unified(MM_PER_INCH * cell(f[2]), MM_PER_INCH / cell(f[3]))
+                    .map_err(bad);
+            }
+        }
+        Err(super::catalogue::NotInCatalogue::new(
+            "thread (ISO 262 coarse or fine, ASME B1.1 UNC/UNF)",
+            size,
+            &format!("M3 … M36, {}; {}", names(FINE), names(UNIFIED)),
+        ))
     }
 
     /// The coarse thread of `size` ("M3" … "M36", ISO 262).
     pub fn metric_coarse(size: &str) -> Result<Self, InputError> {
-        for line in COARSE.lines().skip(1).filter(|l| !l.starts_with('#')) {
-            let f: Vec<&str> = line.split(',').collect();
+        for f in rows(COARSE) {
             if f.len() == 3 && f[0].eq_ignore_ascii_case(size.trim()) {
-                let num = |s: &str| s.parse::<f64>().unwrap_or(f64::NAN);
-                return Self::new(num(f[1]), num(f[2]));
+                return Self::new(cell(f[1]), cell(f[2]));
             }
         }
         Err(InputError::Parameter {
@@ -75,9 +182,12 @@ impl Thread {
         self.d - 1.226869 * self.pitch
     }
 
-    /// Stress area A_s = π/4 ((d₂ + d₃)/2)².
+    /// Stress area: metric A_s = π/4 ((d₂ + d₃)/2)², Unified A_t = π/4 (d − 0.9743 P)².
     pub fn stress_area(&self) -> f64 {
-        let ds = 0.5 * (self.pitch_diameter() + self.minor_diameter());
+        let ds = match self.form {
+            Form::Metric => 0.5 * (self.pitch_diameter() + self.minor_diameter()),
+            Form::Unified => self.d - 0.9743 * self.pitch,
+        };
         0.25 * std::f64::consts::PI * ds * ds
     }
 }

@@ -16,7 +16,7 @@ use std::path::PathBuf;
 
 /// Hole radius A, load radius B, plate thickness D and Poisson's ratio ν (lengths in inches,
 /// or the length of the command's `--units`).
-#[derive(Debug, Clone, clap::Args, serde::Serialize)]
+#[derive(Debug, Clone, Default, clap::Args, serde::Serialize)]
 pub struct Geometry {
     /// Hole radius A, the inner radius of the bearing annulus (in).
     #[arg(long, allow_negative_numbers = true)]

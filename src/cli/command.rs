@@ -38,7 +38,7 @@ enum Command {
     /// Single plate with a hole (Fernlund's substitution): R_o by finite elements or Hankel transforms.
     Single(single::Args),
     /// Two plates in unilateral contact (the report's two-plate model): R_o and interface pressure.
-    Two(two::Args),
+    Two(Box<two::Args>),
     /// Table 1 recomputed: single- vs two-plate R_o/A and the rules of thumb, report beside.
     Table1(table1::Args),
     /// Table 2 recomputed: two-plate 2R_o of the test joints beside the report's and the tests.
@@ -66,7 +66,7 @@ pub fn run(cli: Cli) -> anyhow::Result<Status> {
         None => default_case::run(),
         Some(Command::Slab(a)) => slab::run(a),
         Some(Command::Single(a)) => single::run(a),
-        Some(Command::Two(a)) => two::run(a),
+        Some(Command::Two(a)) => two::run(*a),
         Some(Command::Table1(a)) => table1::run(a),
         Some(Command::Table2(a)) => table2::run(a),
         Some(Command::Map(a)) => map::run(a),

@@ -36,6 +36,7 @@ mod table2;
 mod table_units;
 mod two;
 mod two_args;
+mod two_bolt;
 mod two_curve;
 mod two_files;
 mod two_hankel;

@@ -231,6 +231,9 @@ fn print_text(s: &Solution) {
         println!("deflection under the nut: {d:.4e} {}", s.length_unit);
     }
     println!("{}", super::print::rules_line(&s.rules, s.length_unit));
+    for line in super::two_bolt::lines(&s.joint, s.units) {
+        println!("{line}");
+    }
     if let (Some(g), Some(u)) = (s.joint_conductance, s.conductance_unit) {
         println!(
             "joint conductance (integral of h_c dA over the contact zone): {} {u}",

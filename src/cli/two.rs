@@ -164,6 +164,7 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
 pub fn run(mut args: Args) -> anyhow::Result<Status> {
     apply_materials(&mut args)?;
     let start = std::time::Instant::now();
+    let args = super::two_bolt::resolve(args)?;
     check_args(&args)?;
     let p_given = match args.nut_displacement {
         Some(_) => 0.0,
@@ -212,11 +213,21 @@ pub fn run(mut args: Args) -> anyhow::Result<Status> {
             false => e.into(),
         }
     };
+    // k_P (--stiffness, --bolt): its study's contact solution answers R_o where it can
+    let (joint_answer, member) = match super::two_bolt::answer(&args, &q)? {
+        Some((a, m)) => (Some(a), m),
+        None => (None, None),
+    };
     let (s, field) = if args.out.field.is_some() || args.out.plot.is_some() || html {
         let (s, field) = solve_field(&joint, &params).map_err(hint)?;
         (s, Some(field))
     } else {
-        (solve(&joint, &params).map_err(hint)?, None)
+        match member {
+            Some(m) if args.nut_displacement.is_none() && params == q.fem_params() => {
+                (m.contact, None)
+            }
+            _ => (solve(&joint, &params).map_err(hint)?, None),
+        }
     };
     if !s.nut_deflection.is_finite() {
         // the solve is scaled (R_o does not depend on P/E); only the deflection, ∝ P·D/E, is
@@ -327,6 +338,9 @@ pub fn run(mut args: Args) -> anyhow::Result<Status> {
         }
         out["bearing_pressure"] = p.into();
         add_rules(&mut out, &args)?;
+        if let Some(a) = &joint_answer {
+            super::two_bolt::add_json(&mut out, a)?;
+        }
         super::output::stamp(&mut out, &args.inputs()?, start)?;
         super::print_json(&out)?;
     } else {
@@ -377,6 +391,12 @@ pub fn run(mut args: Args) -> anyhow::Result<Status> {
             converged: s.converged,
         };
         print_rules(&args, r_o);
+        for line in joint_answer
+            .iter()
+            .flat_map(|a| super::two_bolt::lines(a, args.units.units))
+        {
+            println!("{line}");
+        }
         if let Some(why) = &fallback {
             println!("method auto: {why}");
         }

@@ -46,10 +46,20 @@ pub enum Shape {
 #[derive(Debug, clap::Args, serde::Serialize)]
 #[command(allow_negative_numbers = true)]
 pub struct Args {
-    /// A, B, D (the upper plate's thickness; the lower plate's too unless --d2 is given), ν.
+    /// A, B, D, ν as given (A and B may be left to --bolt).
     #[command(flatten)]
+    #[serde(skip)]
+    pub(super) given: super::two_bolt::GivenGeometry,
+    /// A, B, D (the upper plate's thickness; the lower plate's too unless --d2 is given), ν:
+    /// the flags', with --bolt's hole and bearing radii where --a, --b are omitted
+    /// ([`super::two_bolt::resolve`]).
+    #[arg(skip)]
     #[serde(flatten)]
     pub(super) geom: Geometry,
+    /// The catalogue bolt, its preload and the member stiffness.
+    #[command(flatten)]
+    #[serde(flatten)]
+    pub(super) bolt: super::two_bolt::BoltArgs,
     /// Lengths, stresses, moduli and forces in (every flag and every printed number).
     #[command(flatten)]
     #[serde(flatten)]

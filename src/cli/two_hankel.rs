@@ -52,6 +52,7 @@ pub fn unsupported(args: &Args) -> Option<(&'static str, String, String)> {
         ),
         Key::OuterEdge => ("--fixed-edge", given()),
         Key::Field | Key::Temperature | Key::Conductance => ("--field/--plot/--report", given()),
+        Key::Stiffness => ("--stiffness", given()),
     };
     Some((flag, value, format!("{}; use --method fem", b.reason)))
 }

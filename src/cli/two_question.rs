@@ -119,6 +119,7 @@ pub(super) fn question<'a>(args: &Args, joint: &'a Joint) -> two_plate::Question
         thermal: false,
         field: args.out.field.is_some() || args.out.plot.is_some() || args.report.is_some(),
         conductance: false,
+        stiffness: args.bolt.stiffness || args.bolt.bolt.is_some(),
         method: args.method,
         tolerance: args.tol,
     }

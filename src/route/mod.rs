@@ -12,6 +12,9 @@
 //!   `auto` hands a declined joint to the finite elements);
 //! - [`single_plate`]: the single-plate substitute's routes and the semi-analytic route's knobs
 //!   for a tolerance;
+//! - [`joint`]: the bolted-joint engineer's questions: how k_P is computed, what a catalogue
+//!   bolt puts into the joint, the preload, δ_S, Φ and the bearing pressures, the stiffness
+//!   rules beside k_P;
 //! - [`rules_beside`]: the rules of thumb beside every answer, each with its error against R_o
 //!   (or the reason it was left out);
 //! - [`sanity`]: warnings for magnitudes that look like a unit slip.
@@ -39,6 +42,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod joint;
 pub mod method;
 pub mod rules_beside;
 pub mod sanity;

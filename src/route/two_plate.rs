@@ -71,6 +71,8 @@ pub struct Question<'a> {
     pub field: bool,
     /// The joint conductance (an integral of the FE interface pressure) is wanted.
     pub conductance: bool,
+    /// The member stiffness k_P (from the FE displacements, [`super::joint`]) is wanted.
+    pub stiffness: bool,
     /// The method asked for.
     pub method: Method,
     /// Wanted relative error of R_o.
@@ -88,6 +90,7 @@ impl<'a> Question<'a> {
             thermal: false,
             field: false,
             conductance: false,
+            stiffness: false,
             method: Method::Auto,
             tolerance,
         }
@@ -144,6 +147,8 @@ pub enum Key {
     Field,
     /// The joint conductance.
     Conductance,
+    /// The member stiffness.
+    Stiffness,
 }
 
 /// Why the Hankel routes do not take a question: the input that blocks them and the reason.
@@ -256,6 +261,12 @@ pub fn hankel_blocker(q: &Question) -> Option<Blocker> {
             q.conductance,
             Key::Conductance,
             "the conductance integrates the finite elements' interface pressure",
+        ),
+        (
+            q.stiffness,
+            Key::Stiffness,
+            "the member stiffness comes from the finite elements' displacements (the \
+             semi-analytic routes answer R_o and the interface pressure)",
         ),
     ];
     checks

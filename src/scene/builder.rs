@@ -74,6 +74,9 @@ impl Scene {
                 outputs: OutputSpec::default(),
                 heat: None,
                 temperature: None,
+                bolt: None,
+                washer: None,
+                preload: None,
                 sweep: Default::default(),
             },
         }

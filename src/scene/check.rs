@@ -376,6 +376,10 @@ fn check_model(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
 
 fn check_outputs(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
     let o = &scene.outputs;
+    if o.stiffness && scene.model != Model::TwoPlate {
+        let p = [k("outputs"), k("stiffness")];
+        return Err(c.fail(&p, true, "needs model = \"two-plate\""));
+    }
     if let Some(f) = &o.field {
         let path = [k("outputs"), k("field")];
         if scene.model == Model::Slab || scene.method == Method::Hankel {

@@ -73,15 +73,28 @@ pub enum InterfaceKind {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct HoleSpec {
-    /// Hole radius A (length unit; 0 for no hole).
+    /// Hole radius A (length unit; 0 for no hole; omitted: `[bolt]`'s clearance hole).
+    #[serde(default = "unset")]
     pub radius: f64,
+}
+
+/// A radius the scene leaves to `[bolt]` (filled by [`super::bolt_spec::resolve`]).
+fn unset() -> f64 {
+    f64::NAN
+}
+
+impl Default for HoleSpec {
+    fn default() -> Self {
+        Self { radius: unset() }
+    }
 }
 
 /// `[load]`: exactly one of `force`, `pressure`, `nut_displacement`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LoadSpec {
-    /// Outer radius B of the bearing face (length unit).
+    /// Outer radius B of the bearing face (length unit; omitted: `[bolt]`'s head or washer).
+    #[serde(default = "unset")]
     pub outer_radius: f64,
     /// Bolt force (force unit): mean pressure F / (π(B² − A²)).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -95,6 +108,18 @@ pub struct LoadSpec {
     /// Pressure profile.
     #[serde(default)]
     pub profile: ProfileKind,
+}
+
+impl Default for LoadSpec {
+    fn default() -> Self {
+        Self {
+            outer_radius: unset(),
+            force: None,
+            pressure: None,
+            nut_displacement: None,
+            profile: ProfileKind::Uniform,
+        }
+    }
 }
 
 /// Elastic constants given in the scene (stress unit for E).
@@ -169,6 +194,10 @@ pub struct OutputSpec {
     /// CSV of a sweep's results, one row per point.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub results: Option<PathBuf>,
+    /// The member stiffness k_P and compliance δ_P, with the rules beside (two-plate; default
+    /// false; [`crate::route::joint`]).
+    #[serde(default)]
+    pub stiffness: bool,
     /// SVG or PNG (by the extension) of the interface pressure against r with B, R_o and the
     /// rules' radii marked, as `two --plot` (two-plate; written by `boltzone solve`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -196,6 +225,7 @@ impl Default for OutputSpec {
             conductance: false,
             results: None,
             plot: None,
+            stiffness: false,
         }
     }
 }
@@ -224,9 +254,11 @@ pub struct Scene {
     /// Relative tolerance on every value asked (default 5e-4).
     #[serde(default = "default_tolerance")]
     pub tolerance: f64,
-    /// The hole.
+    /// The hole (omitted: `[bolt]`'s clearance hole).
+    #[serde(default)]
     pub hole: HoleSpec,
-    /// The load.
+    /// The load (omitted with `[bolt]` and `[preload]`).
+    #[serde(default)]
     pub load: LoadSpec,
     /// Plates under the head first; one entry = two equal plates.
     pub plates: Vec<ScenePlate>,
@@ -242,6 +274,15 @@ pub struct Scene {
     /// Plate temperatures (two-plate model with thermal strains; [`super::temperature`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub temperature: Option<super::temperature_spec::TemperatureSpec>,
+    /// A catalogue bolt ([`super::bolt_spec`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bolt: Option<super::bolt_spec::BoltKeys>,
+    /// A plain washer under head and nut.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub washer: Option<super::bolt_spec::WasherKeys>,
+    /// The bolt's preload.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub preload: Option<super::bolt_spec::PreloadKeys>,
     /// Dotted keys mapped to lists of values; the product of the lists is solved.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub sweep: BTreeMap<String, Vec<toml::Value>>,
@@ -339,7 +380,7 @@ impl Scene {
     /// Parses a scene without checking its values ([`Scene::parse`] checks them too).
     pub(super) fn parse_unchecked(text: &str) -> Result<Self, SceneError> {
         let de = toml::Deserializer::parse(text).map_err(|e| syntax(text, &e))?;
-        let scene: Scene = serde_path_to_error::deserialize(de).map_err(|e| {
+        let mut scene: Scene = serde_path_to_error::deserialize(de).map_err(|e| {
             let path: Vec<Seg> = e
                 .path()
                 .iter()
@@ -365,6 +406,7 @@ impl Scene {
                 reason: inner.message().trim().to_string(),
             }
         })?;
+        super::bolt_spec::resolve(&mut scene, text)?;
         Ok(scene)
     }
 

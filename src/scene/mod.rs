@@ -45,6 +45,7 @@
 //! ```
 
 pub mod builder;
+pub mod bolt_spec;
 pub mod check;
 pub mod error;
 pub mod field;

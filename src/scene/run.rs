@@ -93,12 +93,15 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
         heat_flow_unit: None,
         rules: Default::default(),
         friction: None,
+        joint: Default::default(),
         plan: Vec::new(),
         interface: None,
         field: None,
         midplane: None,
     };
     let mut t1 = Instant::now();
+    let member = super::bolt_spec::joint_step(scene, &joint, nut, &mut out, &mut plan)?;
+    t1 = if member.is_some() { Instant::now() } else { t1 };
     let mut heat_step = None;
     let other = match (scene.model, method) {
         (Model::TwoPlate, Method::Hankel) => {
@@ -132,13 +135,13 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                     );
                     (out.method, out.interface) = (Method::Fem, None);
                     t1 = Instant::now();
-                    heat_step = super::two_fem::solve(scene, &joint, nut, &mut out)?;
+                    heat_step = super::two_fem::solve(scene, &joint, nut, &mut out, None)?;
                     None
                 }
             }
         }
         (Model::TwoPlate, _) => {
-            heat_step = super::two_fem::solve(scene, &joint, nut, &mut out)?;
+            heat_step = super::two_fem::solve(scene, &joint, nut, &mut out, member)?;
             None
         }
         (Model::Slab, _) => {

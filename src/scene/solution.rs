@@ -124,6 +124,11 @@ pub struct Solution {
     /// `stick_zones`, `slip_zones`, `max_slip`, as `two`'s).
     #[serde(flatten)]
     pub friction: Option<FrictionSummary>,
+    /// The bolted-joint answer (`[outputs] stiffness`, `[bolt]`): k_P, δ_P, the stiffness rules,
+    /// the preload, δ_S, Φ, the bearing pressures ([`crate::route::joint::JointAnswer`]; its
+    /// keys only when computed).
+    #[serde(flatten)]
+    pub joint: crate::route::joint::JointAnswer,
     /// The plan: routes that ran and were skipped, time per step.
     pub plan: Vec<Step>,
     /// Interface curve (two-plate; written as CSV, not printed).

@@ -168,7 +168,7 @@ fn point(
         .map(|(k, x)| format!("{k} = {x}"))
         .collect::<Vec<_>>()
         .join(", ");
-    let scene: Scene = serde_path_to_error::deserialize(doc).map_err(|e| {
+    let mut scene: Scene = serde_path_to_error::deserialize(doc).map_err(|e| {
         let key = e.path().to_string();
         let owner = values
             .iter()
@@ -176,6 +176,7 @@ fn point(
             .map_or(first.clone(), |(k, _)| k.clone());
         bad(&owner, format!("at {shown}: {key}: {}", e.into_inner()))
     })?;
+    super::bolt_spec::resolve(&mut scene, text)?;
     scene.check(text).map_err(|e| match e {
         SceneError::Invalid { key, reason, .. } => {
             let owner = values

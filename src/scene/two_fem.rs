@@ -36,12 +36,14 @@ use std::time::Instant;
 
 /// Solves `joint` (SI; `nut` the nut's displacement in m, if the scene gives one) by the finite
 /// elements and fills `out` in the scene's units; returns the seconds of the conductance step
-/// when it ran.
+/// when it ran. The contact solution of a member-compliance study under the scene's pressure
+/// (`member`) answers R_o where no field or temperature asks for another solve.
 pub fn solve(
     scene: &Scene,
     joint: &Joint,
     nut: Option<f64>,
     out: &mut Solution,
+    member: Option<crate::contact::compliance::MemberCompliance>,
 ) -> Result<Option<f64>, SceneError> {
     let l = scene.units.length();
     let mut heat_step = None;
@@ -67,7 +69,10 @@ pub fn solve(
             out.field = Some(field::scaled(grid, l, scene.units.stress()));
             s
         }
-        (None, None) => two_plate::solve(joint, &params)?,
+        (None, None) => match member {
+            Some(m) if nut.is_none() => m.contact,
+            _ => two_plate::solve(joint, &params)?,
+        },
     };
     (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
     out.full_contact = Some(s.full_contact);

@@ -84,6 +84,7 @@ pub fn blocker(scene: &Scene) -> Option<(&'static str, &'static str)> {
         Key::Temperature => "temperature",
         Key::Field => "outputs.field",
         Key::Conductance => "outputs.conductance",
+        Key::Stiffness => "outputs.stiffness",
     };
     Some((key, b.reason))
 }
@@ -114,6 +115,7 @@ pub fn question<'a>(scene: &Scene, joint: &'a Joint, nut: Option<f64>) -> two_pl
         thermal: scene.temperature.is_some(),
         field: scene.outputs.field.is_some(),
         conductance: scene.outputs.conductance,
+        stiffness: scene.outputs.stiffness || scene.bolt.is_some(),
         method: scene.method,
         tolerance: scene.tolerance,
     }

@@ -275,3 +275,14 @@ fn ex25_build_tables() {
     quick();
     ex25::main().unwrap();
 }
+
+#[allow(dead_code)]
+#[path = "../../examples/26_member_stiffness_grid.rs"]
+mod ex26;
+
+#[test]
+fn ex26_member_stiffness_grid() {
+    // quick: 3 × 3 at 2e-3, the figure written to a temporary file and removed
+    quick();
+    ex26::main().unwrap();
+}

@@ -31,8 +31,16 @@ fn stress_areas_match_iso_898_1() {
         ("M33", 694.0),
         ("M36", 817.0),
     ];
-    for (size, printed) in table {
-        let a = Thread::metric_coarse(size).unwrap().stress_area();
+    stress_areas_match_to_three_digits(&table);
+    assert!(Thread::metric_coarse("M11").is_err());
+}
+
+/// Each size's metric stress area against the printed value (mm², three significant digits).
+pub fn stress_areas_match_to_three_digits(table: &[(&str, f64)]) {
+    for &(size, printed) in table {
+        let t = Thread::lookup(size).unwrap();
+        assert_eq!(t.form, boltzone::bolt::thread::Form::Metric, "{size}");
+        let a = t.stress_area();
         let scale = 10f64.powi(printed.log10().floor() as i32 - 2);
         assert_eq!(
             (a / scale).round(),
@@ -40,7 +48,6 @@ fn stress_areas_match_iso_898_1() {
             "{size}: {a}"
         );
     }
-    assert!(Thread::metric_coarse("M11").is_err());
 }
 
 #[test]

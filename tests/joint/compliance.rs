@@ -271,13 +271,14 @@ pub fn check_random_joints(seed: u64, n: usize, tol: f64, rigid_tight: bool) -> 
             u.value - u.error <= r.value + r.error,
             "{j:?}: uniform {u:?} rigid {r:?}"
         );
-        // welding the interface everywhere (the single plate) can only stiffen the joint
+        // welding the interface everywhere (the single plate) can only stiffen the joint; near
+        // full contact the two are equal, so the ordering is asked within the two estimates
         let s = j.single_plate_substitute().unwrap();
         let single = single_plate_compliance(&s, Head::Pressure, tol)
             .unwrap()
             .compliance;
         assert!(
-            ku.compliance.value - ku.compliance.error >= single.value - single.error,
+            ku.compliance.value + ku.compliance.error >= single.value - single.error,
             "{j:?}: two-plate δ {:?} single δ {single:?}",
             ku.compliance
         );

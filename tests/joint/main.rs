@@ -5,6 +5,8 @@
 mod common;
 
 mod bolt;
+mod catalogue;
 mod compliance;
 mod compliance_study;
+mod front_ends;
 mod rules;

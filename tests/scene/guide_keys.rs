@@ -57,6 +57,9 @@ fn every_scene_key_is_in_the_guide_with_its_unit_and_default() {
         ("[outputs]\n", "outputs."),
         ("[heat]\n", "heat."),
         ("[temperature]\n", "temperature."),
+        ("[bolt]\n", "bolt."),
+        ("[washer]\n", "washer."),
+        ("[preload]\n", "preload."),
     ];
     let mut checked = 0;
     for (header, prefix) in tables {
