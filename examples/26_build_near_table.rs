@@ -15,7 +15,7 @@
 //! - `… validate N SEED OUT.csv` solves N random points (log-uniform A/D and w, uniform ν);
 //!   `… check SAMPLES_0.csv SAMPLES_1.csv OUT.csv` compares the table built from SAMPLES.csv with them:
 //!   the distribution of |table − route|/bar;
-//! - `… time` times the route across the domain.
+//! - `… time` times the route across the domain; `… lookup` times one R_o from the tables.
 //!
 //! Run time: `docs/tables.md` (measured).
 
@@ -115,8 +115,12 @@ fn panels(paths: &[String]) -> Result<Vec<Panel>, Box<dyn std::error::Error>> {
     Ok(out)
 }
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
+pub fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
+    let quick = std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1");
+    if quick || args.get(1).is_some_and(|a| a == "show") {
+        return show();
+    }
     let arg = |k: usize| args.get(k).cloned().ok_or(format!("argument {k} missing"));
     match args.get(1).map(String::as_str) {
         Some("time") => {
@@ -126,6 +130,19 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     println!("a {a} w {w}: R_o {r:.10} ± {e:.1e} converged {ok} {s:.2} s");
                 }
             }
+        }
+        Some("lookup") => {
+            // one R_o from the tables, timed over a sweep of 10⁶ lookups (near and far)
+            use boltzone::table::two_plates::separation_radius;
+            let n = 1_000_000;
+            let t = Instant::now();
+            let mut sum = 0.0;
+            for k in 0..n {
+                let b = 0.12 + 3.0 * (k % 1000) as f64 / 1000.0;
+                sum += separation_radius(0.1, b, 0.1, 0.3, 1e-3).map_or(0.0, |v| v.value);
+            }
+            let per = t.elapsed().as_secs_f64() / n as f64;
+            println!("{:.3} µs per R_o (B/D 1.2–31, A/D = 1; checksum {sum:.6})", per * 1e6);
         }
         Some("build") => {
             let t = Instant::now();
@@ -199,6 +216,32 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             println!("largest |table − route|/R_o {rel_err:.2e}; bar/R_o median {:.2e}, max {:.2e}", bars[n / 2], bars[n - 1]);
         }
         _ => return Err("usage: 26_build_near_table time | build K S_K.csv | table S_0.csv S_1.csv | validate N SEED V.csv | check S_0.csv S_1.csv V.csv".into()),
+    }
+    Ok(())
+}
+
+/// The shipped table's provenance, and its answer at Table 1's row (A/D 1, B/A 2.2, C = ∞)
+/// against one fresh solve by the route at 1e-4 (within the table's bar plus the solve's).
+fn show() -> Result<(), Box<dyn std::error::Error>> {
+    let t = boltzone::table::near::table();
+    println!("{}", t.provenance);
+    let r = boltzone::table::near::separation_radius(1.0, 2.2, 1.0, 0.3, 1e-2)?;
+    let m = Material::unit(0.3)?;
+    let p = SinglePlate::new(
+        1.0,
+        OuterRadius::Infinite,
+        1.0,
+        m,
+        FaceLoad::uniform(1.0, 2.2, 1.0)?,
+    )?;
+    let (h, _) = two_plate_hole_to(&p, 1e-4, &[])?;
+    let diff = (r.value - h.r_o).abs();
+    println!(
+        "A/D 1, B/A 2.2: table {:.7} ± {:.1e}, route (1e-4) {:.7} ± {:.1e}, |difference| {diff:.1e}",
+        r.value, r.error, h.r_o, h.info.r_o_error
+    );
+    if diff > r.error + h.info.r_o_error {
+        return Err("the near table misses its bar on Table 1's row".into());
     }
     Ok(())
 }

@@ -21,7 +21,7 @@
 
 use super::args::Units;
 use super::check;
-use super::exit::{sig, usage, Status};
+use super::exit::{usage, Status};
 use super::joint_figs::JointFigure;
 pub use super::two_args::{Args, Interface};
 use super::two_question::{add_rules, joint, pressure, print_rules, question, warn};

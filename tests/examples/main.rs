@@ -275,3 +275,14 @@ fn ex25_build_tables() {
     quick();
     ex25::main().unwrap();
 }
+
+#[allow(dead_code)]
+#[path = "../../examples/26_build_near_table.rs"]
+mod ex26;
+
+#[test]
+fn ex26_build_near_table() {
+    // quick: the shipped near table's provenance and Table 1's row against one fresh solve
+    quick();
+    ex26::main().unwrap();
+}
