@@ -41,6 +41,7 @@ pub fn run(
             "tolerance": args.tol,
             "interface": "symmetric (equal plates, infinite, uniform pressure)",
             "units": args.units.units.name(),
+            "bearing_pressure": super::two_question::pressure(args),
         });
         if g.a > 0.0 {
             v["r_o_over_a"] = (r.value / g.a).into();

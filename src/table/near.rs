@@ -227,31 +227,30 @@ impl Panel {
         chebyshev_row(s[0], &mut ta[..na]);
         chebyshev_row(s[1], &mut tw[..nw]);
         chebyshev_row(s[2], &mut tn[..nn]);
-        let mut y = 0.0;
-        for i in 0..na {
-            let mut yi = 0.0;
-            for j in 0..nw {
-                let row = &self.coefficients[(i * nw + j) * nn..(i * nw + j + 1) * nn];
-                let yj: f64 = row.iter().zip(&tn[..nn]).map(|(c, t)| c * t).sum();
-                yi += yj * tw[j];
-            }
-            y += yi * ta[i];
-        }
+        let y = tensor_sum(&self.coefficients, self.n, &ta[..na], &tw[..nw], &tn[..nn]);
         // the samples' errors through the cardinal functions: Σ |ℓ_i ℓ_j ℓ_k| e_ijk
         let (mut la, mut lw, mut ln) = ([0.0; 64], [0.0; 64], [0.0; 64]);
         cardinal(s[0], &mut la[..na]);
         cardinal(s[1], &mut lw[..nw]);
         cardinal(s[2], &mut ln[..nn]);
-        let mut build = 0.0;
-        for i in 0..na {
-            for j in 0..nw {
-                let row = &self.errors[(i * nw + j) * nn..(i * nw + j + 1) * nn];
-                let e: f64 = row.iter().zip(&ln[..nn]).map(|(e, l)| e * l).sum();
-                build += la[i] * lw[j] * e;
-            }
-        }
+        let build = tensor_sum(&self.errors, self.n, &la[..na], &lw[..nw], &ln[..nn]);
         (y, self.tails.iter().sum::<f64>() + build)
     }
+}
+
+/// Σ_ijk d_ijk·x_i·y_j·z_k over `data` indexed (i·N_w + j)·N_ν + k.
+fn tensor_sum(data: &[f64], n: [usize; 3], x: &[f64], y: &[f64], z: &[f64]) -> f64 {
+    data.chunks(n[1] * n[2])
+        .zip(x)
+        .map(|(plane, xi)| {
+            let p: f64 = plane
+                .chunks(n[2])
+                .zip(y)
+                .map(|(row, yj)| yj * row.iter().zip(z).map(|(d, zk)| d * zk).sum::<f64>())
+                .sum();
+            xi * p
+        })
+        .sum()
 }
 
 /// |ℓ_j(s)| of the interpolant at the first-kind points s_j = cos(π(j + ½)/N), N = ℓ.len()
