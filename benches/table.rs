@@ -1,4 +1,6 @@
-//! One R_o from the far table (`boltzone::table::far::separation_radius`), both models.
+//! One R_o from the far table (`boltzone::table::far::separation_radius`), both models; from
+//! the near table (`boltzone::table::near`) and from both tables (`boltzone::table::two_plates`,
+//! what `two --method table` calls).
 
 use boltzone::table::far::{separation_radius, FarModel};
 use criterion::{criterion_group, criterion_main, Criterion};
@@ -31,5 +33,31 @@ fn far(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, far);
+fn near(c: &mut Criterion) {
+    boltzone::table::near::separation_radius(0.1, 0.22, 0.1, 0.3, 1e-3).unwrap();
+    c.bench_function("near two plates R_o", |b| {
+        b.iter(|| {
+            boltzone::table::near::separation_radius(
+                black_box(0.1),
+                black_box(0.22),
+                0.1,
+                0.3,
+                1e-3,
+            )
+        })
+    });
+    c.bench_function("both tables two plates R_o", |b| {
+        b.iter(|| {
+            boltzone::table::two_plates::separation_radius(
+                black_box(0.1),
+                black_box(0.22),
+                0.1,
+                0.3,
+                1e-3,
+            )
+        })
+    });
+}
+
+criterion_group!(benches, far, near);
 criterion_main!(benches);

@@ -84,7 +84,7 @@ class Scene:
     raises :class:`InputError` naming the key.
 
     Keys (see ``docs/python.md`` and ``docs/scenes``): ``units``, ``model`` (``two-plate``,
-    ``single-plate``, ``slab``), ``method`` (``auto``, ``fem``, ``hankel``), ``tolerance``
+    ``single-plate``, ``slab``), ``method`` (``auto``, ``fem``, ``hankel``, ``table``), ``tolerance``
     (relative, default 5e-4), ``hole.radius`` (length), ``load.outer_radius`` (length),
     ``load.force`` (force) | ``load.pressure`` (stress) | ``load.nut_displacement`` (length),
     ``load.profile``, ``plates`` (list of ``{thickness (length), material (name or

@@ -43,6 +43,7 @@ mod two_hankel;
 mod two_pair;
 mod two_question;
 mod two_rim;
+mod two_table;
 
 pub use command::{run, Cli};
 use print::{print_json, progress, write_output};

@@ -21,7 +21,7 @@
 
 use super::args::Units;
 use super::check;
-use super::exit::{sig, usage, Status};
+use super::exit::{usage, Status};
 use super::joint_figs::JointFigure;
 pub use super::two_args::{Args, Interface};
 use super::two_question::{add_rules, joint, pressure, print_rules, question, warn};
@@ -153,6 +153,11 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
             return super::exit::usage(flag, value, &why);
         }
     }
+    if args.method == Method::Table {
+        if let Some((flag, value, why)) = super::two_hankel::table_unsupported(args) {
+            return super::exit::usage(flag, value, &why);
+        }
+    }
     args.out.check()?;
     if let Some(path) = &args.report {
         check::output_path("--report", path)?;
@@ -176,7 +181,11 @@ pub fn run(mut args: Args) -> anyhow::Result<Status> {
     let q = question(&args, &joint);
     let p = pressure(&args);
     let load = joint.load().clone();
-    let hankel = two_plate::plan(&q).is_ok_and(|plan| plan.method == Method::Hankel);
+    let plan = two_plate::plan(&q);
+    if plan.is_ok_and(|plan| plan.method == Method::Table) {
+        return super::two_table::run(&args, &q, start);
+    }
+    let hankel = plan.is_ok_and(|plan| plan.method == Method::Hankel);
     // `auto` hands a joint the semi-analytic route declines to the finite elements, saying why
     let mut fallback = None;
     if hankel {
@@ -345,17 +354,14 @@ pub fn run(mut args: Args) -> anyhow::Result<Status> {
         super::print_json(&out)?;
     } else {
         let l = args.units.length();
-        let over_a = r_o_over_a.map_or(String::new(), |q| format!("R_o/A = {}, ", sig(q, 6)));
+        let r_o = Value {
+            value: s.r_o,
+            error: s.r_o_error,
+            converged: s.converged,
+        };
         println!(
-            "R_o = {} ± {:.1e} {l}   ({over_a}2R_o = {} {l}){}",
-            sig(s.r_o, 7),
-            s.r_o_error,
-            sig(2.0 * s.r_o, 6),
-            if s.converged {
-                ""
-            } else {
-                "  NOT converged to --tol (exit 3)"
-            }
+            "{}",
+            super::two_question::r_o_line(&args, r_o, (7, 6), "  NOT converged to --tol (exit 3)")
         );
         println!(
             "interface: {}; {} levels, finest mesh {} nodes / {} unknowns, observed rate {}; {:.3} s",
@@ -385,11 +391,6 @@ pub fn run(mut args: Args) -> anyhow::Result<Status> {
             println!("{}", super::friction_out::summary(&s, f, l));
         }
         println!("deflection under the nut: {:.4e} {l}", s.nut_deflection);
-        let r_o = Value {
-            value: s.r_o,
-            error: s.r_o_error,
-            converged: s.converged,
-        };
         print_rules(&args, r_o);
         for line in joint_answer
             .iter()

@@ -119,8 +119,10 @@ pub struct Args {
     pub(super) tol: f64,
     /// Solver: fem, hankel (R_o and the interface pressure: equal plates with a hole, seconds
     /// not milliseconds; or, with --a 0, any two plates in frictionless contact, milliseconds)
-    /// or auto (the default: hankel where it applies and --tol is below 3e-5, else fem; fem
-    /// also where the Hankel route declines the joint, with the reason in JSON `fallback`).
+    /// table (equal infinite plates, uniform pressure: the tables built by the 1e-8 route,
+    /// microseconds, refused outside them) or auto (the default: the tables wherever their bar
+    /// meets --tol, else hankel where it applies and --tol is below 3e-5, else fem; fem also
+    /// where the Hankel route declines the joint, with the reason in JSON `fallback`).
     #[arg(long, value_enum, default_value_t = Method::Auto)]
     pub(super) method: Method,
     /// Curve, field and figure files.
@@ -135,6 +137,10 @@ pub struct Args {
     /// Print the result as JSON.
     #[arg(long)]
     pub(super) json: bool,
+    /// With an answer from the tables: also run one solve by the semi-analytic route at --tol
+    /// and print both, with their difference against the summed bars.
+    #[arg(long)]
+    pub(super) verify: bool,
     /// Treat a plausibility warning (a modulus or pressure that looks like a unit slip, a
     /// deflection beyond 1 % of the plate) as bad input: exit 2 instead of a warning on stderr.
     #[arg(long)]

@@ -31,12 +31,32 @@ use clap::ValueEnum;
 pub fn unsupported(args: &Args) -> Option<(&'static str, String, String)> {
     let joint = super::two_question::joint(args).ok()?;
     let b = two_plate::hankel_blocker(&super::two_question::question(args, &joint))?;
+    Some(named(args, b))
+}
+
+/// Why the tables do not take these arguments (the route layer's [`two_plate::table_answer`]),
+/// as [`unsupported`].
+pub fn table_unsupported(args: &Args) -> Option<(&'static str, String, String)> {
+    let joint = super::two_question::joint(args).ok()?;
+    let q = super::two_question::question(args, &joint);
+    two_plate::table_answer(&q).err().map(|b| named(args, b))
+}
+
+/// The blocker `b` named by its flag and the flag's value.
+fn named(args: &Args, b: two_plate::Blocker) -> (&'static str, String, String) {
     let g = &args.geom;
     let given = || "given".to_string();
     let (flag, value) = match b.key {
         Key::LowerThickness => ("--d2", args.d2.unwrap_or(g.d).to_string()),
         Key::LowerModulus => ("--e2", args.e2.unwrap_or(args.e()).to_string()),
         Key::LowerPoisson => ("--nu2", args.nu2.unwrap_or(g.nu).to_string()),
+        Key::Poisson => ("--nu", g.nu.to_string()),
+        Key::LoadProfile => (
+            "--load",
+            args.load
+                .to_possible_value()
+                .map_or_else(String::new, |v| v.get_name().to_string()),
+        ),
         Key::Interface => (
             "--interface",
             args.interface
@@ -51,10 +71,11 @@ pub fn unsupported(args: &Args) -> Option<(&'static str, String, String)> {
             args.nut_displacement.map_or_else(given, |n| n.to_string()),
         ),
         Key::OuterEdge => ("--fixed-edge", given()),
+        Key::Curve => ("--curve", given()),
         Key::Field | Key::Temperature | Key::Conductance => ("--field/--plot/--report", given()),
         Key::Stiffness => ("--stiffness", given()),
     };
-    Some((flag, value, format!("{}; use --method fem", b.reason)))
+    (flag, value, format!("{}; use --method fem", b.reason))
 }
 
 /// Points of the `--curve` (plus one).

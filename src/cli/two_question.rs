@@ -120,7 +120,26 @@ pub(super) fn question<'a>(args: &Args, joint: &'a Joint) -> two_plate::Question
         field: args.out.field.is_some() || args.out.plot.is_some() || args.report.is_some(),
         conductance: false,
         stiffness: args.bolt.stiffness || args.bolt.bolt.is_some(),
+        curve: args.out.curve.is_some(),
         method: args.method,
         tolerance: args.tol,
     }
+}
+
+/// The answer's first text line: R_o ± error (R_o to `digits.0` significant digits), R_o/A
+/// (with a hole) and 2R_o (to `digits.1`), and `missed` after it when not converged.
+pub(super) fn r_o_line(args: &Args, r_o: Value, digits: (usize, usize), missed: &str) -> String {
+    let l = args.units.length();
+    let a = args.geom.a;
+    let over_a = match a > 0.0 {
+        true => format!("R_o/A = {}, ", super::exit::sig(r_o.value / a, digits.1)),
+        false => String::new(),
+    };
+    format!(
+        "R_o = {} ± {:.1e} {l}   ({over_a}2R_o = {} {l}){}",
+        super::exit::sig(r_o.value, digits.0),
+        r_o.error,
+        super::exit::sig(2.0 * r_o.value, digits.1),
+        if r_o.converged { "" } else { missed }
+    )
 }

@@ -28,6 +28,10 @@ pub enum Method {
     /// The semi-analytic Hankel-transform routes; a question beyond their reach is refused,
     /// naming the input that blocks it.
     Hankel,
+    /// The tables built offline by the semi-analytic route (`boltzone::table`: equal infinite
+    /// plates with a hole, frictionless, a uniform pressure): R_o in microseconds with its
+    /// bar; a question outside the tables is refused, naming the input that blocks them.
+    Table,
     /// The cheapest route that can meet the tolerance and serve the outputs asked (the
     /// default): the route layer's choice, with its reason.
     #[default]
@@ -35,11 +39,12 @@ pub enum Method {
 }
 
 impl Method {
-    /// "fem", "hankel" or "auto" (the spelling of flags, scene files and JSON).
+    /// "fem", "hankel", "table" or "auto" (the spelling of flags, scene files and JSON).
     pub fn as_str(self) -> &'static str {
         match self {
             Self::Fem => "fem",
             Self::Hankel => "hankel",
+            Self::Table => "table",
             Self::Auto => "auto",
         }
     }
@@ -53,14 +58,17 @@ pub enum Route {
     Fem,
     /// A semi-analytic Hankel-transform route.
     Hankel,
+    /// The tables built offline by the semi-analytic route (`boltzone::table`).
+    Table,
 }
 
 impl Route {
-    /// "fem" or "hankel" (the spelling of JSON and CSV).
+    /// "fem", "hankel" or "table" (the spelling of JSON and CSV).
     pub fn as_str(self) -> &'static str {
         match self {
             Self::Fem => "fem",
             Self::Hankel => "hankel",
+            Self::Table => "table",
         }
     }
 
@@ -69,6 +77,7 @@ impl Route {
         match self {
             Self::Fem => Method::Fem,
             Self::Hankel => Method::Hankel,
+            Self::Table => Method::Table,
         }
     }
 }

@@ -20,9 +20,10 @@
 //! - [`sanity`]: warnings for magnitudes that look like a unit slip.
 //!
 //! `auto` is the cheapest route that can meet the tolerance and serve the outputs: for two
-//! plates the semi-analytic routes within their reach below [`two_plate::AUTO_BELOW`] (where the
-//! finite elements' estimate, which carries 2e-5 of R_o, cannot claim the tolerance), the finite
-//! elements otherwise; for the single plate the Hankel route (milliseconds) unless the field, a
+//! plates the tables (`table`) wherever their bar meets the tolerance, else the semi-analytic
+//! routes within their reach below [`two_plate::AUTO_BELOW`] (where the finite elements'
+//! estimate, which carries 2e-5 of R_o, cannot claim the tolerance), the finite elements
+//! otherwise; for the single plate the Hankel route (milliseconds) unless the field, a
 //! rigid nut or temperatures ask for the finite elements.
 //!
 //! # Accuracy

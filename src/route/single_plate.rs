@@ -50,6 +50,10 @@ pub fn plan(q: &Question) -> Plan {
     let (method, why) = match q.method {
         Method::Fem => (Method::Fem, "finite elements (asked)"),
         Method::Hankel => (Method::Hankel, "Hankel + hole correction (asked)"),
+        Method::Table => (
+            Method::Hankel,
+            "Hankel + hole correction: the tables are the two-plate model's (milliseconds here)",
+        ),
         Method::Auto if q.thermal => (
             Method::Fem,
             "finite elements: the thermal strains are in the FE model only",

@@ -13,12 +13,18 @@
 //!   interface shear, so any interface), with a finite rim equal plates (`rim`); pressed by a
 //!   pressure on a free rim, answering R_o and the interface pressure only, to 1e-8.
 //!
+//! - the **tables** ([`crate::table::two_plates`]): equal infinite plates, a uniform pressure
+//!   from the hole, R_o alone, in microseconds with a bar (the near table's interpolation bound
+//!   and build error, the far table's handover bound); [`table_answer`] is their reach and
+//!   their answer.
+//!
 //! [`hankel_blocker`] is the one statement of the semi-analytic routes' reach: the first input of
 //! the question that keeps it from them, as a [`Key`] (each front end names it in its own words:
 //! a flag, a scene key) and a reason. [`plan`] makes the choice of a [`Method`]: `fem` and
-//! `hankel` as asked (`hankel` refused with the blocker where out of reach), `auto` the cheapest
-//! route that can meet the tolerance and serve the outputs — the Hankel routes within reach and
-//! below [`AUTO_BELOW`], the finite elements otherwise. Where `auto`'s Hankel run then declines
+//! `hankel` and `table` as asked (refused with the blocker where out of reach), `auto` the
+//! cheapest route that can meet the tolerance and serve the outputs — the tables wherever their
+//! bar meets it, else the Hankel routes within reach and below [`AUTO_BELOW`], the finite
+//! elements otherwise. Where `auto`'s Hankel run then declines
 //! the joint ([`fall_back`]), the finite elements answer and the answer says why.
 //!
 //! # Accuracy
@@ -36,8 +42,12 @@
 //! let joint = Joint::symmetric(0.1, 0.31, 0.1, Material::new(3e7, 0.3)?)?;
 //! let mut q = two_plate::Question::new(&joint, 1e-6);
 //! assert_eq!(two_plate::plan(&q).unwrap().method, Method::Hankel);   // below 3e-5
-//! q.tolerance = 5e-4;
+//! q.tolerance = 5e-3;
+//! assert_eq!(two_plate::plan(&q).unwrap().method, Method::Table);    // the tables' bar meets it
+//! let rim = joint.clone().with_outer_radius(boltzone::OuterRadius::Finite(1.54))?;
+//! let q = two_plate::Question::new(&rim, 5e-4);
 //! assert_eq!(two_plate::plan(&q).unwrap().method, Method::Fem);      // the FE is cheaper there
+//! let mut q = two_plate::Question::new(&joint, 5e-4);
 //! q.fixed_edge = true;
 //! q.method = Method::Hankel;
 //! assert_eq!(two_plate::plan(&q).unwrap_err().key, two_plate::Key::OuterEdge);
@@ -73,6 +83,8 @@ pub struct Question<'a> {
     pub conductance: bool,
     /// The member stiffness k_P (from the FE displacements, [`super::joint`]) is wanted.
     pub stiffness: bool,
+    /// The interface pressure curve is wanted (the solvers give it, the tables do not).
+    pub curve: bool,
     /// The method asked for.
     pub method: Method,
     /// Wanted relative error of R_o.
@@ -91,6 +103,7 @@ impl<'a> Question<'a> {
             field: false,
             conductance: false,
             stiffness: false,
+            curve: false,
             method: Method::Auto,
             tolerance,
         }
@@ -149,6 +162,12 @@ pub enum Key {
     Conductance,
     /// The member stiffness.
     Stiffness,
+    /// The upper plate's Poisson's ratio (the tables span 0..0.5).
+    Poisson,
+    /// The shape of the bearing pressure (the tables take a uniform pressure from the hole).
+    LoadProfile,
+    /// The interface pressure curve (the tables give R_o alone).
+    Curve,
 }
 
 /// Why the Hankel routes do not take a question: the input that blocks them and the reason.
@@ -163,7 +182,7 @@ pub struct Blocker {
 /// The route chosen for a question, and why.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Plan {
-    /// [`Method::Fem`] or [`Method::Hankel`] (never `Auto`).
+    /// [`Method::Fem`], [`Method::Hankel`] or [`Method::Table`] (never `Auto`).
     pub method: Method,
     /// The reason, for the answer's plan or text.
     pub why: &'static str,
@@ -291,14 +310,27 @@ fn pair_reaches(up: Plate, lo: Plate, b: f64) -> bool {
 /// `auto` within reach and below [`AUTO_BELOW`].
 pub fn takes_hankel(method: Method, tolerance: f64, in_reach: bool) -> bool {
     match method {
-        Method::Fem => false,
+        Method::Fem | Method::Table => false,
         Method::Hankel => true,
         Method::Auto => in_reach && tolerance < AUTO_BELOW,
     }
 }
 
-/// The route for `q` (module docs); `hankel` out of reach is refused with the blocker.
+/// The route for `q` (module docs); `hankel` or `table` out of reach is refused with the
+/// blocker. `auto` takes the tables wherever their bar meets the tolerance ([`table_answer`]).
 pub fn plan(q: &Question) -> Result<Plan, Blocker> {
+    if q.method == Method::Table {
+        return table_answer(q).map(|_| Plan {
+            method: Method::Table,
+            why: "tables built by the 1e-8 semi-analytic route (asked)",
+        });
+    }
+    if q.method == Method::Auto && table_answer(q).is_ok_and(|r| r.converged) {
+        return Ok(Plan {
+            method: Method::Table,
+            why: "tables built by the 1e-8 semi-analytic route: their bar meets the tolerance",
+        });
+    }
     let blocker = hankel_blocker(q);
     if q.method == Method::Auto && takes_hankel(q.method, q.tolerance, blocker.is_none()) {
         return Ok(Plan {
@@ -318,15 +350,106 @@ pub fn plan(q: &Question) -> Result<Plan, Blocker> {
             why: "semi-analytic two plates (asked; with a hole, or the receding contact \
                   without one): R_o and the interface pressure",
         }),
-        (Method::Auto, None) => Ok(Plan {
+        (Method::Auto | Method::Table, None) => Ok(Plan {
             method: Method::Fem,
             why: "finite elements: at this tolerance they are the cheaper route",
         }),
-        (Method::Auto, Some(_)) => Ok(Plan {
+        (Method::Auto | Method::Table, Some(_)) => Ok(Plan {
             method: Method::Fem,
             why: "finite elements: the semi-analytic routes do not reach this question",
         }),
     }
+}
+
+/// The tables' R_o for `q` ([`crate::table::two_plates`]: equal infinite plates, a uniform
+/// pressure from the hole, no field, converged when its bar is within the tolerance), or the
+/// first input that keeps the question from them.
+pub fn table_answer(q: &Question) -> Result<crate::value::Value, Blocker> {
+    let j = q.joint;
+    let (up, lo) = (j.upper(), j.lower());
+    let load = j.load();
+    let lower = if lo.thickness() != up.thickness() {
+        Key::LowerThickness
+    } else if lo.material().youngs_modulus() != up.material().youngs_modulus() {
+        Key::LowerModulus
+    } else {
+        Key::LowerPoisson
+    };
+    let checks = [
+        (!q.equal_plates(), lower, "the tables take two equal plates"),
+        (
+            matches!(j.outer_radius(), OuterRadius::Finite(_)),
+            Key::OuterRadius,
+            "the tables take infinite plates (no rim C)",
+        ),
+        (
+            load.profile() != crate::load::Profile::Uniform || load.inner() != j.hole_radius(),
+            Key::LoadProfile,
+            "the tables take a uniform pressure from the hole's edge to B",
+        ),
+        (
+            matches!(q.loading, Loading::NutDisplacement(_)),
+            Key::NutDisplacement,
+            "the tables load the plates by a pressure",
+        ),
+        (
+            q.fixed_edge,
+            Key::OuterEdge,
+            "the tables' plates are infinite (a fixed edge is in the finite-element model only)",
+        ),
+        (
+            q.thermal,
+            Key::Temperature,
+            "thermal strains are in the finite-element model only",
+        ),
+        (
+            q.field,
+            Key::Field,
+            "the field and the figures drawn from it come from the finite elements",
+        ),
+        (
+            q.conductance,
+            Key::Conductance,
+            "the conductance integrates the finite elements' interface pressure",
+        ),
+        (
+            q.curve,
+            Key::Curve,
+            "the tables give R_o alone (the interface pressure comes from a solver)",
+        ),
+    ];
+    if let Some(b) = checks
+        .into_iter()
+        .find_map(|(blocks, key, reason)| blocks.then_some(Blocker { key, reason }))
+    {
+        return Err(b);
+    }
+    let (a, b, d) = (j.hole_radius(), load.outer(), up.thickness());
+    let nu = up.material().poisson_ratio();
+    crate::table::two_plates::separation_radius(a, b, d, nu, q.tolerance).map_err(|e| {
+        let field = match &e {
+            crate::error::InputError::Parameter { field, .. } => *field,
+            _ => "",
+        };
+        if field.starts_with("Poisson") {
+            Blocker {
+                key: Key::Poisson,
+                reason: "is outside the tables' Poisson's ratios (0..0.5)",
+            }
+        } else if field.starts_with("A/D") {
+            Blocker {
+                key: Key::HoleRadius,
+                reason: "is outside the tables' hole radii (A/D within 0.25..4 near the \
+                         contact edge, at most 4 far from it)",
+            }
+        } else {
+            Blocker {
+                key: Key::LoadOuterRadius,
+                reason: "is outside the tables' load widths ((B - A)/D at least 0.1 near the \
+                         hole; without a hole B/D at least 2)",
+            }
+        }
+    })
 }
 
 /// Why `auto` hands a holed run whose modes stopped short of their residual target to the

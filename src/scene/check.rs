@@ -338,6 +338,16 @@ fn check_model(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
     };
     let method = [k("method")];
     match scene.model {
+        Model::TwoPlate if scene.method == Method::Table => {
+            match super::two_hankel::table_blocker(scene) {
+                Some((key, reason)) => {
+                    let path: Vec<Seg> = key.split('.').map(k).collect();
+                    let text = format!("{reason}; use method \"fem\" or \"auto\"");
+                    Err(c.fail(&path, "with method \"table\"", &text))
+                }
+                None => Ok(()),
+            }
+        }
         Model::TwoPlate if scene.method == Method::Hankel => {
             match super::two_hankel::blocker(scene) {
                 Some((key, reason)) => {

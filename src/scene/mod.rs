@@ -44,8 +44,8 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-pub mod builder;
 pub mod bolt_spec;
+pub mod builder;
 pub mod check;
 pub mod error;
 pub mod field;

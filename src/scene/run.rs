@@ -53,6 +53,7 @@ pub fn pick(scene: &Scene) -> (Method, &'static str) {
             };
             match two_plate::plan(&super::two_hankel::question(scene, &joint, nut)) {
                 Ok(plan) => plan,
+                Err(b) if scene.method == Method::Table => return (Method::Table, b.reason),
                 Err(b) => return (Method::Hankel, b.reason),
             }
         }
@@ -104,6 +105,16 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
     t1 = if member.is_some() { Instant::now() } else { t1 };
     let mut heat_step = None;
     let other = match (scene.model, method) {
+        (Model::TwoPlate, Method::Table) => {
+            if !super::two_hankel::solve_table(scene, &joint, l, &mut out) {
+                return Err(SceneError::Invalid {
+                    key: "method".into(),
+                    line: 1,
+                    reason: "the tables do not answer this scene".into(),
+                });
+            }
+            None
+        }
         (Model::TwoPlate, Method::Hankel) => {
             let scale = (l, scene.units.stress());
             let ran = super::two_hankel::solve(scene, &joint, scale, &mut out);

@@ -73,8 +73,26 @@ pub fn blocker(scene: &Scene) -> Option<(&'static str, &'static str)> {
     }
     let (joint, nut) = joint_si(scene).ok()?;
     let b = two_plate::hankel_blocker(&question(scene, &joint, nut))?;
-    let key = match b.key {
-        Key::LowerThickness | Key::LowerModulus | Key::LowerPoisson => "plates",
+    Some((scene_key(b.key), b.reason))
+}
+
+/// The first scene key that keeps a two-plate scene from the tables
+/// ([`two_plate::table_answer`]), with the reason, as [`blocker`]; None when they answer.
+pub fn table_blocker(scene: &Scene) -> Option<(&'static str, &'static str)> {
+    if scene.model != Model::TwoPlate {
+        return Some(("model", "the tables are the two-plate model's"));
+    }
+    let (joint, nut) = joint_si(scene).ok()?;
+    let b = two_plate::table_answer(&question(scene, &joint, nut)).err()?;
+    Some((scene_key(b.key), b.reason))
+}
+
+/// The scene key of a route layer's [`Key`].
+fn scene_key(key: Key) -> &'static str {
+    match key {
+        Key::LowerThickness | Key::LowerModulus | Key::LowerPoisson | Key::Poisson => "plates",
+        Key::LoadProfile => "load.profile",
+        Key::Curve => "outputs.interface_pressure",
         Key::Interface => "joint.interface",
         Key::OuterRadius => "joint.outer_radius",
         Key::HoleRadius => "hole.radius",
@@ -85,8 +103,7 @@ pub fn blocker(scene: &Scene) -> Option<(&'static str, &'static str)> {
         Key::Field => "outputs.field",
         Key::Conductance => "outputs.conductance",
         Key::Stiffness => "outputs.stiffness",
-    };
-    Some((key, b.reason))
+    }
 }
 
 /// Whether `method = "auto"` takes this route for `scene` (the route layer's choice,
@@ -116,8 +133,26 @@ pub fn question<'a>(scene: &Scene, joint: &'a Joint, nut: Option<f64>) -> two_pl
         field: scene.outputs.field.is_some(),
         conductance: scene.outputs.conductance,
         stiffness: scene.outputs.stiffness || scene.bolt.is_some(),
+        curve: scene.outputs.wants_curve(),
         method: scene.method,
         tolerance: scene.tolerance,
+    }
+}
+
+/// Fills `out`'s R_o, error and `converged` from the tables ([`two_plate::table_answer`],
+/// lengths in the scene's units: divided by `length`), for a scene they answer.
+pub fn solve_table(scene: &Scene, joint: &Joint, length: f64, out: &mut Solution) -> bool {
+    let Ok((_, nut)) = joint_si(scene) else {
+        return false;
+    };
+    match two_plate::table_answer(&question(scene, joint, nut)) {
+        Ok(r) => {
+            (out.r_o, out.r_o_error, out.converged) =
+                (r.value / length, r.error / length, r.converged);
+            out.full_contact = Some(false);
+            true
+        }
+        Err(_) => false,
     }
 }
 

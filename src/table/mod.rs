@@ -14,3 +14,5 @@
 //! Microseconds per answer (`benches/table.rs`).
 pub mod decay;
 pub mod far;
+pub mod near;
+pub mod two_plates;

@@ -22,12 +22,13 @@ fn code(r: &Run) -> i32 {
 #[test]
 fn huge_outer_radii_answer_as_infinite_plates() {
     // was: index out of bounds in fem/spacing.rs (two), and a hang (two --c 1e8, map)
+    // (`--method fem` both: `auto` answers the infinite plates from the tables)
     let inf = json(&go(&[
-        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--json",
+        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--method", "fem", "--json",
     ]));
     for c in ["1e8", "1e300", "1e308"] {
         let r = go(&[
-            "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--c", c, "--json",
+            "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--c", c, "--method", "fem", "--json",
         ]);
         assert_eq!(code(&r), 0, "{}", r.stderr);
         let v = json(&r);
@@ -384,7 +385,8 @@ fn input_faults_the_fuzz_found_exit_2_naming_the_flag() {
     for (args, flag) in [
         (
             &[
-                "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--e", "5e-324",
+                "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--method", "fem", "--e",
+                "5e-324",
             ][..],
             "--e = 5e-324",
         ),

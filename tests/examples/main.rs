@@ -286,3 +286,13 @@ fn ex26_member_stiffness_grid() {
     quick();
     ex26::main().unwrap();
 }
+
+#[path = "../../examples/27_build_near_table.rs"]
+mod ex27;
+
+#[test]
+fn ex27_build_near_table() {
+    // quick: the shipped near table's provenance and Table 1's row against one fresh solve
+    quick();
+    ex27::main().unwrap();
+}

@@ -1,0 +1,265 @@
+//! Builds the near-region table `src/table/data/near.json` (`boltzone::table::near`): y =
+//! (R_o − B)/D of two equal infinite plates with a hole, frictionless, uniform pressure on
+//! A..B, over A/D ∈ [0.25, 4], (B − A)/D ∈ [0.15, 5], ν ∈ [0, 0.5], sampled by the holed
+//! route at 1e-8 ([`two_plate_hole_to`]) on a tensor grid of Chebyshev points of the first kind
+//! per panel, and validates it on random points that were not used to build it.
+//!
+//! **Method.** Two panels in w = (B − A)/D: [0.15, 1.2] mapped by ln w (the load narrows onto
+//! the hole's corner as w → 0), [1.2, 5] linear; ln(A/D) and ν linear. Each sample keeps its
+//! own estimate (the route's), which the table's bar carries through the cardinal functions.
+//!
+//! Run (from a scratch folder is not needed: it writes only the paths given):
+//! - `cargo run --release --example 27_build_near_table build K SAMPLES_K.csv` solves the nodes
+//!   of panel K (0, 1; appending to the file, resuming where a previous run stopped), then
+//!   `… table SAMPLES_0.csv SAMPLES_1.csv` writes `src/table/data/near.json` from them;
+//! - `… validate N SEED OUT.csv` solves N random points (log-uniform A/D and w, uniform ν);
+//!   `… check SAMPLES_0.csv SAMPLES_1.csv OUT.csv` compares the table built from SAMPLES.csv with them:
+//!   the distribution of |table − route|/bar;
+//! - `… time` times the route across the domain; `… lookup` times one R_o from the tables.
+//!
+//! Run time: `docs/tables.md` (measured).
+
+use boltzone::hankel::receding::holed::two_plate_hole_to;
+use boltzone::table::near::{Panel, A_MAX, A_MIN};
+use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
+use std::io::Write;
+use std::time::Instant;
+
+/// The panels: (w_lo, w_hi, ln-mapped, points per axis (A/D, w, ν)).
+const PANELS: [(f64, f64, bool, [usize; 3]); 2] =
+    [(0.15, 1.2, true, [5, 5, 3]), (1.2, 5.0, false, [4, 4, 3])];
+
+/// (R_o/D, estimate/D, converged, seconds) of the holed route at 1e-8, D = 1 (at 1e-6 where
+/// the 1e-8 run fails).
+fn solve(a: f64, w: f64, nu: f64) -> Result<(f64, f64, bool, f64), Box<dyn std::error::Error>> {
+    let t = Instant::now();
+    let m = Material::unit(nu)?;
+    let load = FaceLoad::uniform(a, a + w, 1.0)?;
+    let p = SinglePlate::new(a, OuterRadius::Infinite, 1.0, m, load)?;
+    let (h, _) = match two_plate_hole_to(&p, 1e-8, &[]) {
+        Ok(h) => h,
+        Err(_) => two_plate_hole_to(&p, 1e-6, &[])?,
+    };
+    let ok = h.meets(1e-8);
+    Ok((h.r_o, h.info.r_o_error, ok, t.elapsed().as_secs_f64()))
+}
+
+fn read_csv(path: &str) -> Vec<Vec<f64>> {
+    std::fs::read_to_string(path)
+        .unwrap_or_default()
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with('a'))
+        .map(|l| {
+            l.split(',')
+                .map(|x| x.parse().unwrap_or(f64::NAN))
+                .collect()
+        })
+        .collect()
+}
+
+/// Appends the route's answer at each of `points` to `path` (a, w, nu, r_o, error, converged,
+/// seconds), skipping the first rows already there.
+fn solve_into(path: &str, points: &[[f64; 3]]) -> Result<(), Box<dyn std::error::Error>> {
+    let done = read_csv(path).len();
+    let mut f = std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open(path)?;
+    if done == 0 {
+        writeln!(f, "a,w,nu,r_o,error,converged,seconds")?;
+    }
+    for (k, p) in points.iter().enumerate().skip(done) {
+        let (r, e, ok, s) = solve(p[0], p[1], p[2])?;
+        writeln!(
+            f,
+            "{:e},{:e},{:e},{:e},{:e},{},{:.3}",
+            p[0],
+            p[1],
+            p[2],
+            r,
+            e,
+            u8::from(ok),
+            s
+        )?;
+        f.flush()?;
+        println!(
+            "{k}/{}: a {:.4} w {:.4} nu {:.3}: R_o {r:.10} ± {e:.1e} {s:.2} s",
+            points.len(),
+            p[0],
+            p[1],
+            p[2]
+        );
+    }
+    Ok(())
+}
+
+/// The sample points of panel `k`.
+fn nodes(k: usize) -> Vec<[f64; 3]> {
+    let (lo, hi, log, n) = PANELS[k];
+    Panel::nodes(lo, hi, log, n)
+}
+
+/// The panels through the samples of `paths` (one file per panel, in the order of [`nodes`]).
+fn panels(paths: &[String]) -> Result<Vec<Panel>, Box<dyn std::error::Error>> {
+    let mut out = Vec::new();
+    for (&(lo, hi, log, n), path) in PANELS.iter().zip(paths) {
+        let m: usize = n.iter().product();
+        let rows = read_csv(path);
+        let rows = rows
+            .get(..m)
+            .ok_or("samples file incomplete: run build first")?;
+        let y: Vec<f64> = rows.iter().map(|r| r[3] - r[0] - r[1]).collect();
+        let e: Vec<f64> = rows.iter().map(|r| r[4]).collect();
+        out.push(Panel::from_samples(lo, hi, log, n, &y, &e));
+    }
+    Ok(out)
+}
+
+pub fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let args: Vec<String> = std::env::args().collect();
+    let quick = std::env::var("BOLTZONE_QUICK").is_ok_and(|v| v == "1");
+    if quick || args.get(1).is_some_and(|a| a == "show") {
+        return show();
+    }
+    let arg = |k: usize| args.get(k).cloned().ok_or(format!("argument {k} missing"));
+    match args.get(1).map(String::as_str) {
+        Some("time") => {
+            for a in [0.25, 1.0, 4.0] {
+                for w in [0.15, 0.3, 1.0, 2.0, 5.0] {
+                    let (r, e, ok, s) = solve(a, w, 0.3)?;
+                    println!("a {a} w {w}: R_o {r:.10} ± {e:.1e} converged {ok} {s:.2} s");
+                }
+            }
+        }
+        Some("lookup") => {
+            // one R_o from the tables, timed over a sweep of 10⁶ lookups (near and far)
+            use boltzone::table::two_plates::separation_radius;
+            let n = 1_000_000;
+            let t = Instant::now();
+            let mut sum = 0.0;
+            for k in 0..n {
+                let b = 0.12 + 3.0 * (k % 1000) as f64 / 1000.0;
+                sum += separation_radius(0.1, b, 0.1, 0.3, 1e-3).map_or(0.0, |v| v.value);
+            }
+            let per = t.elapsed().as_secs_f64() / n as f64;
+            println!("{:.3} µs per R_o (B/D 1.2–31, A/D = 1; checksum {sum:.6})", per * 1e6);
+        }
+        Some("build") => {
+            let t = Instant::now();
+            let k: usize = arg(2)?.parse()?;
+            solve_into(&arg(3)?, &nodes(k))?;
+            println!("{} nodes in {:.0} s", nodes(k).len(), t.elapsed().as_secs_f64());
+        }
+        Some("validate") => {
+            let n: usize = arg(2)?.parse()?;
+            let mut rng = boltzone::numerics::random::SplitMix64::new(arg(3)?.parse()?);
+            let points: Vec<[f64; 3]> = (0..n)
+                .map(|_| {
+                    let a = rng.log_uniform(A_MIN, A_MAX);
+                    let w = rng.log_uniform(PANELS[0].0, PANELS[1].1);
+                    [a, w, 0.5 * rng.unit()]
+                })
+                .collect();
+            solve_into(&arg(4)?, &points)?;
+        }
+        Some("table") => {
+            let samples = vec![arg(2)?, arg(3)?];
+            let rows: Vec<Vec<f64>> = samples.iter().flat_map(|p| read_csv(p)).collect();
+            let secs: f64 = rows.iter().map(|r| r[6]).sum();
+            let mut out = format!(
+                "{{\n  \"provenance\": \"examples/27_build_near_table.rs: {} samples of boltzone::hankel::receding::holed::two_plate_hole_to at tolerance 1e-8 (1e-6 where that failed), D = 1, C = infinite; {:.0} s of solves; built at commit {} on {}\",\n  \"panels\": [\n",
+                rows.len(),
+                secs,
+                git(&["rev-parse", "--short", "HEAD"]),
+                date()
+            );
+            let ps = panels(&samples)?;
+            for (k, p) in ps.iter().enumerate() {
+                let list = |v: &[f64]| v.iter().map(|x| format!("{x:e}")).collect::<Vec<_>>().join(", ");
+                out += &format!(
+                    "    {{ \"w_lo\": {:e}, \"w_hi\": {:e}, \"log_w\": {}, \"n\": [{}, {}, {}], \"errors\": [{}], \"coefficients\": [{}] }}{}\n",
+                    p.w_lo, p.w_hi, p.log_w, p.n[0], p.n[1], p.n[2], list(&p.errors), list(&p.coefficients),
+                    if k + 1 < ps.len() { "," } else { "" }
+                );
+                for axis in 0..3 {
+                    let m = p.axis_magnitudes(axis);
+                    println!("panel {k} axis {axis}: {}", m.iter().map(|x| format!("{x:.1e}")).collect::<Vec<_>>().join(" "));
+                }
+                println!("panel {k}: tails {:?}", p.tails());
+            }
+            out += "  ]\n}\n";
+            let path = std::path::Path::new("src/table/data/near.json");
+            boltzone::fsutil::write_atomic(path, out.as_bytes())?;
+            println!("wrote {} ({} bytes)", path.display(), out.len());
+        }
+        Some("check") => {
+            let ps = panels(&[arg(2)?, arg(3)?])?;
+            let mut ratios = Vec::new();
+            let mut worst = (0.0, [0.0; 3]);
+            for r in read_csv(&arg(4)?) {
+                let p = ps.iter().find(|p| r[1] <= p.w_hi).unwrap_or(&ps[ps.len() - 1]);
+                let (y, bar) = p.y(r[0], r[1], r[2]);
+                let err = (r[0] + r[1] + y - r[3]).abs();
+                let q = err / (bar + r[4]);
+                if q > worst.0 {
+                    worst = (q, [r[0], r[1], r[2]]);
+                }
+                ratios.push((q, err, bar, r[3]));
+            }
+            ratios.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let n = ratios.len();
+            let quant = |f: f64| ratios[((n - 1) as f64 * f) as usize].0;
+            println!("{n} points: |table − route|/(bar + route estimate): median {:.3}, 90 % {:.3}, 99 % {:.3}, max {:.3} at {:?}", quant(0.5), quant(0.9), quant(0.99), worst.0, worst.1);
+            let rel_err = ratios.iter().map(|r| r.1 / r.3).fold(0.0, f64::max);
+            let mut bars: Vec<f64> = ratios.iter().map(|r| r.2 / r.3).collect();
+            bars.sort_by(f64::total_cmp);
+            println!("largest |table − route|/R_o {rel_err:.2e}; bar/R_o median {:.2e}, max {:.2e}", bars[n / 2], bars[n - 1]);
+        }
+        _ => return Err("usage: 27_build_near_table time | build K S_K.csv | table S_0.csv S_1.csv | validate N SEED V.csv | check S_0.csv S_1.csv V.csv".into()),
+    }
+    Ok(())
+}
+
+/// The shipped table's provenance, and its answer at Table 1's row (A/D 1, B/A 2.2, C = ∞)
+/// against one fresh solve by the route at 1e-4 (within the table's bar plus the solve's).
+fn show() -> Result<(), Box<dyn std::error::Error>> {
+    let t = boltzone::table::near::table();
+    println!("{}", t.provenance);
+    let r = boltzone::table::near::separation_radius(1.0, 2.2, 1.0, 0.3, 1e-2)?;
+    let m = Material::unit(0.3)?;
+    let p = SinglePlate::new(
+        1.0,
+        OuterRadius::Infinite,
+        1.0,
+        m,
+        FaceLoad::uniform(1.0, 2.2, 1.0)?,
+    )?;
+    let (h, _) = two_plate_hole_to(&p, 1e-4, &[])?;
+    let diff = (r.value - h.r_o).abs();
+    println!(
+        "A/D 1, B/A 2.2: table {:.7} ± {:.1e}, route (1e-4) {:.7} ± {:.1e}, |difference| {diff:.1e}",
+        r.value, r.error, h.r_o, h.info.r_o_error
+    );
+    if diff > r.error + h.info.r_o_error {
+        return Err("the near table misses its bar on Table 1's row".into());
+    }
+    Ok(())
+}
+
+fn git(args: &[&str]) -> String {
+    std::process::Command::new("git")
+        .args(args)
+        .output()
+        .ok()
+        .and_then(|o| String::from_utf8(o.stdout).ok())
+        .map_or("unknown".into(), |s| s.trim().to_string())
+}
+
+fn date() -> String {
+    std::process::Command::new("date")
+        .args(["-u", "+%Y-%m-%d"])
+        .output()
+        .ok()
+        .and_then(|o| String::from_utf8(o.stdout).ok())
+        .map_or("unknown".into(), |s| s.trim().to_string())
+}

@@ -1,0 +1,57 @@
+//! R_o of two equal infinite plates with a hole (frictionless interface, uniform pressure on
+//! A ≤ r ≤ B, the report's two-plate model at C = ∞) from the tables: the near table
+//! ([`super::near`]) and the far table ([`super::far`]), whichever answers with the smaller bar.
+//!
+//! **Method.** Both tables are looked up where they apply (the near one over A/D ∈ [0.25, 4],
+//! (B − A)/D ∈ [0.1, 5], ν ∈ [0, 0.5]; the far one for B/D ≥ 2, A/D ≤ 4 and the contact edge at
+//! least 2D beyond the hole, any B/D); the answer is the one with the smaller bar. Where
+//! neither applies the error is the near table's (it names the ratio outside it), or, without
+//! a hole, the far table's.
+//!
+//! # Accuracy
+//!
+//! Each table's own (`tests/table/near.rs`, `tests/table/far.rs`); the handover between them
+//! against the FE and the 1e-8 route: `tests/table/two_plates.rs`.
+//!
+//! # Cost
+//!
+//! Two lookups, about a microsecond (`benches/table.rs`).
+//!
+//! ```
+//! use boltzone::table::two_plates::separation_radius;
+//! // Table 1's first row at C = ∞ (A/D = 1, B/A = 3.1) and the same plates pressed to B = 30D
+//! let near = separation_radius(0.1, 0.31, 0.1, 0.3, 1e-3)?;
+//! let far = separation_radius(0.1, 3.0, 0.1, 0.3, 1e-6)?;
+//! assert!(near.converged && far.converged && far.value > 3.0);
+//! # Ok::<(), boltzone::InputError>(())
+//! ```
+
+use super::far::{self, FarModel};
+use super::near;
+use crate::error::InputError;
+use crate::value::Value;
+
+/// R_o (module docs) of hole `a`, load outer radius `b`, plate thickness `d` (one plate),
+/// Poisson's ratio `nu`, converged when the bar is within `tol`·R_o.
+pub fn separation_radius(a: f64, b: f64, d: f64, nu: f64, tol: f64) -> Result<Value, InputError> {
+    if !(0.0..=near::NU_MAX).contains(&nu) {
+        return Err(InputError::Parameter {
+            field: "Poisson's ratio (tables)",
+            value: nu,
+            reason: "within 0..0.5 for the tables (the far table's handover bound is measured \
+                     at 0, 0.3 and 0.45)",
+        });
+    }
+    let near = if a > 0.0 {
+        Some(near::separation_radius(a, b, d, nu, tol))
+    } else {
+        None
+    };
+    let far = far::separation_radius(FarModel::TwoPlates, a, b, d, tol);
+    match (near, far) {
+        (Some(Ok(n)), Ok(f)) => Ok(if f.error < n.error { f } else { n }),
+        (Some(Ok(n)), Err(_)) => Ok(n),
+        (_, Ok(f)) => Ok(f),
+        (Some(Err(e)), Err(_)) | (None, Err(e)) => Err(e),
+    }
+}
