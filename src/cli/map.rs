@@ -144,6 +144,14 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             v
         }
     };
+    if args.method == Method::Table {
+        return super::exit::usage(
+            "--method",
+            "table",
+            "the map's plates have a rim C (--c-over-a), which the tables do not take; use fem, \
+             hankel or auto",
+        );
+    }
     let params = MapParams {
         a_over_d: axis(&args.a_over_d, 0.2, 5.0),
         b_over_a: axis(&args.b_over_a, 1.1, 5.0),

@@ -128,6 +128,14 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     if args.corner_terms > 6 {
         return super::exit::usage("--corner-terms", args.corner_terms, "must lie in 0..=6");
     }
+    if args.method == Method::Table {
+        return super::exit::usage(
+            "--method",
+            "table",
+            "the tables answer the two-plate model (two --method table); single takes fem, \
+             hankel or auto",
+        );
+    }
     if route(args) == Method::Hankel && args.nut != Nut::Pressure {
         return super::exit::usage(
             "--nut",

@@ -166,10 +166,12 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
 }
 
 /// Runs the command.
-pub fn run(mut args: Args) -> anyhow::Result<Status> {
-    apply_materials(&mut args)?;
+pub fn run(args: Args) -> anyhow::Result<Status> {
     let start = std::time::Instant::now();
-    let args = super::two_bolt::resolve(args)?;
+    // the flags' geometry first (--bolt fills A, B), then --material's E and ν into it
+    let mut args = super::two_bolt::resolve(args)?;
+    apply_materials(&mut args)?;
+    let args = args;
     check_args(&args)?;
     let p_given = match args.nut_displacement {
         Some(_) => 0.0,

@@ -358,6 +358,11 @@ fn check_model(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
                 None => Ok(()),
             }
         }
+        Model::SinglePlate | Model::Slab if scene.method == Method::Table => Err(c.fail(
+            &method,
+            "\"table\"",
+            "the tables answer the two-plate model: use \"fem\", \"hankel\" or \"auto\"",
+        )),
         Model::Slab if scene.method == Method::Fem => Err(c.fail(
             &method,
             "\"fem\"",

@@ -408,6 +408,18 @@ fn input_faults_the_fuzz_found_exit_2_naming_the_flag() {
             &["map", "--n", "2", "--a-over-d", "1e-308"],
             "--a-over-d = 1e-308",
         ),
+        // the tables answer the two-plate model only: single and map refuse them, not
+        // quietly answer by another route
+        (
+            &[
+                "single", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--method", "table",
+            ],
+            "--method = table",
+        ),
+        (
+            &["map", "--n", "2", "--method", "table"],
+            "--method = table",
+        ),
         (
             &["map", "--n", "2", "--a-over-d", "1e308"],
             "--a-over-d = 1e308",

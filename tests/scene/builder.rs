@@ -4,7 +4,7 @@
 
 use super::example;
 use boltzone::scene::file::{Constants, InterfaceKind};
-use boltzone::scene::{Model, Scene, SceneError, UnitSystem};
+use boltzone::scene::{Method, Model, Scene, SceneError, UnitSystem};
 
 fn table1_row1() -> boltzone::scene::SceneBuilder {
     Scene::builder(UnitSystem::InPsiLbf)
@@ -78,7 +78,7 @@ fn a_built_scene_in_mm_equals_the_same_scene_in_inches() {
 #[test]
 fn bad_values_are_refused_naming_their_key() {
     type Build = Box<dyn Fn() -> Result<Scene, SceneError>>;
-    let cases: [(Build, &str); 6] = [
+    let cases: [(Build, &str); 7] = [
         (
             Box::new(|| table1_row1().tolerance(f64::NAN).build()),
             "tolerance",
