@@ -100,6 +100,16 @@ fn bad_values_are_refused_naming_their_key() {
             Box::new(|| table1_row1().friction(-0.2).build()),
             "joint.mu",
         ),
+        // the tables answer the two-plate model only
+        (
+            Box::new(|| {
+                table1_row1()
+                    .model(Model::SinglePlate)
+                    .method(Method::Table)
+                    .build()
+            }),
+            "method",
+        ),
     ];
     for (build, key) in cases {
         match build() {
