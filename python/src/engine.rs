@@ -171,16 +171,19 @@ pub fn scene(table: toml::Table) -> Result<Scene, Failure> {
             });
         }
     }
-    let scene: Scene = serde_path_to_error::deserialize(toml::Value::Table(t)).map_err(|e| {
-        // serde_path_to_error writes `plates[0].thickness`, and `.` for the top level
-        let path = e.path().to_string();
-        let path = if path == "." { String::new() } else { path };
-        let reason = e.into_inner().message().trim().to_string();
-        Failure::Input {
-            key: with_unknown(path, &reason),
-            reason,
-        }
-    })?;
+    let mut scene: Scene =
+        serde_path_to_error::deserialize(toml::Value::Table(t)).map_err(|e| {
+            // serde_path_to_error writes `plates[0].thickness`, and `.` for the top level
+            let path = e.path().to_string();
+            let path = if path == "." { String::new() } else { path };
+            let reason = e.into_inner().message().trim().to_string();
+            Failure::Input {
+                key: with_unknown(path, &reason),
+                reason,
+            }
+        })?;
+    // [bolt] and [preload] fill the hole, the bearing face and the force as in a scene file
+    boltzone::scene::bolt_spec::resolve(&mut scene, "")?;
     scene.check("")?;
     Ok(scene)
 }
