@@ -266,6 +266,14 @@ pub fn hankel_blocker(q: &Question) -> Option<Blocker> {
             Key::OuterEdge,
             "the Hankel route's rim is free (a fixed edge is in the finite-element model only)",
         ),
+    ];
+    first(checks.into_iter().chain(finite_elements_only(q)))
+}
+
+/// What only the finite elements answer: thermal strains, the field, the conductance and the
+/// member stiffness (each with the key that asks it and the reason).
+fn finite_elements_only(q: &Question) -> [(bool, Key, &'static str); 4] {
+    [
         (
             q.thermal,
             Key::Temperature,
@@ -285,12 +293,14 @@ pub fn hankel_blocker(q: &Question) -> Option<Blocker> {
             q.stiffness,
             Key::Stiffness,
             "the member stiffness comes from the finite elements' displacements (the \
-             semi-analytic routes answer R_o and the interface pressure)",
+             semi-analytic routes and the tables answer R_o)",
         ),
-    ];
-    checks
-        .into_iter()
-        .find_map(|(blocks, key, reason)| blocks.then_some(Blocker { key, reason }))
+    ]
+}
+
+/// The first check that blocks, as a [`Blocker`].
+fn first(mut checks: impl Iterator<Item = (bool, Key, &'static str)>) -> Option<Blocker> {
+    checks.find_map(|(blocks, key, reason)| blocks.then_some(Blocker { key, reason }))
 }
 
 /// Whether the receding solver of two plates without a hole reaches the load width `b`
@@ -398,30 +408,12 @@ pub fn table_answer(q: &Question) -> Result<crate::value::Value, Blocker> {
             "the tables' plates are infinite (a fixed edge is in the finite-element model only)",
         ),
         (
-            q.thermal,
-            Key::Temperature,
-            "thermal strains are in the finite-element model only",
-        ),
-        (
-            q.field,
-            Key::Field,
-            "the field and the figures drawn from it come from the finite elements",
-        ),
-        (
-            q.conductance,
-            Key::Conductance,
-            "the conductance integrates the finite elements' interface pressure",
-        ),
-        (
             q.curve,
             Key::Curve,
             "the tables give R_o alone (the interface pressure comes from a solver)",
         ),
     ];
-    if let Some(b) = checks
-        .into_iter()
-        .find_map(|(blocks, key, reason)| blocks.then_some(Blocker { key, reason }))
-    {
+    if let Some(b) = first(checks.into_iter().chain(finite_elements_only(q))) {
         return Err(b);
     }
     let (a, b, d) = (j.hole_radius(), load.outer(), up.thickness());
