@@ -38,7 +38,7 @@ pub struct HeatArgs {
     #[arg(long, default_value = "cmy1969", conflicts_with = "power_law", requires = "conductance")]
     pub correlation: String,
     /// A power law h = c (m/σ) k (P/H)^n instead of --correlation: "c,n".
-    #[arg(long, value_delimiter = ',', num_args = 2, requires = "conductance")]
+    #[arg(long, value_delimiter = ',', requires = "conductance")]
     pub power_law: Option<Vec<f64>>,
     /// Conductivities k₁,k₂ of the upper and lower plate (W/(m·K); Btu/(hr·ft·°F) in
     /// in-psi-lbf); one value: both.
@@ -75,6 +75,10 @@ impl HeatArgs {
         }
         let given = |v: &Option<Vec<f64>>| v.clone().unwrap_or_default();
         let correlation = match &self.power_law {
+            Some(law) if law.len() != 2 => {
+                let given = law.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(",");
+                return usage("--power-law", given, "give two numbers c,n");
+            }
             Some(law) => CorrelationSpec::Law(PowerLawSpec {
                 coefficient: positive("--power-law", "coefficient c", law[0])?,
                 exponent: positive("--power-law", "exponent n", law[1])?,

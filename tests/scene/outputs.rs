@@ -264,13 +264,13 @@ fn scene_report_equals_two_report_and_is_refused_where_it_cannot_be_written() {
     // refused: a wrong extension, a single plate, a sweep
     let with = |r: &str| text.replace("r_o = true", &format!("r_o = true\nreport = \"{r}\""));
     let bad = [
-        with("r.txt"),
-        with("r.md").replace("model = \"two-plate\"", "model = \"single-plate\""),
-        format!("{}\n[sweep]\n\"load.outer_radius\" = [0.3, 0.4]\n", with("r.md")),
+        with("bad.txt"),
+        with("bad.md").replace("model = \"two-plate\"", "model = \"single-plate\""),
+        format!("{}\n[sweep]\n\"load.outer_radius\" = [0.3, 0.4]\n", with("bad.md")),
     ];
     for (i, scene_text) in bad.iter().enumerate() {
         refused(&dir, i, scene_text, "outputs.report");
-        assert!(!dir.join("r.md").exists() && !dir.join("r.txt").exists());
+        assert!(!dir.join("bad.md").exists() && !dir.join("bad.txt").exists());
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
