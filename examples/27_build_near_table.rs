@@ -64,11 +64,7 @@ fn read_csv(path: &str) -> Vec<Vec<f64>> {
 
 /// Appends the route's answer at each of `points` to `path` (a, w, nu, r_o, error, converged,
 /// seconds), skipping the first rows already there.
-fn solve_into(
-    path: &str,
-    points: &[[f64; 3]],
-    tol: f64,
-) -> Result<(), Box<dyn std::error::Error>> {
+fn solve_into(path: &str, points: &[[f64; 3]], tol: f64) -> Result<(), Box<dyn std::error::Error>> {
     let done = read_csv(path).len();
     let mut f = std::fs::OpenOptions::new()
         .create(true)

@@ -245,10 +245,7 @@ pub fn interface_figures(
         r_o: c.r_o,
         length: l,
     };
-    let (p, x_end) = radius_figure(
-        &curve("Interface pressure", &p_label, &p_legend, c.p),
-        geom,
-    );
+    let (p, x_end) = radius_figure(&curve("Interface pressure", &p_label, &p_legend, c.p), geom);
     let mut figs = vec![("", "interface pressure against r", JointFigure::Curve(p))];
     if let Some(gap) = c.gap {
         let (g, _) = radius_figure(

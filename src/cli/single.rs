@@ -255,7 +255,8 @@ fn print_head(args: &Args, route: &str, r_o: (f64, f64, bool), digits: (usize, u
         num(args.geom.a),
         num(args.geom.b),
         num(args.geom.d),
-        args.c.map_or("infinite".into(), |c| format!("{} {l}", num(c))),
+        args.c
+            .map_or("infinite".into(), |c| format!("{} {l}", num(c))),
         args.geom.nu
     );
     println!(

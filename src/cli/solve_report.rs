@@ -22,7 +22,11 @@ use std::f64::consts::PI;
 use std::path::Path;
 
 /// `v` flattened into (dotted key, value) pairs (`hole.radius`, `plates.0.thickness`).
-fn flatten(prefix: &str, v: &serde_json::Value, out: &mut serde_json::Map<String, serde_json::Value>) {
+fn flatten(
+    prefix: &str,
+    v: &serde_json::Value,
+    out: &mut serde_json::Map<String, serde_json::Value>,
+) {
     let key = |k: &str| match prefix {
         "" => k.to_string(),
         p => format!("{p}.{k}"),

@@ -206,7 +206,10 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         element: ElementKind::from(args.element),
         ..q.fem_params()
     };
-    let html = args.report.as_ref().is_some_and(|p| super::report::is_html(p));
+    let html = args
+        .report
+        .as_ref()
+        .is_some_and(|p| super::report::is_html(p));
     // welded dissimilar plates: the contact problem can be defective (an oscillatory edge
     // singularity); the message says what to use instead
     let welded_dissimilar = matches!(args.interface, Interface::Welded) && !q.equal_plates();
@@ -256,7 +259,10 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     if let Some(path) = &args.out.curve {
         super::write_output(path, &super::two_files::curve_csv(&s, p, args.units))?;
     }
-    let html = args.report.as_ref().is_some_and(|p| super::report::is_html(p));
+    let html = args
+        .report
+        .as_ref()
+        .is_some_and(|p| super::report::is_html(p));
     let figs = match &field {
         Some(field) if args.out.plot.is_some() || html => {
             let g = &args.geom;
@@ -435,12 +441,10 @@ fn figures(
         x_end,
         length: l,
     };
-    figs.push(
-        (
-            "deformed",
-            "the deformed joint (displacements exaggerated)",
-            JointFigure::Section(super::joint_figs::deformed_figure(&d)),
-        ),
-    );
+    figs.push((
+        "deformed",
+        "the deformed joint (displacements exaggerated)",
+        JointFigure::Section(super::joint_figs::deformed_figure(&d)),
+    ));
     figs
 }

@@ -35,7 +35,12 @@ pub struct HeatArgs {
     pub conductance: bool,
     /// Contact conductance law: cmy1969 (the report's eq. 1.1), yovanovich1982 or
     /// mikic-elastic (E′ from the plates' E and ν).
-    #[arg(long, default_value = "cmy1969", conflicts_with = "power_law", requires = "conductance")]
+    #[arg(
+        long,
+        default_value = "cmy1969",
+        conflicts_with = "power_law",
+        requires = "conductance"
+    )]
     pub correlation: String,
     /// A power law h = c (m/σ) k (P/H)^n instead of --correlation: "c,n".
     #[arg(long, value_delimiter = ',', requires = "conductance")]
@@ -76,7 +81,11 @@ impl HeatArgs {
         let given = |v: &Option<Vec<f64>>| v.clone().unwrap_or_default();
         let correlation = match &self.power_law {
             Some(law) if law.len() != 2 => {
-                let given = law.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(",");
+                let given = law
+                    .iter()
+                    .map(|x| x.to_string())
+                    .collect::<Vec<_>>()
+                    .join(",");
                 return usage("--power-law", given, "give two numbers c,n");
             }
             Some(law) => CorrelationSpec::Law(PowerLawSpec {
@@ -100,7 +109,11 @@ impl HeatArgs {
         };
         let spec = HeatSpec {
             correlation,
-            conductivity: pair("--conductivity", "conductivity k", &given(&self.conductivity))?,
+            conductivity: pair(
+                "--conductivity",
+                "conductivity k",
+                &given(&self.conductivity),
+            )?,
             roughness: pair("--roughness", "RMS roughness", &given(&self.roughness))?,
             slope: pair("--slope", "asperity slope", &given(&self.slope))?,
             hardness,
@@ -152,11 +165,7 @@ impl HeatArgs {
 /// A heat law the flags cannot make (each flag was checked on its own: what is left is their
 /// combination) as bad input naming the heat flags.
 fn refused<T>(e: SceneError) -> anyhow::Result<T> {
-    usage(
-        "--conductance",
-        "(with its heat flags)",
-        &e.to_string(),
-    )
+    usage("--conductance", "(with its heat flags)", &e.to_string())
 }
 
 /// Adds `joint_conductance` and `conductance_unit` (the scene's keys) to the JSON `out`.

@@ -446,7 +446,10 @@ fn check_outputs(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
         if scene.model != Model::TwoPlate {
             return Err(c.fail(&path, p.display(), "needs model = \"two-plate\""));
         }
-        if !matches!(p.extension().and_then(|e| e.to_str()), Some("md" | "html" | "htm")) {
+        if !matches!(
+            p.extension().and_then(|e| e.to_str()),
+            Some("md" | "html" | "htm")
+        ) {
             return Err(c.fail(&path, p.display(), "must end in .md, .html or .htm"));
         }
         c.output(&path, p)?;

@@ -168,7 +168,8 @@ pub fn conductance(
 ) -> Result<f64, SceneError> {
     let spec =
         spec.ok_or_else(|| invalid("outputs.conductance", "true: needs a [heat] table".into()))?;
-    let si = |m: Material| Material::new(m.youngs_modulus() * solved_in.stress(), m.poisson_ratio());
+    let si =
+        |m: Material| Material::new(m.youngs_modulus() * solved_in.stress(), m.poisson_ratio());
     let materials = [si(materials[0])?, si(materials[1])?];
     let mut params = JointParams::new(spec.contact(units, materials)?);
     params.length_unit = Length::from_si(solved_in.length());

@@ -161,7 +161,14 @@ fn table1_and_map_csv_name_every_unit_and_print_inputs_as_entered() {
     let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("table_units");
     std::fs::create_dir_all(&dir).unwrap();
     let (t1, map) = (dir.join("t1.csv"), dir.join("map.csv"));
-    let table = ["table1", "--units", "mm-MPa-N", "--tol", "2e-2", "--no-hankel"];
+    let table = [
+        "table1",
+        "--units",
+        "mm-MPa-N",
+        "--tol",
+        "2e-2",
+        "--no-hankel",
+    ];
     let o = boltzone(&[&table[..], &["--csv", t1.to_str().unwrap()]].concat());
     assert_eq!(o.status.code(), Some(0), "{o:?}");
     let o = boltzone(&[
@@ -181,7 +188,12 @@ fn table1_and_map_csv_name_every_unit_and_print_inputs_as_entered() {
         std::fs::read_to_string(map).unwrap(),
     );
     // every column but the map's method columns (text) carries a [unit]
-    let text = ["single_method", "single_converged", "two_method", "two_converged"];
+    let text = [
+        "single_method",
+        "single_converged",
+        "two_method",
+        "two_converged",
+    ];
     for csv in [&t1, &map] {
         for name in csv.lines().next().unwrap().split(',') {
             assert!(

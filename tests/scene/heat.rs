@@ -231,8 +231,22 @@ fn two(args: &[&str]) -> (Option<i32>, serde_json::Value, String) {
 
 /// The joint of `joint_text("uniform", 0.1)` as `two` flags (inches, psi, lbf).
 const TWO_JOINT: [&str; 16] = [
-    "--a", "0.1", "--b", "0.16", "--d", "0.1", "--c", "1.54", "--e", "1e7", "--nu", "0.33",
-    "--force", "1000", "--json", "--conductance",
+    "--a",
+    "0.1",
+    "--b",
+    "0.16",
+    "--d",
+    "0.1",
+    "--c",
+    "1.54",
+    "--e",
+    "1e7",
+    "--nu",
+    "0.33",
+    "--force",
+    "1000",
+    "--json",
+    "--conductance",
 ];
 
 /// `HEAT` as `two` flags.
@@ -257,7 +271,10 @@ fn two_conductance_flags_give_the_closed_form_and_the_scene() {
     let g = v["joint_conductance"].as_f64().unwrap();
     assert!((g / expect - 1.0).abs() < 1e-9, "{g} vs {expect}");
     assert_eq!(v["conductance_unit"], "Btu/(hr·°F)");
-    assert_eq!(v["method"], "fem", "the conductance asks the finite elements' pressure");
+    assert_eq!(
+        v["method"], "fem",
+        "the conductance asks the finite elements' pressure"
+    );
     // eq. (1.1) and mikic-elastic: `two` equals the scene (which solves in SI: rounding only)
     for law in ["cmy1969", "mikic-elastic"] {
         let (code, v, err) = two(&[&TWO_JOINT[..], &TWO_HEAT, &["--correlation", law]].concat());
@@ -268,7 +285,10 @@ fn two_conductance_flags_give_the_closed_form_and_the_scene() {
         );
         let (scene, s) = conductance(&text);
         let g = v["joint_conductance"].as_f64().unwrap();
-        assert!((g / scene - 1.0).abs() < 1e-9, "{law}: two {g}, scene {scene}");
+        assert!(
+            (g / scene - 1.0).abs() < 1e-9,
+            "{law}: two {g}, scene {scene}"
+        );
         assert!((v["r_o"].as_f64().unwrap() / s.r_o - 1.0).abs() < 1e-9);
     }
 }

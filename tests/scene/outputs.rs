@@ -228,36 +228,73 @@ fn scene_report_equals_two_report_and_is_refused_where_it_cannot_be_written() {
     let scene = dir.join("row1.toml");
     std::fs::write(&scene, text.replace("r_o = true", &outputs)).unwrap();
     let out = boltzone(&["solve", scene.to_str().unwrap(), "--json"]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let v = json_of(&out);
     let two_md = dir.join("two.md");
     let out = boltzone(&[
-        "two", "--method", "fem", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--c", "1.54", "--p",
-        "1000", "--report", two_md.to_str().unwrap(),
+        "two",
+        "--method",
+        "fem",
+        "--a",
+        "0.1",
+        "--b",
+        "0.31",
+        "--d",
+        "0.1",
+        "--c",
+        "1.54",
+        "--p",
+        "1000",
+        "--report",
+        two_md.to_str().unwrap(),
     ]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let (scene_md, two_md) = (
         std::fs::read_to_string(&md).unwrap(),
         std::fs::read_to_string(&two_md).unwrap(),
     );
     // R_o ± bar as the JSON says, and the same results and rules as `two`'s report
     let r_o = v["r_o"].as_f64().unwrap();
-    assert!(scene_md.contains(&format!("{r_o:.6} ± {:.1e} in", v["r_o_error"].as_f64().unwrap())));
+    assert!(scene_md.contains(&format!(
+        "{r_o:.6} ± {:.1e} in",
+        v["r_o_error"].as_f64().unwrap()
+    )));
     for heading in ["## Results", "## Rules of thumb"] {
         let rows = table_under(&scene_md, heading);
         assert!(rows.len() >= 3, "{heading}: {scene_md}");
         assert_eq!(rows, table_under(&two_md, heading), "{heading}");
     }
     // the scene's keys with their units; the plot's figures linked
-    assert!(scene_md.contains("| hole.radius | 0.1 | in |"), "{scene_md}");
-    assert!(scene_md.contains(&format!("]({})", plot.display())), "{scene_md}");
+    assert!(
+        scene_md.contains("| hole.radius | 0.1 | in |"),
+        "{scene_md}"
+    );
+    assert!(
+        scene_md.contains(&format!("]({})", plot.display())),
+        "{scene_md}"
+    );
     assert!(scene_md.contains("-gap.svg)"), "{scene_md}");
     // HTML without a plot: self-contained, both interface figures inlined
     let scene = dir.join("row1-html.toml");
     let outputs = format!("r_o = true\nreport = \"{}\"", html.display());
     std::fs::write(&scene, text.replace("r_o = true", &outputs)).unwrap();
     let out = boltzone(&["solve", scene.to_str().unwrap()]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let page = std::fs::read_to_string(&html).unwrap();
     assert_eq!(page.matches("<svg").count(), 2, "pressure and gap");
     assert!(!page.contains("src=") && !page.contains("href="));
@@ -266,7 +303,10 @@ fn scene_report_equals_two_report_and_is_refused_where_it_cannot_be_written() {
     let bad = [
         with("bad.txt"),
         with("bad.md").replace("model = \"two-plate\"", "model = \"single-plate\""),
-        format!("{}\n[sweep]\n\"load.outer_radius\" = [0.3, 0.4]\n", with("bad.md")),
+        format!(
+            "{}\n[sweep]\n\"load.outer_radius\" = [0.3, 0.4]\n",
+            with("bad.md")
+        ),
     ];
     for (i, scene_text) in bad.iter().enumerate() {
         refused(&dir, i, scene_text, "outputs.report");

@@ -224,7 +224,10 @@ pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
     let single_plan = single_plate::plan(&single_q);
     for plan in [two_plan, single_plan] {
         if plan.method != Method::Fem {
-            anyhow::bail!("the page draws the finite elements' curves; the route layer chose {:?}", plan.method);
+            anyhow::bail!(
+                "the page draws the finite elements' curves; the route layer chose {:?}",
+                plan.method
+            );
         }
     }
     let (two, plate_single) = rayon::join(
