@@ -322,3 +322,32 @@ fn two_heat_flag_errors_name_the_flag() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("--conductance"), "{err}");
 }
+
+#[test]
+fn two_conductance_in_si_is_the_scene_bit_for_bit() {
+    // m-Pa-N: the scene solves in SI, so `two` and `solve` read the same numbers
+    let joint = "[hole]\nradius = 0.0025\n[load]\nouter_radius = 0.004\nforce = 5000.0\n\
+                 [[plates]]\nthickness = 0.0025\nmaterial = { E = 7.0e10, nu = 0.33 }\n\
+                 [joint]\nouter_radius = 0.04\n";
+    let heat = "conductivity = [160.0, 160.0]\nroughness = [1.2e-6, 1.2e-6]\n\
+                slope = [0.1, 0.1]\nhardness = 1.0e9\n";
+    let text = format!(
+        "units = \"m-Pa-N\"\nmethod = \"fem\"\n{joint}[heat]\n{heat}[outputs]\nconductance = true\n"
+    );
+    let (scene, s) = conductance(&text);
+    let (code, v, err) = two(&[
+        "--units", "m-Pa-N", "--method", "fem", "--a", "0.0025", "--b", "0.004", "--d", "0.0025",
+        "--c", "0.04", "--e", "7e10", "--nu", "0.33", "--force", "5000", "--json",
+        "--conductance", "--conductivity", "160", "--roughness", "1.2e-6", "--slope", "0.1",
+        "--hardness", "1e9",
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(v["r_o"].as_f64().map(f64::to_bits), Some(s.r_o.to_bits()));
+    assert_eq!(
+        v["joint_conductance"].as_f64().map(f64::to_bits),
+        Some(scene.to_bits()),
+        "two {} W/K, scene {scene} W/K",
+        v["joint_conductance"]
+    );
+    assert_eq!(v["conductance_unit"], "W/K");
+}
