@@ -152,8 +152,24 @@ fn argument_set(rng: &mut Rng) -> Vec<String> {
         }
     }
     if command == "two" && rng.chance(0.25) {
-        // the semi-analytic routes: with the hole (equal plates), without it (any pair)
-        args.extend(["--method".into(), rng.pick(&["hankel", "auto"]).to_string()]);
+        // the semi-analytic routes (with the hole: equal plates; without it: any pair), the tables
+        let method = rng.pick(&["hankel", "auto", "table"]);
+        args.extend(["--method".into(), method.to_string()]);
+    }
+    if command == "two" && rng.chance(0.1) {
+        // the interface conductance and its heat flags (W/(m·K), in, tan θ, psi)
+        args.push("--conductance".into());
+        let k = rng.log_uniform(1.0, 400.0);
+        flag(&mut args, rng, "conductivity", format!("{k:e},{:e}", 0.5 * k));
+        let s = rng.log_uniform(1e-7, 1e-3);
+        flag(&mut args, rng, "roughness", format!("{s:e}"));
+        let (m, h) = (rng.log_uniform(1e-3, 1.0), rng.log_uniform(1e3, 1e7));
+        flag(&mut args, rng, "slope", format!("{m:e}"));
+        flag(&mut args, rng, "hardness", format!("{h:e}"));
+        if rng.chance(0.3) {
+            let law = rng.pick(&["cmy1969", "yovanovich1982", "mikic-elastic", "cmy"]);
+            args.extend(["--correlation".into(), law.to_string()]);
+        }
     }
     if command == "single" && rng.chance(0.4) {
         args.extend(["--method".into(), "hankel".into()]);
