@@ -40,13 +40,30 @@ pub(super) fn joint(args: &Args) -> anyhow::Result<Joint> {
         Shape::PeakA => FaceLoad::triangular(a, b, p, Peak::AtA)?,
         Shape::PeakB => FaceLoad::triangular(a, b, p, Peak::AtB)?,
     };
-    Ok(Joint::new(
+    let joint = Joint::new(
         a,
         args.c.map_or(OuterRadius::Infinite, OuterRadius::Finite),
         Plate::new(args.geom.d, upper_mat)?,
         Plate::new(args.d2.unwrap_or(args.geom.d), lower_mat)?,
         load,
-    )?)
+    )?;
+    match args.b2 {
+        Some(b2) if b2 != b => {
+            let nut = nut_load(joint.load(), a, b2)?;
+            Ok(joint.with_nut_load(nut)?)
+        }
+        _ => Ok(joint),
+    }
+}
+
+/// The nut's face load on A..B₂: the head's profile carrying the head's total force (mean
+/// pressure F/(π(B₂² − A²))).
+pub(super) fn nut_load(head: &FaceLoad, a: f64, b2: f64) -> anyhow::Result<FaceLoad> {
+    let p2 = head.total_force() / (PI * (b2 * b2 - a * a));
+    Ok(match head.profile() {
+        boltzone::load::Profile::Triangular(peak) => FaceLoad::triangular(a, b2, p2, peak)?,
+        _ => FaceLoad::uniform(a, b2, p2)?,
+    })
 }
 
 /// The rules of thumb beside `r_o` (the route layer's [`rules_beside::beside`], the 30° cone
