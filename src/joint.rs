@@ -219,7 +219,8 @@ impl Joint {
         check_load_on_plate(self.hole_radius, &nut)?;
         self.outer_radius.check(nut.outer())?;
         let (head, own) = (self.load.total_force(), nut.total_force());
-        if !((own - head).abs() <= NUT_FORCE_TOLERANCE * head.abs()) {
+        let balanced = (own - head).abs() <= NUT_FORCE_TOLERANCE * head.abs();
+        if !balanced {
             return Err(InputError::Parameter {
                 field: "nut load's total force",
                 value: own,
