@@ -231,6 +231,41 @@ impl Joint {
         Ok(self)
     }
 
+    /// [`Joint::with_nut_load`] with the nut's face A..`b2` (A the head load's inner radius)
+    /// under the head's profile (uniform, or triangular with its peak at the same end) and the
+    /// head's total force, mean pressure F/(π(B₂² − A²)). `b2` equal to B gives the same joint.
+    /// A tabulated head load has no profile to carry over: [`Joint::with_nut_load`] then.
+    ///
+    /// ```
+    /// use boltzone::{Joint, Material};
+    /// let j = Joint::symmetric(0.1, 0.31, 0.1, Material::unit(0.3)?)?;
+    /// let k = j.clone().with_nut_outer_radius(0.4)?;
+    /// assert!((k.nut_load().total_force() - j.load().total_force()).abs() < 1e-15);
+    /// assert_eq!(j.clone().with_nut_outer_radius(0.31)?, j);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn with_nut_outer_radius(self, b2: f64) -> Result<Self, InputError> {
+        let head = &self.load;
+        if b2 == head.outer() {
+            return Ok(self);
+        }
+        let a = head.inner();
+        let mean = head.total_force() / (std::f64::consts::PI * (b2 * b2 - a * a));
+        let nut = match head.profile() {
+            crate::load::Profile::Uniform => FaceLoad::uniform(a, b2, mean)?,
+            crate::load::Profile::Triangular(peak) => FaceLoad::triangular(a, b2, mean, peak)?,
+            crate::load::Profile::Tabulated => {
+                return Err(InputError::Parameter {
+                    field: "nut bearing radius B2",
+                    value: b2,
+                    reason: "a tabulated head load has no profile to carry to the nut: give \
+                             the nut's own load (Joint::with_nut_load)",
+                })
+            }
+        };
+        self.with_nut_load(nut)
+    }
+
     /// Hole radius A.
     pub fn hole_radius(&self) -> f64 {
         self.hole_radius

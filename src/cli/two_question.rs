@@ -47,22 +47,10 @@ pub(super) fn joint(args: &Args) -> anyhow::Result<Joint> {
         Plate::new(args.d2.unwrap_or(args.geom.d), lower_mat)?,
         load,
     )?;
-    match args.b2 {
-        Some(b2) if b2 != b => {
-            let nut = nut_load(joint.load(), a, b2)?;
-            Ok(joint.with_nut_load(nut)?)
-        }
-        _ => Ok(joint),
-    }
-}
-
-/// The nut's face load on A..B₂: the head's profile carrying the head's total force (mean
-/// pressure F/(π(B₂² − A²))).
-pub(super) fn nut_load(head: &FaceLoad, a: f64, b2: f64) -> anyhow::Result<FaceLoad> {
-    let p2 = head.total_force() / (PI * (b2 * b2 - a * a));
-    Ok(match head.profile() {
-        boltzone::load::Profile::Triangular(peak) => FaceLoad::triangular(a, b2, p2, peak)?,
-        _ => FaceLoad::uniform(a, b2, p2)?,
+    // the nut's own face (the head's profile and force over A..B₂)
+    Ok(match args.b2 {
+        Some(b2) => joint.with_nut_outer_radius(b2)?,
+        None => joint,
     })
 }
 

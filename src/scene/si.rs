@@ -80,17 +80,9 @@ pub fn joint_si(scene: &Scene) -> Result<(Joint, Option<f64>), SceneError> {
         load,
     )?;
     // the nut's own face: the head's profile and force over A..B₂
-    let joint = match scene.load.nut_outer_radius.map(|b2| b2 * l) {
-        Some(b2) if b2 != b => {
-            let p2 = joint.load().total_force() / (PI * (b2 * b2 - a * a));
-            let nut = match scene.load.profile {
-                ProfileKind::Uniform => FaceLoad::uniform(a, b2, p2)?,
-                ProfileKind::PeakA => FaceLoad::triangular(a, b2, p2, Peak::AtA)?,
-                ProfileKind::PeakB => FaceLoad::triangular(a, b2, p2, Peak::AtB)?,
-            };
-            joint.with_nut_load(nut)?
-        }
-        _ => joint,
+    let joint = match scene.load.nut_outer_radius {
+        Some(b2) => joint.with_nut_outer_radius(b2 * l)?,
+        None => joint,
     };
     Ok((joint, scene.load.nut_displacement.map(|d| d * l)))
 }

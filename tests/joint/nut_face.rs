@@ -5,8 +5,10 @@
 //! its own face, at rate one; the routes that press both faces alike refuse by key; the
 //! front ends (`two --b2`, `load.nut_outer_radius`) agree bit for bit.
 
+// k_P's study at a tolerance (up to 12 levels), asserted converged
+use super::compliance::two_plate as stiffness;
 use crate::common::{boltzone, json_of};
-use boltzone::contact::compliance::{member_compliance, ComplianceParams, Head, MemberCompliance};
+use boltzone::contact::compliance::{member_compliance, ComplianceParams, Head};
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
 use boltzone::joint::Asymmetry;
 use boltzone::numerics::convergence::order_between;
@@ -30,23 +32,11 @@ fn nut_joint(a: f64, b1: f64, b2: f64, d: f64, c: Option<f64>) -> Joint {
         Some(c) => j.with_outer_radius(OuterRadius::Finite(c)).unwrap(),
         None => j,
     };
-    let f = j.load().total_force();
-    let nut = FaceLoad::uniform(a, b2, f / (PI * (b2 * b2 - a * a))).unwrap();
-    j.with_nut_load(nut).unwrap()
-}
-
-fn stiffness(j: &Joint, head: Head, tol: f64) -> MemberCompliance {
-    let p = ComplianceParams {
-        head,
-        tolerance: tol,
-        contact: TwoPlateParams {
-            max_levels: 12,
-            ..Default::default()
-        },
-    };
-    let m = member_compliance(j, &p).unwrap();
-    assert!(m.converged(), "{head:?} {:?} {:?}", m.compliance, m.levels);
-    m
+    let nut = FaceLoad::uniform(a, b2, j.load().total_force() / (PI * (b2 * b2 - a * a)));
+    let own = j.clone().with_nut_load(nut.unwrap()).unwrap();
+    // (the library's shorthand builds the same joint)
+    assert_eq!(j.with_nut_outer_radius(b2).unwrap(), own);
+    own
 }
 
 #[test]
