@@ -38,6 +38,23 @@ pub const HOUR: f64 = 3600.0;
 /// Kelvin per degree Fahrenheit of temperature difference (exact).
 pub const FAHRENHEIT_DEGREE: f64 = 5.0 / 9.0;
 
+/// `x` rounded to 12 significant digits: an input derived by one division or unit conversion
+/// (B/A = 0.31/0.1, 0.1 in in mm) as its user typed it, without the last bits of the
+/// rounding (3.1, not 3.1000000000000005). For printing inputs only; computed results are
+/// printed in full (shortest round-trip form).
+///
+/// ```
+/// assert_eq!(boltzone::units::as_entered(0.31 / 0.1), 3.1);
+/// assert_eq!(boltzone::units::as_entered(f64::INFINITY), f64::INFINITY);
+/// ```
+pub fn as_entered(x: f64) -> f64 {
+    if x.is_finite() {
+        format!("{x:.11e}").parse().unwrap_or(x)
+    } else {
+        x
+    }
+}
+
 /// A consistent system of length, stress and force units.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 pub enum UnitSystem {

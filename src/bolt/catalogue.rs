@@ -29,35 +29,13 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::thread::{cell, rows};
+pub use super::table::NotInCatalogue;
+use super::table::{cell, rows};
 
 const CLEARANCE: &str = include_str!("../../reference/bolts/iso273_clearance.csv");
 const BEARING: &str = include_str!("../../reference/bolts/bearing_diameters.csv");
 const WASHERS: &str = include_str!("../../reference/bolts/washers.csv");
 const LIMITING: &str = include_str!("../../reference/bolts/vdi2230_limiting_pressure.csv");
-
-/// A name the catalogue does not list, with the names it does.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("\"{name}\" is not a catalogue {what} (known: {known})")]
-pub struct NotInCatalogue {
-    /// What was looked up ("thread", "ISO 273 clearance hole", …).
-    pub what: String,
-    /// The name given.
-    pub name: String,
-    /// The names known (or why the row was refused).
-    pub known: String,
-}
-
-impl NotInCatalogue {
-    /// The error for `name` looked up as `what`, `known` listing the names known.
-    pub fn new(what: &str, name: &str, known: &str) -> Self {
-        Self {
-            what: what.into(),
-            name: name.into(),
-            known: known.into(),
-        }
-    }
-}
 
 /// ISO 273's clearance-hole series.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]

@@ -22,4 +22,5 @@
 pub mod catalogue;
 pub mod compliance;
 pub mod preload;
+mod table;
 pub mod thread;

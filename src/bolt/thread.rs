@@ -26,6 +26,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use super::table::{cell, rows, NotInCatalogue};
 use crate::error::InputError;
 
 /// The coarse-pitch table of ISO 262 (size, d, P).
@@ -57,20 +58,6 @@ pub struct Thread {
     pub pitch: f64,
     /// The form (metric unless made by [`Thread::unified`] or looked up as an inch size).
     pub form: Form,
-}
-
-/// The data rows of a catalogue table (the header and `#` comments skipped), split at commas.
-pub(crate) fn rows(table: &str) -> impl Iterator<Item = Vec<&str>> {
-    table
-        .lines()
-        .skip(1)
-        .filter(|l| !l.starts_with("# ") && !l.trim().is_empty())
-        .map(|l| l.split(',').map(str::trim).collect())
-}
-
-/// A number of a catalogue table (NaN where a cell does not parse: the constructors refuse it).
-pub(crate) fn cell(s: &str) -> f64 {
-    s.parse::<f64>().unwrap_or(f64::NAN)
 }
 
 /// The sizes a table lists, for messages.
@@ -120,26 +107,24 @@ impl Thread {
     /// assert!((unc.d - 12.7).abs() < 1e-12);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn lookup(size: &str) -> Result<Self, super::catalogue::NotInCatalogue> {
+    pub fn lookup(size: &str) -> Result<Self, NotInCatalogue> {
         let key = size.trim().replace('×', "x");
-        let bad =
-            |e: InputError| super::catalogue::NotInCatalogue::new("thread", size, &e.to_string());
+        let bad = |e: InputError| NotInCatalogue::new("thread", size, &e.to_string());
         if key.contains('x') || key.contains('X') {
             for f in rows(FINE) {
                 if f[0].eq_ignore_ascii_case(&key) {
                     return Self::new(cell(f[1]), cell(f[2])).map_err(bad);
                 }
             }
-            return Err(super::catalogue::NotInCatalogue::new(
+            return Err(NotInCatalogue::new(
                 "ISO 262 fine thread",
                 size,
                 &names(FINE),
             ));
         }
         if key.starts_with(['M', 'm']) {
-            return Self::metric_coarse(&key).map_err(|_| {
-                super::catalogue::NotInCatalogue::new("ISO 262 coarse thread", size, &names(COARSE))
-            });
+            return Self::metric_coarse(&key)
+                .map_err(|_| NotInCatalogue::new("ISO 262 coarse thread", size, &names(COARSE)));
         }
         let (name, series) = match key.split_once(' ') {
             Some((n, s)) => (n.trim(), Some(s.trim())),
@@ -151,7 +136,7 @@ impl Thread {
                     .map_err(bad);
             }
         }
-        Err(super::catalogue::NotInCatalogue::new(
+        Err(NotInCatalogue::new(
             "thread (ISO 262 coarse or fine, ASME B1.1 UNC/UNF)",
             size,
             &format!("M3 … M36, {}; {}", names(FINE), names(UNIFIED)),

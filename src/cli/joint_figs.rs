@@ -199,3 +199,64 @@ impl JointFigure {
         })
     }
 }
+
+/// The interface of a two-plate answer, to draw against r ([`interface_figures`]): in the
+/// answer's units.
+pub struct Interface<'a> {
+    /// Radii of the curve (increasing).
+    pub r: &'a [f64],
+    /// Interface pressure at the radii.
+    pub p: &'a [f64],
+    /// The gap at the radii, where the route gives it beyond R_o (None: the semi-analytic
+    /// route, whose curve ends at R_o).
+    pub gap: Option<&'a [f64]>,
+    /// R_o and its error estimate.
+    pub r_o: (f64, f64),
+    /// The captions' tail (`model: frictionless`, with the method for a scene).
+    pub model: String,
+    /// What the curves are, after their legend's `p(r)` (`finest mesh`; empty: nothing).
+    pub source: &'static str,
+    /// The unit system of every number.
+    pub units: boltzone::scene::UnitSystem,
+}
+
+/// The interface figures of `c` on the joint `geom` (B, D, D₂, C): p(r) (file suffix "") and,
+/// where the gap is given, g(r) (suffix "gap"), each with its caption; and the right end of
+/// their r axis. `two --plot`, its report and a scene's `[outputs] plot` and `report` draw
+/// these.
+pub fn interface_figures(
+    c: &Interface<'_>,
+    geom: (f64, f64, f64, Option<f64>),
+) -> (Vec<(&'static str, &'static str, JointFigure)>, f64) {
+    use super::figure::{radius_figure, RadiusCurve};
+    let (l, st, _) = c.units.symbols();
+    let label = |y: &str| match c.source {
+        "" => format!("{y}(r)"),
+        s => format!("{y}(r), {s}"),
+    };
+    let (p_label, g_label) = (format!("p [{st}]"), format!("g [{l}]"));
+    let (p_legend, g_legend) = (label("p"), label("g"));
+    let curve = |title: &str, y_label, label, y| RadiusCurve {
+        title: format!("{title}; {}", c.model),
+        y_label,
+        label,
+        r: c.r,
+        y,
+        r_o: c.r_o,
+        length: l,
+    };
+    let (p, x_end) = radius_figure(&curve("Interface pressure", &p_label, &p_legend, c.p), geom);
+    let mut figs = vec![("", "interface pressure against r", JointFigure::Curve(p))];
+    if let Some(gap) = c.gap {
+        let (g, _) = radius_figure(
+            &curve("Gap between the plates", &g_label, &g_legend, gap),
+            geom,
+        );
+        figs.push((
+            "gap",
+            "gap between the plates against r",
+            JointFigure::Curve(g),
+        ));
+    }
+    (figs, x_end)
+}

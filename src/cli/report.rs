@@ -18,11 +18,13 @@
 //! Milliseconds, after the solve.
 
 use super::figure::rule_radii;
+use super::joint_figs::JointFigure;
 use boltzone::contact::two_plate::TwoPlateSolution;
 use std::fmt::Write;
+use std::path::Path;
 
 /// What the report shows besides the solution: the parsed arguments, the joint's A, B, D, D₂,
-/// C (None: infinite), the bearing pressure P, the tolerance and the unit system of them all.
+/// C (None: infinite), the bearing pressure P and the unit system of them all.
 pub struct ReportInputs {
     /// The arguments as understood (serialized).
     pub inputs: serde_json::Value,
@@ -30,10 +32,50 @@ pub struct ReportInputs {
     pub geometry: (f64, f64, f64, f64, Option<f64>),
     /// Mean bearing pressure P.
     pub pressure: f64,
-    /// Wanted relative error of R_o.
-    pub tolerance: f64,
     /// Unit system of every input and result (`--units`).
     pub units: super::args::Units,
+}
+
+/// What the report says of the answer: R_o with its error bar, the flags, the deflection
+/// under the nut and the method paragraph.
+pub struct Answer {
+    /// R_o, its error estimate and whether it met the tolerance.
+    pub r_o: boltzone::Value,
+    /// The plates touch out to the rim.
+    pub full_contact: bool,
+    /// Mean axial displacement under the nut (None: not computed by the route).
+    pub nut_deflection: Option<f64>,
+    /// How R_o was computed (a paragraph).
+    pub method: String,
+}
+
+impl Answer {
+    /// The finite elements' answer `s` at `tolerance` (`two`; a scene's FE route).
+    pub fn fem(s: &TwoPlateSolution, tolerance: f64) -> Self {
+        let last = s.info.levels.last();
+        Self {
+            r_o: boltzone::Value {
+                value: s.r_o,
+                error: s.r_o_error,
+                converged: s.converged,
+            },
+            full_contact: s.full_contact,
+            nut_deflection: Some(s.nut_deflection),
+            method: format!(
+                "The two-plate model of Gould & Mikic (1970), Chapter II.B: axisymmetric finite \
+                 elements, unilateral contact at the interface ({} model). The mesh is refined at \
+                 A, B and Rₒ level by level until the error estimate of Rₒ (max(|d₃|, |d₂|/4, \
+                 |d₁|/16) of the last level changes, plus the error of cutting a wide plate) \
+                 meets the relative tolerance {tolerance}: {} levels, finest mesh {} nodes / {} \
+                 unknowns, {:.2} s.",
+                s.info.model,
+                s.info.levels.len(),
+                last.map_or(0, |l| l.nodes),
+                last.map_or(0, |l| l.dofs),
+                s.info.seconds
+            ),
+        }
+    }
 }
 
 /// A piece of a report.
@@ -50,7 +92,7 @@ pub enum Block {
 
 /// The report as [`Block`]s; `figures` are (caption, file, SVG text).
 pub fn two_report(
-    s: &TwoPlateSolution,
+    s: &Answer,
     r: &ReportInputs,
     figures: Vec<(String, Option<String>, String)>,
 ) -> Vec<Block> {
@@ -87,42 +129,29 @@ pub fn two_report(
         }
     }
     v.push(Block::Table(head(&["input", "value", "unit"]), inputs));
-    let last = s.info.levels.last();
     v.push(Block::Heading(2, "Method".into()));
-    v.push(Block::Para(format!(
-        "The two-plate model of Gould & Mikic (1970), Chapter II.B: axisymmetric finite \
-         elements, unilateral contact at the interface ({} model). The mesh is refined at A, B \
-         and Rₒ level by level until the error estimate of Rₒ (max(|d₃|, |d₂|/4, |d₁|/16) of \
-         the last level changes, plus the error of cutting a wide plate) meets the relative \
-         tolerance {}: {} levels, finest mesh {} nodes / {} unknowns, {:.2} s.",
-        s.info.model,
-        r.tolerance,
-        s.info.levels.len(),
-        last.map_or(0, |l| l.nodes),
-        last.map_or(0, |l| l.dofs),
-        s.info.seconds
-    )));
+    v.push(Block::Para(s.method.clone()));
     let yes = |x: bool| if x { "yes" } else { "no" };
+    let r_o = s.r_o.value;
     let mut results = vec![row(&[
         "separation radius Rₒ",
-        &format!("{:.6} ± {:.1e} {l}", s.r_o, s.r_o_error),
+        &format!("{r_o:.6} ± {:.1e} {l}", s.r_o.error),
     ])];
     if a > 0.0 {
-        results.push(row(&["Rₒ / A", &format!("{:.5}", s.r_o / a)]));
+        results.push(row(&["Rₒ / A", &format!("{:.5}", r_o / a)]));
     }
     results.extend([
-        row(&["contact diameter 2Rₒ", &format!("{:.6} {l}", 2.0 * s.r_o)]),
-        row(&["converged to the tolerance", yes(s.converged)]),
+        row(&["contact diameter 2Rₒ", &format!("{:.6} {l}", 2.0 * r_o)]),
+        row(&["converged to the tolerance", yes(s.r_o.converged)]),
         row(&["full contact (Rₒ = C)", yes(s.full_contact)]),
         row(&[
             "mean bearing pressure P",
             &format!("{:.6e} {st}", r.pressure),
         ]),
-        row(&[
-            "deflection under the nut",
-            &format!("{:.4e} {l}", s.nut_deflection),
-        ]),
     ]);
+    if let Some(w) = s.nut_deflection {
+        results.push(row(&["deflection under the nut", &format!("{w:.4e} {l}")]));
+    }
     v.push(Block::Heading(2, "Results".into()));
     v.push(Block::Table(head(&["quantity", "value"]), results));
     v.push(Block::Heading(2, "Rules of thumb".into()));
@@ -135,7 +164,7 @@ pub fn two_report(
             row(&[
                 name,
                 &format!("{radius:.4}"),
-                &format!("{:+.1} %", 100.0 * (radius - s.r_o) / s.r_o),
+                &format!("{:+.1} %", 100.0 * (radius - r_o) / r_o),
             ])
         })
         .collect();
@@ -152,6 +181,40 @@ pub fn two_report(
             .map(|(t, f, svg)| Block::Figure(t, f, svg)),
     );
     v
+}
+
+/// Whether the report at `path` is HTML (extension .html or .htm, any case), else Markdown.
+pub fn is_html(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("html") || e.eq_ignore_ascii_case("htm"))
+}
+
+/// The report's figures of `figs` (file suffix, caption, figure): (caption, the file `--plot`
+/// or `outputs.plot` wrote it to, its SVG text when the report is `html`).
+pub fn shown(
+    figs: &[(&str, &str, JointFigure)],
+    plot: Option<&Path>,
+    html: bool,
+) -> anyhow::Result<Vec<(String, Option<String>, String)>> {
+    figs.iter()
+        .map(|(suffix, caption, fig)| {
+            let file = plot.map(|p| match *suffix {
+                "" => p.display().to_string(),
+                _ => super::joint_figs::sibling(p, suffix).display().to_string(),
+            });
+            let svg = if html { fig.svg()? } else { String::new() };
+            Ok((caption.to_string(), file, svg))
+        })
+        .collect()
+}
+
+/// Renders `blocks` as HTML when `path` [`is_html`], else as Markdown.
+pub fn render(path: &Path, blocks: &[Block]) -> String {
+    match is_html(path) {
+        true => html(blocks),
+        false => markdown(blocks),
+    }
 }
 
 /// The blocks as Markdown (figures linked to their files; figures without a file left out).
@@ -249,9 +312,11 @@ pub fn html(blocks: &[Block]) -> String {
 /// The unit of a `two` flag's value in `units` ("" for counts, names, switches and ratios).
 fn unit_of(flag: &str, units: super::args::Units) -> &'static str {
     let (l, st, f) = units.units.symbols();
-    match flag {
-        "a" | "b" | "c" | "d" | "d2" | "nut_displacement" => l,
-        "e" | "e2" | "p" => st,
+    // a flag of `two`, or the last part of a scene's dotted key
+    match flag.rsplit('.').next().unwrap_or(flag) {
+        "a" | "b" | "c" | "d" | "d2" | "nut_displacement" | "radius" | "outer_radius"
+        | "inner_radius" | "thickness" | "roughness" => l,
+        "e" | "e2" | "p" | "pressure" | "E" | "hardness" => st,
         "force" => f,
         _ => "",
     }

@@ -190,10 +190,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         solve(&plate, &params)?
     };
     let info = &s.info;
-    let r_o_over_a = (args.geom.a > 0.0).then(|| s.r_o / args.geom.a);
     let l = args.units.length();
     if args.json {
-        let mut v = serde_json::json!({
+        let v = serde_json::json!({
             "method": "fem",
             "element": format!("{kind:?}"),
             "loading": format!("{loading:?}"),
@@ -202,37 +201,18 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             "converged": s.converged,
             "full_contact": s.full_contact,
             "tolerance": tolerance(&args),
-            "levels": info.levels,
+            // one object per level, coarse to fine, keyed as two's level records
+            "levels": info.levels.iter().map(|r_o| serde_json::json!({ "r_o": r_o })).collect::<Vec<_>>(),
             "observed_order": info.observed_order,
             "nodes": info.nodes,
             "dofs": info.dofs,
             "seconds": info.seconds,
             "units": args.units.units.name(),
         });
-        if let Some(q) = r_o_over_a {
-            v["r_o_over_a"] = q.into();
-        }
-        super::output::stamp(&mut v, &args, start)?;
-        v["inputs"]["tol"] = tolerance(&args).into(); // the method's default filled in
-        super::print_json(&v)?;
+        finish_json(v, &args, s.r_o, start)?;
     } else {
-        println!(
-            "single plate 2D thick, FE ({kind:?}), A = {} {l}, B = {} {l}, D = {} {l}, C = {}, nu = {}",
-            num(args.geom.a),
-            num(args.geom.b),
-            num(args.geom.d),
-            args.c.map_or("infinite".into(), |c| format!("{} {l}", num(c))),
-            args.geom.nu
-        );
-        println!(
-            "R_o      = {} ± {:.2e} {l}{}",
-            sig(s.r_o, 7),
-            s.r_o_error,
-            not_converged(s.converged)
-        );
-        if let Some(q) = r_o_over_a {
-            println!("R_o / A  = {q:.5}");
-        }
+        let r_o = (s.r_o, s.r_o_error, s.converged);
+        print_head(&args, &format!("FE ({kind:?})"), r_o, (7, 5));
         println!(
             "levels   = {:?} {l}\norder    = {}\nmesh     = {} nodes, {} dofs (finest), {:.2} s",
             info.levels,
@@ -250,6 +230,46 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
 }
 
 /// The text flag of a result that missed --tol.
+/// Adds R_o/A (with a hole), the run's stamp and the tolerance used to the JSON answer `v` of
+/// R_o = `r_o`, and prints it.
+fn finish_json(
+    mut v: serde_json::Value,
+    args: &Args,
+    r_o: f64,
+    start: std::time::Instant,
+) -> anyhow::Result<()> {
+    if args.geom.a > 0.0 {
+        v["r_o_over_a"] = (r_o / args.geom.a).into();
+    }
+    super::output::stamp(&mut v, args, start)?;
+    v["inputs"]["tol"] = tolerance(args).into(); // the method's default filled in
+    super::print_json(&v)
+}
+
+/// Prints the text answer's first lines: the plate and the `route`, R_o ± error (R_o, error,
+/// converged) to `digits.0` significant digits and R_o/A (with a hole) to `digits.1` decimals.
+fn print_head(args: &Args, route: &str, r_o: (f64, f64, bool), digits: (usize, usize)) {
+    let l = args.units.length();
+    println!(
+        "single plate 2D thick, {route}, A = {} {l}, B = {} {l}, D = {} {l}, C = {}, nu = {}",
+        num(args.geom.a),
+        num(args.geom.b),
+        num(args.geom.d),
+        args.c
+            .map_or("infinite".into(), |c| format!("{} {l}", num(c))),
+        args.geom.nu
+    );
+    println!(
+        "R_o      = {} ± {:.2e} {l}{}",
+        sig(r_o.0, digits.0),
+        r_o.1,
+        not_converged(r_o.2)
+    );
+    if args.geom.a > 0.0 {
+        println!("R_o / A  = {:.*}", digits.1, r_o.0 / args.geom.a);
+    }
+}
+
 fn not_converged(converged: bool) -> &'static str {
     if converged {
         ""
@@ -304,10 +324,9 @@ fn run_hankel(
         let rows: Vec<Vec<f64>> = r.iter().zip(&values).map(|(r, v)| vec![*r, v[0]]).collect();
         super::write_output(path, &sigma_curve(args.units, &notes, &rows))?;
     }
-    let r_o_over_a = (args.geom.a > 0.0).then(|| sep.r_o / args.geom.a);
     let l = args.units.length();
     if args.json {
-        let mut v = serde_json::json!({
+        let v = serde_json::json!({
             "method": "hankel",
             "r_o": sep.r_o,
             "r_o_error": sep.r_o_error,
@@ -326,30 +345,10 @@ fn run_hankel(
             "seconds": sep.seconds,
             "units": args.units.units.name(),
         });
-        if let Some(q) = r_o_over_a {
-            v["r_o_over_a"] = q.into();
-        }
-        super::output::stamp(&mut v, args, start)?;
-        v["inputs"]["tol"] = tolerance(args).into(); // the method's default filled in
-        super::print_json(&v)?;
+        finish_json(v, args, sep.r_o, start)?;
     } else {
-        println!(
-            "single plate 2D thick with a hole, Hankel route, A = {} {l}, B = {} {l}, D = {} {l}, C = {}, nu = {}",
-            num(args.geom.a),
-            num(args.geom.b),
-            num(args.geom.d),
-            args.c.map_or("infinite".into(), |c| format!("{} {l}", num(c))),
-            args.geom.nu
-        );
-        println!(
-            "R_o      = {} ± {:.2e} {l}{}",
-            sig(sep.r_o, 9),
-            sep.r_o_error,
-            not_converged(sep.converged)
-        );
-        if let Some(q) = r_o_over_a {
-            println!("R_o / A  = {q:.7}");
-        }
+        let r_o = (sep.r_o, sep.r_o_error, sep.converged);
+        print_head(args, "with a hole, Hankel route", r_o, (9, 7));
         println!(
             "hole     = {} modes + {} corner exponents, residual traction max {:.2e} P, rms {:.2e} P, condition {:.1e}",
             hole.terms, hole.corner_terms, hole.residual_max, hole.residual_rms, hole.condition

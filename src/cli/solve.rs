@@ -121,6 +121,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         if let Some(path) = &o.plot {
             super::solve_plot::write(path, base, &s)?;
         }
+        if let Some(path) = &o.report {
+            super::solve_report::write(path, base, &s)?;
+        }
         if args.json {
             let mut v = serde_json::to_value(&s)?;
             super::output::stamp_run(&mut v, start)?;
@@ -133,13 +136,18 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         }
         return Ok(Status::from_converged(s.converged));
     }
-    if let Some(p) = &base.outputs.plot {
-        return Err(UsageError(format!(
-            "scene key `outputs.plot` = {}: one joint per figure; a [sweep] or --geometries run \
-             writes outputs.results and outputs.interface_pressure instead",
-            p.display()
-        ))
-        .into());
+    for (key, p) in [
+        ("plot", &base.outputs.plot),
+        ("report", &base.outputs.report),
+    ] {
+        if let Some(p) = p {
+            return Err(UsageError(format!(
+                "scene key `outputs.{key}` = {}: one joint per {key}; a [sweep] or --geometries \
+                 run writes outputs.results and outputs.interface_pressure instead",
+                p.display()
+            ))
+            .into());
+        }
     }
     let bar = super::progress(pts.len() as u64, "sweep");
     let results = solve_all(&pts, &|| bar.inc(1));

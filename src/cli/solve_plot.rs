@@ -12,59 +12,66 @@
 //!
 //! Milliseconds per figure, after the solve.
 
-use super::figure::{radius_plot, sibling, RadiusCurve};
+use super::joint_figs::{interface_figures, sibling, Interface, JointFigure};
 use boltzone::scene::{Method, Scene, Solution};
 use std::path::Path;
 
-/// Writes the pressure and the gap figure of `s` (the answer to `scene`) to `path` and its
-/// `-gap` sibling.
-pub fn write(path: &Path, scene: &Scene, s: &Solution) -> anyhow::Result<()> {
+/// The figures of `s` (the answer to `scene`): p(r) (file suffix "") and, from the finite
+/// elements, g(r) ("gap"), each with its caption. The semi-analytic curve ends at R_o, where p
+/// vanishes: it is drawn on to 1.6 × the largest marked radius at p = 0 (exact there), and the
+/// route gives no gap beyond R_o.
+pub fn figures(
+    scene: &Scene,
+    s: &Solution,
+) -> anyhow::Result<Vec<(&'static str, &'static str, JointFigure)>> {
     let Some(c) = &s.interface else {
         anyhow::bail!("the scene's answer has no interface curve to plot");
     };
-    let (l, st, _) = scene.units.symbols();
     let d = scene.plates[0].thickness;
     let d2 = scene.plates.last().map_or(d, |p| p.thickness);
     let geom = (scene.load.outer_radius, d, d2, scene.joint.outer_radius);
-    let model = format!(
-        "model: {}, method: {}",
-        scene_model(scene),
-        s.method.as_str()
-    );
-    let (p_label, g_label) = (format!("p [{st}]"), format!("g [{l}]"));
-    let curve = |title: &str, y_label, label, y| RadiusCurve {
-        title: format!("{title}; {model}"),
-        y_label,
-        label,
-        r: &c.radius,
-        y,
-        r_o: (s.r_o, s.r_o_error),
-        length: l,
-    };
-    if s.method == Method::Hankel {
-        // the semi-analytic curve ends at R_o, where p vanishes; beyond it p = 0 exactly, and
-        // the route gives no gap there
+    let (mut r, mut p) = (c.radius.clone(), c.pressure.clone());
+    let hankel = s.method == Method::Hankel;
+    if hankel {
         let end = super::figure::rule_radii(geom)
             .iter()
             .map(|r| r.1)
             .fold(s.r_o, f64::max)
             * 1.6;
-        let (mut r, mut p) = (c.radius.clone(), c.pressure.clone());
         r.extend([s.r_o, end]);
         p.extend([0.0, 0.0]);
-        let mut fig = curve("Interface pressure", &p_label, "p(r)", &p);
-        fig.r = &r;
-        radius_plot(path, &fig, geom)?;
+    }
+    let iface = Interface {
+        r: &r,
+        p: &p,
+        gap: (!hankel).then_some(&c.gap[..]),
+        r_o: (s.r_o, s.r_o_error),
+        model: format!(
+            "model: {}, method: {}",
+            scene_model(scene),
+            s.method.as_str()
+        ),
+        source: "",
+        units: scene.units,
+    };
+    Ok(interface_figures(&iface, geom).0)
+}
+
+/// Writes the figures of `s` (the answer to `scene`, [`figures`]) to `path` and its `-gap`
+/// sibling; notes on stderr when the route gives no gap figure.
+pub fn write(path: &Path, scene: &Scene, s: &Solution) -> anyhow::Result<()> {
+    for (suffix, _, fig) in figures(scene, s)? {
+        match suffix {
+            "" => fig.write(path)?,
+            _ => fig.write(&sibling(path, suffix))?,
+        }
+    }
+    if s.method == Method::Hankel {
         eprintln!(
             "note: outputs.plot: no gap figure, the semi-analytic route gives the gap only where \
              the plates touch (method = \"fem\" draws it)"
         );
-        return Ok(());
     }
-    let p = curve("Interface pressure", &p_label, "p(r)", &c.pressure);
-    radius_plot(path, &p, geom)?;
-    let g = curve("Gap between the plates", &g_label, "g(r)", &c.gap);
-    radius_plot(&sibling(path, "gap"), &g, geom)?;
     Ok(())
 }
 

@@ -48,11 +48,6 @@ impl Args {
 }
 
 /// Whether a report file is HTML (by its extension, .html or .htm).
-fn is_html(path: &std::path::Path) -> bool {
-    path.extension()
-        .and_then(|e| e.to_str())
-        .is_some_and(|e| e.eq_ignore_ascii_case("html") || e.eq_ignore_ascii_case("htm"))
-}
 
 /// Fills --e, --nu (and --e2, --nu2) from --material (--material2): the library's SI values in
 /// the --units stress; an unknown name is bad input naming the flag.
@@ -210,6 +205,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let e = [args.e(), args.e2.unwrap_or(args.e())];
     warn(&args, &sanity::inputs(args.units.units, e, p_given))?;
     let joint = joint(&args)?;
+    args.heat.check(args.units.units, &joint)?;
     let q = question(&args, &joint);
     let p = pressure(&args);
     let load = joint.load().clone();
@@ -240,7 +236,10 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         element: ElementKind::from(args.element),
         ..q.fem_params()
     };
-    let html = args.report.as_ref().is_some_and(|p| is_html(p));
+    let html = args
+        .report
+        .as_ref()
+        .is_some_and(|p| super::report::is_html(p));
     // welded dissimilar plates: the contact problem can be defective (an oscillatory edge
     // singularity); the message says what to use instead
     let welded_dissimilar = matches!(args.interface, Interface::Welded) && !q.equal_plates();
@@ -290,7 +289,10 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     if let Some(path) = &args.out.curve {
         super::write_output(path, &super::two_files::curve_csv(&s, p, args.units))?;
     }
-    let html = args.report.as_ref().is_some_and(|p| is_html(p));
+    let html = args
+        .report
+        .as_ref()
+        .is_some_and(|p| super::report::is_html(p));
     let figs = match &field {
         Some(field) if args.out.plot.is_some() || html => {
             let g = &args.geom;
@@ -320,22 +322,12 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             inputs: args.inputs()?,
             geometry: (g.a, g.b, g.d, args.d2.unwrap_or(g.d), args.c),
             pressure: p,
-            tolerance: args.tol,
             units: args.units,
         };
-        let mut shown = Vec::new();
-        for (suffix, caption, fig) in &figs {
-            let file = file_of(suffix).map(|f| f.display().to_string());
-            let svg = if html { fig.svg()? } else { String::new() };
-            shown.push((caption.to_string(), file, svg));
-        }
-        let blocks = super::report::two_report(&s, &inputs, shown);
-        let text = if html {
-            super::report::html(&blocks)
-        } else {
-            super::report::markdown(&blocks)
-        };
-        super::write_output(path, &text)?;
+        let shown = super::report::shown(&figs, args.out.plot.as_deref(), html)?;
+        let answer = super::report::Answer::fem(&s, args.tol);
+        let blocks = super::report::two_report(&answer, &inputs, shown);
+        super::write_output(path, &super::report::render(path, &blocks))?;
     }
     let thinner = args.d2.map_or(args.geom.d, |d2| d2.min(args.geom.d));
     warn(
@@ -347,6 +339,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let Some(last) = s.info.levels.last() else {
         anyhow::bail!("the two-plate solver returned no mesh level");
     };
+    let conductance = args.heat.conductance(args.units.units, &joint, &s)?;
     let r_o_over_a = (args.geom.a > 0.0).then(|| s.r_o / args.geom.a);
     if args.json {
         let mut out = serde_json::json!({
@@ -378,6 +371,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             super::friction_out::json(&mut out, &s, f)?;
         }
         out["bearing_pressure"] = p.into();
+        super::two_heat::add_json(&mut out, conductance, args.units.units);
         add_rules(&mut out, &args)?;
         if let Some(a) = &joint_answer {
             super::two_bolt::add_json(&mut out, a)?;
@@ -423,6 +417,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             println!("{}", super::friction_out::summary(&s, f, l));
         }
         println!("deflection under the nut: {:.4e} {l}", s.nut_deflection);
+        if let Some(g) = conductance {
+            println!("{}", super::two_heat::line(g, args.units.units));
+        }
         print_rules(&args, r_o);
         for line in joint_answer
             .iter()
@@ -446,33 +443,17 @@ fn figures(
     geom: (f64, f64, f64, Option<f64>),
     units: Units,
 ) -> Vec<(&'static str, &'static str, JointFigure)> {
-    use super::figure::{radius_figure, RadiusCurve};
-    let (l, st) = (units.length(), units.stress());
-    let (p_label, g_label) = (format!("p [{st}]"), format!("g [{l}]"));
-    let model = format!("model: {}", s.info.model);
-    let curve = |title: &str, y_label, label, y| RadiusCurve {
-        title: format!("{title}; {model}"),
-        y_label,
-        label,
+    let iface = super::joint_figs::Interface {
         r: &s.radius,
-        y,
+        p: &s.pressure,
+        gap: Some(&s.gap),
         r_o: (s.r_o, s.r_o_error),
-        length: l,
+        model: format!("model: {}", s.info.model),
+        source: "finest mesh",
+        units: units.units,
     };
-    let p = curve(
-        "Interface pressure",
-        &p_label,
-        "p(r), finest mesh",
-        &s.pressure,
-    );
-    let (p, x_end) = radius_figure(&p, geom);
-    let g = curve(
-        "Gap between the plates",
-        &g_label,
-        "g(r), finest mesh",
-        &s.gap,
-    );
-    let (g, _) = radius_figure(&g, geom);
+    let (mut figs, x_end) = super::joint_figs::interface_figures(&iface, geom);
+    let l = units.length();
     let mirror = field.model.lower.is_none();
     let names = if mirror {
         vec!["upper plate".into(), "lower plate (mirror image)".into()]
@@ -490,17 +471,10 @@ fn figures(
         x_end,
         length: l,
     };
-    vec![
-        ("", "interface pressure against r", JointFigure::Curve(p)),
-        (
-            "gap",
-            "gap between the plates against r",
-            JointFigure::Curve(g),
-        ),
-        (
-            "deformed",
-            "the deformed joint (displacements exaggerated)",
-            JointFigure::Section(super::joint_figs::deformed_figure(&d)),
-        ),
-    ]
+    figs.push((
+        "deformed",
+        "the deformed joint (displacements exaggerated)",
+        JointFigure::Section(super::joint_figs::deformed_figure(&d)),
+    ));
+    figs
 }

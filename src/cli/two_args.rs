@@ -133,6 +133,10 @@ pub struct Args {
     #[command(flatten)]
     #[serde(flatten)]
     pub(super) out: OutputFiles,
+    /// The joint's interface conductance and its heat flags.
+    #[command(flatten)]
+    #[serde(flatten)]
+    pub(super) heat: super::two_heat::HeatArgs,
     /// Write a calculation report (inputs, units, version, method, results, rules of thumb,
     /// figures) to this file: Markdown linking the --plot files, or with the extension .html a
     /// self-contained page with the figures inlined as SVG.

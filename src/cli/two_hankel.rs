@@ -73,7 +73,8 @@ fn named(args: &Args, b: two_plate::Blocker) -> (&'static str, String, String) {
         ),
         Key::OuterEdge => ("--fixed-edge", given()),
         Key::Curve => ("--curve", given()),
-        Key::Field | Key::Temperature | Key::Conductance => ("--field/--plot/--report", given()),
+        Key::Field | Key::Temperature => ("--field/--plot/--report", given()),
+        Key::Conductance => ("--conductance", given()),
         Key::Stiffness => ("--stiffness", given()),
     };
     (flag, value, format!("{}; use --method fem", b.reason))
@@ -116,7 +117,7 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
         )?;
     }
     if args.json {
-        let mut v = serde_json::json!({
+        let v = serde_json::json!({
             "method": "hankel",
             "r_o": out.r_o,
             "r_o_over_a": out.r_o / g.a,
@@ -128,9 +129,7 @@ pub fn run(args: &Args, load: FaceLoad, start: std::time::Instant) -> anyhow::Re
             "seconds": out.info.seconds,
             "units": args.units.units.name(),
         });
-        super::two_question::add_rules(&mut v, args)?;
-        super::output::stamp(&mut v, &args.inputs()?, start)?;
-        super::print_json(&v)?;
+        super::two_question::print_json(v, args, start)?;
     } else {
         let l = args.units.length();
         println!(

@@ -109,7 +109,7 @@ pub fn print_json(
     hankel: serde_json::Value,
 ) -> anyhow::Result<Status> {
     let (r_o, error, converged, seconds) = result;
-    let mut v = serde_json::json!({
+    let v = serde_json::json!({
         "method": "hankel",
         "r_o": r_o,
         "r_o_error": error,
@@ -120,8 +120,6 @@ pub fn print_json(
         "seconds": seconds,
         "units": args.units.units.name(),
     });
-    super::two_question::add_rules(&mut v, args)?;
-    super::output::stamp(&mut v, &args.inputs()?, start)?;
-    super::print_json(&v)?;
+    super::two_question::print_json(v, args, start)?;
     Ok(Status::from_converged(converged))
 }

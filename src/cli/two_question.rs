@@ -79,6 +79,18 @@ pub(super) fn add_rules(out: &mut serde_json::Value, args: &Args) -> anyhow::Res
     Ok(())
 }
 
+/// Prints the JSON answer `v` of a semi-analytic or table route with the rules of thumb beside
+/// its R_o ([`add_rules`]) and the run's stamp (version, command, inputs, seconds since `start`).
+pub(super) fn print_json(
+    mut v: serde_json::Value,
+    args: &Args,
+    start: std::time::Instant,
+) -> anyhow::Result<()> {
+    add_rules(&mut v, args)?;
+    super::output::stamp(&mut v, &args.inputs()?, start)?;
+    super::print_json(&v)
+}
+
 /// Prints the rules of thumb beside `r_o`, one line (text output).
 pub(super) fn print_rules(args: &Args, r_o: Value) {
     println!("{}", rules_line(&rules(args, r_o), args.units.length()));
@@ -123,7 +135,7 @@ pub(super) fn question<'a>(args: &Args, joint: &'a Joint) -> two_plate::Question
         fixed_edge: args.fixed_edge,
         thermal: false,
         field: args.out.field.is_some() || args.out.plot.is_some() || args.report.is_some(),
-        conductance: false,
+        conductance: args.heat.conductance,
         stiffness: args.bolt.stiffness || args.bolt.bolt.is_some(),
         curve: args.out.curve.is_some(),
         method: args.method,

@@ -56,9 +56,7 @@ pub fn run(
                 "within_bars": diff.abs() <= bars,
             });
         }
-        super::two_question::add_rules(&mut v, args)?;
-        super::output::stamp(&mut v, &args.inputs()?, start)?;
-        super::print_json(&v)?;
+        super::two_question::print_json(v, args, start)?;
     } else {
         let l = args.units.length();
         println!(

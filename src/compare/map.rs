@@ -130,15 +130,11 @@ impl DesignMap {
         })
     }
 
-    /// The map as CSV, one line per point: the columns of [`super::table1::CSV_HEADER`] without
-    /// the report's, then each model's method (`fem` or `hankel`) and whether its R_o met the
+    /// The map as CSV, one line per point: the columns of [`super::table1::COLUMNS`] (each
+    /// named with its unit, `a_over_d [1]`), then each model's method (`fem` or `hankel`) and whether its R_o met the
     /// tolerance (`single_method,single_converged,two_method,two_converged`).
     pub fn csv(&self) -> String {
-        let header = super::table1::CSV_HEADER
-            .split(',')
-            .take_while(|h| !h.starts_with("report"))
-            .collect::<Vec<_>>()
-            .join(",");
+        let header = super::table1::header(&super::table1::COLUMNS);
         let mut s = format!("{header},{METHOD_COLUMNS}\n");
         for p in &self.points {
             s += &format!(
@@ -154,8 +150,8 @@ impl DesignMap {
     }
 }
 
-/// The map CSV's last columns: which method produced each model's R_o, and whether it met
-/// the tolerance.
+/// The map CSV's last columns (text, no unit): which method produced each model's R_o, and
+/// whether it met the tolerance.
 pub const METHOD_COLUMNS: &str = "single_method,single_converged,two_method,two_converged";
 
 /// With [`Method::Hankel`], the first point of the map beyond the two-plate Hankel route's

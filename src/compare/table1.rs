@@ -23,7 +23,7 @@
 use super::{compare_all, show, CompareError, CompareParams, Comparison, Geometry};
 use crate::reference::{self, Table1Row};
 use crate::units::UnitSystem;
-use crate::units::INCH;
+use crate::units::{as_entered, INCH};
 use serde::Serialize;
 
 /// One row: ours and the report's.
@@ -50,22 +50,59 @@ pub fn compute(params: &CompareParams, tick: &(dyn Fn() + Sync)) -> Result<Vec<R
         .collect()
 }
 
-/// Column names of [`csv`], one line.
-pub const CSV_HEADER: &str = "a_over_d,b_over_a,single_r_o_over_a,single_error,\
-single_hankel_r_o_over_a,single_hankel_error,two_r_o_over_a,two_error,discrepancy_percent,\
-discrepancy_error,area_discrepancy_percent,area_discrepancy_error,roetscher_r_over_a,\
-roetscher_error_percent,vdi_r_over_a,vdi_half_angle_deg,vdi_error_percent,cone_r_over_a,\
-cone_half_angle_deg,cone_error_percent,report_single,report_two,report_discrepancy_percent";
+/// The columns [`csv`] shares with the design map ([`super::map::DesignMap::csv`]): name and
+/// unit (`1`: a ratio; the radii are R/A, the errors are R_o's error over A), each printed
+/// `name [unit]`.
+pub const COLUMNS: [(&str, &str); 20] = [
+    ("a_over_d", "1"),
+    ("b_over_a", "1"),
+    ("single_r_o_over_a", "1"),
+    ("single_error", "1"),
+    ("single_hankel_r_o_over_a", "1"),
+    ("single_hankel_error", "1"),
+    ("two_r_o_over_a", "1"),
+    ("two_error", "1"),
+    ("discrepancy_percent", "%"),
+    ("discrepancy_error", "%"),
+    ("area_discrepancy_percent", "%"),
+    ("area_discrepancy_error", "%"),
+    ("roetscher_r_over_a", "1"),
+    ("roetscher_error_percent", "%"),
+    ("vdi_r_over_a", "1"),
+    ("vdi_half_angle_deg", "deg"),
+    ("vdi_error_percent", "%"),
+    ("cone_r_over_a", "1"),
+    ("cone_half_angle_deg", "deg"),
+    ("cone_error_percent", "%"),
+];
 
-/// The comparison's numbers as one CSV line (no newline) in the column order of [`CSV_HEADER`]
-/// minus its last three columns.
+/// The report's columns of [`csv`] after [`COLUMNS`]: its single- and two-plate R_o/A and
+/// its discrepancy.
+const REPORT_COLUMNS: [(&str, &str); 3] = [
+    ("report_single", "1"),
+    ("report_two", "1"),
+    ("report_discrepancy_percent", "%"),
+];
+
+/// `columns` as a CSV header (no newline): `name [unit]`, comma-separated.
+pub fn header(columns: &[(&str, &str)]) -> String {
+    columns
+        .iter()
+        .map(|(name, unit)| format!("{name} [{unit}]"))
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+/// The comparison's numbers as one CSV line (no newline) in the column order of [`COLUMNS`]:
+/// the inputs A/D and B/A as entered ([`as_entered`]), every computed number in full (shortest
+/// round-trip form), an empty field where a route did not run.
 pub fn csv_fields(c: &Comparison) -> String {
     let a = c.geometry.a;
     let (s, t) = (c.over_a(c.single), c.over_a(c.two));
     let h = c.single_hankel.map(|v| c.over_a(v));
     let mut f = vec![
-        c.geometry.a_over_d(),
-        c.geometry.b_over_a(),
+        as_entered(c.geometry.a_over_d()),
+        as_entered(c.geometry.b_over_a()),
         s.value,
         s.error,
         h.map_or(f64::NAN, |v| v.value),
@@ -101,15 +138,17 @@ pub fn csv(rows: &[Row]) -> String {
     csv_in(rows, UnitSystem::InPsiLbf)
 }
 
-/// The table as CSV: the columns of [`CSV_HEADER`] (ratios and percentages, the same in every
-/// unit system), then the geometry and both R_o in the length unit of `units`, named with it
-/// (`a [mm]`, …).
+/// The table as CSV: the columns of [`COLUMNS`] (ratios and percentages, the same in every
+/// unit system) and the report's, then the geometry (as entered) and both R_o in the length
+/// unit of `units`; every column named with its unit (`a_over_d [1]`, `a [mm]`, …).
 pub fn csv_in(rows: &[Row], units: UnitSystem) -> String {
     let k = INCH / units.length();
     let l = units.symbols().0;
     let mut out = format!(
-        "{CSV_HEADER},a [{l}],b [{l}],d [{l}],c [{l}],single_r_o [{l}],single_r_o_error [{l}],\
-         two_r_o [{l}],two_r_o_error [{l}]\n"
+        "{},{},a [{l}],b [{l}],d [{l}],c [{l}],single_r_o [{l}],single_r_o_error [{l}],\
+         two_r_o [{l}],two_r_o_error [{l}]\n",
+        header(&COLUMNS),
+        header(&REPORT_COLUMNS)
     );
     for r in rows {
         let c = &r.ours;
@@ -124,7 +163,12 @@ pub fn csv_in(rows: &[Row], units: UnitSystem) -> String {
             c.two.value,
             c.two.error,
         ];
-        let lengths: Vec<String> = lengths.iter().map(|x| format!("{}", x * k)).collect();
+        let entered = |(i, x): (usize, &f64)| if i < 4 { as_entered(x * k) } else { x * k };
+        let lengths: Vec<String> = lengths
+            .iter()
+            .enumerate()
+            .map(|ix| format!("{}", entered(ix)))
+            .collect();
         out += &format!(
             "{},{},{},{},{}\n",
             csv_fields(c),

@@ -36,7 +36,7 @@ use crate::load::FaceLoad;
 use crate::material::Material;
 use crate::reference::{self, Table2Row, TABLE2_HOLE_RADIUS, TABLE2_OUTER_RADIUS};
 use crate::units::UnitSystem;
-use crate::units::INCH;
+use crate::units::{as_entered, INCH};
 use crate::value::Value;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -216,7 +216,8 @@ pub fn csv(rows: &[Row]) -> String {
 }
 
 /// The table as CSV, every column named with its unit: lengths in the length unit of `units`,
-/// discrepancies in %.
+/// discrepancies in %; the report's numbers as entered ([`as_entered`]), ours in full (shortest
+/// round-trip form).
 pub fn csv_in(rows: &[Row], units: UnitSystem) -> String {
     let k = INCH / units.length();
     let (l, _, _) = units.symbols();
@@ -227,29 +228,30 @@ pub fn csv_in(rows: &[Row], units: UnitSystem) -> String {
          report_disc_rub_percent [%],report_disc_rad_percent [%]\n",
     );
     let o = |x: Option<f64>| x.map(|v| format!("{v}")).unwrap_or_default();
-    let ol = |x: Option<f64>| o(x.map(|v| v * k));
+    // the report's lengths (inputs and its printed results) as entered, in `units`
+    let e = |v: f64| as_entered(v * k);
+    let oe = |x: Option<f64>| o(x.map(e));
     for r in rows {
         let c = &r.report;
         let m = c.autoradiographic;
         s += &format!(
-            "{},{},{},{},{},{:.2e},{},{},{},{},{},{},{},{},{:.4},{},{},{}\n",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
             c.case,
-            c.d1 * k,
-            c.d2 * k,
-            c.two_b * k,
+            e(c.d1),
+            e(c.d2),
+            e(c.two_b),
             r.two_r_o.value * k,
             r.two_r_o.error * k,
             r.model,
-            c.computed * k,
-            c.rubbing.min * k,
-            c.rubbing.max * k,
-            c.rubbing.average * k,
-            ol(m.map(|m| m.min)),
-            ol(m.map(|m| m.max)),
-            ol(m.map(|m| m.average)),
+            e(c.computed),
+            e(c.rubbing.min),
+            e(c.rubbing.max),
+            e(c.rubbing.average),
+            oe(m.map(|m| m.min)),
+            oe(m.map(|m| m.max)),
+            oe(m.map(|m| m.average)),
             r.discrepancy_rubbing_percent,
-            o(r.discrepancy_autoradiographic_percent
-                .map(|v| (v * 1e4).round() / 1e4)),
+            o(r.discrepancy_autoradiographic_percent),
             c.discrepancy_rubbing_percent,
             o(c.discrepancy_autoradiographic_percent),
         );

@@ -467,6 +467,19 @@ fn check_outputs(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
         }
         c.output(&path, p)?;
     }
+    if let Some(p) = &o.report {
+        let path = [k("outputs"), k("report")];
+        if scene.model != Model::TwoPlate {
+            return Err(c.fail(&path, p.display(), "needs model = \"two-plate\""));
+        }
+        if !matches!(
+            p.extension().and_then(|e| e.to_str()),
+            Some("md" | "html" | "htm")
+        ) {
+            return Err(c.fail(&path, p.display(), "must end in .md, .html or .htm"));
+        }
+        c.output(&path, p)?;
+    }
     if let Some(p) = &o.results {
         c.output(&[k("outputs"), k("results")], p)?;
     }

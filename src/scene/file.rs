@@ -207,12 +207,17 @@ pub struct OutputSpec {
     /// rules' radii marked, as `two --plot` (two-plate; written by `boltzone solve`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub plot: Option<PathBuf>,
+    /// A calculation report, as `two --report`: Markdown (`.md`, linking the `plot` figures)
+    /// or a self-contained HTML page (`.html`, the figures inlined) (two-plate; written by
+    /// `boltzone solve`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub report: Option<PathBuf>,
 }
 
 impl OutputSpec {
-    /// Whether the interface curve is needed: for its CSV or for the plot.
+    /// Whether the interface curve is needed: for its CSV, the plot or the report.
     pub fn wants_curve(&self) -> bool {
-        self.interface_pressure.is_some() || self.plot.is_some()
+        self.interface_pressure.is_some() || self.plot.is_some() || self.report.is_some()
     }
 }
 
@@ -230,6 +235,7 @@ impl Default for OutputSpec {
             conductance: false,
             results: None,
             plot: None,
+            report: None,
             stiffness: false,
         }
     }

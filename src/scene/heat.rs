@@ -156,18 +156,24 @@ impl HeatSpec {
 }
 
 /// The joint conductance of a scene's `[heat]` table `spec` (None: an error, the table is
-/// needed) from its solved two-plate joint `sol` (SI units), in the conductance unit of `units`.
+/// needed) from its solved two-plate joint `sol` and the top and bottom plates' `materials`,
+/// both in the lengths and stresses of `solved_in` (a scene solves in SI, [`UnitSystem::MPaN`];
+/// `boltzone two` in its `--units`), in the conductance unit of `units` (the table's own).
 pub fn conductance(
     spec: Option<&HeatSpec>,
     units: UnitSystem,
     sol: &TwoPlateSolution,
+    solved_in: UnitSystem,
     materials: [Material; 2],
 ) -> Result<f64, SceneError> {
     let spec =
         spec.ok_or_else(|| invalid("outputs.conductance", "true: needs a [heat] table".into()))?;
+    let si =
+        |m: Material| Material::new(m.youngs_modulus() * solved_in.stress(), m.poisson_ratio());
+    let materials = [si(materials[0])?, si(materials[1])?];
     let mut params = JointParams::new(spec.contact(units, materials)?);
-    params.length_unit = Length::from_si(1.0);
-    params.pressure_unit = Pressure::from_si(1.0);
+    params.length_unit = Length::from_si(solved_in.length());
+    params.pressure_unit = Pressure::from_si(solved_in.stress());
     let g = joint_conductance(sol, &params)?;
     Ok(g.total.si() / units.conductance())
 }

@@ -32,6 +32,7 @@ use super::solution::{FrictionSummary, InterfaceCurve, Solution};
 use crate::contact::thermal;
 use crate::contact::two_plate::{self, EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use crate::joint::Joint;
+use crate::units::UnitSystem;
 use std::time::Instant;
 
 /// Solves `joint` (SI; `nut` the nut's displacement in m, if the scene gives one) by the finite
@@ -110,6 +111,7 @@ pub fn solve(
             scene.heat.as_ref(),
             scene.units,
             &s,
+            UnitSystem::MPaN,
             m,
         )?);
         out.conductance_unit = Some(scene.units.heat_symbols().1);

@@ -18,11 +18,12 @@ pub fn map(a_over_d: &[f64], b_over_a: &[f64], c_over_a: f64, method: Method) ->
     }
 }
 
-/// The CSV's column `name` for every point.
+/// The CSV's column `name` (its header `name` or `name [unit]`) for every point.
 pub fn column(csv: &str, name: &str) -> Vec<String> {
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let k = header.iter().position(|h| *h == name).unwrap();
+    let named = |h: &&str| *h == name || h.strip_prefix(name).is_some_and(|u| u.starts_with(" ["));
+    let k = header.iter().position(named).unwrap();
     lines
         .map(|l| l.split(',').nth(k).unwrap().to_string())
         .collect()

@@ -146,3 +146,74 @@ fn table1_in_three_unit_systems() {
     assert!(text.contains("A = 2.54 mm, C = 39.116 mm"), "{text}");
     assert!(!text.contains(" in,") && !text.contains("[in]"), "{text}");
 }
+
+/// The fields of a CSV's first data line, by header name.
+fn first_row(csv: &str) -> std::collections::HashMap<String, String> {
+    let mut lines = csv.lines();
+    let header = lines.next().unwrap().split(',').map(String::from);
+    header
+        .zip(lines.next().unwrap().split(',').map(String::from))
+        .collect()
+}
+
+#[test]
+fn table1_and_map_csv_name_every_unit_and_print_inputs_as_entered() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("table_units");
+    std::fs::create_dir_all(&dir).unwrap();
+    let (t1, map) = (dir.join("t1.csv"), dir.join("map.csv"));
+    let table = [
+        "table1",
+        "--units",
+        "mm-MPa-N",
+        "--tol",
+        "2e-2",
+        "--no-hankel",
+    ];
+    let o = boltzone(&[&table[..], &["--csv", t1.to_str().unwrap()]].concat());
+    assert_eq!(o.status.code(), Some(0), "{o:?}");
+    let o = boltzone(&[
+        "map",
+        "--a-over-d",
+        "0.3",
+        "--b-over-a",
+        "1.7",
+        "--tol",
+        "2e-2",
+        "--csv",
+        map.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{o:?}");
+    let (t1, map) = (
+        std::fs::read_to_string(t1).unwrap(),
+        std::fs::read_to_string(map).unwrap(),
+    );
+    // every column but the map's method columns (text) carries a [unit]
+    let text = [
+        "single_method",
+        "single_converged",
+        "two_method",
+        "two_converged",
+    ];
+    for csv in [&t1, &map] {
+        for name in csv.lines().next().unwrap().split(',') {
+            assert!(
+                name.ends_with(']') || text.contains(&name),
+                "column {name} has no unit"
+            );
+        }
+    }
+    // Table 1's first row as the report prints it: A/D = 1, B/A = 3.1, A = 0.1 in = 2.54 mm,
+    // C = 1.54 in = 39.116 mm (exact decimal conversions), not their last-bit neighbours
+    let row = first_row(&t1);
+    assert_eq!(row["a_over_d [1]"], "1");
+    assert_eq!(row["b_over_a [1]"], "3.1");
+    assert_eq!(row["a [mm]"], "2.54");
+    assert_eq!(row["c [mm]"], "39.116");
+    // the map's point as typed on the command line
+    let row = first_row(&map);
+    assert_eq!(row["a_over_d [1]"], "0.3");
+    assert_eq!(row["b_over_a [1]"], "1.7");
+    // the computed R_o/A is there, beyond the bearing face
+    let r: f64 = row["two_r_o_over_a [1]"].parse().unwrap();
+    assert!(r > 1.7 && r.is_finite());
+}

@@ -29,6 +29,14 @@ fn json_has_the_slab_keys_and_mesh_size() {
     assert!((v["r_o_over_a"].as_f64().unwrap() - r_o / 0.1).abs() < 1e-12);
     assert!(v["levels"].as_array().unwrap().len() == 3);
     assert_eq!(v["full_contact"], false); // R_o well inside C
+                                          // `levels` is laid out as two's, one object per level with its `r_o`; the single plate's
+                                          // answer is its last level's
+    let two = common::json_of(&common::boltzone(&[
+        "two", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--c", "1.54", "--tol", "0.05",
+        "--method", "fem", "--json",
+    ]));
+    assert!(two["levels"][0]["r_o"].is_f64(), "{two}");
+    assert_eq!(v["levels"][2]["r_o"], v["r_o"], "{v}");
 }
 
 #[test]

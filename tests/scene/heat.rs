@@ -213,3 +213,141 @@ fn heat_errors_name_key_value_and_line() {
     );
     assert!(conductance(&text).0 > 0.0);
 }
+
+/// `boltzone two` with `args`, its exit code, JSON (when 0) and stderr.
+fn two(args: &[&str]) -> (Option<i32>, serde_json::Value, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_boltzone"))
+        .arg("two")
+        .args(args)
+        .output()
+        .unwrap();
+    let json = serde_json::from_slice(&out.stdout).unwrap_or_default();
+    (
+        out.status.code(),
+        json,
+        String::from_utf8_lossy(&out.stderr).into(),
+    )
+}
+
+/// The joint of `joint_text("uniform", 0.1)` as `two` flags (inches, psi, lbf).
+const TWO_JOINT: [&str; 16] = [
+    "--a",
+    "0.1",
+    "--b",
+    "0.16",
+    "--d",
+    "0.1",
+    "--c",
+    "1.54",
+    "--e",
+    "1e7",
+    "--nu",
+    "0.33",
+    "--force",
+    "1000",
+    "--json",
+    "--conductance",
+];
+
+/// `HEAT` as `two` flags.
+const TWO_HEAT: [&str; 8] = [
+    "--conductivity",
+    "100,60",
+    "--roughness",
+    "50e-6,30e-6",
+    "--slope",
+    "0.08,0.05",
+    "--hardness",
+    "150000",
+];
+
+#[test]
+fn two_conductance_flags_give_the_closed_form_and_the_scene() {
+    // the power law of exponent 1 against equilibrium, as exponent_one_…
+    let (k, sigma_in, m) = (75.0, (50e-6f64).hypot(30e-6), 0.08f64.hypot(0.05));
+    let expect = 1.3 * m / sigma_in * k * (1000.0 / 150_000.0) / 12.0;
+    let (code, v, err) = two(&[&TWO_JOINT[..], &TWO_HEAT, &["--power-law", "1.3,1"]].concat());
+    assert_eq!(code, Some(0), "{err}");
+    let g = v["joint_conductance"].as_f64().unwrap();
+    assert!((g / expect - 1.0).abs() < 1e-9, "{g} vs {expect}");
+    assert_eq!(v["conductance_unit"], "Btu/(hr·°F)");
+    assert_eq!(
+        v["method"], "fem",
+        "the conductance asks the finite elements' pressure"
+    );
+    // eq. (1.1) and mikic-elastic: `two` equals the scene (which solves in SI: rounding only)
+    for law in ["cmy1969", "mikic-elastic"] {
+        let (code, v, err) = two(&[&TWO_JOINT[..], &TWO_HEAT, &["--correlation", law]].concat());
+        assert_eq!(code, Some(0), "{law}: {err}");
+        let text = format!(
+            "{}[heat]\ncorrelation = \"{law}\"\n{HEAT}[outputs]\nconductance = true\n",
+            joint_text("uniform", 0.1)
+        );
+        let (scene, s) = conductance(&text);
+        let g = v["joint_conductance"].as_f64().unwrap();
+        assert!(
+            (g / scene - 1.0).abs() < 1e-9,
+            "{law}: two {g}, scene {scene}"
+        );
+        assert!((v["r_o"].as_f64().unwrap() / s.r_o - 1.0).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn two_heat_flag_errors_name_the_flag() {
+    let bad: [(&[&str], &str); 5] = [
+        (&["--correlation", "cmy1970"], "--correlation = cmy1970"),
+        (&["--hardness", "-1"], "--hardness = -1"),
+        (&["--slope", "0.08,NaN"], "--slope = NaN"),
+        (&["--roughness", "0"], "--roughness = 0"),
+        (&["--method", "hankel", "--tol", "1e-6"], "--conductance"),
+    ];
+    for (extra, named) in bad {
+        let mut args = TWO_JOINT.to_vec();
+        args.extend(TWO_HEAT);
+        // a bad value replaces the good one of the same flag
+        if let Some(k) = args.iter().position(|a| *a == extra[0]) {
+            args.drain(k..k + 2);
+        }
+        args.extend(extra);
+        let (code, _, err) = two(&args);
+        assert_eq!(code, Some(2), "{extra:?}: {err}");
+        assert!(err.contains(named), "{extra:?}: {err}");
+    }
+    // --conductance needs the surfaces; a heat flag needs --conductance
+    let (code, _, err) = two(&TWO_JOINT);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("--conductivity"), "{err}");
+    let (code, _, err) = two(&["--slope", "0.1"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("--conductance"), "{err}");
+}
+
+#[test]
+fn two_conductance_in_si_is_the_scene_bit_for_bit() {
+    // m-Pa-N: the scene solves in SI, so `two` and `solve` read the same numbers
+    let joint = "[hole]\nradius = 0.0025\n[load]\nouter_radius = 0.004\nforce = 5000.0\n\
+                 [[plates]]\nthickness = 0.0025\nmaterial = { E = 7.0e10, nu = 0.33 }\n\
+                 [joint]\nouter_radius = 0.04\n";
+    let heat = "conductivity = [160.0, 160.0]\nroughness = [1.2e-6, 1.2e-6]\n\
+                slope = [0.1, 0.1]\nhardness = 1.0e9\n";
+    let text = format!(
+        "units = \"m-Pa-N\"\nmethod = \"fem\"\n{joint}[heat]\n{heat}[outputs]\nconductance = true\n"
+    );
+    let (scene, s) = conductance(&text);
+    let (code, v, err) = two(&[
+        "--units", "m-Pa-N", "--method", "fem", "--a", "0.0025", "--b", "0.004", "--d", "0.0025",
+        "--c", "0.04", "--e", "7e10", "--nu", "0.33", "--force", "5000", "--json",
+        "--conductance", "--conductivity", "160", "--roughness", "1.2e-6", "--slope", "0.1",
+        "--hardness", "1e9",
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(v["r_o"].as_f64().map(f64::to_bits), Some(s.r_o.to_bits()));
+    assert_eq!(
+        v["joint_conductance"].as_f64().map(f64::to_bits),
+        Some(scene.to_bits()),
+        "two {} W/K, scene {scene} W/K",
+        v["joint_conductance"]
+    );
+    assert_eq!(v["conductance_unit"], "W/K");
+}

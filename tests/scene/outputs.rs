@@ -1,6 +1,7 @@
 //! What a scene's outputs share with `two`'s: the friction zones and the curve's τ, s and state
 //! columns equal `two --interface friction`'s on the same joint (bit for bit, in m-Pa-N where
-//! both read the same numbers), and `[outputs] plot` draws R_o and the 45° cone's radius B + D.
+//! both read the same numbers), `[outputs] plot` draws R_o and the 45° cone's radius B + D, and
+//! `[outputs] report` equals `two --report`'s results and rules on the same joint.
 
 use crate::common::{boltzone, json_of};
 
@@ -117,6 +118,20 @@ fn friction_zones_and_curve_columns_equal_two() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// `solve` of the scene `text` (written to `dir` as bad`i`.toml, run there) exits 2 naming `key`.
+fn refused(dir: &std::path::Path, i: usize, text: &str, key: &str) {
+    let scene = dir.join(format!("bad{i}.toml"));
+    std::fs::write(&scene, text).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_boltzone"))
+        .args(["solve", scene.to_str().unwrap()])
+        .current_dir(dir)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{i}: {err}");
+    assert!(err.contains(key), "{i}: {err}");
+}
+
 #[test]
 fn plot_marks_r_o_and_the_cone_and_is_refused_where_it_cannot_be_drawn() {
     let dir = temp("plot");
@@ -179,16 +194,123 @@ fn plot_marks_r_o_and_the_cone_and_is_refused_where_it_cannot_be_drawn() {
         ),
     ];
     for (i, (scene_text, key)) in bad.iter().enumerate() {
-        let scene = dir.join(format!("bad{i}.toml"));
-        std::fs::write(&scene, scene_text).unwrap();
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_boltzone"))
-            .args(["solve", scene.to_str().unwrap()])
-            .current_dir(&dir)
-            .output()
-            .unwrap();
-        let err = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{i}: {err}");
-        assert!(err.contains(key), "{i}: {err}");
+        refused(&dir, i, scene_text, key);
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The rows of the Markdown table under `heading` in `md` (header and separator skipped).
+fn table_under<'a>(md: &'a str, heading: &str) -> Vec<&'a str> {
+    md.split(heading)
+        .nth(1)
+        .unwrap_or("")
+        .lines()
+        .skip_while(|l| !l.starts_with('|'))
+        .take_while(|l| l.starts_with('|'))
+        .skip(2)
+        .collect()
+}
+
+#[test]
+fn scene_report_equals_two_report_and_is_refused_where_it_cannot_be_written() {
+    let dir = temp("report");
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes/table1_row1.toml"),
+    )
+    .unwrap()
+    .replace("method = \"auto\"", "method = \"fem\"");
+    let (md, plot, html) = (dir.join("r.md"), dir.join("p.svg"), dir.join("r.html"));
+    let outputs = format!(
+        "r_o = true\nplot = \"{}\"\nreport = \"{}\"",
+        plot.display(),
+        md.display()
+    );
+    let scene = dir.join("row1.toml");
+    std::fs::write(&scene, text.replace("r_o = true", &outputs)).unwrap();
+    let out = boltzone(&["solve", scene.to_str().unwrap(), "--json"]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v = json_of(&out);
+    let two_md = dir.join("two.md");
+    let out = boltzone(&[
+        "two",
+        "--method",
+        "fem",
+        "--a",
+        "0.1",
+        "--b",
+        "0.31",
+        "--d",
+        "0.1",
+        "--c",
+        "1.54",
+        "--p",
+        "1000",
+        "--report",
+        two_md.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let (scene_md, two_md) = (
+        std::fs::read_to_string(&md).unwrap(),
+        std::fs::read_to_string(&two_md).unwrap(),
+    );
+    // R_o ± bar as the JSON says, and the same results and rules as `two`'s report
+    let r_o = v["r_o"].as_f64().unwrap();
+    assert!(scene_md.contains(&format!(
+        "{r_o:.6} ± {:.1e} in",
+        v["r_o_error"].as_f64().unwrap()
+    )));
+    for heading in ["## Results", "## Rules of thumb"] {
+        let rows = table_under(&scene_md, heading);
+        assert!(rows.len() >= 3, "{heading}: {scene_md}");
+        assert_eq!(rows, table_under(&two_md, heading), "{heading}");
+    }
+    // the scene's keys with their units; the plot's figures linked
+    assert!(
+        scene_md.contains("| hole.radius | 0.1 | in |"),
+        "{scene_md}"
+    );
+    assert!(
+        scene_md.contains(&format!("]({})", plot.display())),
+        "{scene_md}"
+    );
+    assert!(scene_md.contains("-gap.svg)"), "{scene_md}");
+    // HTML without a plot: self-contained, both interface figures inlined
+    let scene = dir.join("row1-html.toml");
+    let outputs = format!("r_o = true\nreport = \"{}\"", html.display());
+    std::fs::write(&scene, text.replace("r_o = true", &outputs)).unwrap();
+    let out = boltzone(&["solve", scene.to_str().unwrap()]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let page = std::fs::read_to_string(&html).unwrap();
+    assert_eq!(page.matches("<svg").count(), 2, "pressure and gap");
+    assert!(!page.contains("src=") && !page.contains("href="));
+    // refused: a wrong extension, a single plate, a sweep
+    let with = |r: &str| text.replace("r_o = true", &format!("r_o = true\nreport = \"{r}\""));
+    let bad = [
+        with("bad.txt"),
+        with("bad.md").replace("model = \"two-plate\"", "model = \"single-plate\""),
+        format!(
+            "{}\n[sweep]\n\"load.outer_radius\" = [0.3, 0.4]\n",
+            with("bad.md")
+        ),
+    ];
+    for (i, scene_text) in bad.iter().enumerate() {
+        refused(&dir, i, scene_text, "outputs.report");
+        assert!(!dir.join("bad.md").exists() && !dir.join("bad.txt").exists());
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }

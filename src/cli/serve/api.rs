@@ -5,7 +5,9 @@
 //! `two` is what `boltzone two --a A --b B --d D [--c C] [--nu ν] [--d2 D2] [--units U] --json`
 //! prints for the same joint (304 steel E = 28e6 psi converted to the units' stress, P = 1 in
 //! the units' stress, frictionless interface, Q9 elements, tolerance 5e-4: the command's
-//! defaults), by the same solver ([`boltzone::contact::two_plate::solve`]). `single` is
+//! defaults, `--method fem`): the route layer's question of the page (its curves drawn:
+//! [`boltzone::route::two_plate::plan`] gives the finite elements) solved by
+//! [`boltzone::contact::two_plate::solve`]; `method` says which route answered. `single` is
 //! Fernlund's single plate 2D thick (D of the upper plate) by [`boltzone::fem::single`] at the
 //! same tolerance; `rules` the 45°, VDI 2230 (finite plates) and 30° cones' contact radii with
 //! their error against the two-plate R_o (percent, with the error bar the R_o's error gives);
@@ -34,10 +36,11 @@
 use crate::cli::args::Units;
 use crate::cli::check;
 use crate::cli::exit::usage;
-use boltzone::contact::two_plate::{solve, TwoPlateParams};
+use boltzone::contact::two_plate::solve;
 use boltzone::fem::single::{midplane_of, solve_with_field, SingleParams};
-use boltzone::route::rules_beside;
+use boltzone::route::{rules_beside, single_plate, two_plate, Method};
 use boltzone::scene::UnitSystem;
+use boltzone::units::as_entered;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate, SinglePlate, Value};
 use serde_json::json;
 
@@ -65,14 +68,10 @@ pub struct JointQuery {
     pub units: UnitSystem,
 }
 
-/// `x` rounded to 12 significant digits, as the page's `x.toPrecision(12)` sends it.
-fn sent(x: f64) -> f64 {
-    format!("{x:.11e}").parse().unwrap_or(x)
-}
-
-/// The page's hole radius A in `units`: 0.1 in (the report's Table 1), as the page sends it.
+/// The page's hole radius A in `units`: 0.1 in (the report's Table 1), as the page sends it
+/// (12 significant digits, `x.toPrecision(12)`).
 pub fn hole(units: UnitSystem) -> f64 {
-    sent(0.1 * UnitSystem::InPsiLbf.length() / units.length())
+    as_entered(0.1 * UnitSystem::InPsiLbf.length() / units.length())
 }
 
 /// The page's opening joint in `units` (the sliders' defaults of `page.html`: A/D = 1,
@@ -82,9 +81,9 @@ pub fn opening(units: UnitSystem) -> JointQuery {
     let a = hole(units);
     JointQuery {
         a,
-        b: sent(a * 3.1),
-        d: sent(a),
-        c: Some(sent(a * 15.0)),
+        b: as_entered(a * 3.1),
+        d: as_entered(a),
+        c: Some(as_entered(a * 15.0)),
         nu: 0.3,
         d2: None,
         units,
@@ -211,12 +210,28 @@ pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
         Plate::new(d2, mat)?,
         load.clone(),
     )?;
-    let params = TwoPlateParams {
-        tolerance: TOLERANCE,
+    // the route layer decides: the pressure curve of the two plates and the midplane σ_z of
+    // the single plate, both drawn, ask the finite elements at the page's tolerance
+    let two_q = two_plate::Question {
+        curve: true,
+        ..two_plate::Question::new(&joint, TOLERANCE)
+    };
+    let single_q = single_plate::Question {
+        field: true,
         ..Default::default()
     };
+    let two_plan = two_plate::plan(&two_q).map_err(|b| anyhow::anyhow!("{}", b.reason))?;
+    let single_plan = single_plate::plan(&single_q);
+    for plan in [two_plan, single_plan] {
+        if plan.method != Method::Fem {
+            anyhow::bail!(
+                "the page draws the finite elements' curves; the route layer chose {:?}",
+                plan.method
+            );
+        }
+    }
     let (two, plate_single) = rayon::join(
-        || solve(&joint, &params),
+        || solve(&joint, &two_q.fem_params()),
         || -> anyhow::Result<_> {
             let plate = SinglePlate::new(q.a, outer, q.d, Material::unit(q.nu)?, load.clone())?;
             let sp = SingleParams {
@@ -255,7 +270,7 @@ pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
         "two": {
             "r_o": two.r_o, "r_o_error": two.r_o_error, "converged": two.converged,
             "full_contact": two.full_contact, "overlap": two.overlap, "report_rule": two.report_rule,
-            "tolerance": TOLERANCE, "interface": two.info.model,
+            "tolerance": TOLERANCE, "interface": two.info.model, "method": "fem",
             "nodes": levels.map(|l| l.nodes), "dofs": levels.map(|l| l.dofs),
             "observed_order": two.info.observed_order, "nut_deflection": two.nut_deflection,
             "seconds": two.info.seconds,
