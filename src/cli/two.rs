@@ -47,8 +47,6 @@ impl Args {
     }
 }
 
-/// Whether a report file is HTML (by its extension, .html or .htm).
-
 /// Fills --e, --nu (and --e2, --nu2) from --material (--material2): the library's SI values in
 /// the --units stress; an unknown name is bad input naming the flag.
 fn apply_materials(args: &mut Args) -> anyhow::Result<()> {
