@@ -4,8 +4,9 @@
 //!
 //! Two descriptions are used:
 //! - [`Joint`]: two plates pressed together by a bolt head on the outer face of the upper plate and a
-//!   nut on the outer face of the lower plate, both over the same annulus (the two-plate model,
-//!   report Figs. 4–5);
+//!   nut on the outer face of the lower plate (the two-plate model, report Figs. 4–5), by default
+//!   over the same annulus A..B; [`Joint::with_nut_load`] gives the nut its own bearing face
+//!   A..B₂ (the head's B₁ = B), carrying the same force;
 //! - [`SinglePlate`]: the single-plate substitution of Fernlund, Greenwood and Lardner, one plate 2D
 //!   thick loaded symmetrically on both faces (report Fig. 3(f)); its midplane σ_z approximates the
 //!   interface pressure.
@@ -107,8 +108,9 @@ fn check_load_on_plate(hole_radius: f64, load: &FaceLoad) -> Result<(), InputErr
     Ok(())
 }
 
-/// Two plates clamped by a bolt: the upper plate's outer face carries the head's pressure, the
-/// lower plate's outer face the nut's, both the same `load` (report eq. 2.7 and Fig. 11).
+/// Two plates clamped by a bolt: the upper plate's outer face carries the head's pressure
+/// `load`, the lower plate's outer face the nut's, by default the same (report eq. 2.7 and
+/// Fig. 11), or its own ([`Joint::with_nut_load`]).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Joint {
     hole_radius: f64,
@@ -116,6 +118,34 @@ pub struct Joint {
     upper: Plate,
     lower: Plate,
     load: FaceLoad,
+    /// The nut's own face load (None: the head's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    nut_load: Option<FaceLoad>,
+}
+
+/// Relative difference of the head's and the nut's total forces beyond which
+/// [`Joint::with_nut_load`] refuses the pair (the stack would not be in equilibrium).
+pub const NUT_FORCE_TOLERANCE: f64 = 1e-9;
+
+/// Why a joint is not one plate on its symmetry plane ([`Joint::asymmetry`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Asymmetry {
+    /// The plates differ in thickness or material.
+    Plates,
+    /// The nut's bearing face differs from the head's (B₂ ≠ B₁, or another profile).
+    NutFace,
+}
+
+impl Asymmetry {
+    /// A sentence fragment for messages.
+    pub fn reason(self) -> &'static str {
+        match self {
+            Self::Plates => "the two plates differ (thickness or material)",
+            Self::NutFace => {
+                "the nut's bearing face differs from the head's (B2 != B1, or another profile)"
+            }
+        }
+    }
 }
 
 impl Joint {
@@ -135,6 +165,7 @@ impl Joint {
             upper,
             lower,
             load,
+            nut_load: None,
         })
     }
 
@@ -152,17 +183,87 @@ impl Joint {
 
     /// The same joint with outer radius `c`.
     pub fn with_outer_radius(mut self, c: OuterRadius) -> Result<Self, InputError> {
-        c.check(self.load.outer())?;
+        c.check(self.widest_bearing())?;
         self.outer_radius = c;
         Ok(self)
     }
 
-    /// The same joint with another load.
+    /// The same joint with another load on both bearing faces (a nut load given before is
+    /// replaced by this one too).
     pub fn with_load(mut self, load: FaceLoad) -> Result<Self, InputError> {
         check_load_on_plate(self.hole_radius, &load)?;
         self.outer_radius.check(load.outer())?;
         self.load = load;
+        self.nut_load = None;
         Ok(self)
+    }
+
+    /// The same joint with the nut's own bearing pressure `nut` on the lower plate's outer face
+    /// (the head keeps [`Joint::load`]): its own annulus A₂..B₂ (A₂ ≥ A, B₂ < C) and profile,
+    /// carrying the head's total force (within [`NUT_FORCE_TOLERANCE`]: the plates' free body
+    /// is then in equilibrium). A nut load equal to the head's is stored as none: the joint is
+    /// then the same, `==` and bit for bit, as without the call.
+    ///
+    /// ```
+    /// use boltzone::{FaceLoad, Joint, Material};
+    /// let j = Joint::symmetric(0.1, 0.31, 0.1, Material::unit(0.3)?)?;
+    /// let f = j.load().total_force();
+    /// let nut = FaceLoad::uniform(0.1, 0.25, f / (std::f64::consts::PI * (0.25f64.powi(2) - 0.01)))?;
+    /// let k = j.clone().with_nut_load(nut)?;
+    /// assert!(!k.is_symmetric() && k.nut_load().outer() == 0.25 && k.load().outer() == 0.31);
+    /// assert_eq!(j.clone().with_nut_load(j.load().clone())?, j);
+    /// assert!(j.with_nut_load(FaceLoad::uniform(0.1, 0.25, 1.0)?).is_err()); // not F
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn with_nut_load(mut self, nut: FaceLoad) -> Result<Self, InputError> {
+        check_load_on_plate(self.hole_radius, &nut)?;
+        self.outer_radius.check(nut.outer())?;
+        let (head, own) = (self.load.total_force(), nut.total_force());
+        let balanced = (own - head).abs() <= NUT_FORCE_TOLERANCE * head.abs();
+        if !balanced {
+            return Err(InputError::Parameter {
+                field: "nut load's total force",
+                value: own,
+                reason: "must equal the head's total force (the stack's equilibrium)",
+            });
+        }
+        self.nut_load = (nut != self.load).then_some(nut);
+        Ok(self)
+    }
+
+    /// [`Joint::with_nut_load`] with the nut's face A..`b2` (A the head load's inner radius)
+    /// under the head's profile (uniform, or triangular with its peak at the same end) and the
+    /// head's total force, mean pressure F/(π(B₂² − A²)). `b2` equal to B gives the same joint.
+    /// A tabulated head load has no profile to carry over: [`Joint::with_nut_load`] then.
+    ///
+    /// ```
+    /// use boltzone::{Joint, Material};
+    /// let j = Joint::symmetric(0.1, 0.31, 0.1, Material::unit(0.3)?)?;
+    /// let k = j.clone().with_nut_outer_radius(0.4)?;
+    /// assert!((k.nut_load().total_force() - j.load().total_force()).abs() < 1e-15);
+    /// assert_eq!(j.clone().with_nut_outer_radius(0.31)?, j);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn with_nut_outer_radius(self, b2: f64) -> Result<Self, InputError> {
+        let head = &self.load;
+        if b2 == head.outer() {
+            return Ok(self);
+        }
+        let a = head.inner();
+        let mean = head.total_force() / (std::f64::consts::PI * (b2 * b2 - a * a));
+        let nut = match head.profile() {
+            crate::load::Profile::Uniform => FaceLoad::uniform(a, b2, mean)?,
+            crate::load::Profile::Triangular(peak) => FaceLoad::triangular(a, b2, mean, peak)?,
+            crate::load::Profile::Tabulated => {
+                return Err(InputError::Parameter {
+                    field: "nut bearing radius B2",
+                    value: b2,
+                    reason: "a tabulated head load has no profile to carry to the nut: give \
+                             the nut's own load (Joint::with_nut_load)",
+                })
+            }
+        };
+        self.with_nut_load(nut)
     }
 
     /// Hole radius A.
@@ -185,19 +286,49 @@ impl Joint {
         self.lower
     }
 
-    /// The bearing pressure of head and nut.
+    /// The bearing pressure of the head (and of the nut unless it has its own,
+    /// [`Joint::nut_load`]).
     pub fn load(&self) -> &FaceLoad {
         &self.load
     }
 
-    /// Whether the two plates are equal (same thickness and material): then the joint is one plate
-    /// on a frictionless rigid plane (report Chapter II.B).
+    /// The bearing pressure of the nut on the lower plate: its own
+    /// ([`Joint::with_nut_load`]) or the head's.
+    pub fn nut_load(&self) -> &FaceLoad {
+        self.nut_load.as_ref().unwrap_or(&self.load)
+    }
+
+    /// Whether the nut has a bearing face of its own, different from the head's.
+    pub fn has_own_nut_load(&self) -> bool {
+        self.nut_load.is_some()
+    }
+
+    /// The largest bearing radius of head and nut, max(B₁, B₂).
+    pub fn widest_bearing(&self) -> f64 {
+        self.load.outer().max(self.nut_load().outer())
+    }
+
+    /// Whether the joint is mirror-symmetric about its interface: equal plates (same thickness
+    /// and material) under the same face load on both sides. Then it is one plate on a
+    /// frictionless rigid plane (report Chapter II.B).
     pub fn is_symmetric(&self) -> bool {
-        self.upper == self.lower
+        self.asymmetry().is_none()
+    }
+
+    /// What breaks the mirror symmetry (the plates first), or None for a symmetric joint.
+    pub fn asymmetry(&self) -> Option<Asymmetry> {
+        if self.upper != self.lower {
+            Some(Asymmetry::Plates)
+        } else if self.nut_load.is_some() {
+            Some(Asymmetry::NutFace)
+        } else {
+            None
+        }
     }
 
     /// The single-plate substitute (a plate 2D thick loaded on both faces) of a symmetric joint;
-    /// `None` for unequal plates, which have no symmetric substitute.
+    /// `None` for unequal plates or a nut face of its own, which have no symmetric substitute
+    /// ([`Joint::asymmetry`] says which).
     pub fn single_plate_substitute(&self) -> Option<SinglePlate> {
         self.is_symmetric().then(|| SinglePlate {
             hole_radius: self.hole_radius,

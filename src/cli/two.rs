@@ -81,8 +81,38 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
     if let Some(d2) = args.d2 {
         check::positive("--d2", "lower plate thickness D2", d2)?;
     }
+    if let Some(b2) = args.b2 {
+        check::positive("--b2", "nut's bearing-face outer radius B2", b2)?;
+        if b2 <= g.a {
+            return usage(
+                "--b2",
+                super::exit::num(b2),
+                &format!(
+                    "the nut's bearing face B2 = {} must exceed the hole radius A = {}",
+                    super::exit::num(b2),
+                    super::exit::num(g.a)
+                ),
+            );
+        }
+        let d = args.d2.map_or(g.d, |d2| d2.min(g.d));
+        if !(1e-3..=check::B_OVER_D_TWO).contains(&(b2 / d)) {
+            return usage(
+                "--b2",
+                super::exit::num(b2),
+                &format!(
+                    "the nut's bearing face must lie within 1e-3..{} plate thicknesses, as B's \
+                     (B2/D = {:.3e})",
+                    check::B_OVER_D_TWO,
+                    b2 / d
+                ),
+            );
+        }
+    }
     if let Some(c) = args.c {
         check::outer_radius("--c", c, g.b)?;
+        if let Some(b2) = args.b2 {
+            check::outer_radius("--c", c, b2)?;
+        }
     }
     check::positive("--e", "Young's modulus E", args.e())?;
     if let Some(e2) = args.e2 {

@@ -56,6 +56,10 @@ pub struct Args {
     #[arg(skip)]
     #[serde(flatten)]
     pub(super) geom: Geometry,
+    /// The nut's bearing radius B2 when it differs from B (--b2, or --bolt's nut; None: B).
+    #[arg(skip)]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) b2: Option<f64>,
     /// The catalogue bolt, its preload and the member stiffness.
     #[command(flatten)]
     #[serde(flatten)]

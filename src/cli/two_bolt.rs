@@ -1,7 +1,8 @@
 //! The bolted-joint flags of `boltzone two` in the route layer's terms
 //! ([`boltzone::route::joint`]): `--bolt M10` fills the hole radius A from ISO 273's series
-//! (`--hole`) and the bearing radius B from the head's d_w/2 (or the washer's d2/2, `--washer`)
-//! where `--a`, `--b` are omitted; `--preload`, `--torque` (with `--mu-thread`, `--mu-head`)
+//! (`--hole`), the bearing radius B from the head's d_w/2 (or the washer's d2/2, `--washer`)
+//! and the nut's B2 from the nut's d_w/2 (ISO 4032; the washer's d2/2) where `--a`, `--b`,
+//! `--b2` are omitted (a `--b` given serves the nut too unless `--b2` is given); `--preload`, `--torque` (with `--mu-thread`, `--mu-head`)
 //! or `--utilisation` (with `--mu-thread`, `--grade`) give the bolt force; `--stiffness` (or a
 //! bolt) asks the member stiffness k_P, the rules beside it, and with a bolt δ_S, Φ and the
 //! bearing pressures. Bad values exit 2 naming the flag.
@@ -36,6 +37,11 @@ pub struct GivenGeometry {
     /// half the head's bearing diameter, or the --washer's outside diameter).
     #[arg(long, allow_negative_numbers = true)]
     pub b: Option<f64>,
+    /// Outer radius B2 of the nut's bearing annulus on the lower plate (in, or the --units
+    /// length; default: the head's B, or with --bolt and no --b the nut's own bearing diameter
+    /// over 2, ISO 4032). It carries the head's force.
+    #[arg(long, allow_negative_numbers = true)]
+    pub b2: Option<f64>,
     /// Thickness D of ONE plate (in, or the --units length).
     #[arg(long, allow_negative_numbers = true)]
     pub d: f64,
@@ -261,6 +267,12 @@ pub fn resolve(mut args: Args) -> anyhow::Result<Args> {
         b: pick(given.b, g.and_then(|g| g.head_diameter), "--b")?,
         d: given.d,
         nu: given.nu,
+    };
+    // the nut's face: --b2, else with the catalogue's head (no --b) the catalogue's nut, else B
+    args.b2 = match (given.b2, given.b, g.and_then(|g| g.nut_diameter)) {
+        (Some(b2), _, _) => Some(b2),
+        (None, None, Some(d)) => Some(0.5 * d),
+        _ => None,
     };
     if let (Some(s), Some(g), Some(p)) = (&spec, &g, tightening(&args)) {
         let sizes = (2.0 * args.geom.a, 2.0 * args.geom.b);

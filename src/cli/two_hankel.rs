@@ -66,6 +66,7 @@ fn named(args: &Args, b: two_plate::Blocker) -> (&'static str, String, String) {
         Key::OuterRadius => ("--c", args.c.map_or_else(given, |c| c.to_string())),
         Key::HoleRadius => ("--a", g.a.to_string()),
         Key::LoadOuterRadius => ("--b", g.b.to_string()),
+        Key::NutOuterRadius => ("--b2", args.b2.map_or_else(given, |b| b.to_string())),
         Key::NutDisplacement => (
             "--nut-displacement",
             args.nut_displacement.map_or_else(given, |n| n.to_string()),

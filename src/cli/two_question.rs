@@ -40,13 +40,18 @@ pub(super) fn joint(args: &Args) -> anyhow::Result<Joint> {
         Shape::PeakA => FaceLoad::triangular(a, b, p, Peak::AtA)?,
         Shape::PeakB => FaceLoad::triangular(a, b, p, Peak::AtB)?,
     };
-    Ok(Joint::new(
+    let joint = Joint::new(
         a,
         args.c.map_or(OuterRadius::Infinite, OuterRadius::Finite),
         Plate::new(args.geom.d, upper_mat)?,
         Plate::new(args.d2.unwrap_or(args.geom.d), lower_mat)?,
         load,
-    )?)
+    )?;
+    // the nut's own face (the head's profile and force over A..B₂)
+    Ok(match args.b2 {
+        Some(b2) => joint.with_nut_outer_radius(b2)?,
+        None => joint,
+    })
 }
 
 /// The rules of thumb beside `r_o` (the route layer's [`rules_beside::beside`], the 30° cone

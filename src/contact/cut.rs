@@ -69,7 +69,7 @@ pub(super) fn check_cut_allowed(
         OuterRadius::Finite(c) => c,
         OuterRadius::Infinite => f64::INFINITY,
     };
-    if c <= widest_meshed(joint.load().outer(), d) {
+    if c <= widest_meshed(joint.widest_bearing(), d) {
         return Ok(());
     }
     let reason = if params.edge == EdgeSupport::Fixed {

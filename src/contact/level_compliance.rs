@@ -1,6 +1,6 @@
 //! The member compliance of one solved mesh level of the two-plate model (report Chapter II.B):
 //! δ_P = ∫ p (w_head − w_nut) dA / F² by work for a prescribed face pressure — the consistent
-//! load vector of both bearing faces dotted with the level's displacements, doubled for the
+//! load vector of both bearing faces (the head's and the nut's own, [`Joint::nut_load`]) dotted with the level's displacements, doubled for the
 //! symmetric one-plate model (the mirror face does the same work) — or, for a rigid head, the
 //! rigid displacement over the reaction under it, 2δ/F. The study over the levels and its
 //! error estimate are module [`super::compliance`]'s.
@@ -35,7 +35,7 @@ pub(super) fn level_compliance(
             let mut loads = Loads::new(mesh.n_nodes());
             loads.add_face_pressure(mesh, &top, 1.0, joint.load())?;
             if let Some(b) = &bottom {
-                loads.add_face_pressure(mesh, b, -1.0, joint.load())?;
+                loads.add_face_pressure(mesh, b, -1.0, joint.nut_load())?;
             }
             let work: f64 = loads
                 .forces()

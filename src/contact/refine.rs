@@ -89,6 +89,8 @@ pub(crate) fn mesh(
         q_axial
     };
     let mut foci = vec![g.a, g.b];
+    // (the nut's own bearing radius B₂, when it differs from the head's)
+    foci.extend(Some(joint.nut_load().outer()).filter(|&b2| b2 != g.b));
     // (a level in full contact estimates R_o = C: the next level is graded at the rim, where
     // the contact ends, as at any other R_o; a knot there is the rim's own node)
     foci.extend(r_est.filter(|&r| r > g.a && r <= g.c));
@@ -346,6 +348,8 @@ fn boundary(
                 s.prescribe(n, Component::Z, -delta);
             }
             if let Some(l) = model.lower {
+                let b2 = joint.nut_load().outer() + eps;
+                let under = |n: &usize| mesh.nodes()[*n][0] <= b2;
                 for n in mesh.bottom(l).into_iter().filter(under) {
                     s.prescribe(n, Component::Z, delta);
                 }
@@ -354,7 +358,7 @@ fn boundary(
         Loading::Pressure => {
             loads.add_face_pressure(mesh, &mesh.top(model.upper), 1.0, joint.load())?;
             if let Some(l) = model.lower {
-                loads.add_face_pressure(mesh, &mesh.bottom(l), -1.0, joint.load())?;
+                loads.add_face_pressure(mesh, &mesh.bottom(l), -1.0, joint.nut_load())?;
             }
         }
     }

@@ -187,10 +187,9 @@ pub(crate) fn solve_keeping_with(
         .max(lo.material().youngs_modulus());
     let stress = match params.loading {
         Loading::Pressure => {
-            let p = joint
-                .load()
-                .values()
+            let p = [joint.load(), joint.nut_load()]
                 .iter()
+                .flat_map(|l| l.values())
                 .fold(0.0, |m: f64, v| m.max(v.abs()));
             if p.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 return Err(InputError::NotPositive {
@@ -223,6 +222,11 @@ pub(crate) fn solve_keeping_with(
         Plate::new(nd(lo.thickness()), unit(lo.material())?)?,
         joint.load().nondimensional(length, stress)?,
     )?;
+    // the nut's own bearing face, if any (B₂ ≠ B₁: both plates are meshed)
+    let scaled = match joint.has_own_nut_load() {
+        true => scaled.with_nut_load(joint.nut_load().nondimensional(length, stress)?)?,
+        false => scaled,
+    };
     let scaled_params = TwoPlateParams {
         loading: match params.loading {
             Loading::NutDisplacement(d) => Loading::NutDisplacement(nd(d)),
@@ -336,7 +340,14 @@ fn solve_unit(
         thermal,
     };
     let h0 = params.coarse * d[0].min(d[1]);
-    let (cut, exterior) = cut_at(&g, c);
+    // (cut beyond the wider of the head's and the nut's bearing faces)
+    let (cut, exterior) = cut_at(
+        &MeshLayout {
+            b: joint.widest_bearing(),
+            ..g
+        },
+        c,
+    );
     (g.c, g.exterior) = (cut, exterior);
     let mut truncation_error = 0.0;
     let mut levels = Vec::new();

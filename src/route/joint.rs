@@ -15,7 +15,9 @@
 //!   elements ([`super::two_plate::Key::Stiffness`]); R_o is then that study's.
 //! - **The catalogue bolt** ([`crate::bolt::catalogue`], [`crate::bolt::thread`]): A = d_h/2 of
 //!   ISO 273's series, B = d_w/2 of the head (ISO 4014/4017 d_w,min; ISO 4762 d_k) or d2/2 of
-//!   the washer (ISO 7089/7093) when one is given; the washers (one under the head, one under
+//!   the washer (ISO 7089/7093) when one is given, and the nut's own B₂ = d_w/2 (ISO 4032; the
+//!   washer's d2/2) on the lower plate ([`crate::Joint::with_nut_load`]: the same force over
+//!   its own annulus); the washers (one under the head, one under
 //!   the nut) are taken as rigid and add 2h to the clamp length l_K of δ_S. The rules take the
 //!   bolt's d, the hole d_h and the bearing diameter; without a catalogue bolt d = d_h = 2A and
 //!   the bearing diameter 2B.
@@ -337,7 +339,8 @@ pub struct Bolted {
 /// The bolt's quantities of `joint` clamped by the bolt `spec` (its catalogue dimensions
 /// `geometry`) tightened by `preload`, with the member compliance `member` when computed, and
 /// the bearing pressures against the p_G of `limit_material` when named. Without a catalogue
-/// diameter the joint's own stand in: the hole 2A, the bearing diameters 2B.
+/// diameter the joint's own stand in: the hole 2A, the bearing diameters 2B (head) and 2B₂
+/// (nut, [`Joint::nut_load`]).
 pub fn bolted(
     joint: &Joint,
     spec: &BoltSpec,
@@ -348,6 +351,7 @@ pub fn bolted(
     scale: Scale,
 ) -> Result<Bolted, JointError> {
     let (a2, b2) = (2.0 * joint.hole_radius(), 2.0 * joint.load().outer());
+    let nut2 = 2.0 * joint.nut_load().outer();
     let d_h = geometry.hole_diameter.unwrap_or(a2);
     let t = geometry.thread;
     let e_s = spec.modulus.unwrap_or(BOLT_MODULUS_MPA * scale.mpa);
@@ -369,7 +373,8 @@ pub fn bolted(
     let force = preload_force(spec, geometry, preload, (a2, b2), scale)?;
     let bore = geometry.washer_bore.unwrap_or(d_h);
     let inner = bore.max(d_h);
-    let pressure = |outer: Option<f64>| bearing_pressure(force, outer.unwrap_or(b2), inner);
+    let pressure =
+        |outer: Option<f64>, own: f64| bearing_pressure(force, outer.unwrap_or(own), inner);
     let limit = match limit_material {
         Some(m) => Some(
             catalogue::limiting_pressure(m)
@@ -384,8 +389,8 @@ pub fn bolted(
         clamp_length: clamp,
         load_factor: member.map(|m| load_factor(delta_s, m, n)),
         bearing_pressure: BearingPressure {
-            head: pressure(geometry.head_diameter),
-            nut: pressure(geometry.nut_diameter),
+            head: pressure(geometry.head_diameter, b2),
+            nut: pressure(geometry.nut_diameter, nut2),
             limit,
         },
     })
@@ -417,36 +422,41 @@ pub struct StiffnessRule {
 }
 
 /// The diameters the stiffness rules take (caller's lengths): the bolt's d, the hole d_h and
-/// the bearing diameter d_W.
+/// the bearing diameters d_W of the head and of the nut.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RuleDiameters {
     /// The bolt's nominal diameter d.
     pub d: f64,
     /// The hole d_h.
     pub hole: f64,
-    /// The bearing diameter d_W.
+    /// The head's bearing diameter d_W.
     pub bearing: f64,
+    /// The nut's bearing diameter d_W (the head's when they are alike).
+    pub nut_bearing: f64,
 }
 
 impl RuleDiameters {
-    /// Without a catalogue bolt: d = d_h = 2A, d_W = 2B.
+    /// Without a catalogue bolt: d = d_h = 2A, d_W = 2B under the head and 2B₂ under the nut.
     pub fn of_joint(joint: &Joint) -> Self {
         let a2 = 2.0 * joint.hole_radius();
         Self {
             d: a2,
             hole: a2,
             bearing: 2.0 * joint.load().outer(),
+            nut_bearing: 2.0 * joint.nut_load().outer(),
         }
     }
 
-    /// With a catalogue bolt: its d, and the hole and bearing diameters where the catalogue
-    /// holds them (the joint's 2A and 2B otherwise).
+    /// With a catalogue bolt: its d, and the hole and the head's and the nut's bearing
+    /// diameters (or the washer's) where the catalogue holds them (the joint's 2A, 2B and 2B₂
+    /// otherwise).
     pub fn of_bolt(joint: &Joint, g: &BoltGeometry) -> Self {
         let own = Self::of_joint(joint);
         Self {
             d: g.d,
             hole: g.hole_diameter.unwrap_or(own.hole),
             bearing: g.head_diameter.unwrap_or(own.bearing),
+            nut_bearing: g.nut_diameter.unwrap_or(own.nut_bearing),
         }
     }
 }
@@ -459,9 +469,11 @@ pub const CORNWELL_LEFT_OUT: &str = "Cornwell's joint-constant fit (J. Mech. Des
      not implemented: its fitted coefficients and published check were not at hand";
 
 /// The four rules' k_P for `joint` with the diameters `dia`, each against the exact `k_p`
-/// (module docs): VDI 2230's cone and sleeve (one material, finite rim D_A = 2C, a hole),
-/// Shigley's frusta per member (Eq. 8-20), Wileman's fit (one material; the constants of the
-/// material nearest in ν), Cornwell's (left out, [`CORNWELL_LEFT_OUT`]).
+/// (module docs): VDI 2230's cone and sleeve (one material, finite rim D_A = 2C, a hole; each
+/// side's body from its own d_W, [`vdi2230_stiffness::resilience_sides`]), Shigley's frusta
+/// per member (Eq. 8-20, each frustum from its own face, [`shigley::members_sides`]),
+/// Wileman's fit (one material; the constants of the material nearest in ν; it takes d and
+/// the grip, no bearing diameter), Cornwell's (left out, [`CORNWELL_LEFT_OUT`]).
 pub fn stiffness_rules(joint: &Joint, dia: RuleDiameters, k_p: Value) -> StiffnessRules {
     let (up, lo) = (joint.upper(), joint.lower());
     let (e1, e2) = (
@@ -490,16 +502,20 @@ pub fn stiffness_rules(joint: &Joint, dia: RuleDiameters, k_p: Value) -> Stiffne
              are infinite"
                 .into(),
         ),
-        (true, OuterRadius::Finite(c)) => {
-            vdi2230_stiffness::resilience(dia.bearing, dia.hole, grip, 2.0 * c, e1)
-                .map(|r| r.stiffness)
-                .map_err(|e| e.to_string())
-        }
+        (true, OuterRadius::Finite(c)) => vdi2230_stiffness::resilience_sides(
+            [dia.bearing, dia.nut_bearing],
+            dia.hole,
+            grip,
+            2.0 * c,
+            e1,
+        )
+        .map(|r| r.stiffness)
+        .map_err(|e| e.to_string()),
     };
-    let shigley = shigley::members(
+    let shigley = shigley::members_sides(
         &[(up.thickness(), e1), (lo.thickness(), e2)],
         dia.d,
-        dia.bearing,
+        [dia.bearing, dia.nut_bearing],
     )
     .map_err(|e| e.to_string());
     let wileman = match one_material {

@@ -11,7 +11,9 @@
 //!   plates ([`crate::hankel::receding::holed`], its rim `holed::rim`); without one, the receding
 //!   contact of any two plates in series in frictionless contact (`Pair`; equal plates carry no
 //!   interface shear, so any interface), with a finite rim equal plates (`rim`); pressed by a
-//!   pressure on a free rim, answering R_o and the interface pressure only, to 1e-8.
+//!   pressure on a free rim, the same bearing face under head and nut (B₂ = B₁; a nut face of
+//!   its own, [`Key::NutOuterRadius`], goes to the finite elements), answering R_o and the
+//!   interface pressure only, to 1e-8.
 //!
 //! - the **tables** ([`crate::table::two_plates`]): equal infinite plates, a uniform pressure
 //!   from the hole, R_o alone, in microseconds with a bar (the near table's interpolation bound
@@ -150,6 +152,8 @@ pub enum Key {
     HoleRadius,
     /// The bearing face's outer radius B.
     LoadOuterRadius,
+    /// The nut's own bearing face (B₂ ≠ B₁: [`crate::Joint::with_nut_load`]).
+    NutOuterRadius,
     /// The nut displacement (instead of a pressure).
     NutDisplacement,
     /// The fixed outer edge.
@@ -208,6 +212,7 @@ pub fn hankel_blocker(q: &Question) -> Option<Blocker> {
         Key::LowerPoisson
     };
     let checks = [
+        (j.has_own_nut_load(), Key::NutOuterRadius, NUT_FACE_REASON),
         (
             holed && !equal,
             lower,
@@ -269,6 +274,11 @@ pub fn hankel_blocker(q: &Question) -> Option<Blocker> {
     ];
     first(checks.into_iter().chain(finite_elements_only(q)))
 }
+
+/// Why a nut face of its own keeps a question from the semi-analytic routes.
+pub const NUT_FACE_REASON: &str = "the semi-analytic routes press head and nut over the same \
+     bearing face (one B, mirror-symmetric about the interface); with B2 != B1 the finite \
+     elements mesh both plates";
 
 /// What only the finite elements answer: thermal strains, the field, the conductance and the
 /// member stiffness (each with the key that asks it and the reason).
@@ -386,6 +396,11 @@ pub fn table_answer(q: &Question) -> Result<crate::value::Value, Blocker> {
         Key::LowerPoisson
     };
     let checks = [
+        (
+            j.has_own_nut_load(),
+            Key::NutOuterRadius,
+            "the tables take the same bearing face under head and nut (B2 = B1)",
+        ),
         (!q.equal_plates(), lower, "the tables take two equal plates"),
         (
             matches!(j.outer_radius(), OuterRadius::Finite(_)),

@@ -62,6 +62,23 @@ pub fn two_equal_members(e: f64, d: f64, l: f64) -> Result<f64, InputError> {
 /// The member stiffness of a stack of `members` (thickness, modulus), head side first, clamped
 /// by bearing faces of diameter `dw` over a bolt of diameter `d` (module docs).
 pub fn members(members: &[(f64, f64)], d: f64, dw: f64) -> Result<f64, InputError> {
+    members_sides(members, d, [dw, dw])
+}
+
+/// [`members`] with the head's and the nut's own bearing diameters `dw` = [head, nut]: each
+/// frustum starts from its own face and runs to l/2 (the book's construction, each side its
+/// own D).
+///
+/// ```
+/// use boltzone::rules::shigley::{members, members_sides};
+/// let stack = [(0.5, 30e6), (0.5, 30e6)];
+/// assert_eq!(members_sides(&stack, 0.5, [0.75, 0.75])?, members(&stack, 0.5, 0.75)?);
+/// // a wider nut face stiffens the nut's frustum only
+/// let (k, k2) = (members(&stack, 0.5, 0.75)?, members_sides(&stack, 0.5, [0.75, 0.9])?);
+/// assert!(k2 > k && k2 < members(&stack, 0.5, 0.9)?);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn members_sides(members: &[(f64, f64)], d: f64, dw: [f64; 2]) -> Result<f64, InputError> {
     if members.is_empty() {
         return Err(InputError::Parameter {
             field: "members",
@@ -84,7 +101,7 @@ pub fn members(members: &[(f64, f64)], d: f64, dw: f64) -> Result<f64, InputErro
             if piece <= 0.0 {
                 break;
             }
-            let k = frustum(e, d, dw + 1.155 * x, piece)?;
+            let k = frustum(e, d, dw[usize::from(order)] + 1.155 * x, piece)?;
             compliance += 1.0 / k;
             x += piece;
         }

@@ -69,6 +69,43 @@ pub struct Vdi2230Resilience {
     pub case: Case,
 }
 
+/// δ_P with the head's and the nut's own bearing diameters `dw` = [head, nut]: the DSV's two
+/// substitute bodies (cone, or cone and sleeve, from each bearing face to the middle of the
+/// grip) are in series, and each is half of [`resilience`]'s symmetric body of its own d_W
+/// (tan φ_D from its own β_L = l_K/d_W and y = D_A/d_W), so δ_P = (δ_P(d_W,head) +
+/// δ_P(d_W,nut))/2. VDI 2230's formula is written for one d_W; this split is the equal-sides
+/// formula applied per side (our reading, exact when the sides are equal). The `case` and
+/// `tan_phi` returned are the head side's; `limiting_diameter` the wider of the two.
+///
+/// ```
+/// use boltzone::rules::vdi2230_stiffness::{resilience, resilience_sides};
+/// let one = resilience(16.0, 11.0, 20.0, 40.0, 210e3)?;
+/// assert_eq!(resilience_sides([16.0, 16.0], 11.0, 20.0, 40.0, 210e3)?.compliance, one.compliance);
+/// let two = resilience_sides([16.0, 14.6], 11.0, 20.0, 40.0, 210e3)?;
+/// assert!(two.stiffness < one.stiffness); // the narrower nut face is softer
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn resilience_sides(
+    dw: [f64; 2],
+    dh: f64,
+    lk: f64,
+    da: f64,
+    e: f64,
+) -> Result<Vdi2230Resilience, InputError> {
+    let head = resilience(dw[0], dh, lk, da, e)?;
+    if dw[1] == dw[0] {
+        return Ok(head);
+    }
+    let nut = resilience(dw[1], dh, lk, da, e)?;
+    let compliance = 0.5 * (head.compliance + nut.compliance);
+    Ok(Vdi2230Resilience {
+        compliance,
+        stiffness: 1.0 / compliance,
+        limiting_diameter: head.limiting_diameter.max(nut.limiting_diameter),
+        ..head
+    })
+}
+
 /// δ_P of a through-bolted joint (DSV, w = 1): bearing diameter `dw`, hole `dh`, clamp length
 /// `lk`, outside diameter `da` (finite), modulus `e`.
 pub fn resilience(

@@ -1,6 +1,6 @@
 //! The scene keys of a bolted joint: `[bolt]` (a catalogue bolt), `[washer]`, `[preload]` and
-//! `[outputs] stiffness` — their TOML shape, how a bolt fills the hole radius A and the
-//! bearing radius B where the scene leaves them out and a preload the bolt force
+//! `[outputs] stiffness` — their TOML shape, how a bolt fills the hole radius A, the
+//! bearing radius B and the nut's B₂ (two-plate scenes) where the scene leaves them out and a preload the bolt force
 //! ([`resolve`]), and the answer's bolted-joint part in the scene's units ([`answer`]). The
 //! route layer ([`crate::route::joint`]) decides how each number is computed.
 //!
@@ -18,6 +18,7 @@
 //!             [[plates]]\nthickness = 10.0\n";
 //! let scene = boltzone::scene::Scene::parse(text)?;
 //! assert_eq!((scene.hole.radius, scene.load.outer_radius), (5.5, 7.315)); // ISO 273, 4017
+//! assert_eq!(scene.load.nut_outer_radius, Some(7.3)); // ISO 4032's d_w
 //! assert_eq!(scene.load.force, Some(20e3));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
@@ -246,6 +247,14 @@ pub fn resolve(scene: &mut Scene, text: &str) -> Result<(), SceneError> {
         Ok::<(), SceneError>(())
     };
     let g = geometry.as_ref();
+    // the nut's own face from the catalogue when the head's is too (a B given serves both)
+    // (the single-plate and slab models press both faces alike: B alone)
+    if scene.model == super::file::Model::TwoPlate
+        && scene.load.outer_radius.is_nan()
+        && scene.load.nut_outer_radius.is_none()
+    {
+        scene.load.nut_outer_radius = g.and_then(|g| g.nut_diameter).map(|d| 0.5 * d);
+    }
     fill(
         &mut scene.hole.radius,
         g.and_then(|g| g.hole_diameter),

@@ -64,6 +64,7 @@ impl Scene {
                 hole: HoleSpec { radius: 0.0 },
                 load: LoadSpec {
                     outer_radius: 0.0,
+                    nut_outer_radius: None,
                     force: None,
                     pressure: None,
                     nut_displacement: None,
@@ -124,6 +125,12 @@ impl SceneBuilder {
     /// `load.outer_radius` B, the bearing face's outer radius (length unit).
     pub fn bearing_face(mut self, outer_radius: f64) -> Self {
         self.scene.load.outer_radius = outer_radius;
+        self
+    }
+
+    /// `load.nut_outer_radius` B₂, the nut's own bearing face (length unit; default B).
+    pub fn nut_face(mut self, outer_radius: f64) -> Self {
+        self.scene.load.nut_outer_radius = Some(outer_radius);
         self
     }
 

@@ -118,6 +118,25 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
             &format!("the bearing radius B must exceed the hole radius A = {a}"),
         ));
     }
+    if let Some(b2) = scene.load.nut_outer_radius {
+        let p = [k("load"), k("nut_outer_radius")];
+        c.positive(&p, b2, "the nut's bearing radius B2")?;
+        if b2 <= a {
+            return Err(c.fail(
+                &p,
+                b2,
+                &format!("the nut's bearing radius B2 must exceed the hole radius A = {a}"),
+            ));
+        }
+        if scene.model != Model::TwoPlate && b2 != b {
+            return Err(c.fail(
+                &p,
+                b2,
+                "the single-plate and slab models press both faces alike (B2 = B); a nut \
+                 face of its own is the two-plate model's",
+            ));
+        }
+    }
     check_load(scene, &c)?;
     check_plates(scene, &c)?;
     if let Some(cr) = scene.joint.outer_radius {
@@ -125,6 +144,13 @@ pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
         c.positive(&p, cr, "the outer radius C")?;
         if cr <= b {
             return Err(c.fail(&p, cr, &format!("C must exceed the bearing radius B = {b}")));
+        }
+        if let Some(b2) = scene.load.nut_outer_radius.filter(|&b2| cr <= b2) {
+            return Err(c.fail(
+                &p,
+                cr,
+                &format!("C must exceed the nut's bearing radius B2 = {b2}"),
+            ));
         }
         if scene.model == Model::Slab {
             return Err(c.fail(&p, cr, "the slab is infinite: omit joint.outer_radius"));

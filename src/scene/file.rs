@@ -96,6 +96,10 @@ pub struct LoadSpec {
     /// Outer radius B of the bearing face (length unit; omitted: `[bolt]`'s head or washer).
     #[serde(default = "unset")]
     pub outer_radius: f64,
+    /// Outer radius B₂ of the nut's bearing face on the lower plate, carrying the same force
+    /// (length unit; omitted: B, or with `[bolt]` and no `outer_radius` the nut's own d_w/2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub nut_outer_radius: Option<f64>,
     /// Bolt force (force unit): mean pressure F / (π(B² − A²)).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub force: Option<f64>,
@@ -114,6 +118,7 @@ impl Default for LoadSpec {
     fn default() -> Self {
         Self {
             outer_radius: unset(),
+            nut_outer_radius: None,
             force: None,
             pressure: None,
             nut_displacement: None,

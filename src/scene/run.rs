@@ -304,9 +304,20 @@ fn rules_of(scene: &Scene, out: &Solution) -> crate::route::rules_beside::Rules 
 
 /// The single-plate substitute of a symmetric joint.
 fn substitute(joint: &Joint) -> Result<crate::joint::SinglePlate, SceneError> {
-    joint.single_plate_substitute().ok_or(SceneError::Invalid {
-        key: "plates".into(),
-        line: 1,
-        reason: "two unequal plates: the single-plate and slab models need two equal plates".into(),
-    })
+    joint
+        .single_plate_substitute()
+        .ok_or_else(|| match joint.asymmetry() {
+            Some(crate::joint::Asymmetry::NutFace) => SceneError::Invalid {
+                key: "load.nut_outer_radius".into(),
+                line: 1,
+                reason: "the single-plate and slab models press both faces alike (B2 = B)".into(),
+            },
+            _ => SceneError::Invalid {
+                key: "plates".into(),
+                line: 1,
+                reason:
+                    "two unequal plates: the single-plate and slab models need two equal plates"
+                        .into(),
+            },
+        })
 }

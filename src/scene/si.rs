@@ -79,5 +79,10 @@ pub fn joint_si(scene: &Scene) -> Result<(Joint, Option<f64>), SceneError> {
         Plate::new(bottom.thickness * l, material(scene, last)?)?,
         load,
     )?;
+    // the nut's own face: the head's profile and force over A..B₂
+    let joint = match scene.load.nut_outer_radius {
+        Some(b2) => joint.with_nut_outer_radius(b2 * l)?,
+        None => joint,
+    };
     Ok((joint, scene.load.nut_displacement.map(|d| d * l)))
 }

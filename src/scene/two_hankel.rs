@@ -97,6 +97,7 @@ fn scene_key(key: Key) -> &'static str {
         Key::OuterRadius => "joint.outer_radius",
         Key::HoleRadius => "hole.radius",
         Key::LoadOuterRadius => "load.outer_radius",
+        Key::NutOuterRadius => "load.nut_outer_radius",
         Key::NutDisplacement => "load.nut_displacement",
         Key::OuterEdge => "joint.fixed_edge",
         Key::Temperature => "temperature",

@@ -99,7 +99,11 @@ fn joint(a: f64, b: f64, d: f64, c: Option<f64>) -> Joint {
     }
 }
 
-fn two_plate(j: &Joint, head: Head, tol: f64) -> boltzone::contact::compliance::MemberCompliance {
+pub fn two_plate(
+    j: &Joint,
+    head: Head,
+    tol: f64,
+) -> boltzone::contact::compliance::MemberCompliance {
     let p = ComplianceParams {
         head,
         tolerance: tol,

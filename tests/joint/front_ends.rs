@@ -6,7 +6,7 @@ use crate::common::{boltzone, json_of};
 use boltzone::bolt::compliance::bolt_resilience;
 use boltzone::bolt::thread::Thread;
 use boltzone::contact::compliance::{member_compliance, ComplianceParams};
-use boltzone::{Joint, Material, OuterRadius};
+use boltzone::{FaceLoad, Joint, Material, OuterRadius};
 
 const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/scenes/m10_bolt.toml");
 
@@ -78,10 +78,17 @@ fn m10_example_against_the_library_and_the_closed_forms() {
     // k_P: the library's member compliance of the same joint, called directly (a second path
     // through the API, no front end)
     let steel = Material::new(205e9, 0.3).unwrap();
+    // the head's face A..d_w/2 (ISO 4017) and the nut's own (ISO 4032 d_w 14.6 mm), the same
+    // force on both
+    assert_eq!(inputs["load"]["nut_outer_radius"].as_f64(), Some(0.0073));
     let joint = Joint::symmetric(0.0055, 0.5 * 14.63e-3, 0.01, steel)
         .unwrap()
         .with_outer_radius(OuterRadius::Finite(0.02))
         .unwrap();
+    let f = joint.load().total_force();
+    let (a, b2) = (0.0055f64, 0.0073f64);
+    let nut = FaceLoad::uniform(a, b2, f / (std::f64::consts::PI * (b2 * b2 - a * a))).unwrap();
+    let joint = joint.with_nut_load(nut).unwrap();
     let m = member_compliance(&joint, &ComplianceParams::default()).unwrap();
     let k = &v["member_stiffness"];
     let rel = (k["value"].as_f64().unwrap() / m.stiffness.value - 1.0).abs();

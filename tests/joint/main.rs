@@ -9,4 +9,5 @@ mod catalogue;
 mod compliance;
 mod compliance_study;
 mod front_ends;
+mod nut_face;
 mod rules;
