@@ -160,7 +160,12 @@ fn argument_set(rng: &mut Rng) -> Vec<String> {
         // the interface conductance and its heat flags (W/(m·K), in, tan θ, psi)
         args.push("--conductance".into());
         let k = rng.log_uniform(1.0, 400.0);
-        flag(&mut args, rng, "conductivity", format!("{k:e},{:e}", 0.5 * k));
+        flag(
+            &mut args,
+            rng,
+            "conductivity",
+            format!("{k:e},{:e}", 0.5 * k),
+        );
         let s = rng.log_uniform(1e-7, 1e-3);
         flag(&mut args, rng, "roughness", format!("{s:e}"));
         let (m, h) = (rng.log_uniform(1e-3, 1.0), rng.log_uniform(1e3, 1e7));

@@ -336,10 +336,34 @@ fn two_conductance_in_si_is_the_scene_bit_for_bit() {
     );
     let (scene, s) = conductance(&text);
     let (code, v, err) = two(&[
-        "--units", "m-Pa-N", "--method", "fem", "--a", "0.0025", "--b", "0.004", "--d", "0.0025",
-        "--c", "0.04", "--e", "7e10", "--nu", "0.33", "--force", "5000", "--json",
-        "--conductance", "--conductivity", "160", "--roughness", "1.2e-6", "--slope", "0.1",
-        "--hardness", "1e9",
+        "--units",
+        "m-Pa-N",
+        "--method",
+        "fem",
+        "--a",
+        "0.0025",
+        "--b",
+        "0.004",
+        "--d",
+        "0.0025",
+        "--c",
+        "0.04",
+        "--e",
+        "7e10",
+        "--nu",
+        "0.33",
+        "--force",
+        "5000",
+        "--json",
+        "--conductance",
+        "--conductivity",
+        "160",
+        "--roughness",
+        "1.2e-6",
+        "--slope",
+        "0.1",
+        "--hardness",
+        "1e9",
     ]);
     assert_eq!(code, Some(0), "{err}");
     assert_eq!(v["r_o"].as_f64().map(f64::to_bits), Some(s.r_o.to_bits()));
