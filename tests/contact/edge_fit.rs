@@ -112,3 +112,41 @@ fn the_edge_force_root_is_first_order_and_the_study_within_its_estimate() {
         );
     }
 }
+
+#[test]
+fn the_reaction_fit_is_first_order_too_and_shares_the_force_roots_limit() {
+    // K fitted to the last closed nodes' reactions removes the regular √ term from the edge
+    // force, yet stays first order (the elements' own error at the edge scales like that
+    // term on a mesh the same in units of h); its first-order term differs from the force
+    // root's, and Richardson removes both alike.
+    for (b, nu) in [(1.2, 0.15), (2.0, 0.45)] {
+        let (exact, joint) = plate(b, nu);
+        let s = solve(
+            &joint,
+            &TwoPlateParams {
+                tolerance: 1e-13,
+                min_levels: 6,
+                max_levels: 6,
+                fitted_edge: true,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let l = &s.info.levels;
+        // (the coarsest level's window may hold too few closed nodes for the fit: NaN there)
+        let force: Vec<f64> = l.iter().map(|l| l.r_o_fit_force.unwrap() - exact).collect();
+        let fit: Vec<f64> = l
+            .iter()
+            .map(|l| l.r_o_fit_reaction.unwrap_or(f64::NAN) - exact)
+            .collect();
+        assert!(fit[3..].iter().all(|e| e.is_finite()));
+        let order = (fit[4] / fit[5]).abs().ln() / (l[4].h / l[5].h).ln();
+        println!("B {b} ν {nu}: reaction-fit errors {fit:?}, order {order:.3}");
+        // nearer first order than second (or zeroth)
+        assert!((0.5..1.5).contains(&order), "order {order}");
+        let rich = |e: &[f64]| 2.0 * e[5] - e[4];
+        let (xf, xr) = (rich(&force), rich(&fit));
+        println!("  Richardson: force {xf:.3e}, reaction fit {xr:.3e}");
+        assert!((xf - xr).abs() < 0.1 * fit[5].abs().min(force[5].abs()));
+    }
+}
