@@ -76,13 +76,12 @@ pub fn exact(case: &Case) -> anyhow::Result<Option<f64>> {
     }
 }
 
-/// (h, the level's R_o, gap-fit root, edge-force root, reaction-fit root) per level of one FE
-/// study of `levels` levels (the roots NaN unless `fitted`: the default study computes none).
-pub fn levels(
-    case: &Case,
-    levels: usize,
-    fitted: bool,
-) -> anyhow::Result<Vec<(f64, f64, f64, f64, f64)>> {
+/// (h, the level's R_o, gap-fit root, edge-force root, reaction-fit root) of one level.
+pub type LevelRoots = (f64, f64, f64, f64, f64);
+
+/// The [`LevelRoots`] of each level of one FE study of `levels` levels (the roots NaN unless
+/// `fitted`: the default study computes none).
+pub fn levels(case: &Case, levels: usize, fitted: bool) -> anyhow::Result<Vec<LevelRoots>> {
     let s = solve(
         &case.joint()?,
         &TwoPlateParams {

@@ -47,9 +47,9 @@
 //! two roots' Richardson values agree to 5e-7 … 2e-6 of R_o at h = D/128 (six plates) while
 //! their raw errors are ~1e-4: what remains belongs to the field, not to the extraction — the graded mesh
 //! away from the edge (its growth ratio shrinks like √h below D/64, so that part falls roughly
-//! first order, irregularly), then a residual of +2e-7 … +5.4e-7 R_o at h = D/1024 … D/2048
-//! that changes by < 3e-7 when the grading is made finer, fixed or shrunk like h, or the
-//! largest element 10× smaller. The study adds a floor of 1e-6 R_o for it
+//! first order, irregularly: +1.5e-7 … +8.0e-7 R_o at h = D/1024 on 39 plates), then a
+//! residual of +2e-7 … +5.4e-7 at D/1024 … D/2048 whatever the grading (finer, fixed or
+//! shrunk like h) or the largest element (10× smaller). The study adds a floor of 1e-6 R_o for it
 //! (`two_plate::FITTED_FLOOR`).
 //!
 //! Units: those of the level (any consistent set).

@@ -305,10 +305,9 @@ const TRANSIENT_FLOOR: f64 = 2e-5;
 
 /// [`TRANSIENT_FLOOR`] of the fitted edge's study ([`super::edge_fit`]), relative to R_o. Its
 /// extrapolated values settle at +2e-7 … +5.4e-7 of R_o at h = D/1024 and D/2048 on random
-/// infinite plates against the receding contact and the holed route, falling no further and
-/// moving by < 3e-7 when the grading or the largest element is changed (example 22); a study
-/// at 1e-6 ended 4.1e-7 from the receding contact with a level estimate of 2.5e-7. Twice the
-/// largest seen. Tolerances from 2e-6 of R_o are claimed; tighter, the semi-analytic routes.
+/// infinite plates against the receding contact and the holed route, whatever the grading or
+/// the largest element (example 22); without a floor a study at 1e-6 ended 4.1e-7 from the
+/// receding contact with a level estimate of 2.5e-7. Twice the largest settled value. Tolerances from 2e-6 of R_o are claimed; tighter, the semi-analytic routes.
 const FITTED_FLOOR: f64 = 1e-6;
 
 /// The shrink of the R_o estimate per level beyond which the study decides that a tolerance is
