@@ -103,7 +103,7 @@ pub struct EdgeFit {
     /// The root of the edge node's force over √h (h the mean of its two elements).
     pub r_o_force: Option<f64>,
     /// The root of K, the s^{-1/2} coefficient fitted to the reactions of the last closed
-    /// nodes ([`reaction_k`]).
+    /// nodes (module docs).
     pub r_o_reaction: Option<f64>,
 }
 
