@@ -3,7 +3,7 @@
 //! infinite plates, the Hankel R_o to ~1e-12).
 
 use boltzone::contact::edge_fit::{extrapolated, fit, root, EdgeSystem};
-use boltzone::contact::two_plate::{solve, TwoPlateParams};
+use boltzone::contact::two_plate::{solve, TwoPlateParams, TwoPlateSolution};
 use boltzone::hankel::receding::{Layer, RecedingParams};
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate};
 use nalgebra::{DMatrix, DVector};
@@ -67,22 +67,27 @@ pub(crate) fn plate(b: f64, nu: f64) -> (f64, Joint) {
     )
 }
 
+/// The fitted study of `joint` on exactly six levels (h = D/4 … D/128).
+fn six_fitted_levels(joint: &Joint) -> TwoPlateSolution {
+    solve(
+        joint,
+        &TwoPlateParams {
+            tolerance: 1e-13,
+            min_levels: 6,
+            max_levels: 6,
+            fitted_edge: true,
+            ..Default::default()
+        },
+    )
+    .unwrap()
+}
+
 #[test]
 fn the_edge_force_root_is_first_order_and_the_study_within_its_estimate() {
     // a low and a high ν: the gap-shape estimate's first-order term changes sign between them
     for (b, nu) in [(1.2, 0.15), (2.0, 0.45)] {
         let (exact, joint) = plate(b, nu);
-        let s = solve(
-            &joint,
-            &TwoPlateParams {
-                tolerance: 1e-13,
-                min_levels: 6,
-                max_levels: 6,
-                fitted_edge: true,
-                ..Default::default()
-            },
-        )
-        .unwrap();
+        let s = six_fitted_levels(&joint);
         let e: Vec<f64> = s.info.levels.iter().map(|l| l.r_o - exact).collect();
         let ratio = e[4] / e[5];
         println!("B {b} ν {nu}: level errors {e:?}, last ratio {ratio:.3}");
@@ -121,17 +126,7 @@ fn the_reaction_fit_is_first_order_too_and_shares_the_force_roots_limit() {
     // root's, and Richardson removes both alike.
     for (b, nu) in [(1.2, 0.15), (2.0, 0.45)] {
         let (exact, joint) = plate(b, nu);
-        let s = solve(
-            &joint,
-            &TwoPlateParams {
-                tolerance: 1e-13,
-                min_levels: 6,
-                max_levels: 6,
-                fitted_edge: true,
-                ..Default::default()
-            },
-        )
-        .unwrap();
+        let s = six_fitted_levels(&joint);
         let l = &s.info.levels;
         // (the coarsest level's window may hold too few closed nodes for the fit: NaN there)
         let force: Vec<f64> = l.iter().map(|l| l.r_o_fit_force.unwrap() - exact).collect();
