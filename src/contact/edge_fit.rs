@@ -70,7 +70,7 @@
 //! window holds < 40 points past the first level), and a 5 × 3 least-squares fit: small
 //! beside the level's factorization. The fitted study needs more levels than the gap-shape
 //! one at a tight tolerance (its estimate falls ~2× per level): 8–9 levels at 1e-5 on
-//! infinite plates (1–3 s), Table 1's first row at 1e-6 took 11 levels (example 23).
+//! infinite plates (1–3 s); Table 1's rows at 2e-6, 10–11 levels and 3–10 s (example 23).
 //!
 //! ```
 //! use boltzone::contact::edge_fit::root;
