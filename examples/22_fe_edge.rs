@@ -16,13 +16,21 @@
 //! Then each plate's study with `fitted_edge` at 1e-4, 1e-5 and 1e-6: its error against its
 //! estimate and its time.
 //!
-//! Self-check (error): every reference converged; every level's fitted R_o exists; every
-//! fitted study within its estimate.
+//! `survey [levels] [plates]`: per level only the two fitted-edge roots (edge force, and K
+//! fitted to the reactions of the last five closed nodes), their Richardson values 2R_k −
+//! R_{k−1}, the ratios of successive errors, and the observed order of each root over the last
+//! two levels. `check [plates] [tol …]`: the fitted study of random plates (seed 3636, at most
+//! 12 levels) at each tolerance (default 1e-5 1e-6) against the exact routes, with counts.
+//!
+//! Plates whose reference is not certified (receding contact to 1e-9, holed route to 1e-7) are
+//! skipped and counted. Self-check (error): every level's fitted R_o exists; every fitted
+//! study within its estimate.
 
 use anyhow::ensure;
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
 use boltzone::hankel::receding::holed::two_plate_hole_to;
 use boltzone::hankel::receding::{Layer, RecedingParams};
+use boltzone::numerics::convergence::order_between;
 use boltzone::numerics::random::SplitMix64;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate, SinglePlate};
 
@@ -52,32 +60,28 @@ impl Case {
     }
 }
 
-/// The exact R_o of `case` (receding contact without a hole, the holed route with one).
-pub fn exact(case: &Case) -> anyhow::Result<f64> {
+/// The exact R_o of `case` (receding contact without a hole, the holed route with one); None
+/// when the route does not certify 1e-9 (receding) or 1e-7 (holed) — such plates are skipped
+/// and counted.
+pub fn exact(case: &Case) -> anyhow::Result<Option<f64>> {
     let m = Material::unit(case.nu)?;
     let load = FaceLoad::uniform(case.a, case.b, 1.0)?;
     if case.a == 0.0 {
         let r = Layer::new(1.0, m, load)?.receding_contact(&RecedingParams::default())?;
-        ensure!(
-            r.info.r_o_error < 1e-9 * r.r_o,
-            "receding contact not converged"
-        );
-        Ok(r.r_o)
+        Ok((r.info.r_o_error < 1e-9 * r.r_o).then_some(r.r_o))
     } else {
         let plate = SinglePlate::new(case.a, OuterRadius::Infinite, 1.0, m, load)?;
         let (out, _) = two_plate_hole_to(&plate, 1e-7, &[])?;
-        ensure!(out.meets(1e-7), "holed route short of 1e-7: {:?}", case);
-        Ok(out.r_o)
+        Ok(out.meets(1e-7).then_some(out.r_o))
     }
 }
 
-/// (h, the level's R_o, gap-fit root, edge-force root) per level of one FE study of `levels`
-/// levels (the roots NaN unless `fitted`: the default study computes none).
-pub fn levels(
-    case: &Case,
-    levels: usize,
-    fitted: bool,
-) -> anyhow::Result<Vec<(f64, f64, f64, f64)>> {
+/// (h, the level's R_o, gap-fit root, edge-force root, reaction-fit root) of one level.
+pub type LevelRoots = (f64, f64, f64, f64, f64);
+
+/// The [`LevelRoots`] of each level of one FE study of `levels` levels (the roots NaN unless
+/// `fitted`: the default study computes none).
+pub fn levels(case: &Case, levels: usize, fitted: bool) -> anyhow::Result<Vec<LevelRoots>> {
     let s = solve(
         &case.joint()?,
         &TwoPlateParams {
@@ -95,27 +99,123 @@ pub fn levels(
             // (the default study reads no fitted edge: NaN there)
             let fit = l.r_o_fit.unwrap_or(f64::NAN);
             let force = l.r_o_fit_force.unwrap_or(f64::NAN);
+            let reaction = l.r_o_fit_reaction.unwrap_or(f64::NAN);
             ensure!(!fitted || force.is_finite(), "no fitted edge on a level");
-            Ok((l.h, l.r_o, fit, force))
+            Ok((l.h, l.r_o, fit, force, reaction))
         })
         .collect()
 }
 
-/// The fitted study of `case` at `tol`: (R_o, its estimate, converged, seconds).
-pub fn study(case: &Case, tol: f64) -> anyhow::Result<(f64, f64, bool, f64)> {
+/// The fitted study of `case` at `tol` with at most `max_levels` levels: (R_o, its estimate,
+/// converged, levels, seconds).
+pub fn study_to(
+    case: &Case,
+    tol: f64,
+    max_levels: usize,
+) -> anyhow::Result<(f64, f64, bool, usize, f64)> {
     let s = solve(
         &case.joint()?,
         &TwoPlateParams {
             tolerance: tol,
             fitted_edge: true,
+            max_levels,
             ..Default::default()
         },
     )?;
-    Ok((s.r_o, s.r_o_error, s.converged, s.info.seconds))
+    Ok((
+        s.r_o,
+        s.r_o_error,
+        s.converged,
+        s.info.levels.len(),
+        s.info.seconds,
+    ))
+}
+
+/// The fitted study of `case` at `tol`: (R_o, its estimate, converged, seconds).
+pub fn study(case: &Case, tol: f64) -> anyhow::Result<(f64, f64, bool, f64)> {
+    let (r, e, c, _, t) = study_to(case, tol, 9)?;
+    Ok((r, e, c, t))
+}
+
+/// The `n`-th random plate of the survey (seeded; every fifth … the 3rd and 4th of each five
+/// hold a hole).
+pub fn random_case(rng: &mut SplitMix64, p: usize) -> Case {
+    let holed = p % 5 >= 3;
+    let a = if holed { 0.3 + 0.7 * rng.unit() } else { 0.0 };
+    let nu = 0.01 + 0.48 * rng.unit();
+    Case {
+        a,
+        b: a + 0.3 + 2.7 * rng.unit(),
+        nu,
+    }
+}
+
+/// `check N [tol …]`: the fitted study of N random plates at each tolerance (default 1e-5 and
+/// 1e-6, at most 12 levels) against the exact routes; per study the error over its estimate,
+/// and a summary per tolerance: counts converged and within, the largest ratio, the levels
+/// and times.
+fn check(n: usize, tols: &[f64]) -> anyhow::Result<()> {
+    let mut rng = SplitMix64::new(3636);
+    let mut rows: Vec<Vec<(f64, bool, usize, f64)>> = vec![Vec::new(); tols.len()];
+    let mut skipped = 0;
+    for p in 0..n {
+        let case = random_case(&mut rng, p);
+        let Some(r) = exact(&case)? else {
+            skipped += 1;
+            println!("plate {p}: {case:?}: reference not certified, skipped");
+            continue;
+        };
+        for (k, &tol) in tols.iter().enumerate() {
+            let (v, e, conv, lv, secs) = study_to(&case, tol, 12)?;
+            let ratio = (v - r).abs() / e;
+            println!(
+                "plate {p} A {:.3} B {:.3} ν {:.3} tol {tol:e}: error {:+.2e} R_o, estimate {:.2e} R_o, ratio {ratio:.2}, converged {conv}, {lv} levels, {secs:.2} s",
+                case.a, case.b, case.nu, (v - r) / r, e / r
+            );
+            rows[k].push((ratio, conv, lv, secs));
+        }
+    }
+    println!("{skipped} plates skipped (reference not certified)");
+    for (k, &tol) in tols.iter().enumerate() {
+        let v = &rows[k];
+        let within = v.iter().filter(|x| x.0 <= 1.0).count();
+        let conv = v.iter().filter(|x| x.1).count();
+        let worst = v.iter().map(|x| x.0).fold(0.0, f64::max);
+        let mean_levels = v.iter().map(|x| x.2 as f64).sum::<f64>() / v.len() as f64;
+        let secs: Vec<f64> = v.iter().map(|x| x.3).collect();
+        let mean_secs = secs.iter().sum::<f64>() / secs.len() as f64;
+        let max_secs = secs.iter().copied().fold(0.0, f64::max);
+        println!(
+            "tol {tol:e}: {} studies, {conv} converged, {within} within their estimate, largest error/estimate {worst:.2}, mean levels {mean_levels:.1}, mean {mean_secs:.2} s, max {max_secs:.2} s",
+            v.len()
+        );
+    }
+    ensure!(
+        rows.iter().flatten().all(|x| x.0 <= 1.0),
+        "a fitted study beyond its estimate"
+    );
+    Ok(())
 }
 
 pub fn main() -> anyhow::Result<()> {
     let quick = std::env::var("BOLTZONE_QUICK").is_ok();
+    let raw: Vec<String> = std::env::args().skip(1).collect();
+    let survey = raw.first().map(String::as_str) == Some("survey");
+    if raw.first().map(String::as_str) == Some("check") {
+        let n = raw.get(1).and_then(|a| a.parse().ok()).unwrap_or(40);
+        let tols: Vec<f64> = raw[2.min(raw.len())..]
+            .iter()
+            .filter_map(|a| a.parse().ok())
+            .collect();
+        return check(
+            n,
+            if tols.is_empty() {
+                &[1e-5, 1e-6]
+            } else {
+                &tols
+            },
+        );
+    }
     let args: Vec<usize> = std::env::args()
         .skip(1)
         .filter_map(|a| a.parse().ok())
@@ -130,23 +230,24 @@ pub fn main() -> anyhow::Result<()> {
     };
     let levels_too = n_levels > 0;
     let mut rng = SplitMix64::new(36);
+    let mut orders: Vec<(f64, f64)> = Vec::new();
     for p in 0..n_plates {
-        let holed = p % 5 >= 3;
-        let case = Case {
-            a: if holed { 0.3 + 0.7 * rng.unit() } else { 0.0 },
-            b: 0.0,
-            nu: 0.01 + 0.48 * rng.unit(),
+        let case = random_case(&mut rng, p);
+        let Some(r) = exact(&case)? else {
+            println!("plate {p}: {case:?}: reference not certified, skipped");
+            continue;
         };
-        let case = Case {
-            b: case.a + 0.3 + 2.7 * rng.unit(),
-            ..case
-        };
-        let r = exact(&case)?;
         println!(
             "plate {p}: A {:.4} B {:.4} ν {:.3}, exact R_o {r:.12}",
             case.a, case.b, case.nu
         );
-        let tols: &[f64] = if quick { &[1e-4] } else { &[1e-4, 1e-5, 1e-6] };
+        let tols: &[f64] = if quick {
+            &[1e-4]
+        } else if survey {
+            &[]
+        } else {
+            &[1e-4, 1e-5, 1e-6]
+        };
         for &tol in tols {
             let (v, e, conv, secs) = study(&case, tol)?;
             println!(
@@ -157,6 +258,38 @@ pub fn main() -> anyhow::Result<()> {
             );
             ensure!((v - r).abs() <= e, "the fitted study beyond its estimate");
         }
+        if levels_too && survey {
+            let lv = levels(&case, n_levels, true)?;
+            let n = lv.len();
+            if n >= 3 {
+                let e = |i: usize| (lv[i].3 - r).abs();
+                let q = |i: usize| (lv[i].4 - r).abs();
+                orders.push((
+                    order_between(lv[n - 2].0, e(n - 2), lv[n - 1].0, e(n - 1)),
+                    order_between(lv[n - 2].0, q(n - 2), lv[n - 1].0, q(n - 1)),
+                ));
+            }
+            let mut prev: Option<(f64, f64)> = None;
+            let mut prev_x: Option<(f64, f64)> = None;
+            for &(h, _, _, force, reaction) in &lv {
+                let (ef, er) = ((force - r) / r, (reaction - r) / r);
+                let (xf, xr) = prev.map_or((f64::NAN, f64::NAN), |(pf, pr)| {
+                    (2.0 * ef - pf, 2.0 * er - pr)
+                });
+                let ratios = prev.map_or(String::new(), |(pf, pr)| {
+                    format!("  ratios {:6.2} {:6.2}", pf / ef, pr / er)
+                });
+                let xratios = prev_x.map_or(String::new(), |(pf, pr)| {
+                    format!("  x-ratios {:6.2} {:6.2}", pf / xf, pr / xr)
+                });
+                println!("    h/D {h:.5}  force {ef:+.3e}  reaction {er:+.3e}  rich {xf:+.3e} {xr:+.3e}{ratios}{xratios}");
+                if prev.is_some() {
+                    prev_x = Some((xf, xr));
+                }
+                prev = Some((ef, er));
+            }
+            continue;
+        }
         if levels_too {
             for fitted in [false, true] {
                 let lv = levels(&case, n_levels, fitted)?;
@@ -166,7 +299,7 @@ pub fn main() -> anyhow::Result<()> {
                 );
                 let mut prev: Option<(f64, f64)> = None;
                 let mut prev_force: Option<f64> = None;
-                for &(h, gap, fit, force) in &lv {
+                for &(h, gap, fit, force, _) in &lv {
                     let (eg, ef, eq) = ((gap - r) / r, (fit - r) / r, (force - r) / r);
                     let ratio = prev.map_or(String::new(), |(pg, pf)| {
                         format!("  ratios {:6.2} {:6.2}", pg / eg, pf / ef)
@@ -184,5 +317,24 @@ pub fn main() -> anyhow::Result<()> {
             }
         }
     }
+    if !orders.is_empty() {
+        println!(
+            "observed order over the last two levels on {} plates: force root {:.3} … {:.3}, reaction fit {:.3} … {:.3}",
+            orders.len(),
+            lo_hi(&orders, 0).0,
+            lo_hi(&orders, 0).1,
+            lo_hi(&orders, 1).0,
+            lo_hi(&orders, 1).1
+        );
+    }
     Ok(())
+}
+
+/// The smallest and largest of component `k` of `v`.
+fn lo_hi(v: &[(f64, f64)], k: usize) -> (f64, f64) {
+    v.iter()
+        .map(|x| if k == 0 { x.0 } else { x.1 })
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+            (a.min(x), b.max(x))
+        })
 }

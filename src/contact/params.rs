@@ -97,10 +97,10 @@ pub struct TwoPlateParams {
     /// LCP knobs.
     pub lcp: LcpParams,
     /// R_o of each level from the fitted contact edge ([`super::edge_fit`]: the root of the
-    /// edge force over trial edges, extrapolated in h, no 2e-5 floor) where it applies
-    /// (frictionless or symmetric contact), else from the gap's shape (default false). Its
-    /// bars held on 45 studies of 15 random infinite plates at 1e-4 … 1e-6 (at most 0.49 of
-    /// the estimate); it needs more levels (raise `max_levels` for 1e-6 and below) and at the
+    /// edge force over trial edges, extrapolated in h, with a floor of 1e-6 R_o instead of
+    /// 2e-5) where it applies (frictionless or symmetric contact), else from the gap's shape
+    /// (default false). Its bars held on the random infinite plates of example 22 at 1e-4 and
+    /// 1e-5 (docs/fem.md); it needs more levels (raise `max_levels` to 12 for 2e-6) and at the
     /// default tolerance costs 2–3× the gap-shape study.
     pub fitted_edge: bool,
 }

@@ -62,6 +62,9 @@ pub struct TwoPlateLevel {
     /// R_o from the fitted edge's force at the edge node ([`super::edge_fit`]).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub r_o_fit_force: Option<f64>,
+    /// R_o from K fitted to the reactions of the last closed nodes ([`super::edge_fit`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub r_o_fit_reaction: Option<f64>,
 }
 
 /// One solved mesh level and its R_o.
@@ -132,6 +135,7 @@ pub(super) fn solve_level_at(
         time_contact: sol.time_contact.as_secs_f64(),
         r_o_fit: fitted.as_ref().map(|f| f.r_o),
         r_o_fit_force: fitted.as_ref().and_then(|f| f.r_o_force),
+        r_o_fit_reaction: fitted.as_ref().and_then(|f| f.r_o_reaction),
     };
     Ok(Level {
         model,
