@@ -24,12 +24,17 @@ pub fn boltzone(args: &[&str]) -> Output {
         .unwrap()
 }
 
-/// The JSON object a successful run printed (panics with its stderr otherwise).
-pub fn json_of(out: &Output) -> serde_json::Value {
+/// Panics with the run's stderr unless it succeeded.
+pub fn succeeded(out: &Output) {
     assert!(
         out.status.success(),
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
+}
+
+/// The JSON object a successful run printed (panics with its stderr otherwise).
+pub fn json_of(out: &Output) -> serde_json::Value {
+    succeeded(out);
     serde_json::from_slice(&out.stdout).unwrap()
 }

@@ -3,7 +3,7 @@
 //! both read the same numbers), `[outputs] plot` draws R_o and the 45° cone's radius B + D, and
 //! `[outputs] report` equals `two --report`'s results and rules on the same joint.
 
-use crate::common::{boltzone, json_of};
+use crate::common::{boltzone, json_of, succeeded};
 
 /// The data rows of a CSV written by boltzone (header first, `#` provenance lines skipped).
 fn data(csv: &str) -> (Vec<String>, Vec<Vec<f64>>) {
@@ -227,14 +227,7 @@ fn scene_report_equals_two_report_and_is_refused_where_it_cannot_be_written() {
     );
     let scene = dir.join("row1.toml");
     std::fs::write(&scene, text.replace("r_o = true", &outputs)).unwrap();
-    let out = boltzone(&["solve", scene.to_str().unwrap(), "--json"]);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v = json_of(&out);
+    let v = json_of(&boltzone(&["solve", scene.to_str().unwrap(), "--json"]));
     let two_md = dir.join("two.md");
     let out = boltzone(&[
         "two",
@@ -253,12 +246,7 @@ fn scene_report_equals_two_report_and_is_refused_where_it_cannot_be_written() {
         "--report",
         two_md.to_str().unwrap(),
     ]);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    succeeded(&out);
     let (scene_md, two_md) = (
         std::fs::read_to_string(&md).unwrap(),
         std::fs::read_to_string(&two_md).unwrap(),
@@ -289,12 +277,7 @@ fn scene_report_equals_two_report_and_is_refused_where_it_cannot_be_written() {
     let outputs = format!("r_o = true\nreport = \"{}\"", html.display());
     std::fs::write(&scene, text.replace("r_o = true", &outputs)).unwrap();
     let out = boltzone(&["solve", scene.to_str().unwrap()]);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    succeeded(&out);
     let page = std::fs::read_to_string(&html).unwrap();
     assert_eq!(page.matches("<svg").count(), 2, "pressure and gap");
     assert!(!page.contains("src=") && !page.contains("href="));
