@@ -38,6 +38,7 @@ mod table_units;
 mod two;
 mod two_args;
 mod two_bolt;
+mod two_bolt_args;
 mod two_curve;
 mod two_files;
 mod two_hankel;

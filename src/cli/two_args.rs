@@ -49,7 +49,7 @@ pub struct Args {
     /// A, B, D, ν as given (A and B may be left to --bolt).
     #[command(flatten)]
     #[serde(skip)]
-    pub(super) given: super::two_bolt::GivenGeometry,
+    pub(super) given: super::two_bolt_args::GivenGeometry,
     /// A, B, D (the upper plate's thickness; the lower plate's too unless --d2 is given), ν:
     /// the flags', with --bolt's hole and bearing radii where --a, --b are omitted
     /// ([`super::two_bolt::resolve`]).
@@ -63,7 +63,7 @@ pub struct Args {
     /// The catalogue bolt, its preload and the member stiffness.
     #[command(flatten)]
     #[serde(flatten)]
-    pub(super) bolt: super::two_bolt::BoltArgs,
+    pub(super) bolt: super::two_bolt_args::BoltArgs,
     /// Lengths, stresses, moduli and forces in (every flag and every printed number).
     #[command(flatten)]
     #[serde(flatten)]
