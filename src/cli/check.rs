@@ -50,13 +50,15 @@ pub fn non_negative(flag: &str, field: &str, value: f64) -> anyhow::Result<f64> 
     Ok(value)
 }
 
-/// A relative tolerance: finite, in (0, 0.5].
+/// A relative tolerance: finite, in [f64::EPSILON, 0.5] (f64 resolves R_o no finer than
+/// its epsilon, 2.2e-16; a tolerance below it asks nothing a route could meet).
 pub fn tolerance(flag: &str, value: f64) -> anyhow::Result<f64> {
-    if !(value > 0.0 && value <= 0.5) {
+    if !((f64::EPSILON..=0.5).contains(&value)) {
         return usage(
             flag,
             num(value),
-            "a relative tolerance on R_o must lie in (0, 0.5] (e.g. 5e-4 = 0.05 %)",
+            "a relative tolerance on R_o must lie in [2.2e-16, 0.5] (f64 resolves R_o no \
+             finer than 2.2e-16; e.g. 5e-4 = 0.05 %)",
         );
     }
     Ok(value)

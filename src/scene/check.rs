@@ -94,11 +94,12 @@ impl Scene {
 pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
     let c = Checker { text };
     let t = scene.tolerance;
-    if !(t.is_finite() && t > 0.0 && t < 1.0) {
+    if !(t.is_finite() && t >= f64::EPSILON && t < 1.0) {
         return Err(c.fail(
             &[k("tolerance")],
             t,
-            "the relative tolerance must lie in (0, 1)",
+            "the relative tolerance must lie in [2.2e-16, 1) (f64 resolves R_o no finer than \
+             2.2e-16)",
         ));
     }
     let a = scene.hole.radius;
