@@ -94,7 +94,7 @@ impl Scene {
 pub fn check(scene: &Scene, text: &str) -> Result<(), SceneError> {
     let c = Checker { text };
     let t = scene.tolerance;
-    if !(t.is_finite() && t >= f64::EPSILON && t < 1.0) {
+    if !(f64::EPSILON..1.0).contains(&t) {
         return Err(c.fail(
             &[k("tolerance")],
             t,
