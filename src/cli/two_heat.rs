@@ -133,10 +133,7 @@ impl HeatArgs {
     pub(super) fn check(&self, units: UnitSystem, joint: &Joint) -> anyhow::Result<()> {
         if let Some(spec) = self.spec()? {
             let m = [joint.upper().material(), joint.lower().material()];
-            let si = |m: boltzone::Material| {
-                boltzone::Material::new(m.youngs_modulus() * units.stress(), m.poisson_ratio())
-            };
-            if let Err(e) = spec.contact(units, [si(m[0])?, si(m[1])?]) {
+            if let Err(e) = spec.contact_solved_in(units, units, m) {
                 return refused(e);
             }
         }

@@ -149,6 +149,19 @@ impl HeatSpec {
         Ok(ContactConductance::new(law, surfaces)?)
     }
 
+    /// [`Self::contact`] with the plates' `materials` in the stresses of `solved_in` (a
+    /// scene's are SI, [`UnitSystem::MPaN`]; `boltzone two`'s are its `--units`).
+    pub fn contact_solved_in(
+        &self,
+        units: UnitSystem,
+        solved_in: UnitSystem,
+        materials: [Material; 2],
+    ) -> Result<ContactConductance, SceneError> {
+        let si =
+            |m: Material| Material::new(m.youngs_modulus() * solved_in.stress(), m.poisson_ratio());
+        self.contact(units, [si(materials[0])?, si(materials[1])?])
+    }
+
     /// Whether the law needs `hardness`.
     pub fn needs_hardness(&self) -> bool {
         !matches!(&self.correlation, CorrelationSpec::Name(n) if n == "mikic-elastic")
@@ -168,10 +181,7 @@ pub fn conductance(
 ) -> Result<f64, SceneError> {
     let spec =
         spec.ok_or_else(|| invalid("outputs.conductance", "true: needs a [heat] table".into()))?;
-    let si =
-        |m: Material| Material::new(m.youngs_modulus() * solved_in.stress(), m.poisson_ratio());
-    let materials = [si(materials[0])?, si(materials[1])?];
-    let mut params = JointParams::new(spec.contact(units, materials)?);
+    let mut params = JointParams::new(spec.contact_solved_in(units, solved_in, materials)?);
     params.length_unit = Length::from_si(solved_in.length());
     params.pressure_unit = Pressure::from_si(solved_in.stress());
     let g = joint_conductance(sol, &params)?;
