@@ -25,78 +25,12 @@
 
 use super::error::SceneError;
 use super::file::{line_of, Scene, Seg};
-use crate::bolt::catalogue::{HeadKind, HoleSeries, WasherSeries};
 use crate::joint::Joint;
 use crate::route::joint::{
     bolt_geometry, grade, preload_force, BoltGeometry, BoltQuestion, BoltSpec, JointAnswer,
     JointError, JointKey, Preload, Scale,
 };
 use crate::route::two_plate::Question;
-use crate::units::UnitSystem;
-use serde::{Deserialize, Serialize};
-
-/// `[bolt]`: a catalogue bolt.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct BoltKeys {
-    /// "M10", "M10x1.25", "1/2-13 UNC" (ISO 262, ASME B1.1).
-    pub size: String,
-    /// Property class "8.8", "10.9", "12.9" (needed for `[preload] utilisation`).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub grade: Option<String>,
-    /// "hex" (ISO 4014/4017, default) or "socket" (ISO 4762).
-    #[serde(default)]
-    pub head: HeadKind,
-    /// ISO 273 clearance series: "fine", "medium" (default), "coarse".
-    #[serde(default)]
-    pub hole: HoleSeries,
-    /// Unthreaded shank length l_1 inside the grip (length unit; default 0).
-    #[serde(default)]
-    pub shank: f64,
-    /// Bolt and nut modulus E_S (stress unit; default 205 GPa).
-    #[serde(rename = "E", default, skip_serializing_if = "Option::is_none")]
-    pub e: Option<f64>,
-    /// Load-introduction factor n (default 1: under head and nut).
-    #[serde(default = "one")]
-    pub load_introduction: f64,
-}
-
-fn one() -> f64 {
-    1.0
-}
-
-/// `[washer]`: a plain washer under the head and under the nut.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct WasherKeys {
-    /// "ISO 7089" (normal) or "ISO 7093" (large).
-    pub standard: WasherSeries,
-}
-
-/// `[preload]`: exactly one of `force`, `torque` (with `mu_thread` and `mu_head`),
-/// `utilisation` (with `mu_thread` and `[bolt] grade`).
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct PreloadKeys {
-    /// The preload F_M (force unit).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub force: Option<f64>,
-    /// The tightening torque M_A (force unit · length unit).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub torque: Option<f64>,
-    /// The utilisation ν of R_p0.2, in (0, 1].
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub utilisation: Option<f64>,
-    /// Thread friction μ_G.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub mu_thread: Option<f64>,
-    /// Head friction μ_K.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub mu_head: Option<f64>,
-    /// VDI 2230 material of the plates for the limiting pressure p_G ("S235", …).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub limit_material: Option<String>,
-}
 
 fn k(s: &str) -> Seg {
     Seg::Key(s.into())
@@ -297,8 +231,9 @@ pub fn resolve(scene: &mut Scene, text: &str) -> Result<(), SceneError> {
     Ok(())
 }
 
-/// The bolted-joint part of `scene`'s answer on its SI joint `joint` (the route layer's
-/// [`crate::route::joint::answer`] in SI, converted to the scene's units), with the contact
+/// The bolted-joint part of `scene`'s answer on its joint `joint` in the units it is solved in
+/// ([`super::si::solved`]; the route layer's [`crate::route::joint::answer`] there, converted to
+/// the scene's units), with the contact
 /// solution of the member-compliance study when k_P was asked. A bolt without `[preload]`
 /// is tightened by `[load]`'s force (or pressure times the bearing area).
 pub fn answer(
@@ -312,12 +247,12 @@ pub fn answer(
     ),
     SceneError,
 > {
-    let u = scene.units;
-    let (l, f) = (u.length(), u.force());
-    let si = Scale::of(UnitSystem::MPaN);
-    let spec = spec(scene, "", (l, u.stress()))?;
+    let to = super::si::solved(scene);
+    let (l, f) = (to.length, to.force);
+    let solving = Scale::of(to.units);
+    let spec = spec(scene, "", (l, to.stress))?;
     let geometry: Option<BoltGeometry> = match &spec {
-        Some(s) => Some(bolt_geometry(s, si).map_err(|e| located("", e))?),
+        Some(s) => Some(bolt_geometry(s, solving).map_err(|e| located("", e))?),
         None => None,
     };
     let preload = match preload(scene, "", (l, f))? {
@@ -337,7 +272,7 @@ pub fn answer(
         }),
         _ => None,
     };
-    let (a, m) = crate::route::joint::answer(q, bolt, si).map_err(|e| match e {
+    let (a, m) = crate::route::joint::answer(q, bolt, solving).map_err(|e| match e {
         crate::route::joint::AnswerError::Bolt(e) => located("", e),
         crate::route::joint::AnswerError::Contact(e) => e.into(),
     })?;

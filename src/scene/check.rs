@@ -77,9 +77,11 @@ fn k(s: &str) -> Seg {
 }
 
 impl Scene {
-    /// Parses and checks a scene (errors name the key, the value and the line).
+    /// Parses a scene, fills what its `[bolt]` leaves out ([`super::bolt_spec::resolve`]) and
+    /// checks it (errors name the key, the value and the line).
     pub fn parse(text: &str) -> Result<Self, SceneError> {
-        let scene = Self::parse_unchecked(text)?;
+        let mut scene = Self::parse_keys(text)?;
+        super::bolt_spec::resolve(&mut scene, text)?;
         check(&scene, text)?;
         Ok(scene)
     }

@@ -78,7 +78,7 @@ pub struct HoleSpec {
     pub radius: f64,
 }
 
-/// A radius the scene leaves to `[bolt]` (filled by [`super::bolt_spec::resolve`]).
+/// A radius the scene leaves to `[bolt]` (filled by `bolt_spec::resolve` when the scene is parsed).
 fn unset() -> f64 {
     f64::NAN
 }
@@ -287,13 +287,13 @@ pub struct Scene {
     pub temperature: Option<super::temperature_spec::TemperatureSpec>,
     /// A catalogue bolt ([`super::bolt_spec`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub bolt: Option<super::bolt_spec::BoltKeys>,
+    pub bolt: Option<super::bolt_keys::BoltKeys>,
     /// A plain washer under head and nut.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub washer: Option<super::bolt_spec::WasherKeys>,
+    pub washer: Option<super::bolt_keys::WasherKeys>,
     /// The bolt's preload.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub preload: Option<super::bolt_spec::PreloadKeys>,
+    pub preload: Option<super::bolt_keys::PreloadKeys>,
     /// Dotted keys mapped to lists of values; the product of the lists is solved.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub sweep: BTreeMap<String, Vec<toml::Value>>,
@@ -388,10 +388,11 @@ pub fn key_near(text: &str, line: usize) -> String {
 }
 
 impl Scene {
-    /// Parses a scene without checking its values ([`Scene::parse`] checks them too).
-    pub(super) fn parse_unchecked(text: &str) -> Result<Self, SceneError> {
+    /// Reads a scene's keys as written: no `[bolt]` filled in, no value checked
+    /// ([`Scene::parse`] does both).
+    pub(super) fn parse_keys(text: &str) -> Result<Self, SceneError> {
         let de = toml::Deserializer::parse(text).map_err(|e| syntax(text, &e))?;
-        let mut scene: Scene = serde_path_to_error::deserialize(de).map_err(|e| {
+        let scene: Scene = serde_path_to_error::deserialize(de).map_err(|e| {
             let path: Vec<Seg> = e
                 .path()
                 .iter()
@@ -417,7 +418,6 @@ impl Scene {
                 reason: inner.message().trim().to_string(),
             }
         })?;
-        super::bolt_spec::resolve(&mut scene, text)?;
         Ok(scene)
     }
 

@@ -149,8 +149,8 @@ impl HeatSpec {
         Ok(ContactConductance::new(law, surfaces)?)
     }
 
-    /// [`Self::contact`] with the plates' `materials` in the stresses of `solved_in` (a
-    /// scene's are SI, [`UnitSystem::MPaN`]; `boltzone two`'s are its `--units`).
+    /// [`Self::contact`] with the plates' `materials` in the stresses of `solved_in` (the units
+    /// the joint was solved in: a scene's, [`super::si::solved`], or `boltzone two`'s `--units`).
     pub fn contact_solved_in(
         &self,
         units: UnitSystem,
@@ -170,8 +170,8 @@ impl HeatSpec {
 
 /// The joint conductance of a scene's `[heat]` table `spec` (None: an error, the table is
 /// needed) from its solved two-plate joint `sol` and the top and bottom plates' `materials`,
-/// both in the lengths and stresses of `solved_in` (a scene solves in SI, [`UnitSystem::MPaN`];
-/// `boltzone two` in its `--units`), in the conductance unit of `units` (the table's own).
+/// both in the lengths and stresses of `solved_in` (a scene and `boltzone two` solve in their
+/// own units, [`super::si::solved`]), in the conductance unit of `units` (the table's own).
 pub fn conductance(
     spec: Option<&HeatSpec>,
     units: UnitSystem,

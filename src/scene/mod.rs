@@ -13,7 +13,9 @@
 //! Chapter V, eq. 1.1).
 //!
 //! **Units.** `units = "in-psi-lbf"` (default), `"mm-MPa-N"` or `"m-Pa-N"` ([`units`]); the
-//! scene is converted to SI (m, Pa, N) on the way in and every result back to its own units.
+//! scene is solved in its own units, as `boltzone two` solves in its `--units`, so the same
+//! joint gives the same bits from both; a scene with `[temperature]` is converted to SI (m, Pa,
+//! N) on the way in and every result back to its own units ([`si`]).
 //! Materials by name from [`materials`] or as `{ E, nu }` (E in the scene's stress unit).
 //!
 //! **Method.** [`mod@file`] parses the TOML (unknown keys are errors; each error names the key,
@@ -44,6 +46,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod bolt_keys;
 pub mod bolt_spec;
 pub mod builder;
 pub mod check;

@@ -1,5 +1,6 @@
-//! Answers one scene: builds the library objects in SI units, runs the one route that serves the
-//! outputs asked, and converts the results back to the scene's units.
+//! Answers one scene: builds the library objects in the units it is solved in (its own, SI with
+//! temperatures: [`super::si::solved`]), runs the one route that serves the outputs asked, and
+//! converts the results back to the scene's units.
 //!
 //! # Accuracy
 //!
@@ -28,7 +29,7 @@ use crate::joint::Joint;
 use crate::route::{single_plate, two_plate};
 use std::time::Instant;
 
-pub use super::si::joint_si;
+pub use super::si::{joint_si, joint_solved, solved};
 pub use super::solution::{FrictionSummary, InterfaceCurve, Solution, Step};
 pub use super::two_fem::two_plate_params;
 
@@ -48,7 +49,7 @@ pub fn pick(scene: &Scene) -> (Method, &'static str) {
         Model::TwoPlate => {
             // a scene whose joint cannot be built, or that asks `hankel` out of reach, is refused
             // by its checks before it is solved
-            let Ok((joint, nut)) = joint_si(scene) else {
+            let Ok((joint, nut)) = joint_solved(scene) else {
                 return (Method::Fem, "finite elements");
             };
             match two_plate::plan(&super::two_hankel::question(scene, &joint, nut)) {
@@ -66,15 +67,16 @@ pub fn pick(scene: &Scene) -> (Method, &'static str) {
 pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
     let t0 = Instant::now();
     scene.check("")?;
-    let (joint, nut) = joint_si(scene)?;
+    let (joint, nut) = joint_solved(scene)?;
+    let to = solved(scene);
     let mut plan = vec![Step {
-        name: "joint in SI units".into(),
+        name: "joint in the solving units".into(),
         ran: true,
-        note: format!("from {}", scene.units.name()),
+        note: format!("from {} to {}", scene.units.name(), to.units.name()),
         seconds: t0.elapsed().as_secs_f64(),
     }];
     let (mut method, mut why) = pick(scene);
-    let l = scene.units.length();
+    let (l, st) = (to.length, to.stress);
     let mut out = Solution {
         r_o: 0.0,
         r_o_error: 0.0,
@@ -116,7 +118,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
             None
         }
         (Model::TwoPlate, Method::Hankel) => {
-            let scale = (l, scene.units.stress());
+            let scale = (l, st);
             let ran = super::two_hankel::solve(scene, &joint, scale, &mut out);
             let (failed, resolved) = (ran.is_err(), *ran.as_ref().unwrap_or(&true));
             let declined = match ran {
@@ -170,7 +172,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
             (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
             if scene.outputs.midplane.is_some() {
                 let m = field::slab_midplane(&slab, s.r_o, scene.tolerance);
-                out.midplane = Some(field::midplane_scaled(m, l, scene.units.stress()));
+                out.midplane = Some(field::midplane_scaled(m, l, st));
             }
             None
         }
@@ -190,7 +192,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                     &plate,
                     &params,
                     t,
-                    scene.units.stress(),
+                    st,
                     keep,
                 )?,
                 None if keep => {
@@ -201,7 +203,6 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
             };
             out.full_contact = Some(s.full_contact);
             if let Some(h) = h {
-                let st = scene.units.stress();
                 if scene.outputs.field.is_some() {
                     let grid = field::single_plate_grid(plate.material(), &h)?;
                     out.field = Some(field::scaled(grid, l, st));

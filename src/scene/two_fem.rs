@@ -27,16 +27,16 @@ use super::error::SceneError;
 use super::field;
 use super::file::InterfaceKind;
 use super::file::Scene;
-use super::si::material;
+use super::si::{material_in, solved};
 use super::solution::{FrictionSummary, InterfaceCurve, Solution};
 use crate::contact::thermal;
 use crate::contact::two_plate::{self, EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
 use crate::joint::Joint;
-use crate::units::UnitSystem;
 use std::time::Instant;
 
-/// Solves `joint` (SI; `nut` the nut's displacement in m, if the scene gives one) by the finite
-/// elements and fills `out` in the scene's units; returns the seconds of the conductance step
+/// Solves `joint` (in the units the scene is solved in, [`super::si::solved`]; `nut` the nut's
+/// displacement, if the scene gives one) by the finite elements and fills `out` in the
+/// scene's units; returns the seconds of the conductance step
 /// when it ran. The contact solution of a member-compliance study under the scene's pressure
 /// (`member`) answers R_o where no field or temperature asks for another solve.
 pub fn solve(
@@ -46,7 +46,8 @@ pub fn solve(
     out: &mut Solution,
     member: Option<crate::contact::compliance::MemberCompliance>,
 ) -> Result<Option<f64>, SceneError> {
-    let l = scene.units.length();
+    let to = solved(scene);
+    let (l, st) = (to.length, to.stress);
     let mut heat_step = None;
     let params = two_plate_params(scene, nut);
     let s = match (&scene.temperature, &scene.outputs.field) {
@@ -57,17 +58,17 @@ pub fn solve(
             joint,
             &params,
             t,
-            (l, scene.units.stress()),
+            (l, st),
             &mut out.field,
         )?,
         (Some(t), None) => {
-            let jt = t.joint_temperature(joint, scene.units.stress())?;
+            let jt = t.joint_temperature(joint, st)?;
             thermal::solve_with_temperature(joint, &params, &jt)?
         }
         (None, Some(_)) => {
             let (s, f) = two_plate::solve_field(joint, &params)?;
             let (grid, _) = field::two_plate_grid(&s, &f)?;
-            out.field = Some(field::scaled(grid, l, scene.units.stress()));
+            out.field = Some(field::scaled(grid, l, st));
             s
         }
         (None, None) => match member {
@@ -78,7 +79,6 @@ pub fn solve(
     (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
     out.full_contact = Some(s.full_contact);
     out.nut_deflection = Some(s.nut_deflection / l);
-    let st = scene.units.stress();
     if let Some(f) = &s.friction {
         out.friction = Some(FrictionSummary {
             mu: f.mu,
@@ -106,12 +106,15 @@ pub fn solve(
     if scene.outputs.conductance {
         let t = Instant::now();
         let last = scene.plates.len().saturating_sub(1);
-        let m = [material(scene, 0)?, material(scene, last)?];
+        let m = [
+            material_in(scene, 0, to.units)?,
+            material_in(scene, last, to.units)?,
+        ];
         out.joint_conductance = Some(super::heat::conductance(
             scene.heat.as_ref(),
             scene.units,
             &s,
-            UnitSystem::MPaN,
+            to.units,
             m,
         )?);
         out.conductance_unit = Some(scene.units.heat_symbols().1);
@@ -120,12 +123,12 @@ pub fn solve(
     Ok(heat_step)
 }
 
-/// Zones [r₁, r₂] in SI divided by the length unit `l`.
+/// Zones [r₁, r₂] in the solving units divided by the length unit `l`.
 fn scaled_zones(z: Vec<[f64; 2]>, l: f64) -> Vec<[f64; 2]> {
     z.into_iter().map(|[a, b]| [a / l, b / l]).collect()
 }
 
-/// The two-plate parameters of `scene` (SI nut displacement `nut`).
+/// The two-plate parameters of `scene` (nut displacement `nut` in the solving units).
 pub fn two_plate_params(scene: &Scene, nut: Option<f64>) -> TwoPlateParams {
     TwoPlateParams {
         interface: match scene.joint.interface {

@@ -49,7 +49,7 @@
 
 use super::error::SceneError;
 use super::file::{Model, Scene};
-use super::si::joint_si;
+use super::si::joint_solved;
 use super::solution::{InterfaceCurve, Solution};
 use crate::hankel::receding::holed::two_plate_hole_to;
 use crate::hankel::receding::rim::rim_contact;
@@ -71,7 +71,7 @@ pub fn blocker(scene: &Scene) -> Option<(&'static str, &'static str)> {
     if scene.model != Model::TwoPlate {
         return Some(("model", "the route is the two-plate model's"));
     }
-    let (joint, nut) = joint_si(scene).ok()?;
+    let (joint, nut) = joint_solved(scene).ok()?;
     let b = two_plate::hankel_blocker(&question(scene, &joint, nut))?;
     Some((scene_key(b.key), b.reason))
 }
@@ -82,7 +82,7 @@ pub fn table_blocker(scene: &Scene) -> Option<(&'static str, &'static str)> {
     if scene.model != Model::TwoPlate {
         return Some(("model", "the tables are the two-plate model's"));
     }
-    let (joint, nut) = joint_si(scene).ok()?;
+    let (joint, nut) = joint_solved(scene).ok()?;
     let b = two_plate::table_answer(&question(scene, &joint, nut)).err()?;
     Some((scene_key(b.key), b.reason))
 }
@@ -110,7 +110,7 @@ fn scene_key(key: Key) -> &'static str {
 /// Whether `method = "auto"` takes this route for `scene` (the route layer's choice,
 /// [`two_plate::plan`]).
 pub fn auto_takes(scene: &Scene) -> bool {
-    let Ok((joint, nut)) = joint_si(scene) else {
+    let Ok((joint, nut)) = joint_solved(scene) else {
         return false;
     };
     let q = two_plate::Question {
@@ -121,8 +121,8 @@ pub fn auto_takes(scene: &Scene) -> bool {
         && two_plate::plan(&q).is_ok_and(|p| p.method == crate::route::Method::Hankel)
 }
 
-/// The two-plate question of `scene` (its SI joint `joint`, nut displacement `nut` in m) for
-/// the route layer.
+/// The two-plate question of `scene` (its joint `joint` and nut displacement `nut` in the units
+/// it is solved in, [`super::si::solved`]) for the route layer.
 pub fn question<'a>(scene: &Scene, joint: &'a Joint, nut: Option<f64>) -> two_plate::Question<'a> {
     let params = super::two_fem::two_plate_params(scene, nut);
     two_plate::Question {
@@ -143,7 +143,7 @@ pub fn question<'a>(scene: &Scene, joint: &'a Joint, nut: Option<f64>) -> two_pl
 /// Fills `out`'s R_o, error and `converged` from the tables ([`two_plate::table_answer`],
 /// lengths in the scene's units: divided by `length`), for a scene they answer.
 pub fn solve_table(scene: &Scene, joint: &Joint, length: f64, out: &mut Solution) -> bool {
-    let Ok((_, nut)) = joint_si(scene) else {
+    let Ok((_, nut)) = joint_solved(scene) else {
         return false;
     };
     match two_plate::table_answer(&question(scene, joint, nut)) {
@@ -164,7 +164,7 @@ fn curve_fractions() -> impl Iterator<Item = f64> {
 
 pub use crate::route::two_plate::UNRESOLVED;
 
-/// Solves `joint` (SI) by the route and fills `out`'s R_o, error, `converged` and, when asked,
+/// Solves `joint` (in the solving units) by the route and fills `out`'s R_o, error, `converged` and, when asked,
 /// the interface curve (scene units: lengths divided by `length`, pressures by `stress`);
 /// returns whether the hole's modes met their residual target (always, without a hole).
 /// Without a hole: the receding contact of the two plates ([`Pair::receding_contact`]), with a
@@ -212,7 +212,7 @@ pub fn solve(
     Ok(resolved)
 }
 
-/// R_o, its estimate and the interface curve (r, q), SI.
+/// R_o, its estimate and the interface curve (r, q), in the solving units.
 type Answer = (f64, f64, Vec<(f64, f64)>);
 
 /// R_o, its estimate and (when `curve`) the interface pressure on 0 ≤ r ≤ R_o of two plates

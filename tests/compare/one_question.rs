@@ -1,6 +1,7 @@
 //! One question, one answer: the same joint through different front ends gets the same numbers
 //! from the route layer, bit for bit where the inputs are the same numbers — `two` and
-//! `table1`'s row, `two` and a scene in the same unit system — and the scene of Table 1's first
+//! `table1`'s row, `two` and a scene in each unit system, the scene of Table 1's first row and
+//! `table1`'s — and the scene of Table 1's first
 //! row asked to 1e-5 and 1e-6 answers through the default route (`auto`, the semi-analytic
 //! route below the finite elements' 2e-5 floor).
 
@@ -43,31 +44,107 @@ fn two_and_table1_give_the_same_bits() {
     }
 }
 
+/// An M8 bolt through two 6 mm aluminium plates in each unit system: (units, A, B, D, C, E,
+/// force), the numbers a user types in that system (not conversions of each other).
+const M8_JOINTS: [[&str; 7]; 3] = [
+    ["in-psi-lbf", "0.177", "0.256", "0.236", "1.575", "1.0e7", "2248"],
+    ["mm-MPa-N", "4.5", "6.5", "6", "40", "70000", "10000"],
+    ["m-Pa-N", "0.0045", "0.0065", "0.006", "0.04", "7.0e10", "10000"],
+];
+
+/// `two` and a scene with the same numbers in the same unit system solve the same
+/// floating-point joint (a scene solves in its own units): the same bits in every system, by
+/// each route (the finite elements with a rim, the tables and the semi-analytic route of an
+/// infinite joint), with the modulus given and taken from the library by name.
 #[test]
 fn two_and_a_scene_in_the_same_units_give_the_same_bits() {
     let dir = std::env::temp_dir().join(format!("boltzone-one-question-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let scene = dir.join("joint.toml");
-    // an M8 bolt through two 6 mm aluminium plates, in SI
-    std::fs::write(
-        &scene,
-        "units = \"m-Pa-N\"\nmodel = \"two-plate\"\n[hole]\nradius = 0.0045\n\
-         [load]\nouter_radius = 0.0065\nforce = 10000.0\n\
-         [[plates]]\nthickness = 0.006\nmaterial = { E = 7.0e10, nu = 0.33 }\n\
-         [joint]\nouter_radius = 0.04\n",
-    )
-    .unwrap();
-    let solve = json_of(&boltzone(&["solve", scene.to_str().unwrap(), "--json"]));
-    let two = json_of(&boltzone(&[
-        "two", "--units", "m-Pa-N", "--a", "0.0045", "--b", "0.0065", "--d", "0.006", "--c",
-        "0.04", "--e", "7.0e10", "--nu", "0.33", "--force", "10000", "--json",
-    ]));
-    assert_eq!(
-        fingerprint(&two["r_o"], &two["r_o_error"], &two["rules"]),
-        fingerprint(&solve["r_o"], &solve["r_o_error"], &solve["rules"])
-    );
-    assert_eq!(two["method"], solve["method"]);
-    assert_eq!(two["nut_deflection"], solve["nut_deflection"]);
+    for [units, a, b, d, c, e, force] in M8_JOINTS {
+        // (the scene's [joint] and material, two's flags, the tolerance)
+        let cases: [(String, Vec<&str>, &str); 3] = [
+            (
+                format!("[[plates]]\nthickness = {d}\nmaterial = {{ E = {e}, nu = 0.33 }}\n[joint]\nouter_radius = {c}\n"),
+                vec!["--c", c, "--e", e, "--nu", "0.33"],
+                "5e-4",
+            ),
+            (
+                format!("[[plates]]\nthickness = {d}\nmaterial = \"aluminium-6061-t6\"\n"),
+                vec!["--material", "aluminium-6061-t6"],
+                "5e-4",
+            ),
+            (
+                format!("[[plates]]\nthickness = {d}\nmaterial = \"aluminium-6061-t6\"\n"),
+                vec!["--material", "aluminium-6061-t6"],
+                "1e-6",
+            ),
+        ];
+        for (plates, flags, tol) in cases {
+            let scene = dir.join("joint.toml");
+            std::fs::write(
+                &scene,
+                format!(
+                    "units = \"{units}\"\nmodel = \"two-plate\"\ntolerance = {tol}\n\
+                     [hole]\nradius = {a}\n[load]\nouter_radius = {b}\nforce = {force}\n{plates}"
+                ),
+            )
+            .unwrap();
+            let solve = json_of(&boltzone(&["solve", scene.to_str().unwrap(), "--json"]));
+            let mut line = vec![
+                "two", "--units", units, "--a", a, "--b", b, "--d", d, "--force", force, "--tol",
+                tol, "--json",
+            ];
+            line.extend(&flags);
+            let two = json_of(&boltzone(&line));
+            let what = format!("{units} {flags:?} tol {tol}: method {}", two["method"]);
+            assert_eq!(
+                fingerprint(&two["r_o"], &two["r_o_error"], &two["rules"]),
+                fingerprint(&solve["r_o"], &solve["r_o_error"], &solve["rules"]),
+                "{what}"
+            );
+            assert_eq!(two["method"], solve["method"], "{what}");
+            assert_eq!(two["converged"], solve["converged"], "{what}");
+            assert_eq!(two["nut_deflection"], solve["nut_deflection"], "{what}");
+        }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A scene of `table1`'s first and last rows' geometry (in inches, its numbers as `table1 --json`
+/// prints them: C = 15.4 A is 1.5400000000000003 in) and `table1`'s row: the same bits.
+#[test]
+fn table1_rows_and_their_scenes_give_the_same_bits() {
+    let rows = json_of(&boltzone(&["table1", "--json"]));
+    let dir = std::env::temp_dir().join(format!("boltzone-table1-scene-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for row in [&rows[0], &rows[11]] {
+        let ours = &row["ours"];
+        let g = &ours["geometry"];
+        let f = |k: &str| g[k].as_f64().unwrap().to_string();
+        let scene = dir.join("row.toml");
+        std::fs::write(
+            &scene,
+            format!(
+                "model = \"two-plate\"\n[hole]\nradius = {}\n[load]\nouter_radius = {}\n\
+                 pressure = 1000.0\n[[plates]]\nthickness = {}\n\
+                 material = {{ E = 28.0e6, nu = {} }}\n[joint]\nouter_radius = {}\n",
+                f("a"),
+                f("b"),
+                f("d"),
+                f("nu"),
+                f("c")
+            ),
+        )
+        .unwrap();
+        let solve = json_of(&boltzone(&["solve", scene.to_str().unwrap(), "--json"]));
+        let t = &ours["two"];
+        assert_eq!(
+            fingerprint(&solve["r_o"], &solve["r_o_error"], &solve["rules"]),
+            fingerprint(&t["value"], &t["error"], &ours["rules"]),
+            "{g}"
+        );
+        assert_eq!(solve["method"], ours["two_method"], "{g}");
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
