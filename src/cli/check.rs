@@ -14,17 +14,7 @@
 use super::exit::{num, usage};
 use std::path::Path;
 
-/// Widest bearing face of the slab, in plate thicknesses (its real-space route's reach).
-pub const B_OVER_D_SLAB: f64 = 1e6;
-/// Widest bearing face of the single plate (FE and Hankel), in plate thicknesses.
-pub const B_OVER_D_SINGLE: f64 = 1e4;
-/// Widest bearing face of the two-plate model, in thicknesses of the thinner plate: beyond it
-/// the loaded plate's bending stiffness falls below f64 resolution of its stiffness matrix.
-pub const B_OVER_D_TWO: f64 = 1e3;
-
-/// The largest Poisson's ratio the finite-element routes take: closer to 0.5 the displacement
-/// elements lock and the stiffness matrix loses definiteness in f64.
-pub const NU_MAX_FEM: f64 = 0.499;
+pub use boltzone::route::reach::{B_OVER_D_SINGLE, B_OVER_D_SLAB, B_OVER_D_TWO, NU_MAX_FEM};
 
 /// `value` if finite and > 0; the message names the flag and the `field` (report notation).
 pub fn positive(flag: &str, field: &str, value: f64) -> anyhow::Result<f64> {
@@ -176,15 +166,15 @@ pub fn output_path(flag: &str, path: &Path) -> anyhow::Result<()> {
     }
 }
 
-/// The supported domain of the joint's shape, in thicknesses of the (thinner) plate D: a hole
-/// A = 0 or 1e-3 ≤ A/D ≤ 1e3, a bearing face at least 1e-6·B wider than the hole, reaching
+/// The supported domain of the joint's shape ([`boltzone::route::reach`]), in thicknesses of the
+/// (thinner) plate D: a hole A = 0 or 1e-3 ≤ A/D ≤ 1e3, a bearing face at least 1e-6·B wider than the hole, reaching
 /// at least 1e-3 thicknesses (B = 1e-320 left the FE's contact window unsized: three exit-1
 /// runs of the 10⁴ fuzz, 25 Nov 2026) and at most `b_over_d_max` thicknesses wide
 /// ([`B_OVER_D_SLAB`], [`B_OVER_D_SINGLE`], [`B_OVER_D_TWO`]).
 /// Outside it the solvers' meshes or quadratures cannot be sized within bounded memory and time,
 /// so such input is refused rather than left to run out of either.
 pub fn domain(a: f64, b: f64, d: f64, b_over_d_max: f64) -> anyhow::Result<()> {
-    if a > 0.0 && !(1e-3..=1e3).contains(&(a / d)) {
+    if !boltzone::route::reach::hole_in_reach(a, d) {
         return usage(
             "--a",
             num(a),

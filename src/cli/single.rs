@@ -98,12 +98,10 @@ fn route(args: &Args) -> Method {
     .method
 }
 
-/// --tol, or the route's default.
+/// --tol, or the route's default ([`single_plate::default_tolerance`]).
 fn tolerance(args: &Args) -> f64 {
-    args.tol.unwrap_or(match route(args) {
-        Method::Hankel => 1e-6,
-        _ => 5e-4,
-    })
+    args.tol
+        .unwrap_or_else(|| single_plate::default_tolerance(route(args)))
 }
 
 /// Checks every flag before any work starts (exit 2 naming the flag).

@@ -269,7 +269,8 @@ fn explain(s: &Solution) {
 }
 
 /// The interface curves as CSV: header with units first (the swept keys first in a sweep),
-/// `#` provenance after it, then r, p, g of each point's finest mesh.
+/// `#` provenance after it, then r, p, g, τ of each point's finest mesh (shortest round-trip
+/// numbers: each reads back as the solution's own f64).
 fn curve_csv(
     pts: &[SweepPoint],
     results: &[Result<Solution, SceneError>],
@@ -313,11 +314,11 @@ fn curve_csv(
         let Some(c) = &s.interface else { continue };
         for i in 0..c.radius.len() {
             let (r, pr, g, tau) = (c.radius[i], c.pressure[i], c.gap[i], c.shear[i]);
-            out += &format!("{at}{r:.10e},{pr:.10e},{g:.10e},{tau:.10e}");
+            out += &format!("{at}{r:e},{pr:e},{g:e},{tau:e}");
             if friction {
                 let (s, st) = (c.slip.get(i), c.state.get(i));
                 match (s, st) {
-                    (Some(s), Some(st)) => out += &format!(",{s:.10e},{st}"),
+                    (Some(s), Some(st)) => out += &format!(",{s:e},{st}"),
                     _ => out += ",,",
                 }
             }

@@ -29,6 +29,7 @@ use boltzone::contact::two_plate::{
     solve, solve_field, TwoPlateField, TwoPlateParams, TwoPlateSolution,
 };
 use boltzone::fem::ElementKind;
+use boltzone::route::two_plate::HankelSolver;
 use boltzone::route::{sanity, two_plate, Method};
 use boltzone::Value;
 
@@ -166,7 +167,13 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
         check::B_OVER_D_TWO,
     )?;
     if let Some(d2) = args.d2 {
-        check::ratio("--d2", d2, g.d, 1e3, "thickness")?;
+        check::ratio(
+            "--d2",
+            d2,
+            g.d,
+            boltzone::route::reach::THICKNESS_RATIO,
+            "thickness",
+        )?;
     }
     if let Some(e2) = args.e2 {
         check::ratio("--e2", e2, args.e(), 1e6, "Young's modulus")?;
@@ -215,10 +222,10 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     // `auto` hands a joint the semi-analytic route declines to the finite elements, saying why
     let mut fallback = None;
     if hankel {
-        let ran = match (args.geom.a <= 0.0, args.c) {
-            (true, Some(c)) => super::two_rim::run(&args, c, load.clone(), start),
-            (true, None) => super::two_pair::run(&args, load.clone(), start),
-            (false, _) => super::two_hankel::run(&args, load.clone(), start),
+        let ran = match two_plate::hankel_solver(&joint) {
+            HankelSolver::Rim(c) => super::two_rim::run(&args, c, load.clone(), start),
+            HankelSolver::Pair => super::two_pair::run(&args, load.clone(), start),
+            HankelSolver::Holed => super::two_hankel::run(&args, load.clone(), start),
         };
         match ran {
             Err(e) if two_plate::fall_back(args.method, true, true) => {

@@ -16,7 +16,7 @@
 use super::exit::{sig, Status};
 use super::two_args::Args;
 use boltzone::hankel::receding::holed::two_plate_hole_to;
-use boltzone::route::two_plate;
+use boltzone::route::two_plate::{self, HankelSolver};
 use boltzone::{Material, OuterRadius, SinglePlate, Value};
 
 /// Answers `q` (checked arguments whose plan is the tables) from the tables.
@@ -91,10 +91,15 @@ pub fn run(
 fn verify(args: &Args, q: &two_plate::Question) -> anyhow::Result<Value> {
     let g = &args.geom;
     let m = Material::new(args.e(), g.nu)?;
-    if g.a <= 0.0 {
-        let layer = boltzone::hankel::receding::Layer::new(g.d, m, q.joint.load().clone())?;
-        let c = layer.receding_contact(&boltzone::hankel::receding::RecedingParams::default())?;
-        return Ok(Value::with_tolerance(c.r_o, c.info.r_o_error, args.tol));
+    match two_plate::hankel_solver(q.joint) {
+        HankelSolver::Holed => {}
+        HankelSolver::Pair => {
+            let layer = boltzone::hankel::receding::Layer::new(g.d, m, q.joint.load().clone())?;
+            let params = boltzone::hankel::receding::RecedingParams::default();
+            let c = layer.receding_contact(&params)?;
+            return Ok(Value::with_tolerance(c.r_o, c.info.r_o_error, args.tol));
+        }
+        HankelSolver::Rim(_) => anyhow::bail!("internal: the tables answer infinite plates only"),
     }
     let plate = SinglePlate::new(g.a, OuterRadius::Infinite, g.d, m, q.joint.load().clone())?;
     let (out, _) = two_plate_hole_to(&plate, args.tol, &[])?;

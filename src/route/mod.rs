@@ -45,6 +45,7 @@
 
 pub mod joint;
 pub mod method;
+pub mod reach;
 pub mod rules_beside;
 pub mod sanity;
 pub mod single_plate;

@@ -74,6 +74,15 @@ pub fn plan(q: &Question) -> Plan {
     Plan { method, why }
 }
 
+/// The tolerance a route works to when none is asked: the Hankel route's root search reaches
+/// 1e-6 in milliseconds; the finite elements' default is 5e-4 (their levels' cost).
+pub fn default_tolerance(method: Method) -> f64 {
+    match method {
+        Method::Hankel => 1e-6,
+        _ => 5e-4,
+    }
+}
+
 /// The Hankel search and hole parameters the single-plate route uses at relative tolerance
 /// `tolerance` (the root search a thousand times tighter than the tolerance, at least as tight
 /// as its default; the hole's modes by [`HoleParams::for_tolerance`]).

@@ -192,6 +192,40 @@ pub struct Plan {
     pub why: &'static str,
 }
 
+/// The semi-analytic solver that answers a joint the Hankel route takes: the route layer's
+/// choice, which every front end runs and words in its own output.
+///
+/// ```
+/// use boltzone::route::two_plate::{hankel_solver, HankelSolver};
+/// use boltzone::{Joint, Material, OuterRadius};
+/// let joint = Joint::symmetric(0.1, 0.31, 0.1, Material::new(3e7, 0.3)?)?;
+/// assert_eq!(hankel_solver(&joint), HankelSolver::Holed);
+/// let solid = Joint::symmetric(0.0, 0.31, 0.1, Material::new(3e7, 0.3)?)?;
+/// assert_eq!(hankel_solver(&solid), HankelSolver::Pair);
+/// let rim = solid.with_outer_radius(OuterRadius::Finite(1.54))?;
+/// assert_eq!(hankel_solver(&rim), HankelSolver::Rim(1.54));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum HankelSolver {
+    /// No hole, infinite plates: the receding contact of the pair in series
+    /// ([`Pair::receding_contact`]).
+    Pair,
+    /// No hole, equal plates with a finite rim C: [`crate::hankel::receding::rim::rim_contact`].
+    Rim(f64),
+    /// A hole, equal plates (a rim too): [`crate::hankel::receding::holed::two_plate_hole_to`].
+    Holed,
+}
+
+/// Which semi-analytic solver answers `joint` (within [`hankel_blocker`]'s reach).
+pub fn hankel_solver(joint: &Joint) -> HankelSolver {
+    match (joint.hole_radius() > 0.0, joint.outer_radius()) {
+        (true, _) => HankelSolver::Holed,
+        (false, OuterRadius::Finite(c)) => HankelSolver::Rim(c),
+        (false, OuterRadius::Infinite) => HankelSolver::Pair,
+    }
+}
+
 /// The first input of `q` that keeps it from the Hankel routes (module docs), or None.
 pub fn hankel_blocker(q: &Question) -> Option<Blocker> {
     let j = q.joint;

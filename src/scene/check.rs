@@ -24,15 +24,16 @@ use super::file::{
 };
 use super::heat::{CorrelationSpec, CORRELATIONS};
 use super::materials;
+use crate::route::reach;
 use std::path::Path;
 
-/// Largest B/D each model reaches (as the commands' own checks).
+/// Largest B/D each model reaches ([`crate::route::reach`]).
 fn b_over_d_max(model: Model) -> f64 {
-    match model {
-        Model::TwoPlate => 1e3,
-        Model::SinglePlate => 1e4,
-        Model::Slab => 1e6,
-    }
+    reach::b_over_d_max(match model {
+        Model::TwoPlate => reach::Model::TwoPlate,
+        Model::SinglePlate => reach::Model::SinglePlate,
+        Model::Slab => reach::Model::Slab,
+    })
 }
 
 struct Checker<'a> {
@@ -299,7 +300,7 @@ fn check_plates(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
     }
     let nu_max = match (scene.model, scene.method) {
         (Model::Slab, _) | (Model::SinglePlate, Method::Hankel) => 0.5,
-        _ => 0.499,
+        _ => reach::NU_MAX_FEM,
     };
     for (i, p) in scene.plates.iter().enumerate() {
         let at = |key: &str| vec![k("plates"), Seg::Index(i), k(key)];
@@ -318,7 +319,7 @@ fn check_plates(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
                 ),
             ));
         }
-        if a > 0.0 && !(1e-3..=1e3).contains(&(a / d)) {
+        if !reach::hole_in_reach(a, d) {
             return Err(c.fail(&at("thickness"), d, "A/D must lie within 1e-3..1e3"));
         }
         match &p.material {
@@ -348,7 +349,7 @@ fn check_plates(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
     }
     if let [up, lo] = scene.plates.as_slice() {
         let r = lo.thickness / up.thickness;
-        if !(1e-3..=1e3).contains(&r) {
+        if !(1.0 / reach::THICKNESS_RATIO..=reach::THICKNESS_RATIO).contains(&r) {
             return Err(c.fail(
                 &[k("plates"), Seg::Index(1), k("thickness")],
                 lo.thickness,

@@ -188,13 +188,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
             let plate = substitute(&joint)?;
             let keep = scene.outputs.field.is_some() || scene.outputs.midplane.is_some();
             let (s, h) = match &scene.temperature {
-                Some(t) => super::temperature::solve_single(
-                    &plate,
-                    &params,
-                    t,
-                    st,
-                    keep,
-                )?,
+                Some(t) => super::temperature::solve_single(&plate, &params, t, st, keep)?,
                 None if keep => {
                     let (s, h) = fem_single::solve_with_field(&plate, &params)?;
                     (s, Some(h))

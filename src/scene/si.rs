@@ -84,7 +84,10 @@ pub fn material_in(scene: &Scene, i: usize, solving: UnitSystem) -> Result<Mater
                 line: 1,
                 reason: format!("\"{n}\": not in the library ({})", materials::names()),
             })?;
-            Ok(Material::new(m.youngs_modulus / solving.stress(), m.poisson_ratio)?)
+            Ok(Material::new(
+                m.youngs_modulus / solving.stress(),
+                m.poisson_ratio,
+            )?)
         }
         MaterialSpec::Constants(c) => {
             let stress = Solved::between(scene.units, solving).stress;

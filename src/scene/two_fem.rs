@@ -54,13 +54,9 @@ pub fn solve(
         (Some(t), _) if t.from_heat => {
             super::from_heat::solve(scene, joint, &params, t, out)?.solution
         }
-        (Some(t), Some(_)) => super::temperature::two_plate_field(
-            joint,
-            &params,
-            t,
-            (l, st),
-            &mut out.field,
-        )?,
+        (Some(t), Some(_)) => {
+            super::temperature::two_plate_field(joint, &params, t, (l, st), &mut out.field)?
+        }
         (Some(t), None) => {
             let jt = t.joint_temperature(joint, st)?;
             thermal::solve_with_temperature(joint, &params, &jt)?

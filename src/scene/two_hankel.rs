@@ -54,8 +54,8 @@ use super::solution::{InterfaceCurve, Solution};
 use crate::hankel::receding::holed::two_plate_hole_to;
 use crate::hankel::receding::rim::rim_contact;
 use crate::hankel::receding::{Pair, RecedingParams};
-use crate::joint::{Joint, OuterRadius};
-use crate::route::two_plate::{self, Key};
+use crate::joint::Joint;
+use crate::route::two_plate::{self, HankelSolver, Key};
 
 /// `method = "auto"` takes this route only below this tolerance (the route layer's choice).
 pub use crate::route::two_plate::AUTO_BELOW;
@@ -177,23 +177,30 @@ pub fn solve(
 ) -> Result<bool, SceneError> {
     let curve_asked = scene.outputs.wants_curve();
     // `resolved`: the hole's modes met their target (always, without a hole)
-    let (r_o, error, resolved, curve) = if joint.hole_radius() <= 0.0 {
-        let (r_o, error, curve) = solve_no_hole(scene.tolerance, joint, curve_asked)?;
-        (r_o, error, true, curve)
-    } else {
-        let plate = joint
-            .single_plate_substitute()
-            .ok_or_else(|| SceneError::Invalid {
-                key: "plates".into(),
-                line: 1,
-                reason: "the Hankel route with a hole needs two equal plates".into(),
-            })?;
-        let at: Vec<f64> = match curve_asked {
-            true => curve_fractions().collect(),
-            false => Vec::new(),
-        };
-        let (h, curve) = two_plate_hole_to(&plate, scene.tolerance, &at)?;
-        (h.r_o, h.info.r_o_error, h.info.hole_resolved, curve)
+    let (r_o, error, resolved, curve) = match two_plate::hankel_solver(joint) {
+        HankelSolver::Holed => {
+            let plate = joint
+                .single_plate_substitute()
+                .ok_or_else(|| SceneError::Invalid {
+                    key: "plates".into(),
+                    line: 1,
+                    reason: "the Hankel route with a hole needs two equal plates".into(),
+                })?;
+            let at: Vec<f64> = match curve_asked {
+                true => curve_fractions().collect(),
+                false => Vec::new(),
+            };
+            let (h, curve) = two_plate_hole_to(&plate, scene.tolerance, &at)?;
+            (h.r_o, h.info.r_o_error, h.info.hole_resolved, curve)
+        }
+        HankelSolver::Pair => {
+            let (r_o, error, curve) = solve_pair(joint, curve_asked)?;
+            (r_o, error, true, curve)
+        }
+        HankelSolver::Rim(c) => {
+            let (r_o, error, curve) = solve_rim(scene.tolerance, joint, c, curve_asked)?;
+            (r_o, error, true, curve)
+        }
     };
     out.r_o = r_o / length;
     out.r_o_error = error / length;
@@ -215,36 +222,35 @@ pub fn solve(
 /// R_o, its estimate and the interface curve (r, q), in the solving units.
 type Answer = (f64, f64, Vec<(f64, f64)>);
 
-/// R_o, its estimate and (when `curve`) the interface pressure on 0 ≤ r ≤ R_o of two plates
-/// without a hole: infinite, the pair's receding contact; with a rim C, `rim_contact` at
-/// `tolerance` (equal plates, checked by [`blocker`]).
-fn solve_no_hole(tolerance: f64, joint: &Joint, curve: bool) -> Result<Answer, SceneError> {
-    let params = RecedingParams::default();
-    let radii = |r_o: f64| -> Vec<f64> {
-        match curve {
-            true => curve_fractions().map(|f| r_o * f).collect(),
-            false => Vec::new(),
-        }
-    };
-    match joint.outer_radius() {
-        OuterRadius::Infinite => {
-            let pair = Pair::new(joint.upper(), joint.lower(), joint.load().clone());
-            let s = pair.receding_contact(&params)?;
-            let q = radii(s.r_o)
-                .into_iter()
-                .map(|r| (r, s.solution.pressure(r)))
-                .collect();
-            Ok((s.r_o, s.info.r_o_error, q))
-        }
-        OuterRadius::Finite(c) => {
-            let (d, m) = (joint.upper().thickness(), joint.upper().material());
-            let rim = |at: &[f64]| rim_contact(d, m, joint.load(), c, &params, tolerance, at);
-            let (s, _) = rim(&[])?;
-            let q = match curve {
-                true => rim(&radii(s.r_o))?.1,
-                false => Vec::new(),
-            };
-            Ok((s.r_o, s.info.r_o_error, q))
-        }
+/// The curve's radii on 0 ≤ r ≤ R_o when `curve` is asked.
+fn radii(r_o: f64, curve: bool) -> Vec<f64> {
+    match curve {
+        true => curve_fractions().map(|f| r_o * f).collect(),
+        false => Vec::new(),
     }
+}
+
+/// R_o, its estimate and (when `curve`) the interface pressure on 0 ≤ r ≤ R_o of two infinite
+/// plates without a hole: the pair's receding contact.
+fn solve_pair(joint: &Joint, curve: bool) -> Result<Answer, SceneError> {
+    let pair = Pair::new(joint.upper(), joint.lower(), joint.load().clone());
+    let s = pair.receding_contact(&RecedingParams::default())?;
+    let q = radii(s.r_o, curve)
+        .into_iter()
+        .map(|r| (r, s.solution.pressure(r)))
+        .collect();
+    Ok((s.r_o, s.info.r_o_error, q))
+}
+
+/// The same with a rim `c` (equal plates, checked by [`blocker`]): `rim_contact` at `tolerance`.
+fn solve_rim(tolerance: f64, joint: &Joint, c: f64, curve: bool) -> Result<Answer, SceneError> {
+    let (d, m) = (joint.upper().thickness(), joint.upper().material());
+    let params = RecedingParams::default();
+    let rim = |at: &[f64]| rim_contact(d, m, joint.load(), c, &params, tolerance, at);
+    let (s, _) = rim(&[])?;
+    let q = match curve {
+        true => rim(&radii(s.r_o, true))?.1,
+        false => Vec::new(),
+    };
+    Ok((s.r_o, s.info.r_o_error, q))
 }

@@ -47,9 +47,19 @@ fn two_and_table1_give_the_same_bits() {
 /// An M8 bolt through two 6 mm aluminium plates in each unit system: (units, A, B, D, C, E,
 /// force), the numbers a user types in that system (not conversions of each other).
 const M8_JOINTS: [[&str; 7]; 3] = [
-    ["in-psi-lbf", "0.177", "0.256", "0.236", "1.575", "1.0e7", "2248"],
+    [
+        "in-psi-lbf",
+        "0.177",
+        "0.256",
+        "0.236",
+        "1.575",
+        "1.0e7",
+        "2248",
+    ],
     ["mm-MPa-N", "4.5", "6.5", "6", "40", "70000", "10000"],
-    ["m-Pa-N", "0.0045", "0.0065", "0.006", "0.04", "7.0e10", "10000"],
+    [
+        "m-Pa-N", "0.0045", "0.0065", "0.006", "0.04", "7.0e10", "10000",
+    ],
 ];
 
 /// `two` and a scene with the same numbers in the same unit system solve the same

@@ -131,18 +131,18 @@ fn scene_friction_keys_reach_the_model() {
     use boltzone::contact::two_plate::{solve, InterfaceModel, TwoPlateParams};
     let text = scene("interface = \"friction\"\nmu = 0.3\n");
     let s = boltzone::solve(&boltzone::scene::Scene::parse(&text).unwrap()).unwrap();
-    // the library call the scene wraps: Table 2 case 5 in SI units (1 in = 0.0254 m, 1 psi =
-    // 4.4482216152605 N / 0.0254² m², the library's steel-304); equal bit for bit
+    // the library call the scene wraps: Table 2 case 5 in the scene's own units (inches and
+    // psi; the library's steel-304 divided by the psi once); equal bit for bit
     use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate};
-    let (inch, psi) = (0.0254, 4.4482216152605 / (0.0254 * 0.0254));
+    let psi = boltzone::scene::UnitSystem::InPsiLbf.stress();
     let m = boltzone::scene::materials::lookup("steel-304").unwrap();
-    let steel = Material::new(m.youngs_modulus, m.poisson_ratio).unwrap();
+    let steel = Material::new(m.youngs_modulus / psi, m.poisson_ratio).unwrap();
     let joint = Joint::new(
-        0.1285 * inch,
-        OuterRadius::Finite(2.0 * inch),
-        Plate::new(0.124 * inch, steel).unwrap(),
-        Plate::new(0.257 * inch, steel).unwrap(),
-        FaceLoad::uniform(0.1285 * inch, 0.211 * inch, psi).unwrap(),
+        0.1285,
+        OuterRadius::Finite(2.0),
+        Plate::new(0.124, steel).unwrap(),
+        Plate::new(0.257, steel).unwrap(),
+        FaceLoad::uniform(0.1285, 0.211, 1.0).unwrap(),
     )
     .unwrap();
     let params = TwoPlateParams {
@@ -153,10 +153,10 @@ fn scene_friction_keys_reach_the_model() {
     let direct = solve(&joint, &params).unwrap();
     assert_eq!(
         s.r_o.to_bits(),
-        (direct.r_o / inch).to_bits(),
+        direct.r_o.to_bits(),
         "{} vs {}",
         s.r_o,
-        direct.r_o / inch
+        direct.r_o
     );
     for (joint, key) in [
         ("interface = \"friction\"\n", "joint.interface"),

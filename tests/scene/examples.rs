@@ -1,46 +1,48 @@
 //! Every example scene: `boltzone::solve` equals, bit for bit, the library call it wraps, built
-//! here by hand from the numbers of the file and the definitions of the units (1 in = 0.0254 m,
-//! 1 lbf = 4.4482216152605 N); and `boltzone solve --json` prints the same numbers.
+//! here by hand from the numbers of the file in the file's own units (a scene solves in them; a
+//! library material's SI modulus is divided by the stress unit once); and `boltzone solve
+//! --json` prints the same numbers.
 
 use crate::{example, scratch};
 use boltzone::contact::two_plate::{self, InterfaceModel, TwoPlateParams};
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
 use boltzone::hankel::SeparationParams;
 use boltzone::scene::sweep::points;
-use boltzone::scene::Scene;
+use boltzone::scene::{Scene, UnitSystem};
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate, SinglePlate};
 use std::f64::consts::PI;
 use std::process::Command;
 
-const IN: f64 = 0.0254;
-const LBF: f64 = 4.4482216152605;
-const PSI: f64 = LBF / (IN * IN);
-
 fn two_plate_joint(a: f64, b: f64, p: f64, d1: f64, d2: f64, c: f64, m: Material) -> Joint {
     Joint::new(
-        a * IN,
-        OuterRadius::Finite(c * IN),
-        Plate::new(d1 * IN, m).unwrap(),
-        Plate::new(d2 * IN, m).unwrap(),
-        FaceLoad::uniform(a * IN, b * IN, p).unwrap(),
+        a,
+        OuterRadius::Finite(c),
+        Plate::new(d1, m).unwrap(),
+        Plate::new(d2, m).unwrap(),
+        FaceLoad::uniform(a, b, p).unwrap(),
     )
     .unwrap()
 }
 
 fn force_pressure(f: f64, a: f64, b: f64) -> f64 {
-    let (a, b) = (a * IN, b * IN);
-    f * LBF / (PI * (b * b - a * a))
+    f / (PI * (b * b - a * a))
+}
+
+/// The library material `name` in the stresses of `units`.
+fn library(name: &str, units: UnitSystem) -> Material {
+    let m = boltzone::scene::materials::lookup(name).unwrap();
+    Material::new(m.youngs_modulus / units.stress(), m.poisson_ratio).unwrap()
 }
 
 #[test]
 fn solve_equals_the_library_call_table1_row1() {
     let scene = Scene::parse(&example("table1_row1")).unwrap();
     let s = boltzone::solve(&scene).unwrap();
-    let steel = Material::new(28.0e6 * PSI, 0.3).unwrap();
-    let joint = two_plate_joint(0.1, 0.31, 1000.0 * PSI, 0.1, 0.1, 1.54, steel);
+    let steel = Material::new(28.0e6, 0.3).unwrap();
+    let joint = two_plate_joint(0.1, 0.31, 1000.0, 0.1, 0.1, 1.54, steel);
     let direct = two_plate::solve(&joint, &TwoPlateParams::default()).unwrap();
-    assert_eq!(s.r_o.to_bits(), (direct.r_o / IN).to_bits());
-    assert_eq!(s.r_o_error.to_bits(), (direct.r_o_error / IN).to_bits());
+    assert_eq!(s.r_o.to_bits(), direct.r_o.to_bits());
+    assert_eq!(s.r_o_error.to_bits(), direct.r_o_error.to_bits());
     assert_eq!(s.converged, direct.converged);
     // the report's two-plate R_o/A of this row is 3.7 on its coarse mesh, whose values sit up
     // to one nodal interval above the converged R_o (README): ours must lie below, within 0.3 A
@@ -52,7 +54,7 @@ fn solve_equals_the_library_call_table1_row1() {
 fn solve_equals_the_library_call_table2_case5() {
     let scene = Scene::parse(&example("table2_case5")).unwrap();
     let s = boltzone::solve(&scene).unwrap();
-    let steel = Material::new(28.0e6 * PSI, 0.3).unwrap();
+    let steel = Material::new(28.0e6, 0.3).unwrap();
     let p = force_pressure(1100.0, 0.1285, 0.211);
     let joint = two_plate_joint(0.1285, 0.211, p, 0.124, 0.257, 2.0, steel);
     let params = TwoPlateParams {
@@ -60,8 +62,8 @@ fn solve_equals_the_library_call_table2_case5() {
         ..TwoPlateParams::default()
     };
     let direct = two_plate::solve(&joint, &params).unwrap();
-    assert_eq!(s.r_o.to_bits(), (direct.r_o / IN).to_bits());
-    assert_eq!(s.r_o_error.to_bits(), (direct.r_o_error / IN).to_bits());
+    assert_eq!(s.r_o.to_bits(), direct.r_o.to_bits());
+    assert_eq!(s.r_o_error.to_bits(), direct.r_o_error.to_bits());
     // the rubbing test's 2R_o range of case 5 is 0.54-0.58 in (Table 2)
     assert!(
         (0.50..0.62).contains(&(2.0 * s.r_o)),
@@ -81,14 +83,11 @@ fn chapter6_pair_through_the_command_writes_the_interface_csv() {
         .output()
         .unwrap();
     let v = crate::common::json_of(&out);
-    let steel = Material::new(28.0e6 * PSI, 0.3).unwrap();
+    let steel = library("steel-304", UnitSystem::InPsiLbf);
     let p = force_pressure(1100.0, 0.1285, 0.211);
     let joint = two_plate_joint(0.1285, 0.211, p, 0.253, 0.253, 2.0, steel);
     let direct = two_plate::solve(&joint, &TwoPlateParams::default()).unwrap();
-    assert_eq!(
-        v["r_o"].as_f64().unwrap().to_bits(),
-        (direct.r_o / IN).to_bits()
-    );
+    assert_eq!(v["r_o"].as_f64().unwrap().to_bits(), direct.r_o.to_bits());
     for key in [
         "r_o_error",
         "converged",
@@ -110,15 +109,9 @@ fn chapter6_pair_through_the_command_writes_the_interface_csv() {
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
         .collect();
     assert_eq!(rows.len(), direct.radius.len());
-    // the curve's radii and gaps are the library's, converted: r in inches, g in inches
+    // the curve's radii and gaps are the library's, in inches, printed in shortest round-trip
     for (row, (r, g)) in rows.iter().zip(direct.radius.iter().zip(&direct.gap)) {
-        assert!(
-            (row[0] - r / IN).abs() <= 1e-9 * (r / IN),
-            "{} vs {}",
-            row[0],
-            r / IN
-        );
-        assert!((row[2] - g / IN).abs() <= 1e-9 * (g / IN).abs() + 1e-20);
+        assert_eq!((row[0], row[2]), (*r, *g));
     }
 }
 
@@ -129,11 +122,11 @@ fn m8_sweep_points_equal_the_hankel_route() {
     let pts = points(&example("m8_aluminium_sweep")).unwrap();
     assert_eq!(pts.len(), 3);
     let results = boltzone::scene::sweep::solve_all(&pts, &|| {});
-    let al = Material::new(68.9e9, 0.33).unwrap();
+    let al = library("aluminium-6061-t6", UnitSystem::MmMpaN);
     for (b_mm, r) in [5.8, 6.5, 7.0].iter().zip(results) {
         let s = r.unwrap();
-        // metres = millimetres × 1e-3, as written
-        let (a, b, d) = (4.2 * 1e-3, b_mm * 1e-3, 6.0 * 1e-3);
+        // in the scene's millimetres and megapascals, as written
+        let (a, b, d) = (4.2, *b_mm, 6.0);
         let load = FaceLoad::uniform(a, b, 15000.0 / (PI * (b * b - a * a))).unwrap();
         let plate = SinglePlate::new(a, OuterRadius::Infinite, d, al, load).unwrap();
         let search = SeparationParams {
@@ -145,11 +138,7 @@ fn m8_sweep_points_equal_the_hankel_route() {
             ..HoleParams::default()
         };
         let (direct, _) = single_plate_separation(&plate, &search, &hole).unwrap();
-        assert_eq!(
-            s.r_o.to_bits(),
-            (direct.r_o / 1e-3).to_bits(),
-            "B = {b_mm} mm"
-        );
+        assert_eq!(s.r_o.to_bits(), direct.r_o.to_bits(), "B = {b_mm} mm");
         assert!(s.converged);
     }
 }

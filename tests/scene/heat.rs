@@ -93,28 +93,32 @@ fn same_conductance_in_three_unit_systems() {
     let (g_m, s_m) = conductance(&write("m-Pa-N", 1.0, 1.0, 1.0, k_si));
     assert_eq!(s_mm.conductance_unit, Some("W/K"));
     assert_eq!(s_m.conductance_unit, Some("W/K"));
+    // each scene solves in its own units: the same to the FE's stopping tolerance, 1e-3 of the
+    // scenes' 5e-4 (tests/scene/units.rs)
+    let bound = 1e-3 * 5e-4;
     for (g, what) in [(g_mm, "mm-MPa-N"), (g_m, "m-Pa-N")] {
         let rel = (g / (g_in * BTU_HR_F) - 1.0).abs();
         assert!(
-            rel < 1e-12,
+            rel < bound,
             "{what}: {g} W/K vs {} W/K ({rel:e})",
             g_in * BTU_HR_F
         );
     }
-    assert!((s_mm.r_o / (s_in.r_o * 25.4) - 1.0).abs() < 1e-12);
-    assert!((s_m.r_o / (s_in.r_o * IN) - 1.0).abs() < 1e-12);
+    assert!((s_mm.r_o / (s_in.r_o * 25.4) - 1.0).abs() < bound);
+    assert!((s_m.r_o / (s_in.r_o * IN) - 1.0).abs() < bound);
 }
 
-/// The Chapter V joint built by hand in SI units, as the scene's numbers say.
+/// The Chapter V joint built by hand in the scene's own units (inches, psi, lbf; the surfaces
+/// in SI), as the scene's numbers say.
 fn chapter5_by_hand() -> (f64, f64) {
-    let al = Material::new(1.0e7 * PSI, 0.33).unwrap();
-    let (a, b) = (0.1 * IN, 0.13 * IN);
-    let p = 1000.0 * 4.4482216152605 / (PI * (b * b - a * a));
+    let al = Material::new(1.0e7, 0.33).unwrap();
+    let (a, b) = (0.1, 0.13);
+    let p = 1000.0 / (PI * (b * b - a * a));
     let joint = Joint::new(
         a,
-        OuterRadius::Finite(1.54 * IN),
-        Plate::new(0.1 * IN, al).unwrap(),
-        Plate::new(0.1 * IN, al).unwrap(),
+        OuterRadius::Finite(1.54),
+        Plate::new(0.1, al).unwrap(),
+        Plate::new(0.1, al).unwrap(),
         FaceLoad::uniform(a, b, p).unwrap(),
     )
     .unwrap();
@@ -128,8 +132,8 @@ fn chapter5_by_hand() -> (f64, f64) {
     .unwrap();
     let mut params =
         JointParams::new(ContactConductance::new(Correlation::Cmy1969, surfaces).unwrap());
-    params.length_unit = Length::from_si(1.0);
-    params.pressure_unit = Pressure::from_si(1.0);
+    params.length_unit = Length::from_si(IN);
+    params.pressure_unit = Pressure::from_si(PSI);
     let g = joint_conductance(&sol, &params).unwrap();
     (g.total.si(), sol.r_o)
 }
@@ -138,7 +142,7 @@ fn chapter5_by_hand() -> (f64, f64) {
 fn chapter5_scene_equals_the_library_calls_and_the_command() {
     let (g_si, r_o) = chapter5_by_hand();
     let (g, s) = conductance(&example("chapter5_lap"));
-    assert_eq!(s.r_o.to_bits(), (r_o / IN).to_bits());
+    assert_eq!(s.r_o.to_bits(), r_o.to_bits());
     // the conductance factor differs from the test's BTU_HR_F by rounding only
     assert!((g * BTU_HR_F / g_si - 1.0).abs() < 1e-14, "{g} Btu/(hr·°F)");
     let dir = scratch("chapter5");
