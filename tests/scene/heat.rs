@@ -279,7 +279,7 @@ fn two_conductance_flags_give_the_closed_form_and_the_scene() {
         v["method"], "fem",
         "the conductance asks the finite elements' pressure"
     );
-    // eq. (1.1) and mikic-elastic: `two` equals the scene (which solves in SI: rounding only)
+    // eq. (1.1) and mikic-elastic: `two` equals the scene bit for bit (both solve in inches)
     for law in ["cmy1969", "mikic-elastic"] {
         let (code, v, err) = two(&[&TWO_JOINT[..], &TWO_HEAT, &["--correlation", law]].concat());
         assert_eq!(code, Some(0), "{law}: {err}");
@@ -289,11 +289,12 @@ fn two_conductance_flags_give_the_closed_form_and_the_scene() {
         );
         let (scene, s) = conductance(&text);
         let g = v["joint_conductance"].as_f64().unwrap();
-        assert!(
-            (g / scene - 1.0).abs() < 1e-9,
+        assert_eq!(
+            g.to_bits(),
+            scene.to_bits(),
             "{law}: two {g}, scene {scene}"
         );
-        assert!((v["r_o"].as_f64().unwrap() / s.r_o - 1.0).abs() < 1e-9);
+        assert_eq!(v["r_o"].as_f64().map(f64::to_bits), Some(s.r_o.to_bits()));
     }
 }
 
@@ -329,7 +330,7 @@ fn two_heat_flag_errors_name_the_flag() {
 
 #[test]
 fn two_conductance_in_si_is_the_scene_bit_for_bit() {
-    // m-Pa-N: the scene solves in SI, so `two` and `solve` read the same numbers
+    // m-Pa-N: the scene and `two` solve in the same units, so they read the same numbers
     let joint = "[hole]\nradius = 0.0025\n[load]\nouter_radius = 0.004\nforce = 5000.0\n\
                  [[plates]]\nthickness = 0.0025\nmaterial = { E = 7.0e10, nu = 0.33 }\n\
                  [joint]\nouter_radius = 0.04\n";
