@@ -94,6 +94,7 @@ fn route(args: &Args) -> Method {
         field: args.out.field.is_some() || args.out.plot.is_some(),
         rigid_nut: args.nut == Nut::Rigid,
         thermal: false,
+        b_over_d: args.geom.b / args.geom.d,
     })
     .method
 }
@@ -132,6 +133,17 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
             "table",
             "the tables answer the two-plate model (two --method table); single takes fem, \
              hankel or auto",
+        );
+    }
+    let hankel_reach = boltzone::route::reach::B_OVER_D_SINGLE_HANKEL;
+    if args.method == Method::Hankel && g.b / g.d > hankel_reach {
+        return super::exit::usage(
+            "--b",
+            super::exit::num(g.b),
+            &format!(
+                "the Hankel route reaches bearing faces of at most {hankel_reach:e} plate                  thicknesses (B/D = {:.3e}): use --method fem or auto",
+                g.b / g.d
+            ),
         );
     }
     if route(args) == Method::Hankel && args.nut != Nut::Pressure {

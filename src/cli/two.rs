@@ -248,13 +248,15 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     // welded dissimilar plates: the contact problem can be defective (an oscillatory edge
     // singularity); the message says what to use instead
     let welded_dissimilar = matches!(args.interface, Interface::Welded) && !q.equal_plates();
+    // (bad input, exit 2 naming --interface: the model asked has no solution here)
     let hint = |e: boltzone::contact::ContactError| -> anyhow::Error {
         match welded_dissimilar {
-            true => anyhow::anyhow!(
-                "{e}: welded dissimilar plates have an oscillatory edge singularity and the \
-                 welded model is ill-posed here; use --interface frictionless or --interface \
-                 friction --mu M"
-            ),
+            true => super::exit::UsageError(format!(
+                "--interface = welded: {e}: welded dissimilar plates have an oscillatory edge \
+                 singularity and the welded model is ill-posed here; use --interface \
+                 frictionless or --interface friction --mu M"
+            ))
+            .into(),
             false => e.into(),
         }
     };

@@ -39,6 +39,13 @@ pub const B_OVER_D_SINGLE: f64 = 1e4;
 /// the loaded plate's bending stiffness falls below f64 resolution of its stiffness matrix.
 pub const B_OVER_D_TWO: f64 = 1e3;
 
+/// Widest bearing face the single plate's Hankel route takes when asked by name, in plate
+/// thicknesses D (the substitute is 2D thick): beyond about 3,850 its midplane ξ-quadrature
+/// needs more than its 400,000-node budget ([`crate::hankel::midplane::MAX_NODES`]; measured
+/// at A = D, ν = 0.3, tolerances 1e-12 … 1e-3), so it is refused before any work; `auto` takes
+/// the finite elements there.
+pub const B_OVER_D_SINGLE_HANKEL: f64 = 3e3;
+
 /// The largest Poisson's ratio the finite-element routes take: closer to 0.5 the displacement
 /// elements lock and the stiffness matrix loses definiteness in f64.
 pub const NU_MAX_FEM: f64 = 0.499;

@@ -33,7 +33,7 @@ use crate::hankel::hole::HoleParams;
 use crate::hankel::SeparationParams;
 
 /// What a single-plate question asks beyond R_o, and by which method.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Question {
     /// The method asked for.
     pub method: Method,
@@ -43,6 +43,9 @@ pub struct Question {
     pub rigid_nut: bool,
     /// The plate carries temperatures (thermal strains).
     pub thermal: bool,
+    /// The bearing face's reach B/D (D the plate's half-thickness; 0 when not known): beyond
+    /// [`super::reach::B_OVER_D_SINGLE_HANKEL`] `auto` takes the finite elements.
+    pub b_over_d: f64,
 }
 
 /// The route for `q` (module docs).
@@ -65,6 +68,10 @@ pub fn plan(q: &Question) -> Plan {
         Method::Auto if q.rigid_nut => (
             Method::Fem,
             "finite elements: the Hankel route loads the faces by a pressure only",
+        ),
+        Method::Auto if q.b_over_d > super::reach::B_OVER_D_SINGLE_HANKEL => (
+            Method::Fem,
+            "finite elements: the bearing face is beyond the Hankel route's reach",
         ),
         Method::Auto => (
             Method::Hankel,

@@ -319,6 +319,20 @@ fn check_plates(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
                 ),
             ));
         }
+        let hankel_reach = reach::B_OVER_D_SINGLE_HANKEL;
+        if scene.model == Model::SinglePlate
+            && scene.method == Method::Hankel
+            && b / d > hankel_reach
+        {
+            return Err(c.fail(
+                &at("thickness"),
+                d,
+                &format!(
+                    "B/D = {:e} exceeds the Hankel route's reach {hankel_reach:e}: method                      \"fem\" or \"auto\"",
+                    b / d
+                ),
+            ));
+        }
         if !reach::hole_in_reach(a, d) {
             return Err(c.fail(&at("thickness"), d, "A/D must lie within 1e-3..1e3"));
         }

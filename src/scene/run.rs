@@ -45,6 +45,10 @@ pub fn pick(scene: &Scene) -> (Method, &'static str) {
             field: scene.outputs.field.is_some() || scene.outputs.midplane.is_some(),
             rigid_nut: scene.load.nut_displacement.is_some(),
             thermal: scene.temperature.is_some(),
+            b_over_d: scene
+                .plates
+                .first()
+                .map_or(0.0, |p| scene.load.outer_radius / p.thickness),
         }),
         Model::TwoPlate => {
             // a scene whose joint cannot be built, or that asks `hankel` out of reach, is refused

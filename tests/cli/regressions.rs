@@ -408,6 +408,14 @@ fn input_faults_the_fuzz_found_exit_2_naming_the_flag() {
             &["map", "--n", "2", "--a-over-d", "1e-308"],
             "--a-over-d = 1e-308",
         ),
+        // 22 exit-1 runs of the 10⁴ fuzz (2 Dec 2026): the single plate's Hankel route asked
+        // beyond its midplane quadrature's node budget (B/D ≈ 3,850); auto answers by the FE
+        (
+            &[
+                "single", "--a", "1", "--b", "4000", "--d", "1", "--method", "hankel",
+            ],
+            "--b = 4000",
+        ),
         // the tables answer the two-plate model only: single and map refuse them, not
         // quietly answer by another route
         (
@@ -471,4 +479,22 @@ fn a_tolerance_below_the_f64_epsilon_is_refused_naming_it() {
             r.stderr
         );
     }
+}
+
+#[test]
+fn the_single_plate_hankel_reach_holds_up_to_its_limit() {
+    // route::reach::B_OVER_D_SINGLE_HANKEL = 3e3: at the limit the route answers (converged or
+    // not, never a failure), over holes and Poisson's ratios; beyond it `auto` answers by the FE
+    for (a, nu) in [("0.01", "0.3"), ("1", "-0.7"), ("30", "0.49")] {
+        let args = [
+            "single", "--a", a, "--b", "3000", "--d", "1", "--nu", nu, "--method", "hankel",
+        ];
+        let r = go(&args);
+        assert!([0, 3].contains(&code(&r)), "{args:?}: {}", r.stderr);
+    }
+    let r = go(&[
+        "single", "--a", "1", "--b", "5000", "--d", "1", "--method", "auto", "--json",
+    ]);
+    assert_eq!(code(&r), 0, "{}", r.stderr);
+    assert_eq!(json(&r)["method"], "fem", "{}", r.stdout);
 }

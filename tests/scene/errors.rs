@@ -235,3 +235,16 @@ fn geometries_csv_gives_one_point_per_row_and_locates_bad_cells() {
         boltzone::scene::sweep::rows(GOOD, "load.outer_radius,hole.radius\n0.25\n").unwrap_err();
     assert_eq!(e.line(), Some(2), "{e}");
 }
+
+#[test]
+fn a_single_plate_beyond_the_hankel_reach_is_refused_by_name_and_auto_takes_the_fe() {
+    // B/D = 4000 > route::reach::B_OVER_D_SINGLE_HANKEL (the ξ-quadrature's node budget)
+    let wide = GOOD
+        .replace("model = \"slab\"", "model = \"single-plate\"")
+        .replace("outer_radius = 0.31", "outer_radius = 400.0");
+    let (key, line, msg) = located(&format!("method = \"hankel\"\n{wide}"));
+    assert_eq!((key.as_str(), line), ("plates[0].thickness", 10), "{msg}");
+    assert!(msg.contains("Hankel route's reach"), "{msg}");
+    let (method, why) = boltzone::scene::run::pick(&Scene::parse(&wide).unwrap());
+    assert_eq!(method, boltzone::route::Method::Fem, "{why}");
+}
