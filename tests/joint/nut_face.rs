@@ -185,7 +185,7 @@ fn kirchhoff_stack(a: f64, b1: f64, b2: f64, c: f64, d: f64, nu: f64) -> (f64, f
     let v = |r: f64| 0.5 * ((r.min(b1).powi(2) - a * a) - p2 * (r.min(b2).powi(2) - a * a));
     let rigidity = 2.0 / (12.0 * (1.0 - nu * nu)) * d.powi(3); // E = 1
                                                                // cumulative trapezoids on a fine grid with nodes at A, B₁, B₂, C (V is smooth between)
-    let mut knots = vec![a, b1, b2, c];
+    let mut knots = [a, b1, b2, c];
     knots.sort_by(f64::total_cmp);
     let per = 40_000;
     let mut r = vec![a];
@@ -342,24 +342,18 @@ fn the_rules_take_each_side_its_own_diameter() {
     assert!((k([16.0, 14.6]) / series - 1.0).abs() < 1e-14);
 }
 
+/// `two` on the plates (D, C, E) in `units` with the joint's flags `joint`, asking k_P by the
+/// finite elements as JSON.
+fn fe_line<'a>(units: &'a str, plates: [&'a str; 3], joint: &[&'a str]) -> Vec<&'a str> {
+    let mut line = two_line(units, plates, joint);
+    line.extend(["--stiffness", "--method", "fem", "--json"]);
+    line
+}
+
 /// The M10-sized joint of the `two` lines, in mm-MPa-N.
 fn two() -> Vec<&'static str> {
-    two_line(
-        "mm-MPa-N",
-        ["10", "20", "205e3"],
-        &[
-            "--a",
-            "5.5",
-            "--b",
-            "8",
-            "--force",
-            "20e3",
-            "--stiffness",
-            "--method",
-            "fem",
-            "--json",
-        ],
-    )
+    let joint = ["--a", "5.5", "--b", "8", "--force", "20e3"];
+    fe_line("mm-MPa-N", ["10", "20", "205e3"], &joint)
 }
 
 #[test]
@@ -413,23 +407,13 @@ fn scene_nut_outer_radius_is_two_b2() {
     let path = dir.join("nut.toml");
     std::fs::write(&path, scene).unwrap();
     let s = json_of(&boltzone(&["solve", path.to_str().unwrap(), "--json"]));
-    let t = json_of(&boltzone(&two_line(
+    let joint = [
+        "--a", "0.0055", "--b", "0.008", "--b2", "0.0095", "--force", "20e3",
+    ];
+    let t = json_of(&boltzone(&fe_line(
         "m-Pa-N",
         ["0.01", "0.02", "205e9"],
-        &[
-            "--a",
-            "0.0055",
-            "--b",
-            "0.008",
-            "--b2",
-            "0.0095",
-            "--force",
-            "20e3",
-            "--stiffness",
-            "--method",
-            "fem",
-            "--json",
-        ],
+        &joint,
     )));
     for key in [
         "r_o",
