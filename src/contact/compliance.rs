@@ -27,8 +27,10 @@
 //! ([`estimate`]). For a prescribed pressure δ_P is the
 //! complementary energy of the contact solution, stationary in the contact set: the error of
 //! R_o moves δ_P at second order only, and it is in the level changes anyway. When the levels
-//! that meet R_o's tolerance do not yet meet it for δ_P, the study is repeated with the levels
-//! that a halving estimate needs (up to `max_levels`).
+//! that meet R_o's tolerance do not yet meet it for δ_P, or R_o's study stopped short of it
+//! (a tolerance below R_o's floor, as in full contact at 5e-6), the study is repeated with the
+//! levels that a halving estimate needs (up to `max_levels`); δ_P is `converged` only if R_o's
+//! study converged too.
 //!
 //! **Exact limits** (tests in `tests/joint/`, with the observed rate of approach):
 //! - *Thick plates* (D ≫ B, C = ∞, A → 0): two elastic half-spaces in series. A uniform
@@ -42,6 +44,17 @@
 //!   continuous at B, 2α₁ = −ν p (C² − B²)/(C² − A²); the axial strain −(p + 2να₁)/E is uniform
 //!   over the annulus (so pressure and rigid head agree), and for the stack 2D thick
 //!   k_P = πE(B² − A²) / (2D·(1 − ν²(C² − B²)/(C² − A²))) (the formula, confirmed).
+//! - *Thin plates, head and nut of their own* (B₁ < B₂, say; equal plates). A rigid head and
+//!   nut squeeze the stack over A..B₁ only: the nut's face beyond B₁ presses plates that are
+//!   free above, which would have to bend to take load (a stiffness O(D³) against the sleeve's
+//!   O(1/D)), so k_P tends to the sleeve above with B = min(B₁, B₂), the ring B₁..C holding its
+//!   expansion. Face pressures do not balance through the thickness: q = p₁χ(A..B₁) −
+//!   p₂χ(A..B₂) is self-equilibrated and bends the stack, whose compliance is O(1/D³), far above
+//!   the sleeve's O(D). The two plates, frictionless, bend alike (the interface pressure is then
+//!   (p₁χ₁ + p₂χ₂)/2 ≥ 0, so they stay in contact) as one Kirchhoff plate of rigidity
+//!   2·E D³/(12(1 − ν²)) free at A and C, and δ_P → ∫ q w dA/F² of that plate: there is no
+//!   sleeve limit for unequal pressed faces. The next terms are O(D/(B₁ − A)) (rigid, the edge
+//!   layer) and O((D/L)²) (pressures, transverse shear).
 //!
 //! Units: the joint's; δ_P in length per force, k_P in force per length.
 //!
@@ -149,13 +162,16 @@ pub fn member_compliance(
         },
         ..params.contact
     };
+    let mut solved = 0;
     loop {
         let s = solve(joint, &contact)?;
         let levels = s.info.compliance.clone();
         let n = levels.len();
         let (value, error) = estimate(&levels, params.head);
         let met = error <= tol * value.abs();
-        if met || n >= contact.max_levels || !s.converged {
+        // (R_o's study may stop before δ_P has its levels, e.g. in full contact at a tolerance
+        // below R_o's floor: it is asked for more levels, as long as it gives them)
+        if met || n >= contact.max_levels || n <= solved {
             let compliance = Value {
                 value,
                 error,
@@ -178,6 +194,7 @@ pub fn member_compliance(
             1
         };
         contact.min_levels = (n + more).min(contact.max_levels);
+        solved = n;
     }
 }
 

@@ -2,11 +2,12 @@
 //! (bit for bit), against the library's own calls and the closed forms by hand, and bad input
 //! named by flag and by key.
 
+use super::builders::{own_faces, two_line};
 use crate::common::{boltzone, json_of};
 use boltzone::bolt::compliance::bolt_resilience;
 use boltzone::bolt::thread::Thread;
 use boltzone::contact::compliance::{member_compliance, ComplianceParams};
-use boltzone::{FaceLoad, Joint, Material, OuterRadius};
+use boltzone::Material;
 
 const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/scenes/m10_bolt.toml");
 
@@ -81,14 +82,7 @@ fn m10_example_against_the_library_and_the_closed_forms() {
     // the head's face A..d_w/2 (ISO 4017) and the nut's own (ISO 4032 d_w 14.6 mm), the same
     // force on both
     assert_eq!(inputs["load"]["nut_outer_radius"].as_f64(), Some(0.0073));
-    let joint = Joint::symmetric(0.0055, 0.5 * 14.63e-3, 0.01, steel)
-        .unwrap()
-        .with_outer_radius(OuterRadius::Finite(0.02))
-        .unwrap();
-    let f = joint.load().total_force();
-    let (a, b2) = (0.0055f64, 0.0073f64);
-    let nut = FaceLoad::uniform(a, b2, f / (std::f64::consts::PI * (b2 * b2 - a * a))).unwrap();
-    let joint = joint.with_nut_load(nut).unwrap();
+    let joint = own_faces(0.0055, 0.5 * 14.63e-3, 0.0073, 0.01, Some(0.02), steel);
     let m = member_compliance(&joint, &ComplianceParams::default()).unwrap();
     let k = &v["member_stiffness"];
     let rel = (k["value"].as_f64().unwrap() / m.stiffness.value - 1.0).abs();
@@ -119,26 +113,21 @@ fn m10_example_against_the_library_and_the_closed_forms() {
 
 #[test]
 fn millimetres_and_metres_give_the_same_joint() {
-    let mm = json_of(&boltzone(&[
-        "two",
-        "--units",
+    let mm = json_of(&boltzone(&two_line(
         "mm-MPa-N",
-        "--bolt",
-        "M10",
-        "--d",
-        "10",
-        "--c",
-        "20",
-        "--e",
-        "205e3",
-        "--torque",
-        "40e3",
-        "--mu-thread",
-        "0.12",
-        "--mu-head",
-        "0.12",
-        "--json",
-    ]));
+        ["10", "20", "205e3"],
+        &[
+            "--bolt",
+            "M10",
+            "--torque",
+            "40e3",
+            "--mu-thread",
+            "0.12",
+            "--mu-head",
+            "0.12",
+            "--json",
+        ],
+    )));
     let m = json_of(&boltzone(LINE));
     let close = |a: f64, b: f64, what: &str| {
         assert!((a / b - 1.0).abs() < 1e-9, "{what}: {a} vs {b}");

@@ -5,6 +5,7 @@
 mod common;
 
 mod bolt;
+mod builders;
 mod catalogue;
 mod compliance;
 mod compliance_study;

@@ -6,6 +6,7 @@
 //! front ends (`two --b2`, `load.nut_outer_radius`) agree bit for bit.
 
 // k_P's study at a tolerance (up to 12 levels), asserted converged
+use super::builders::{own_faces, two_line};
 use super::compliance::two_plate as stiffness;
 use crate::common::{boltzone, json_of};
 use boltzone::contact::compliance::{member_compliance, ComplianceParams, Head};
@@ -27,16 +28,7 @@ fn steel() -> Material {
 /// Two equal plates D thick, the head's unit pressure on A..B₁, the nut's face A..B₂ carrying
 /// the same force.
 fn nut_joint(a: f64, b1: f64, b2: f64, d: f64, c: Option<f64>) -> Joint {
-    let j = Joint::symmetric(a, b1, d, steel()).unwrap();
-    let j = match c {
-        Some(c) => j.with_outer_radius(OuterRadius::Finite(c)).unwrap(),
-        None => j,
-    };
-    let nut = FaceLoad::uniform(a, b2, j.load().total_force() / (PI * (b2 * b2 - a * a)));
-    let own = j.clone().with_nut_load(nut.unwrap()).unwrap();
-    // (the library's shorthand builds the same joint)
-    assert_eq!(j.with_nut_outer_radius(b2).unwrap(), own);
-    own
+    own_faces(a, b1, b2, d, c, steel())
 }
 
 #[test]
@@ -176,6 +168,114 @@ fn thick_plates_tend_to_two_half_spaces_each_under_its_own_face() {
     }
 }
 
+/// The stack's bending limit of δ_P for thin plates whose faces differ (B₁ ≠ B₂, pressures p₁
+/// on A..B₁ and p₂ on A..B₂ of the same force F): the two equal plates, frictionless and in
+/// contact, bend together as one Kirchhoff plate of rigidity 2·E D³/(12(1 − ν²)) under the
+/// self-equilibrated load q = p₁χ(A..B₁) − p₂χ(A..B₂), free at A and C. Returns (δ_P from the
+/// bending energy, 2U/F²; δ_P from the work of q, ∫ q w dA/F²): two formulas that agree only
+/// if the slope solves the plate's equations.
+///
+/// With φ = w′ and V(r) = ∫_A^r q ρ dρ (V(A) = V(C) = 0): the shear Q_r(A) = 0 gives
+/// (∇²w)′ = V/(D_b r), so ∇²w = (rφ)′/r = G + c₁ with G = ∫_A^r V/(D_b s) ds and
+/// φ = (H + c₁(r² − A²)/2 + c₂)/r, H = ∫_A^r ρ G dρ; M_r ∝ φ′ + νφ/r = 0 at A and C fixes c₁,
+/// c₂. U = π D_b ∫ (φ′² + 2ν φ φ′/r + φ²/r²) r dr; the work ∫ q w 2πr dr = −2π ∫ V φ dr.
+fn kirchhoff_stack(a: f64, b1: f64, b2: f64, c: f64, d: f64, nu: f64) -> (f64, f64) {
+    let f = PI * (b1 * b1 - a * a); // p₁ = 1
+    let p2 = f / (PI * (b2 * b2 - a * a));
+    let v = |r: f64| 0.5 * ((r.min(b1).powi(2) - a * a) - p2 * (r.min(b2).powi(2) - a * a));
+    let rigidity = 2.0 / (12.0 * (1.0 - nu * nu)) * d.powi(3); // E = 1
+                                                               // cumulative trapezoids on a fine grid with nodes at A, B₁, B₂, C (V is smooth between)
+    let mut knots = [a, b1, b2, c];
+    knots.sort_by(f64::total_cmp);
+    let per = 40_000;
+    let mut r = vec![a];
+    for w in knots.windows(2) {
+        r.extend((1..=per).map(|i| w[0] + (w[1] - w[0]) * i as f64 / per as f64));
+    }
+    let cumulative = |g: &dyn Fn(usize) -> f64| {
+        let mut s = vec![0.0];
+        for i in 1..r.len() {
+            s.push(s[i - 1] + 0.5 * (r[i] - r[i - 1]) * (g(i) + g(i - 1)));
+        }
+        s
+    };
+    let g = cumulative(&|i| v(r[i]) / (rigidity * r[i]));
+    let h = cumulative(&|i| r[i] * g[i]);
+    let n = r.len() - 1;
+    // c₁ = (1 − ν)c₂/A² (free at A); free at C: G + c₁ − (1 − ν)φ/r = 0
+    let k = (1.0 - nu) / (a * a);
+    let c2 = -(g[n] - (1.0 - nu) * h[n] / (c * c))
+        / (k - (1.0 - nu) / (c * c) * (k * (c * c - a * a) / 2.0 + 1.0));
+    let c1 = k * c2;
+    let phi: Vec<f64> = (0..=n)
+        .map(|i| (h[i] + c1 * (r[i] * r[i] - a * a) / 2.0 + c2) / r[i])
+        .collect();
+    let dphi = |i: usize| g[i] + c1 - phi[i] / r[i];
+    let energy = cumulative(&|i| {
+        let (p, dp, x) = (phi[i], dphi(i), r[i]);
+        (dp * dp + 2.0 * nu * p * dp / x + p * p / (x * x)) * x
+    })[n]
+        * PI
+        * rigidity;
+    let work = -2.0 * PI * cumulative(&|i| v(r[i]) * phi[i])[n];
+    (2.0 * energy / (f * f), work / (f * f))
+}
+
+#[test]
+fn thin_plates_with_their_own_faces_bend_or_tend_to_the_narrower_sleeve() {
+    // D ≪ B − A with B₁ < B₂ (module docs of contact::compliance):
+    // - rigid head and nut: the stack is squeezed between them over A..B₁ only (the nut's
+    //   face beyond B₁ presses an unloaded plate, which would have to bend to take load: a
+    //   stiffness O(D³)), so k_P → the sleeve of B = min(B₁, B₂), error O(D/(B₁ − A)) from the
+    //   edge layer, as with equal faces;
+    // - pressures: the faces' loads do not balance through the thickness, their difference
+    //   bends the stack (compliance O(1/D³) against the sleeve's O(D)): k_P → the Kirchhoff
+    //   limit of `kirchhoff_stack`, relative error O((D/L)²) (transverse shear).
+    let (a, c) = (1.0, 5.0);
+    let sleeve = |b: f64, d: f64| {
+        PI * (b * b - a * a) / (2.0 * d * (1.0 - NU * NU * (c * c - b * b) / (c * c - a * a)))
+    };
+    let (b1, b2) = (3.0, 4.0);
+    let rigid: Vec<(f64, f64)> = [0.2, 0.1, 0.05]
+        .iter()
+        .map(|&d| {
+            let m = stiffness(&nut_joint(a, b1, b2, d, Some(c)), Head::Rigid, 1e-3);
+            println!("  rigid D {d}: {:?} {:.1} s", m.stiffness, m.seconds);
+            (d, (m.stiffness.value / sleeve(b1, d) - 1.0).abs())
+        })
+        .collect();
+    println!("rigid: errors {rigid:?}");
+    assert!(rigid[2].1 < 0.02, "{rigid:?}");
+    for w in rigid.windows(2) {
+        let rate = order_between(w[0].0, w[0].1, w[1].0, w[1].1);
+        println!("  rate {rate:.3}");
+        // as for equal faces: O((D/(B − A))²) next moves the rate by < 0.2 at D ≤ 0.1 (B − A)
+        assert!((rate - 1.0).abs() < 0.2, "rigid rate {rate}: {rigid:?}");
+    }
+    let (b1, b2) = (2.0, 3.0);
+    let pressure: Vec<(f64, f64)> = [0.2, 0.1, 0.05]
+        .iter()
+        .map(|&d| {
+            let (by_energy, by_work) = kirchhoff_stack(a, b1, b2, c, d, NU);
+            assert!(
+                (by_energy / by_work - 1.0).abs() < 1e-8,
+                "{by_energy} vs {by_work}"
+            );
+            let m = stiffness(&nut_joint(a, b1, b2, d, Some(c)), Head::Pressure, 1e-3);
+            println!("  pressure D {d}: {:?} {:.1} s", m.stiffness, m.seconds);
+            (d, (m.stiffness.value * by_energy - 1.0).abs())
+        })
+        .collect();
+    println!("pressure: errors {pressure:?}");
+    for w in pressure.windows(2) {
+        let rate = order_between(w[0].0, w[0].1, w[1].0, w[1].1);
+        println!("  rate {rate:.3}");
+        // the leading correction is O((D/L)²): the errors fall at least that fast
+        assert!(rate > 1.8, "pressure rate {rate}: {pressure:?}");
+    }
+    assert!(pressure[2].1 < 1e-3, "{pressure:?}");
+}
+
 #[test]
 fn routes_that_press_both_faces_alike_refuse_by_key() {
     let j = nut_joint(0.1, 0.31, 0.4, 0.1, None);
@@ -242,32 +342,24 @@ fn the_rules_take_each_side_its_own_diameter() {
     assert!((k([16.0, 14.6]) / series - 1.0).abs() < 1e-14);
 }
 
-const TWO: &[&str] = &[
-    "two",
-    "--units",
-    "mm-MPa-N",
-    "--a",
-    "5.5",
-    "--b",
-    "8",
-    "--d",
-    "10",
-    "--c",
-    "20",
-    "--e",
-    "205e3",
-    "--force",
-    "20e3",
-    "--stiffness",
-    "--method",
-    "fem",
-    "--json",
-];
+/// `two` on the plates (D, C, E) in `units` with the joint's flags `joint`, asking k_P by the
+/// finite elements as JSON.
+fn fe_line<'a>(units: &'a str, plates: [&'a str; 3], joint: &[&'a str]) -> Vec<&'a str> {
+    let mut line = two_line(units, plates, joint);
+    line.extend(["--stiffness", "--method", "fem", "--json"]);
+    line
+}
+
+/// The M10-sized joint of the `two` lines, in mm-MPa-N.
+fn two() -> Vec<&'static str> {
+    let joint = ["--a", "5.5", "--b", "8", "--force", "20e3"];
+    fe_line("mm-MPa-N", ["10", "20", "205e3"], &joint)
+}
 
 #[test]
 fn two_b2_is_the_library_joint_and_b2_equal_to_b_changes_nothing() {
-    let plain = json_of(&boltzone(TWO));
-    let mut same: Vec<&str> = TWO.to_vec();
+    let plain = json_of(&boltzone(&two()));
+    let mut same = two();
     same.extend(["--b2", "8"]);
     let same = json_of(&boltzone(&same));
     for key in [
@@ -278,20 +370,11 @@ fn two_b2_is_the_library_joint_and_b2_equal_to_b_changes_nothing() {
     ] {
         assert_eq!(plain[key], same[key], "{key}");
     }
-    let mut own: Vec<&str> = TWO.to_vec();
+    let mut own = two();
     own.extend(["--b2", "9.5"]);
     let own = json_of(&boltzone(&own));
     let steel = Material::new(205e3, 0.3).unwrap();
-    let j = Joint::symmetric(5.5, 8.0, 10.0, steel)
-        .unwrap()
-        .with_outer_radius(OuterRadius::Finite(20.0))
-        .unwrap();
-    let f = j.load().total_force();
-    let j = j
-        .with_nut_load(
-            FaceLoad::uniform(5.5, 9.5, f / (PI * (9.5f64.powi(2) - 5.5f64.powi(2)))).unwrap(),
-        )
-        .unwrap();
+    let j = own_faces(5.5, 8.0, 9.5, 10.0, Some(20.0), steel);
     let m = member_compliance(&j, &ComplianceParams::default()).unwrap();
     let k = own["member_stiffness"]["value"].as_f64().unwrap();
     // the CLI's force and the library's unit pressure: the linear problem agrees to rounding
@@ -324,29 +407,14 @@ fn scene_nut_outer_radius_is_two_b2() {
     let path = dir.join("nut.toml");
     std::fs::write(&path, scene).unwrap();
     let s = json_of(&boltzone(&["solve", path.to_str().unwrap(), "--json"]));
-    let t = json_of(&boltzone(&[
-        "two",
-        "--units",
+    let joint = [
+        "--a", "0.0055", "--b", "0.008", "--b2", "0.0095", "--force", "20e3",
+    ];
+    let t = json_of(&boltzone(&fe_line(
         "m-Pa-N",
-        "--a",
-        "0.0055",
-        "--b",
-        "0.008",
-        "--b2",
-        "0.0095",
-        "--d",
-        "0.01",
-        "--c",
-        "0.02",
-        "--e",
-        "205e9",
-        "--force",
-        "20e3",
-        "--stiffness",
-        "--method",
-        "fem",
-        "--json",
-    ]));
+        ["0.01", "0.02", "205e9"],
+        &joint,
+    )));
     for key in [
         "r_o",
         "member_stiffness",
@@ -372,7 +440,7 @@ fn scene_nut_outer_radius_is_two_b2() {
         (&["--b2", "25"], "--c"),
         (&["--b2", "9.5", "--method", "hankel"], "--b2"),
     ] {
-        let mut line: Vec<&str> = TWO.iter().copied().filter(|a| *a != "fem").collect();
+        let mut line: Vec<&str> = two().into_iter().filter(|a| *a != "fem").collect();
         line.retain(|a| *a != "--method");
         line.extend(extra);
         let out = boltzone(&line);
