@@ -341,17 +341,18 @@ def _frame(inputs, rows: List[Optional[Dict[str, Any]]], errors: List[Optional[s
     """The DataFrame of ``keep`` rows: the input's columns, then :data:`MANY_COLUMNS`."""
     import pandas as pd
 
-    cols: Dict[str, list] = {k: [] for k in MANY_COLUMNS}
-    for i in keep:
-        row, err = rows[i], errors[i]
-        for k in MANY_COLUMNS:
-            if k == "error":
-                cols[k].append(err)
-            elif k == "converged":
-                cols[k].append(bool(row[k]) if row is not None else False)
-            else:
-                v = None if row is None else row.get(k)
-                cols[k].append(math.nan if v is None and MANY_COLUMNS[k] == "float64" else v)
+    kept = [rows[i] for i in keep]
+    empty: Dict[str, Any] = {}
+    cols: Dict[str, list] = {}
+    for k, dtype in MANY_COLUMNS.items():
+        if k == "error":
+            cols[k] = [errors[i] for i in keep]
+        elif k == "converged":
+            cols[k] = [r is not None and bool(r[k]) for r in kept]
+        elif dtype == "float64":
+            cols[k] = [(r or empty).get(k, math.nan) for r in kept]
+        else:
+            cols[k] = [(r or empty).get(k) for r in kept]
     out = pd.DataFrame({k: pd.Series(v, dtype=MANY_COLUMNS[k]) for k, v in cols.items()})
     if inputs is not None:
         head = inputs.iloc[list(keep)]
@@ -407,7 +408,8 @@ def solve_many(
         raise _input_error("threads", "%r must be a positive integer (or None: all cores)"
                                % (threads,))
     callback = _Bar() if progress is True else (progress or None)
-    rows, errors, stopped = _core.solve_many(dicts, threads or 0, callback)
+    keys = [k for k in MANY_COLUMNS if k != "error"]
+    rows, errors, stopped = _core.solve_many(dicts, keys, threads or 0, callback)
     if stopped is not None:
         finished = [i for i in range(len(rows)) if rows[i] is not None or errors[i] is not None]
         if isinstance(stopped, KeyboardInterrupt):

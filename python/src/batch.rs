@@ -30,8 +30,9 @@ use std::time::{Duration, Instant};
 /// Longest wait without looking at signals and progress (Ctrl-C is seen within this).
 pub const POLL: Duration = Duration::from_millis(50);
 
-/// One joint's row: the JSON object of `solve --json`, or why it has none.
-pub type Row = Result<serde_json::Value, Failure>;
+/// One joint's row: the asked keys of its `solve --json` object (those it has), or why it has
+/// none.
+pub type Row = Result<serde_json::Map<String, serde_json::Value>, Failure>;
 
 /// Runs `f`, a panic becoming a solver failure with its message.
 pub fn guarded<T>(f: impl FnOnce() -> Result<T, Failure>) -> Result<T, Failure> {
@@ -47,10 +48,18 @@ pub fn guarded<T>(f: impl FnOnce() -> Result<T, Failure>) -> Result<T, Failure> 
     })
 }
 
-/// One joint: its scene (or why it has none) solved.
-fn one(scene: &Result<Scene, Failure>) -> Row {
+/// One joint: its scene (or why it has none) solved, the `keys` of its answer read on the
+/// worker (only those cross to Python: a table-answered joint costs microseconds, its whole
+/// JSON object tens).
+fn one(scene: &Result<Scene, Failure>, keys: &[String]) -> Row {
     match scene {
-        Ok(s) => guarded(|| engine::solve(s, Instant::now()).map(|a| a.json().clone())),
+        Ok(s) => guarded(|| {
+            let a = engine::solve(s, Instant::now())?;
+            Ok(keys
+                .iter()
+                .filter_map(|k| a.key(k).map(|v| (k.clone(), v)))
+                .collect())
+        }),
         Err(f) => Err(f.clone()),
     }
 }
@@ -64,11 +73,12 @@ pub struct Outcome {
     pub stopped: Option<PyErr>,
 }
 
-/// Solves `scenes` on `threads` threads (0: rayon's default), calling `progress(done, total)`
-/// whenever rows arrived since the last poll.
+/// Solves `scenes` on `threads` threads (0: rayon's default), each row holding the answer's
+/// `keys`, calling `progress(done, total)` whenever rows arrived since the last poll.
 pub fn run(
     py: Python<'_>,
     scenes: Vec<Result<Scene, Failure>>,
+    keys: Vec<String>,
     threads: usize,
     progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Outcome> {
@@ -86,7 +96,7 @@ pub fn run(
             pool.install(|| {
                 (0..n).into_par_iter().for_each_with(tx, |tx, i| {
                     if !cancel.load(Ordering::Relaxed) {
-                        let _ = tx.send((i, one(&scenes[i])));
+                        let _ = tx.send((i, one(&scenes[i], &keys)));
                     }
                 })
             })

@@ -93,15 +93,28 @@ impl Answer {
         })
     }
 
-    /// One key of [`Answer::json`]; the scalars read first without building the object.
+    /// One key of [`Answer::json`]; the scalars read first without building the object (the
+    /// same values: serialising a scalar field is what [`Answer::json`] does to it).
     pub fn key(&self, key: &str) -> Option<serde_json::Value> {
         let s = &self.solution;
+        let scalar = |v: Result<serde_json::Value, serde_json::Error>| v.ok();
         match key {
             "r_o" => Some(s.r_o.into()),
             "r_o_error" => Some(s.r_o_error.into()),
             "converged" => Some(s.converged.into()),
             "length_unit" => Some(s.length_unit.into()),
             "seconds" => Some(self.seconds.into()),
+            "version" => Some(s.version.into()),
+            "units" => scalar(serde_json::to_value(s.units)),
+            "model" => scalar(serde_json::to_value(s.model)),
+            "method" => scalar(serde_json::to_value(s.method)),
+            "full_contact" => s.full_contact.map(Into::into),
+            "nut_deflection" => s.nut_deflection.map(Into::into),
+            "joint_conductance" => s.joint_conductance.map(Into::into),
+            "conductance_unit" => s.conductance_unit.map(Into::into),
+            "heat_passes" => s.heat_passes.map(Into::into),
+            "heat_flow" => s.heat_flow.map(Into::into),
+            "heat_flow_unit" => s.heat_flow_unit.map(Into::into),
             _ => self.json().get(key).cloned(),
         }
     }

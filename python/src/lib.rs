@@ -199,13 +199,15 @@ fn solve(py: Python<'_>, scene: &CoreScene) -> PyResult<Answer> {
 }
 
 /// Solves the scene dicts in parallel on `threads` threads (0: all cores), the GIL released.
-/// Returns the `solve --json` object of each joint (None where it failed or did not finish),
+/// Returns the `keys` of each joint's `solve --json` object that it has, as a dict (None where
+/// it failed or did not finish),
 /// each joint's error message (None where it succeeded) and the exception that stopped the
 /// batch early (KeyboardInterrupt: the finished rows are kept).
 #[pyfunction]
-#[pyo3(signature = (scenes, threads=0, progress=None))]
+#[pyo3(signature = (scenes, keys, threads=0, progress=None))]
 fn solve_many<'py>(
     scenes: &Bound<'py, PyList>,
+    keys: Vec<String>,
     threads: usize,
     progress: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
@@ -238,13 +240,13 @@ fn solve_many<'py>(
             Err(e) => return Err(e),
         });
     }
-    let outcome = batch::run(py, items, threads, progress)?;
+    let outcome = batch::run(py, items, keys, threads, progress)?;
     let results = PyList::empty(py);
     let errors = PyList::empty(py);
     for row in &outcome.rows {
         match row {
-            Some(Ok(v)) => {
-                results.append(convert::to_py(py, v)?)?;
+            Some(Ok(m)) => {
+                results.append(convert::to_py(py, &serde_json::Value::Object(m.clone()))?)?;
                 errors.append(py.None())?;
             }
             Some(Err(f)) => {
