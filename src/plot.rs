@@ -39,6 +39,7 @@
 
 pub mod contour;
 mod heat;
+pub mod joint_diagram;
 pub mod raster;
 pub mod section;
 

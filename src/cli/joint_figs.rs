@@ -260,3 +260,29 @@ pub fn interface_figures(
     }
     (figs, x_end)
 }
+
+/// The joint diagram of a bolted-joint answer `a` (in `units`) to FILE-joint beside `path`
+/// (`two --plot` and a scene's `[outputs] plot` with a `[bolt]`), when the answer has the
+/// preload and both compliances ([`boltzone::plot::joint_diagram`]).
+pub fn write_joint_diagram(
+    path: &Path,
+    a: &boltzone::route::joint::JointAnswer,
+    units: boltzone::scene::UnitSystem,
+) -> anyhow::Result<()> {
+    let (Some(preload), Some(bolt_compliance), Some(member)) =
+        (a.preload, a.bolt_compliance, a.member_compliance.as_ref())
+    else {
+        return Ok(());
+    };
+    let (length, _, force) = units.symbols();
+    let fig = boltzone::plot::joint_diagram::JointDiagram {
+        preload,
+        bolt_compliance,
+        member_compliance: member.value,
+        length,
+        force,
+    }
+    .figure();
+    boltzone::plot::write_figure(&fig, &sibling(path, "joint"), super::figure::SIZE)?;
+    Ok(())
+}

@@ -66,6 +66,7 @@ pub fn write(path: &Path, scene: &Scene, s: &Solution) -> anyhow::Result<()> {
             _ => fig.write(&sibling(path, suffix))?,
         }
     }
+    super::joint_figs::write_joint_diagram(path, &s.joint, scene.units)?;
     if s.method == Method::Hankel {
         eprintln!(
             "note: outputs.plot: no gap figure, the semi-analytic route gives the gap only where \

@@ -323,6 +323,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             fig.write(&path)?;
         }
     }
+    if let (Some(path), Some(a)) = (&args.out.plot, &joint_answer) {
+        super::joint_figs::write_joint_diagram(path, a, args.units.units)?;
+    }
     if let Some(path) = &args.report {
         let g = &args.geom;
         let inputs = super::report::ReportInputs {

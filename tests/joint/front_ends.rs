@@ -9,10 +9,10 @@ use boltzone::bolt::thread::Thread;
 use boltzone::contact::compliance::{member_compliance, ComplianceParams};
 use boltzone::Material;
 
-const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/scenes/m10_bolt.toml");
+pub const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/scenes/m10_bolt.toml");
 
 /// The `two` line of the example scene (its header says so).
-const LINE: &[&str] = &[
+pub const LINE: &[&str] = &[
     "two",
     "--units",
     "m-Pa-N",

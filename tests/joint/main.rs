@@ -9,6 +9,7 @@ mod builders;
 mod catalogue;
 mod compliance;
 mod compliance_study;
+mod diagram;
 mod front_ends;
 mod nut_face;
 mod rules;
