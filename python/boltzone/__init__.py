@@ -331,34 +331,38 @@ def _records(frame, base) -> List[Dict[str, Any]]:
     base_dict = _base_dict(base)
     out = []
     for rec in frame.to_dict("records"):
-        d = copy.deepcopy(base_dict)
+        # a shallow copy: the scene reader only reads the dict, so the base's tables are shared
+        d = dict(base_dict)
         d.update({k: v for k, v in rec.items() if v is not None})
         out.append(d)
     return out
 
 
-def _frame(inputs, rows: List[Optional[Dict[str, Any]]], errors: List[Optional[str]], keep):
-    """The DataFrame of ``keep`` rows: the input's columns, then :data:`MANY_COLUMNS`."""
+def _frame(inputs, columns: Dict[str, Any], errors: List[Optional[str]], keep):
+    """The DataFrame of ``keep`` rows (a sequence of row numbers, or None: all): the input's
+    columns, then :data:`MANY_COLUMNS` built from the binding's ``columns`` (bytes for the
+    ``float64`` and ``bool`` columns, lists for the others)."""
+    import numpy as np
     import pandas as pd
 
-    kept = [rows[i] for i in keep]
-    empty: Dict[str, Any] = {}
-    cols: Dict[str, list] = {}
+    rows = None if keep is None else np.asarray(keep, dtype=np.intp)
+    out: Dict[str, Any] = {}
     for k, dtype in MANY_COLUMNS.items():
         if k == "error":
-            cols[k] = [errors[i] for i in keep]
-        elif k == "converged":
-            cols[k] = [r is not None and bool(r[k]) for r in kept]
-        elif dtype == "float64":
-            cols[k] = [(r or empty).get(k, math.nan) for r in kept]
+            v: Any = errors
+        elif dtype in ("float64", "bool"):
+            v = np.frombuffer(columns[k], dtype="<f8" if dtype == "float64" else np.bool_)
         else:
-            cols[k] = [(r or empty).get(k) for r in kept]
-    out = pd.DataFrame({k: pd.Series(v, dtype=MANY_COLUMNS[k]) for k, v in cols.items()})
+            v = columns[k]
+        if rows is not None:
+            v = v[rows] if isinstance(v, np.ndarray) else [v[i] for i in rows]
+        out[k] = pd.Series(v, dtype=dtype, copy=isinstance(v, np.ndarray))
+    frame = pd.DataFrame(out)
     if inputs is not None:
-        head = inputs.iloc[list(keep)]
-        out.index = head.index
-        out = pd.concat([head, out], axis=1)
-    return out
+        head = inputs.iloc[list(range(len(frame))) if rows is None else rows]
+        frame.index = head.index
+        frame = pd.concat([head, frame], axis=1)
+    return frame
 
 
 def solve_many(
@@ -408,14 +412,14 @@ def solve_many(
         raise _input_error("threads", "%r must be a positive integer (or None: all cores)"
                                % (threads,))
     callback = _Bar() if progress is True else (progress or None)
-    keys = [k for k in MANY_COLUMNS if k != "error"]
-    rows, errors, stopped = _core.solve_many(dicts, keys, threads or 0, callback)
+    keys = [(k, d) for k, d in MANY_COLUMNS.items() if k != "error"]
+    columns, state, errors, stopped = _core.solve_many(dicts, keys, threads or 0, callback)
     if stopped is not None:
-        finished = [i for i in range(len(rows)) if rows[i] is not None or errors[i] is not None]
+        finished = [i for i, s in enumerate(state) if s != 0]
         if isinstance(stopped, KeyboardInterrupt):
-            raise Interrupted(_frame(inputs, rows, errors, finished)) from stopped
+            raise Interrupted(_frame(inputs, columns, errors, finished)) from stopped
         raise stopped
-    return _frame(inputs, rows, errors, range(len(rows)))
+    return _frame(inputs, columns, errors, None)
 
 
 def _flat(rows: List[Dict[str, Any]]):

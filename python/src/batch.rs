@@ -2,12 +2,12 @@
 //! threads while the calling thread, the GIL released between polls, collects the rows, reports
 //! progress and watches for Ctrl-C.
 //!
-//! Method: the pool runs on a thread of its own and sends each finished joint down a channel;
-//! the caller waits on the channel at most [`POLL`] at a time without the GIL, then takes the
-//! GIL to call the progress callback and `PyErr_CheckSignals`. On a signal (KeyboardInterrupt)
-//! it raises the cancel flag, keeps every row received and returns at once: joints not started
-//! are never started, the at most `threads` joints running finish on the pool's thread and are
-//! dropped. A joint that fails, or panics, is a row with its message.
+//! Method: the pool runs on a thread of its own; each worker writes its finished joint's row
+//! into the joint's slot and counts it. The caller waits for the batch's end at most [`POLL`]
+//! at a time without the GIL, then takes the GIL to call the progress callback with the count
+//! and `PyErr_CheckSignals`. On a signal (KeyboardInterrupt) it raises the cancel flag, keeps
+//! every row written and returns at once: joints not started are never started, the at most
+//! `threads` joints running finish on the pool's thread and are dropped. A joint that fails, or panics, is a row with its message.
 //!
 //! # Accuracy
 //!
@@ -18,21 +18,22 @@
 //!
 //! The joints' costs over the threads; the caller's polling wakes every [`POLL`].
 
+use crate::columns::{self, Cell};
 use crate::engine::{self, Failure};
 use boltzone::scene::Scene;
 use pyo3::prelude::*;
 use rayon::prelude::*;
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{mpsc, Arc};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::{mpsc, Arc, OnceLock};
 use std::time::{Duration, Instant};
 
 /// Longest wait without looking at signals and progress (Ctrl-C is seen within this).
 pub const POLL: Duration = Duration::from_millis(50);
 
-/// One joint's row: the asked keys of its `solve --json` object (those it has), or why it has
-/// none.
-pub type Row = Result<serde_json::Map<String, serde_json::Value>, Failure>;
+/// One joint's row: the asked keys of its `solve --json` object in order (None where it lacks
+/// one), or why it has none.
+pub type Row = Result<Vec<Cell>, Failure>;
 
 /// Runs `f`, a panic becoming a solver failure with its message.
 pub fn guarded<T>(f: impl FnOnce() -> Result<T, Failure>) -> Result<T, Failure> {
@@ -51,14 +52,11 @@ pub fn guarded<T>(f: impl FnOnce() -> Result<T, Failure>) -> Result<T, Failure> 
 /// One joint: its scene (or why it has none) solved, the `keys` of its answer read on the
 /// worker (only those cross to Python: a table-answered joint costs microseconds, its whole
 /// JSON object tens).
-fn one(scene: &Result<Scene, Failure>, keys: &[String]) -> Row {
+fn one(scene: &Result<Arc<Scene>, Failure>, keys: &[String]) -> Row {
     match scene {
         Ok(s) => guarded(|| {
             let a = engine::solve(s, Instant::now())?;
-            Ok(keys
-                .iter()
-                .filter_map(|k| a.key(k).map(|v| (k.clone(), v)))
-                .collect())
+            Ok(columns::cells(&a, keys))
         }),
         Err(f) => Err(f.clone()),
     }
@@ -77,7 +75,7 @@ pub struct Outcome {
 /// `keys`, calling `progress(done, total)` whenever rows arrived since the last poll.
 pub fn run(
     py: Python<'_>,
-    scenes: Vec<Result<Scene, Failure>>,
+    scenes: Vec<Result<Arc<Scene>, Failure>>,
     keys: Vec<String>,
     threads: usize,
     progress: Option<&Bound<'_, PyAny>>,
@@ -87,60 +85,61 @@ pub fn run(
         .num_threads(threads)
         .build()
         .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
-    let scenes = Arc::new(scenes);
+    // each worker writes its joint's row in place and counts it; the caller is woken only by
+    // the end of the batch or by its poll (a wake-up per row cost microseconds per joint)
+    let slots: Arc<Vec<OnceLock<Row>>> = Arc::new((0..n).map(|_| OnceLock::new()).collect());
+    let done = Arc::new(AtomicUsize::new(0));
     let cancel = Arc::new(AtomicBool::new(false));
-    let (tx, mut rx) = mpsc::channel::<(usize, Row)>();
+    let (end_tx, mut end_rx) = mpsc::channel::<()>();
     let worker = {
-        let (scenes, cancel) = (Arc::clone(&scenes), Arc::clone(&cancel));
+        let (slots, done, cancel) = (Arc::clone(&slots), Arc::clone(&done), Arc::clone(&cancel));
         std::thread::spawn(move || {
             pool.install(|| {
-                (0..n).into_par_iter().for_each_with(tx, |tx, i| {
+                (0..n).into_par_iter().for_each(|i| {
                     if !cancel.load(Ordering::Relaxed) {
-                        let _ = tx.send((i, one(&scenes[i], &keys)));
+                        let _ = slots[i].set(one(&scenes[i], &keys));
+                        done.fetch_add(1, Ordering::Release);
                     }
                 })
-            })
+            });
+            let _ = end_tx.send(());
         })
     };
-    let mut rows: Vec<Option<Row>> = (0..n).map(|_| None).collect();
-    let (mut done, mut shown) = (0, usize::MAX);
+    let mut shown = usize::MAX;
     let mut stopped = None;
-    while done < n {
+    loop {
         let (back, got) = py.detach(move || {
-            let got = rx.recv_timeout(POLL);
-            (rx, got)
+            let got = end_rx.recv_timeout(POLL);
+            (end_rx, got)
         });
-        rx = back;
-        match got {
-            Ok((i, row)) => {
-                rows[i] = Some(row);
-                done += 1;
-                while let Ok((i, row)) = rx.try_recv() {
-                    rows[i] = Some(row);
-                    done += 1;
-                }
-            }
-            Err(mpsc::RecvTimeoutError::Timeout) => {}
-            Err(mpsc::RecvTimeoutError::Disconnected) => break,
-        }
+        end_rx = back;
+        let finished = !matches!(got, Err(mpsc::RecvTimeoutError::Timeout));
+        let now = done.load(Ordering::Acquire);
         let reported = match progress {
-            Some(cb) if done != shown => cb.call1((done, n)).map(|_| ()),
+            Some(cb) if now != shown => cb.call1((now, n)).map(|_| ()),
             _ => Ok(()),
         };
-        shown = done;
+        shown = now;
         if let Err(e) = reported.and_then(|_| py.check_signals()) {
             cancel.store(true, Ordering::Relaxed);
-            while let Ok((i, row)) = rx.try_recv() {
-                rows[i] = Some(row);
-            }
             stopped = Some(e);
             break;
         }
+        if finished {
+            break;
+        }
     }
-    if stopped.is_none() {
+    let rows = if stopped.is_none() {
         // every row is in: the pool's thread is ending; joining costs nothing
         py.detach(move || worker.join())
             .map_err(|_| pyo3::exceptions::PyRuntimeError::new_err("the batch thread panicked"))?;
-    }
+        match Arc::try_unwrap(slots) {
+            Ok(slots) => slots.into_iter().map(OnceLock::into_inner).collect(),
+            Err(slots) => slots.iter().map(|s| s.get().cloned()).collect(),
+        }
+    } else {
+        // the at most `threads` joints still running finish on the pool's thread, unseen
+        slots.iter().map(|s| s.get().cloned()).collect()
+    };
     Ok(Outcome { rows, stopped })
 }

@@ -17,6 +17,7 @@
 //! The library's; keys are converted when read (microseconds per joint).
 
 mod batch;
+mod columns;
 mod convert;
 mod engine;
 
@@ -24,6 +25,7 @@ use engine::Failure;
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
+use std::sync::Arc;
 use std::time::Instant;
 
 pyo3::create_exception!(
@@ -78,7 +80,7 @@ fn scene_of(d: &Bound<'_, PyDict>) -> PyResult<Result<boltzone::scene::Scene, Fa
 /// A checked scene, held in Rust so that `solve` needs no conversion (built by
 /// `check_scene`).
 #[pyclass(frozen, module = "boltzone._boltzone")]
-struct CoreScene(boltzone::scene::Scene);
+struct CoreScene(Arc<boltzone::scene::Scene>);
 
 /// Checks the scene dict as a scene file is checked; returns the scene held in Rust and the
 /// scene as understood (defaults filled in, materials of every plate written out). Raises
@@ -88,7 +90,7 @@ fn check_scene<'py>(d: &Bound<'py, PyDict>) -> PyResult<(CoreScene, Bound<'py, P
     let py = d.py();
     let scene = scene_of(d)?.map_err(|f| raise(py, f))?;
     let understood = convert::to_py(py, &engine::understood(&scene))?;
-    Ok((CoreScene(scene), understood))
+    Ok((CoreScene(Arc::new(scene)), understood))
 }
 
 /// Parses the TOML text of a scene file (errors name the key and the line) and returns it as a
@@ -199,15 +201,16 @@ fn solve(py: Python<'_>, scene: &CoreScene) -> PyResult<Answer> {
 }
 
 /// Solves the scene dicts in parallel on `threads` threads (0: all cores), the GIL released.
-/// Returns the `keys` of each joint's `solve --json` object that it has, as a dict (None where
-/// it failed or did not finish),
-/// each joint's error message (None where it succeeded) and the exception that stopped the
-/// batch early (KeyboardInterrupt: the finished rows are kept).
+/// `keys` are `(key, dtype)` pairs of the `solve --json` keys wanted. Returns the columns
+/// (a dict key → the `float64`/`bool` columns as bytes for `numpy.frombuffer`, the others as
+/// lists; [`columns`]), one state byte per joint (0 not finished, 1 answered, 2 failed), each
+/// joint's error message (None where it has none) and the exception that stopped the batch
+/// early (KeyboardInterrupt: the finished rows are kept).
 #[pyfunction]
 #[pyo3(signature = (scenes, keys, threads=0, progress=None))]
 fn solve_many<'py>(
     scenes: &Bound<'py, PyList>,
-    keys: Vec<String>,
+    keys: Vec<(String, String)>,
     threads: usize,
     progress: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
@@ -215,7 +218,7 @@ fn solve_many<'py>(
     let mut items = Vec::with_capacity(scenes.len());
     for (i, s) in scenes.iter().enumerate() {
         if let Ok(held) = s.cast::<CoreScene>() {
-            items.push(Ok(held.get().0.clone()));
+            items.push(Ok(Arc::clone(&held.get().0)));
             continue;
         }
         let d = s.cast::<PyDict>().map_err(|_| {
@@ -228,7 +231,7 @@ fn solve_many<'py>(
             )
         })?;
         items.push(match scene_of(d) {
-            Ok(scene) => scene,
+            Ok(scene) => scene.map(Arc::new),
             Err(e) if e.is_instance_of::<InputError>(py) => Err(Failure::Input {
                 key: e
                     .value(py)
@@ -240,33 +243,48 @@ fn solve_many<'py>(
             Err(e) => return Err(e),
         });
     }
-    let outcome = batch::run(py, items, keys, threads, progress)?;
-    let results = PyList::empty(py);
+    let names: Vec<String> = keys.iter().map(|(k, _)| k.clone()).collect();
+    let kinds: Vec<(String, columns::Kind)> = keys
+        .iter()
+        .map(|(k, d)| (k.clone(), columns::Kind::of_dtype(d)))
+        .collect();
+    let outcome = batch::run(py, items, names, threads, progress)?;
+    let answered: Vec<Option<&[columns::Cell]>> = outcome
+        .rows
+        .iter()
+        .map(|r| match r {
+            Some(Ok(cells)) => Some(cells.as_slice()),
+            _ => None,
+        })
+        .collect();
+    let state: Vec<u8> = outcome
+        .rows
+        .iter()
+        .map(|r| match r {
+            None => 0,
+            Some(Ok(_)) => 1,
+            Some(Err(_)) => 2,
+        })
+        .collect();
     let errors = PyList::empty(py);
     for row in &outcome.rows {
         match row {
-            Some(Ok(m)) => {
-                results.append(convert::to_py(py, &serde_json::Value::Object(m.clone()))?)?;
-                errors.append(py.None())?;
-            }
-            Some(Err(f)) => {
-                results.append(py.None())?;
-                errors.append(match f {
-                    Failure::Input { reason, .. } if reason.starts_with("key `") => reason.clone(),
-                    f => f.to_string(),
-                })?;
-            }
-            None => {
-                results.append(py.None())?;
-                errors.append(py.None())?;
-            }
+            Some(Err(f)) => errors.append(match f {
+                Failure::Input { reason, .. } if reason.starts_with("key `") => reason.clone(),
+                f => f.to_string(),
+            })?,
+            _ => errors.append(py.None())?,
         }
     }
     let stopped = match outcome.stopped {
         Some(e) => e.into_value(py).into_bound(py).into_any(),
         None => py.None().into_bound(py),
     };
-    Ok((results, errors, stopped).into_pyobject(py)?.into_any())
+    let columns = columns::to_py(py, &answered, &kinds)?;
+    let state = pyo3::types::PyBytes::new(py, &state);
+    Ok((columns, state, errors, stopped)
+        .into_pyobject(py)?
+        .into_any())
 }
 
 /// The report's Table 1 recomputed, rows as `boltzone table1 --json` prints them (lengths in
