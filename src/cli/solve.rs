@@ -152,26 +152,29 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let bar = super::progress(pts.len() as u64, "sweep");
     let results = solve_all(&pts, &|| bar.inc(1));
     bar.finish_and_clear();
-    let mut failed = None;
-    let mut rows = Vec::new();
-    for (p, r) in pts.iter().zip(&results) {
-        let sweep: serde_json::Map<String, serde_json::Value> = p
+    let failed = results
+        .iter()
+        .find_map(|r| r.as_ref().err().map(|e| e.to_string()));
+    // one point's JSON object: its solution (or error) with the point's values under "sweep"
+    let row = |i: usize| -> anyhow::Result<serde_json::Value> {
+        let sweep: serde_json::Map<String, serde_json::Value> = pts[i]
             .values
             .iter()
             .map(|(k, v)| (k.clone(), serde_json::to_value(v).unwrap_or_default()))
             .collect();
-        match r {
+        let path = format!("result.results[{i}]");
+        Ok(match &results[i] {
             Ok(s) => {
-                let mut v = serde_json::to_value(s)?;
-                v["sweep"] = sweep.into();
-                rows.push(v);
+                let mut v = super::print::checked_json(s, &path)?;
+                v["sweep"] = super::print::checked_json(&sweep, &format!("{path}.sweep"))?;
+                v
             }
-            Err(e) => {
-                failed.get_or_insert_with(|| e.to_string());
-                rows.push(serde_json::json!({ "sweep": sweep, "error": e.to_string() }));
-            }
-        }
-    }
+            Err(e) => super::print::checked_json(
+                &serde_json::json!({ "sweep": sweep, "error": e.to_string() }),
+                &path,
+            )?,
+        })
+    };
     if let Some(path) = &base.outputs.interface_pressure {
         super::write_output(path, &curve_csv(&pts, &results, &args.scene))?;
     }
@@ -188,9 +191,10 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         super::write_output(path, &sweep_csv(&pts, &results, &args.scene))?;
     }
     if args.json {
-        let mut v = serde_json::json!({ "results": rows });
-        super::output::stamp_run(&mut v, start)?;
-        super::print_json(&v)?;
+        let mut head = serde_json::json!({});
+        super::output::stamp_run(&mut head, start)?;
+        let head = head.as_object().cloned().unwrap_or_default();
+        super::print::print_json_results(&head, pts.len(), &row)?;
     } else {
         for (p, r) in pts.iter().zip(&results) {
             let at: Vec<String> = p.values.iter().map(|(k, v)| format!("{k} = {v}")).collect();
