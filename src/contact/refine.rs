@@ -82,7 +82,8 @@ pub(crate) fn mesh(
     // plates near R_o), shrinking on the finest levels ([`level_grading`])
     let (q, q_axial, shrink) = level_grading(h, g.d[0].min(g.d[1]), 1.25, 1.5);
     // (the fitted edge: the axial excess shrinks like the radial one, √h, so that the far
-    // mesh's error falls at second order instead of the first that h^¼ leaves)
+    // mesh's error falls at second order instead of the first that h^¼ leaves; the first
+    // elements from the interface are h: [`interface_knots`])
     let q_axial = if uniform_edge {
         1.0 + 0.5 * shrink
     } else {
@@ -101,8 +102,16 @@ pub(crate) fn mesh(
     }
     knots.sort_by(f64::total_cmp);
     let r = Spacing::graded(g.a, g.c, &knots, &foci, h, q, h_max)?;
-    let zs =
-        |z0: f64, z1: f64| Spacing::graded(z0, z1, &[], &[z0, z1], h, q_axial, (z1 - z0) / 3.0);
+    // (the fitted edge: the first elements across the plates from the interface z = 0 are
+    // exactly h too, so that the mesh around the edge is the same in units of h on every level)
+    let zs = |z0: f64, z1: f64| {
+        let knots = if uniform_edge {
+            interface_knots(z0, z1, h)
+        } else {
+            Vec::new()
+        };
+        Spacing::graded(z0, z1, &knots, &[z0, z1], h, q_axial, (z1 - z0) / 3.0)
+    };
     let upper_mat = joint.upper().material();
     let model = if g.two {
         let plates = [
@@ -151,6 +160,16 @@ fn uniform_edge_knots(g: &MeshLayout, h: f64, r_est: Option<f64>) -> Vec<f64> {
     (1..=UNIFORM_EDGE_ELEMENTS)
         .flat_map(|i| [r - i as f64 * h, r + i as f64 * h])
         .filter(|&x| [g.a, g.b, g.c].iter().all(|&y| (x - y).abs() >= h))
+        .collect()
+}
+
+/// Knots at z = ±i·h, i = 1..=[`UNIFORM_EDGE_ELEMENTS`], from the interface z = 0 into the
+/// plate [z0, z1] (one end of which is 0), at least h from its other face.
+fn interface_knots(z0: f64, z1: f64, h: f64) -> Vec<f64> {
+    let (sign, far) = if z0 < 0.0 { (-1.0, z0) } else { (1.0, z1) };
+    (1..=UNIFORM_EDGE_ELEMENTS)
+        .map(|i| sign * i as f64 * h)
+        .filter(|&z| (far - z).abs() >= h)
         .collect()
 }
 

@@ -307,12 +307,13 @@ const CAUTIOUS_BELOW: f64 = 5e-4;
 /// (`levels_are_first_order_and_within_every_estimate`).
 const TRANSIENT_FLOOR: f64 = 2e-5;
 
-/// [`TRANSIENT_FLOOR`] of the fitted edge's study ([`super::edge_fit`]), relative to R_o. Its
-/// extrapolated values settle at +2e-7 … +5.4e-7 of R_o at h = D/1024 and D/2048 on random
-/// infinite plates against the receding contact and the holed route, whatever the grading or
-/// the largest element (example 22); without a floor a study at 1e-6 ended 4.1e-7 from the
-/// receding contact with a level estimate of 2.5e-7. Twice the largest settled value. Tolerances from 2e-6 of R_o are claimed; tighter, the semi-analytic routes.
-const FITTED_FLOOR: f64 = 1e-6;
+/// [`TRANSIENT_FLOOR`] of the fitted edge's study ([`super::edge_fit`]), relative to R_o. With
+/// the mesh around the edge the same in units of h on every level, radially and across the
+/// plates, the extrapolated values lie within 3.3e-7 of R_o at h = D/512 … D/2048 on no-hole
+/// infinite plates against the receding contact (example 28); finer levels drift up to
+/// +8.8e-7 at D/4096 (B = 2D), which the level changes show. Tolerances from 1e-6 of R_o are
+/// claimed; tighter, the semi-analytic routes.
+const FITTED_FLOOR: f64 = 5e-7;
 
 /// The shrink of the R_o estimate per level beyond which the study decides that a tolerance is
 /// out of reach: twice the fastest seen (the level-to-level changes shrink 2–3.6× per level on
