@@ -49,7 +49,9 @@
 //! away from the edge (its growth ratio shrinks like √h below D/64, so that part falls roughly
 //! first order, irregularly: +1.5e-7 … +8.0e-7 R_o at h = D/1024 on 39 plates), then a
 //! residual of +2e-7 … +5.4e-7 at D/1024 … D/2048 whatever the grading (finer, fixed or
-//! shrunk like h) or the largest element (10× smaller). The study adds a floor of 1e-6 R_o for it
+//! shrunk like h) or the largest element (10× smaller). With the first elements across the
+//! plates from the interface also exactly h on every level, that residual is within 3.3e-7 of
+//! R_o at D/512 … D/2048 (example 28). The study adds a floor of 5e-7 R_o for it
 //! (`two_plate::FITTED_FLOOR`).
 //!
 //! Units: those of the level (any consistent set).
