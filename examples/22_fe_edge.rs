@@ -21,6 +21,10 @@
 //! R_{k−1}, the ratios of successive errors, and the observed order of each root over the last
 //! two levels. `check [plates] [tol …]`: the fitted study of random plates (seed 3636, at most
 //! 12 levels) at each tolerance (default 1e-5 1e-6) against the exact routes, with counts.
+//! `pair [plates] [tol …]`: the same for unequal, dissimilar plates without a hole (both
+//! plates meshed; D₂/D₁ ∈ [0.5, 2], E₂/E₁ ∈ [0.3, 3], each ν ∈ [0.01, 0.49], B/D₁ ∈ [0.3, 3];
+//! seed 3737) against the receding contact of the two plates in series
+//! (`hankel::receding::Pair`, certified to 1e-9).
 //!
 //! Plates whose reference is not certified (receding contact to 1e-9, holed route to 1e-7) are
 //! skipped and counted. Self-check (error): every level's fitted R_o exists; every fitted
@@ -29,7 +33,7 @@
 use anyhow::ensure;
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
 use boltzone::hankel::receding::holed::two_plate_hole_to;
-use boltzone::hankel::receding::{Layer, RecedingParams};
+use boltzone::hankel::receding::{Layer, Pair, RecedingParams};
 use boltzone::numerics::convergence::order_between;
 use boltzone::numerics::random::SplitMix64;
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate, SinglePlate};
@@ -106,15 +110,15 @@ pub fn levels(case: &Case, levels: usize, fitted: bool) -> anyhow::Result<Vec<Le
         .collect()
 }
 
-/// The fitted study of `case` at `tol` with at most `max_levels` levels: (R_o, its estimate,
+/// The fitted study of `joint` at `tol` with at most `max_levels` levels: (R_o, its estimate,
 /// converged, levels, seconds).
-pub fn study_to(
-    case: &Case,
+pub fn study_joint(
+    joint: &Joint,
     tol: f64,
     max_levels: usize,
 ) -> anyhow::Result<(f64, f64, bool, usize, f64)> {
     let s = solve(
-        &case.joint()?,
+        joint,
         &TwoPlateParams {
             tolerance: tol,
             fitted_edge: true,
@@ -133,7 +137,7 @@ pub fn study_to(
 
 /// The fitted study of `case` at `tol`: (R_o, its estimate, converged, seconds).
 pub fn study(case: &Case, tol: f64) -> anyhow::Result<(f64, f64, bool, f64)> {
-    let (r, e, c, _, t) = study_to(case, tol, 9)?;
+    let (r, e, c, _, t) = study_joint(&case.joint()?, tol, 9)?;
     Ok((r, e, c, t))
 }
 
@@ -151,26 +155,64 @@ pub fn random_case(rng: &mut SplitMix64, p: usize) -> Case {
 }
 
 /// `check N [tol …]`: the fitted study of N random plates at each tolerance (default 1e-5 and
-/// 1e-6, at most 12 levels) against the exact routes; per study the error over its estimate,
-/// and a summary per tolerance: counts converged and within, the largest ratio, the levels
-/// and times.
+/// 1e-6, at most 12 levels) against the exact routes ([`tally`]).
 fn check(n: usize, tols: &[f64]) -> anyhow::Result<()> {
     let mut rng = SplitMix64::new(3636);
+    tally(n, tols, |p| {
+        let case = random_case(&mut rng, p);
+        let label = format!("A {:.3} B {:.3} ν {:.3}", case.a, case.b, case.nu);
+        Ok((label, case.joint()?, exact(&case)?))
+    })
+}
+
+/// `pair N [tol …]`: the fitted study of N random unequal, dissimilar plates without a hole
+/// against `Pair`'s receding contact ([`tally`]).
+fn pair(n: usize, tols: &[f64]) -> anyhow::Result<()> {
+    let mut rng = SplitMix64::new(3737);
+    tally(n, tols, |_| {
+        let d2 = 0.5 * 4f64.powf(rng.unit());
+        let e2 = 0.3 * 10f64.powf(rng.unit());
+        let (nu1, nu2) = (0.01 + 0.48 * rng.unit(), 0.01 + 0.48 * rng.unit());
+        let b = 0.3 + 2.7 * rng.unit();
+        let upper = Plate::new(1.0, Material::new(1.0, nu1)?)?;
+        let lower = Plate::new(d2, Material::new(e2, nu2)?)?;
+        let load = FaceLoad::uniform(0.0, b, 1.0)?;
+        let r =
+            Pair::new(upper, lower, load.clone()).receding_contact(&RecedingParams::default())?;
+        let joint = Joint::new(0.0, OuterRadius::Infinite, upper, lower, load)?;
+        let label = format!("B {b:.3} ν {nu1:.3} D2 {d2:.3} E2 {e2:.3} ν2 {nu2:.3}");
+        Ok((
+            label,
+            joint,
+            (r.info.r_o_error < 1e-9 * r.r_o).then_some(r.r_o),
+        ))
+    })
+}
+
+/// The fitted study (at most 12 levels) of the `n` joints `draw` gives (label, joint, its
+/// certified exact R_o or None: skipped and counted) at each tolerance: per study the error
+/// over its estimate, and per tolerance the counts converged and within, the largest ratio,
+/// the levels and times. An error when any study lies beyond its estimate.
+fn tally(
+    n: usize,
+    tols: &[f64],
+    mut draw: impl FnMut(usize) -> anyhow::Result<(String, Joint, Option<f64>)>,
+) -> anyhow::Result<()> {
     let mut rows: Vec<Vec<(f64, bool, usize, f64)>> = vec![Vec::new(); tols.len()];
     let mut skipped = 0;
     for p in 0..n {
-        let case = random_case(&mut rng, p);
-        let Some(r) = exact(&case)? else {
+        let (label, joint, r) = draw(p)?;
+        let Some(r) = r else {
             skipped += 1;
-            println!("plate {p}: {case:?}: reference not certified, skipped");
+            println!("plate {p}: {label}: reference not certified, skipped");
             continue;
         };
         for (k, &tol) in tols.iter().enumerate() {
-            let (v, e, conv, lv, secs) = study_to(&case, tol, 12)?;
+            let (v, e, conv, lv, secs) = study_joint(&joint, tol, 12)?;
             let ratio = (v - r).abs() / e;
             println!(
-                "plate {p} A {:.3} B {:.3} ν {:.3} tol {tol:e}: error {:+.2e} R_o, estimate {:.2e} R_o, ratio {ratio:.2}, converged {conv}, {lv} levels, {secs:.2} s",
-                case.a, case.b, case.nu, (v - r) / r, e / r
+                "plate {p} {label} tol {tol:e}: error {:+.2e} R_o, estimate {:.2e} R_o, ratio {ratio:.2}, converged {conv}, {lv} levels, {secs:.2} s",
+                (v - r) / r, e / r
             );
             rows[k].push((ratio, conv, lv, secs));
         }
@@ -201,20 +243,21 @@ pub fn main() -> anyhow::Result<()> {
     let quick = std::env::var("BOLTZONE_QUICK").is_ok();
     let raw: Vec<String> = std::env::args().skip(1).collect();
     let survey = raw.first().map(String::as_str) == Some("survey");
-    if raw.first().map(String::as_str) == Some("check") {
+    let mode = raw.first().map(String::as_str);
+    if mode == Some("check") || mode == Some("pair") {
         let n = raw.get(1).and_then(|a| a.parse().ok()).unwrap_or(40);
-        let tols: Vec<f64> = raw[2.min(raw.len())..]
+        let mut tols: Vec<f64> = raw[2.min(raw.len())..]
             .iter()
             .filter_map(|a| a.parse().ok())
             .collect();
-        return check(
-            n,
-            if tols.is_empty() {
-                &[1e-5, 1e-6]
-            } else {
-                &tols
-            },
-        );
+        if tols.is_empty() {
+            tols = vec![1e-5, 1e-6];
+        }
+        return if mode == Some("check") {
+            check(n, &tols)
+        } else {
+            pair(n, &tols)
+        };
     }
     let args: Vec<usize> = std::env::args()
         .skip(1)
