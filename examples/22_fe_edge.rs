@@ -242,8 +242,8 @@ fn tally(
 pub fn main() -> anyhow::Result<()> {
     let quick = std::env::var("BOLTZONE_QUICK").is_ok();
     let raw: Vec<String> = std::env::args().skip(1).collect();
-    let survey = raw.first().map(String::as_str) == Some("survey");
     let mode = raw.first().map(String::as_str);
+    let survey = mode == Some("survey");
     if mode == Some("check") || mode == Some("pair") {
         let n = raw.get(1).and_then(|a| a.parse().ok()).unwrap_or(40);
         let mut tols: Vec<f64> = raw[2.min(raw.len())..]
