@@ -60,7 +60,7 @@
 
 use super::single::{single_fem, FemStudy};
 use super::{CompareError, Geometry};
-use crate::contact::two_plate::{solve as solve_two, TwoPlateParams};
+use crate::contact::two_plate::solve as solve_two;
 use crate::hankel::hole::single_plate_separation;
 use crate::hankel::receding::holed::two_plate_hole_to;
 use crate::joint::OuterRadius;
@@ -187,14 +187,13 @@ pub(super) fn two(g: &Geometry, method: Method, tol: f64) -> Result<ModelResult,
             return Ok(r);
         }
     }
-    let params = TwoPlateParams {
-        tolerance: tol,
-        ..Default::default()
-    };
-    let sol = solve_two(&g.joint()?, &params).map_err(|source| CompareError::Two {
-        geometry: g.label(),
-        source,
-    })?;
+    let joint = g.joint()?;
+    let sol = solve_two(&joint, &two_plate::Question::new(&joint, tol).fem_params()).map_err(
+        |source| CompareError::Two {
+            geometry: g.label(),
+            source,
+        },
+    )?;
     Ok(ModelResult {
         value: Value {
             value: sol.r_o,

@@ -29,12 +29,13 @@
 //! ```
 
 use super::{show, CompareError};
-use crate::contact::two_plate::{solve, InterfaceModel, TwoPlateParams};
+use crate::contact::two_plate::{solve, InterfaceModel};
 use crate::error::positive;
 use crate::joint::{Joint, OuterRadius, Plate};
 use crate::load::FaceLoad;
 use crate::material::Material;
 use crate::reference::{self, Table2Row, TABLE2_HOLE_RADIUS, TABLE2_OUTER_RADIUS};
+use crate::route::two_plate::Question;
 use crate::units::UnitSystem;
 use crate::units::{as_entered, INCH};
 use crate::value::Value;
@@ -83,15 +84,16 @@ pub fn compute(
     tick: &(dyn Fn() + Sync),
 ) -> Result<Vec<Row>, CompareError> {
     positive("comparison tolerance", tolerance)?;
-    let params = TwoPlateParams {
-        tolerance,
-        interface,
-        ..Default::default()
-    };
     reference::table2()
         .into_par_iter()
         .map(|case| {
-            let s = solve(&joint(&case)?, &params).map_err(|source| CompareError::Two {
+            let joint = joint(&case)?;
+            let params = Question {
+                interface,
+                ..Question::new(&joint, tolerance)
+            }
+            .fem_params();
+            let s = solve(&joint, &params).map_err(|source| CompareError::Two {
                 geometry: format!(
                     "Table 2 case {} (d1 = {}, d2 = {})",
                     case.case, case.d1, case.d2

@@ -97,11 +97,12 @@ pub struct TwoPlateParams {
     /// LCP knobs.
     pub lcp: LcpParams,
     /// R_o of each level from the fitted contact edge ([`super::edge_fit`]: the root of the
-    /// edge force over trial edges, extrapolated in h, with a floor of 1e-6 R_o instead of
+    /// edge force over trial edges, extrapolated in h, with a floor of 5e-7 R_o instead of
     /// 2e-5) where it applies (frictionless or symmetric contact), else from the gap's shape
-    /// (default false). Its bars held on the random infinite plates of example 22 at 1e-4 and
-    /// 1e-5 (docs/fem.md); it needs more levels (raise `max_levels` to 12 for 2e-6) and at the
-    /// default tolerance costs 2–3× the gap-shape study.
+    /// (default false). Its bars held on the random plates of example 22 from 1e-4 to 1e-6
+    /// (docs/fem.md); it needs more levels (the route layer allows 10 below a tolerance of
+    /// 3e-5, `route::two_plate::Question::fem_params`) and at the default tolerance costs 2–3×
+    /// the gap-shape study.
     pub fitted_edge: bool,
 }
 

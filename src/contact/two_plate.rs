@@ -26,7 +26,7 @@
 //! two first- and second-order parts of opposite sign cross, and the turn of the sequence
 //! defeats the first), plus a floor of 2e-5 R_o for what no level change shows.
 //! With [`TwoPlateParams::fitted_edge`] a level's R_o is the root of the edge force instead,
-//! the study's value its first-order extrapolation, with a floor of 1e-6 R_o
+//! the study's value its first-order extrapolation, with a floor of 5e-7 R_o
 //! ([`super::edge_fit`]).
 //! Welded dissimilar plates may have no sign-consistent contact edge; the level record then says
 //! that the report's rule decided ([`TwoPlateLevel::report_rule`]).

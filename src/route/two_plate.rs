@@ -6,7 +6,8 @@
 //!   welded, frictionless or frictional interface, equal or unequal plates, a hole or none, a
 //!   finite rim free or fixed, a pressure or a nut displacement, temperatures, the field; every
 //!   estimate carries 2e-5 of R_o (the level sequence's slow component), so they cannot claim a
-//!   tolerance below [`AUTO_BELOW`];
+//!   tolerance below [`AUTO_BELOW`], except where [`Question::fitted_edge`] reads R_o from the
+//!   fitted contact edge (bars from 5e-7 of R_o; [`Question::fem_params`] sets it);
 //! - the **semi-analytic Hankel routes** ([`crate::hankel::receding`]): with a hole, two equal
 //!   plates ([`crate::hankel::receding::holed`], its rim `holed::rim`); without one, the receding
 //!   contact of any two plates in series in frictionless contact (`Pair`; equal plates carry no
@@ -65,6 +66,14 @@ use crate::material::Material;
 
 pub use crate::hankel::receding::AUTO_BELOW;
 
+/// The most mesh levels of a fitted-edge study ([`Question::fitted_edge`]): the tenth has
+/// h = D/2048 at R_o (the thinner plate's D). Its estimate falls about 2× per level, and 1e-6
+/// of R_o took 9–10 levels on most plates of docs/fem.md; finer levels stop paying: on an
+/// infinite plate (A = 0.84 D, B = 3.8 D, ν = 0.42) the edge-force root's error fell
+/// +6.3e-6 → +3.9e-6 → +3.2e-6 R_o from D/2048 to D/8192 instead of halving, so that its
+/// extrapolation moved away, to +2.5e-6 (1 M and 2.4 M unknowns, 10 s each).
+pub const FITTED_MAX_LEVELS: usize = 10;
+
 /// A two-plate question: the joint (any consistent units), how it is loaded and supported, the
 /// outputs wanted beyond R_o, the method and the tolerance (relative, on R_o).
 #[derive(Debug, Clone, Copy)]
@@ -112,8 +121,11 @@ impl<'a> Question<'a> {
     }
 
     /// The finite elements' parameters for this question (Q9, the tolerance, the interface,
-    /// loading and edge asked).
+    /// loading and edge asked; the fitted contact edge and up to [`FITTED_MAX_LEVELS`] levels
+    /// where [`Question::fitted_edge`] says so).
     pub fn fem_params(&self) -> TwoPlateParams {
+        let fitted = self.fitted_edge();
+        let default = TwoPlateParams::default();
         TwoPlateParams {
             interface: self.interface,
             loading: self.loading,
@@ -123,8 +135,28 @@ impl<'a> Question<'a> {
                 EdgeSupport::Free
             },
             tolerance: self.tolerance,
-            ..TwoPlateParams::default()
+            fitted_edge: fitted,
+            max_levels: if fitted {
+                FITTED_MAX_LEVELS
+            } else {
+                default.max_levels
+            },
+            ..default
         }
+    }
+
+    /// Whether the finite elements read R_o from the fitted contact edge
+    /// ([`TwoPlateParams::fitted_edge`], bars from 1e-6 of R_o instead of 2e-5): below
+    /// [`AUTO_BELOW`], for the joints its bars were measured on (docs/fem.md) — a face
+    /// pressure, a free rim, no temperatures, the same bearing face under head and nut, and
+    /// equal plates (any interface: the symmetric model) or a frictionless interface.
+    pub fn fitted_edge(&self) -> bool {
+        self.tolerance < AUTO_BELOW
+            && self.loading == Loading::Pressure
+            && !self.fixed_edge
+            && !self.thermal
+            && !self.joint.has_own_nut_load()
+            && (self.interface == InterfaceModel::Frictionless || self.equal_plates())
     }
 
     /// Whether the two plates are alike (thickness and material).

@@ -25,12 +25,11 @@
 
 use super::error::SceneError;
 use super::field;
-use super::file::InterfaceKind;
 use super::file::Scene;
 use super::si::{material_in, solved};
 use super::solution::{FrictionSummary, InterfaceCurve, Solution};
 use crate::contact::thermal;
-use crate::contact::two_plate::{self, EdgeSupport, InterfaceModel, Loading, TwoPlateParams};
+use crate::contact::two_plate::{self, TwoPlateParams};
 use crate::joint::Joint;
 use std::time::Instant;
 
@@ -49,7 +48,7 @@ pub fn solve(
     let to = solved(scene);
     let (l, st) = (to.length, to.stress);
     let mut heat_step = None;
-    let params = two_plate_params(scene, nut);
+    let params = two_plate_params(scene, joint, nut);
     let s = match (&scene.temperature, &scene.outputs.field) {
         (Some(t), _) if t.from_heat => {
             super::from_heat::solve(scene, joint, &params, t, out)?.solution
@@ -124,23 +123,8 @@ fn scaled_zones(z: Vec<[f64; 2]>, l: f64) -> Vec<[f64; 2]> {
     z.into_iter().map(|[a, b]| [a / l, b / l]).collect()
 }
 
-/// The two-plate parameters of `scene` (nut displacement `nut` in the solving units).
-pub fn two_plate_params(scene: &Scene, nut: Option<f64>) -> TwoPlateParams {
-    TwoPlateParams {
-        interface: match scene.joint.interface {
-            InterfaceKind::Welded => InterfaceModel::Welded,
-            InterfaceKind::Frictionless => InterfaceModel::Frictionless,
-            InterfaceKind::Friction => InterfaceModel::Friction {
-                mu: scene.joint.mu.unwrap_or(0.0),
-            },
-        },
-        loading: nut.map_or(Loading::Pressure, Loading::NutDisplacement),
-        edge: if scene.joint.fixed_edge {
-            EdgeSupport::Fixed
-        } else {
-            EdgeSupport::Free
-        },
-        tolerance: scene.tolerance,
-        ..TwoPlateParams::default()
-    }
+/// The two-plate parameters of `scene` (its joint `joint` and nut displacement `nut` in the
+/// units it is solved in): the route layer's ([`crate::route::two_plate::Question::fem_params`]).
+pub fn two_plate_params(scene: &Scene, joint: &Joint, nut: Option<f64>) -> TwoPlateParams {
+    super::two_hankel::question(scene, joint, nut).fem_params()
 }

@@ -48,9 +48,10 @@
 //! curve (its radii need R_o); timed by `tests/scene/two_hankel_no_hole.rs`.
 
 use super::error::SceneError;
-use super::file::{Model, Scene};
+use super::file::{InterfaceKind, Model, Scene};
 use super::si::joint_solved;
 use super::solution::{InterfaceCurve, Solution};
+use crate::contact::two_plate::{InterfaceModel, Loading};
 use crate::hankel::receding::holed::two_plate_hole_to;
 use crate::hankel::receding::rim::rim_contact;
 use crate::hankel::receding::{Pair, RecedingParams};
@@ -124,11 +125,16 @@ pub fn auto_takes(scene: &Scene) -> bool {
 /// The two-plate question of `scene` (its joint `joint` and nut displacement `nut` in the units
 /// it is solved in, [`super::si::solved`]) for the route layer.
 pub fn question<'a>(scene: &Scene, joint: &'a Joint, nut: Option<f64>) -> two_plate::Question<'a> {
-    let params = super::two_fem::two_plate_params(scene, nut);
     two_plate::Question {
         joint,
-        interface: params.interface,
-        loading: params.loading,
+        interface: match scene.joint.interface {
+            InterfaceKind::Welded => InterfaceModel::Welded,
+            InterfaceKind::Frictionless => InterfaceModel::Frictionless,
+            InterfaceKind::Friction => InterfaceModel::Friction {
+                mu: scene.joint.mu.unwrap_or(0.0),
+            },
+        },
+        loading: nut.map_or(Loading::Pressure, Loading::NutDisplacement),
         fixed_edge: scene.joint.fixed_edge,
         thermal: scene.temperature.is_some(),
         field: scene.outputs.field.is_some(),

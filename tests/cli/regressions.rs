@@ -124,9 +124,10 @@ fn an_infinite_plate_holds_its_error_bar_against_the_receding_contact_solution()
             "two", "--method", "fem", "--a", "0", "--b", "0.1", "--d", "0.1", "--tol", tol,
             "--json",
         ]));
-        // (at 1e-5 and 1e-6 not converged: every two-plate estimate carries 2e-5 of R_o,
-        // `contact::two_plate::TRANSIENT_FLOOR`)
-        assert_eq!(v["converged"], ["1e-3", "1e-4"].contains(&tol), "tol {tol}");
+        // (at 1e-5 and 1e-6, below `AUTO_BELOW`, the route layer asks the fitted contact edge,
+        // whose bars carry 5e-7 of R_o instead of 2e-5, so that the study converges there too;
+        // before it, not converged)
+        assert_eq!(v["converged"], true, "tol {tol}");
         let actual = (v["r_o"].as_f64().unwrap() - exact.r_o).abs();
         let bar = v["r_o_error"].as_f64().unwrap() + exact.info.r_o_error;
         assert!(

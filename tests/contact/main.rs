@@ -4,6 +4,7 @@
 mod cli;
 mod edge_fit;
 mod exterior;
+mod fitted_route;
 mod friction;
 mod friction_cli;
 mod lcp;
