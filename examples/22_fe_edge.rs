@@ -245,11 +245,19 @@ pub fn main() -> anyhow::Result<()> {
     let mode = raw.first().map(String::as_str);
     let survey = mode == Some("survey");
     if mode == Some("check") || mode == Some("pair") {
-        let n = raw.get(1).and_then(|a| a.parse().ok()).unwrap_or(40);
-        let mut tols: Vec<f64> = raw[2.min(raw.len())..]
+        let n = match raw.get(1) {
+            Some(a) => a
+                .parse()
+                .map_err(|e| anyhow::anyhow!("PLATES = {a:?}: {e} (a count)"))?,
+            None => 40,
+        };
+        let mut tols = raw[2.min(raw.len())..]
             .iter()
-            .filter_map(|a| a.parse().ok())
-            .collect();
+            .map(|a| match a.parse::<f64>() {
+                Ok(t) if t > 0.0 && t < 1.0 => Ok(t),
+                _ => Err(anyhow::anyhow!("TOL = {a:?}: not a tolerance in (0, 1)")),
+            })
+            .collect::<anyhow::Result<Vec<f64>>>()?;
         if tols.is_empty() {
             tols = vec![1e-5, 1e-6];
         }
