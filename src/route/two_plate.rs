@@ -67,11 +67,9 @@ use crate::material::Material;
 pub use crate::hankel::receding::AUTO_BELOW;
 
 /// The most mesh levels of a fitted-edge study ([`Question::fitted_edge`]): the tenth has
-/// h = D/2048 at R_o (the thinner plate's D). Its estimate falls about 2× per level, and 1e-6
-/// of R_o took 9–10 levels on most plates of docs/fem.md; finer levels stop paying: on an
-/// infinite plate (A = 0.84 D, B = 3.8 D, ν = 0.42) the edge-force root's error fell
-/// +6.3e-6 → +3.9e-6 → +3.2e-6 R_o from D/2048 to D/8192 instead of halving, so that its
-/// extrapolation moved away, to +2.5e-6 (1 M and 2.4 M unknowns, 10 s each).
+/// h = D/2048 at R_o (D the thinner plate's). Its estimate falls about 2× per level, so 1e-6 of
+/// R_o takes 9–10 levels; below D/2048 the edge-force root stops halving and its extrapolation
+/// moves away from R_o (docs/fem.md, "Through the front ends").
 pub const FITTED_MAX_LEVELS: usize = 10;
 
 /// A two-plate question: the joint (any consistent units), how it is loaded and supported, the
@@ -146,7 +144,8 @@ impl<'a> Question<'a> {
     }
 
     /// Whether the finite elements read R_o from the fitted contact edge
-    /// ([`TwoPlateParams::fitted_edge`], bars from 1e-6 of R_o instead of 2e-5): below
+    /// ([`TwoPlateParams::fitted_edge`], a floor of 5e-7 of R_o instead of 2e-5, so
+    /// tolerances from 1e-6): below
     /// [`AUTO_BELOW`], for the joints its bars were measured on (docs/fem.md) — a face
     /// pressure, a free rim, no temperatures, the same bearing face under head and nut, and
     /// equal plates (any interface: the symmetric model) or a frictionless interface.
