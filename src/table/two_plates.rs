@@ -3,7 +3,7 @@
 //! ([`super::near`]) and the far table ([`super::far`]), whichever answers with the smaller bar.
 //!
 //! **Method.** Both tables are looked up where they apply (the near one over A/D ∈ [0.25, 4],
-//! (B − A)/D ∈ [0.1, 5], ν ∈ [0, 0.5]; the far one for B/D ≥ 2, A/D ≤ 4 and the contact edge at
+//! (B − A)/D ∈ [0.15, 5], ν ∈ [0, 0.5]; the far one for B/D ≥ 2, A/D ≤ 4 and the contact edge at
 //! least 2D beyond the hole, any B/D); the answer is the one with the smaller bar. Where
 //! neither applies the error is the near table's (it names the ratio outside it), or, without
 //! a hole, the far table's.

@@ -42,6 +42,42 @@ fn the_near_table_holds_its_bar_on_fresh_random_solves() {
     }
 }
 
+/// Every held-out solve of `file` (reference/tables/, made by example 27 `validate`, none of
+/// them a build sample) within the table's bar plus the solve's own estimate; returns the
+/// number of points and the largest ratio.
+fn held_out(file: &str) -> (usize, f64) {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("reference/tables")
+        .join(file);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let mut worst = 0.0f64;
+    let mut n = 0;
+    for line in text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with('a'))
+    {
+        let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        let (a, w, nu, r_o, e) = (v[0], v[1], v[2], v[3], v[4]);
+        let t = separation_radius(a, a + w, 1.0, nu, 1e-3).unwrap();
+        let ratio = (t.value - r_o).abs() / (t.error + e);
+        assert!(
+            ratio <= 1.0,
+            "{file}: A/D {a} w {w} ν {nu}: table {} ± {:.1e}, route {r_o} ± {e:.1e}",
+            t.value,
+            t.error
+        );
+        worst = worst.max(ratio);
+        n += 1;
+    }
+    (n, worst)
+}
+
+#[test]
+fn the_near_table_holds_its_bar_on_every_kept_held_out_solve() {
+    assert_eq!(held_out("near_heldout_seed202.csv").0, 10_000);
+    assert_eq!(held_out("near_heldout_1e-8.csv").0, 1_600);
+}
+
 #[test]
 fn outside_the_near_table_the_error_names_the_ratio() {
     let field = |r: Result<boltzone::Value, InputError>| match r {
