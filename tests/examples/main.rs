@@ -296,3 +296,13 @@ fn ex27_build_near_table() {
     quick();
     ex27::main().unwrap();
 }
+
+#[path = "../../examples/29_fe_fitted_study.rs"]
+mod ex29;
+
+#[test]
+fn ex29_fe_fitted_study() {
+    // quick: one joint of each interface kind at 1e-5 against the exact routes
+    quick();
+    ex29::main().unwrap();
+}
