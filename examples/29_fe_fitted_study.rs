@@ -91,6 +91,21 @@ fn load(rng: &mut SplitMix64, a: f64, b: f64) -> anyhow::Result<FaceLoad> {
     })
 }
 
+/// Adds one FE run (R_o, bar, converged, seconds) against the exact (R_o, estimate) to `tally`
+/// and says how it went.
+fn outcome(tally: &mut Tally, run: (f64, f64, bool, f64), exact: (f64, f64), tol: f64) -> String {
+    let ratio = tally.add(run, exact, tol);
+    format!(
+        "FE {:.9} ± {:.1e} ({}), exact {:.9} ± {:.1e}: |err|/bar {ratio:.2} {:.2} s",
+        run.0,
+        run.1,
+        if run.2 { "converged" } else { "NOT converged" },
+        exact.0,
+        exact.1,
+        run.3
+    )
+}
+
 /// One random equal-plate joint (D = 1) against the holed route at 1e-8, for each interface.
 fn equal(rng: &mut SplitMix64, tol: f64, tallies: &mut [Tally]) -> anyhow::Result<()> {
     let a = 0.3 + 0.7 * rng.unit();
@@ -123,18 +138,9 @@ fn equal(rng: &mut SplitMix64, tol: f64, tallies: &mut [Tally]) -> anyhow::Resul
             "{kind:?}: R_o {} against {r_o}",
             run.0
         );
-        let ratio = tally.add(run, (exact.r_o, exact.info.r_o_error), tol);
-        println!(
-            "equal {kind:?}: A {a:.3} B {b:.3} nu {nu:.3} {rim:?} {:?}: FE {:.9} ± {:.1e} \
-             ({}), exact {:.9} ± {:.1e}: |err|/bar {ratio:.2} {:.2} s",
-            joint.load().profile(),
-            run.0,
-            run.1,
-            if run.2 { "converged" } else { "NOT converged" },
-            exact.r_o,
-            exact.info.r_o_error,
-            run.3
-        );
+        let line = outcome(tally, run, (exact.r_o, exact.info.r_o_error), tol);
+        let shape = joint.load().profile();
+        println!("equal {kind:?}: A {a:.3} B {b:.3} nu {nu:.3} {rim:?} {shape:?}: {line}");
     }
     Ok(())
 }
@@ -159,19 +165,12 @@ fn unequal(rng: &mut SplitMix64, tol: f64, tally: &mut Tally) -> anyhow::Result<
         FaceLoad::uniform(a, b, 1.0)?,
     )?;
     let run = fe(&joint, InterfaceModel::Frictionless, tol)?;
-    let ratio = tally.add(run, (exact.r_o, exact.info.r_o_error), tol);
+    let line = outcome(tally, run, (exact.r_o, exact.info.r_o_error), tol);
     println!(
-        "unequal: D2 {d2:.2} E2 {:.2} nu {:.2},{:.2} A {a:.3} B {b:.3}: FE {:.9} ± {:.1e} ({}), \
-         Pair {:.9} ± {:.1e}: |err|/bar {ratio:.2} {:.2} s",
+        "unequal: D2 {d2:.2} E2 {:.2} nu {:.2},{:.2} A {a:.3} B {b:.3}: {line}",
         lower.material().youngs_modulus(),
         upper.material().poisson_ratio(),
         lower.material().poisson_ratio(),
-        run.0,
-        run.1,
-        if run.2 { "converged" } else { "NOT converged" },
-        exact.r_o,
-        exact.info.r_o_error,
-        run.3
     );
     Ok(())
 }
