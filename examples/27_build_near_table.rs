@@ -4,17 +4,16 @@
 //! route at 1e-8 ([`two_plate_hole_to`]) on a tensor grid of Chebyshev points of the first kind
 //! per panel, and validates it on random points that were not used to build it.
 //!
-//! **Method.** Four panels in w = (B − A)/D: [0.15, 1.2] mapped by ln w (the load narrows onto
-//! the hole's corner as w → 0), [1.2, 2.4], [2.4, 3.5] and [3.5, 5] linear; ln(A/D) and ν
-//! linear. The linear panels are short because the hole's faster Papkovich–Fadle modes
-//! (e^(−5.4w) and beyond) still vary there: one panel [1.2, 5] left its w coefficients falling
-//! only ≈ 0.55× per degree, and one [2.4, 5] with 7 points missed its bar (1.3×) near w = 2.5. Each sample keeps its
-//! own estimate (the route's), which the table's bar carries through the cardinal functions.
+//! **Method.** Five panels in w = (B − A)/D: [0.15, 0.45] and [0.45, 1.2] mapped by ln w (the
+//! load narrows onto the hole's corner as w → 0), [1.2, 2.4], [2.4, 3.5] and [3.5, 5] linear;
+//! ln(A/D) and ν linear. The linear panels are short because the hole's faster
+//! Papkovich–Fadle modes (e^(−5.4w) and beyond) still vary there (`docs/tables.md`). Each sample
+//! keeps its own estimate (the route's), which the table's bar carries through the cardinal functions.
 //!
 //! Run (from a scratch folder is not needed: it writes only the paths given):
 //! - `cargo run --release --example 27_build_near_table build K SAMPLES_K.csv` solves the nodes
-//!   of panel K (0 … 3; appending to the file, resuming where a previous run stopped), then
-//!   `… table SAMPLES_0.csv … SAMPLES_3.csv` writes `src/table/data/near.json` from them;
+//!   of panel K (0 … 4; appending to the file, resuming where a previous run stopped), then
+//!   `… table SAMPLES_0.csv … SAMPLES_4.csv` writes `src/table/data/near.json` from them;
 //! - `… validate N SEED OUT.csv [TOL]` solves N random points (log-uniform A/D and w, uniform
 //!   ν) by the route at TOL (default 1e-8; appending, resuming); `… check OUT.csv` compares the
 //!   shipped table with them: the distribution of |table − route|/(bar + the route's estimate);
@@ -29,8 +28,9 @@ use std::io::Write;
 use std::time::Instant;
 
 /// The panels: (w_lo, w_hi, ln-mapped, points per axis (A/D, w, ν)).
-const PANELS: [(f64, f64, bool, [usize; 3]); 4] = [
-    (0.15, 1.2, true, [10, 12, 6]),
+const PANELS: [(f64, f64, bool, [usize; 3]); 5] = [
+    (0.15, 0.45, true, [12, 8, 8]),
+    (0.45, 1.2, true, [12, 8, 8]),
     (1.2, 2.4, false, [8, 8, 6]),
     (2.4, 3.5, false, [8, 8, 4]),
     (3.5, 5.0, false, [8, 8, 4]),
@@ -237,7 +237,7 @@ pub fn main() -> Result<(), Box<dyn std::error::Error>> {
             bars.sort_by(f64::total_cmp);
             println!("largest |table − route|/R_o {rel_err:.2e}; bar/R_o median {:.2e}, max {:.2e}", bars[n / 2], bars[n - 1]);
         }
-        _ => return Err("usage: 27_build_near_table time | build K S_K.csv | table S_0.csv … S_3.csv | validate N SEED V.csv [TOL] | check V.csv".into()),
+        _ => return Err("usage: 27_build_near_table time | build K S_K.csv | table S_0.csv … S_4.csv | validate N SEED V.csv [TOL] | check V.csv".into()),
     }
     Ok(())
 }

@@ -8,9 +8,10 @@
 //! report's two-plate model, Ch. II.B, C = ∞).
 //!
 //! **Method.** The domain is cut in w into panels; on each, y is interpolated at the tensor
-//! grid of Chebyshev points of the first kind in (ln a, v, ν), v = ln w on the first panel
-//! (the load narrows onto the hole's corner as w → 0: the log map keeps that end's
-//! non-analyticity away from the interval) and v = w on the others. The samples are
+//! grid of Chebyshev points of the first kind in (ln a, v, ν), v = ln w on the panels below
+//! w = 1.2 (the load narrows onto the hole's corner as w → 0: the log map keeps that end's
+//! non-analyticity away from the interval) and v = w on the others (short: the hole's faster
+//! Papkovich–Fadle modes still vary there). The samples are
 //! [`crate::hankel::receding::holed::two_plate_hole_to`] at 1e-8 (example 27 builds them and
 //! writes `src/table/data/near.json` with its provenance: route, tolerance, commit, date); the
 //! coefficients c_ijk come from the discrete cosine transform of type II along each axis. The
