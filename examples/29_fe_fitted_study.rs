@@ -1,6 +1,7 @@
 //! Example 29: the route layer's FE study (`route::two_plate::Question::fem_params`, the
 //! fitted contact edge below `AUTO_BELOW`) on random joints of each interface kind, each run
-//! checked against an exact route at least 100 times tighter than the asked tolerance:
+//! checked against an exact route meant to be at least 100 times tighter than the asked
+//! tolerance (runs whose exact route's estimate is not are counted and printed):
 //!
 //! - equal plates, frictionless, welded and friction (μ 0.05–0.6; equal plates are symmetric
 //!   about the interface, so all three are the same problem): the holed Hankel route
