@@ -16,10 +16,10 @@
 //! Then each plate's study with `fitted_edge` at 1e-4, 1e-5 and 1e-6: its error against its
 //! estimate and its time.
 //!
-//! `survey [levels] [plates]`: per level only the two fitted-edge roots (edge force, and K
+//! `survey [levels] [plates] [q4]`: per level only the two fitted-edge roots (edge force, and K
 //! fitted to the reactions of the last five closed nodes), their Richardson values 2R_k −
 //! R_{k−1}, the ratios of successive errors, and the observed order of each root over the last
-//! two levels. `check [plates] [tol …]`: the fitted study of random plates (seed 3636, at most
+//! two levels (`q4`: the levels with Q4 elements instead of Q9). `check [plates] [tol …]`: the fitted study of random plates (seed 3636, at most
 //! 12 levels) at each tolerance (default 1e-5 1e-6) against the exact routes, with counts.
 //! `pair [plates] [tol …]`: the same for unequal, dissimilar plates without a hole (both
 //! plates meshed; D₂/D₁ ∈ [0.5, 2], E₂/E₁ ∈ [0.3, 3], each ν ∈ [0.01, 0.49], B/D₁ ∈ [0.3, 3];
@@ -32,6 +32,7 @@
 
 use anyhow::ensure;
 use boltzone::contact::two_plate::{solve, TwoPlateParams};
+use boltzone::fem::ElementKind;
 use boltzone::hankel::receding::holed::two_plate_hole_to;
 use boltzone::hankel::receding::{Layer, Pair, RecedingParams};
 use boltzone::numerics::convergence::order_between;
@@ -83,12 +84,19 @@ pub fn exact(case: &Case) -> anyhow::Result<Option<f64>> {
 /// (h, the level's R_o, gap-fit root, edge-force root, reaction-fit root) of one level.
 pub type LevelRoots = (f64, f64, f64, f64, f64);
 
-/// The [`LevelRoots`] of each level of one FE study of `levels` levels (the roots NaN unless
-/// `fitted`: the default study computes none).
-pub fn levels(case: &Case, levels: usize, fitted: bool) -> anyhow::Result<Vec<LevelRoots>> {
+/// The [`LevelRoots`] of each level of one FE study of `levels` levels with `element` (the
+/// roots NaN unless `fitted`: the default study computes none; with Q4 a level whose window
+/// holds too few trial edges around the edge has none either, NaN).
+pub fn levels(
+    case: &Case,
+    levels: usize,
+    fitted: bool,
+    element: ElementKind,
+) -> anyhow::Result<Vec<LevelRoots>> {
     let s = solve(
         &case.joint()?,
         &TwoPlateParams {
+            element,
             tolerance: 1e-13,
             min_levels: levels,
             max_levels: levels,
@@ -104,7 +112,10 @@ pub fn levels(case: &Case, levels: usize, fitted: bool) -> anyhow::Result<Vec<Le
             let fit = l.r_o_fit.unwrap_or(f64::NAN);
             let force = l.r_o_fit_force.unwrap_or(f64::NAN);
             let reaction = l.r_o_fit_reaction.unwrap_or(f64::NAN);
-            ensure!(!fitted || force.is_finite(), "no fitted edge on a level");
+            ensure!(
+                !fitted || force.is_finite() || element != ElementKind::Q9,
+                "no fitted edge on a level"
+            );
             Ok((l.h, l.r_o, fit, force, reaction))
         })
         .collect()
@@ -244,6 +255,12 @@ pub fn main() -> anyhow::Result<()> {
     let raw: Vec<String> = std::env::args().skip(1).collect();
     let mode = raw.first().map(String::as_str);
     let survey = mode == Some("survey");
+    // `q4` among the arguments: the levels with Q4 elements (default Q9)
+    let element = if raw.iter().any(|a| a == "q4") {
+        ElementKind::Q4
+    } else {
+        ElementKind::Q9
+    };
     if mode == Some("check") || mode == Some("pair") {
         let n = match raw.get(1) {
             Some(a) => a
@@ -310,7 +327,7 @@ pub fn main() -> anyhow::Result<()> {
             ensure!((v - r).abs() <= e, "the fitted study beyond its estimate");
         }
         if levels_too && survey {
-            let lv = levels(&case, n_levels, true)?;
+            let lv = levels(&case, n_levels, true, element)?;
             let n = lv.len();
             if n >= 3 {
                 let e = |i: usize| (lv[i].3 - r).abs();
@@ -343,7 +360,7 @@ pub fn main() -> anyhow::Result<()> {
         }
         if levels_too {
             for fitted in [false, true] {
-                let lv = levels(&case, n_levels, fitted)?;
+                let lv = levels(&case, n_levels, fitted, element)?;
                 println!(
                     "  mesh graded at the {} estimate:",
                     if fitted { "fitted" } else { "gap-shape" }
@@ -370,22 +387,28 @@ pub fn main() -> anyhow::Result<()> {
     }
     if !orders.is_empty() {
         println!(
-            "observed order over the last two levels on {} plates: force root {:.3} … {:.3}, reaction fit {:.3} … {:.3}",
+            "observed order over the last two levels on {} plates: force root {}, reaction fit {}",
             orders.len(),
-            lo_hi(&orders, 0).0,
-            lo_hi(&orders, 0).1,
-            lo_hi(&orders, 1).0,
-            lo_hi(&orders, 1).1
+            lo_hi(&orders, 0),
+            lo_hi(&orders, 1)
         );
     }
     Ok(())
 }
 
-/// The smallest and largest of component `k` of `v`.
-fn lo_hi(v: &[(f64, f64)], k: usize) -> (f64, f64) {
-    v.iter()
+/// The smallest and largest finite value of component `k` of `v`, as "lo … hi" ("none" when
+/// no value is finite: a root missing on a level).
+fn lo_hi(v: &[(f64, f64)], k: usize) -> String {
+    let (lo, hi) = v
+        .iter()
         .map(|x| if k == 0 { x.0 } else { x.1 })
+        .filter(|x| x.is_finite())
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
             (a.min(x), b.max(x))
-        })
+        });
+    if lo <= hi {
+        format!("{lo:.3} … {hi:.3}")
+    } else {
+        "none".into()
+    }
 }
