@@ -214,13 +214,14 @@ pub fn main() -> Result<(), Box<dyn std::error::Error>> {
             // the shipped table (src/table/data/near.json) against the fresh solves of V.csv
             let mut ratios = Vec::new();
             let mut worst = (0.0, [0.0; 3]);
-            // the largest ratio per panel (the panel holding w)
-            let mut per_panel = vec![0.0f64; PANELS.len()];
+            // the largest ratio per panel of the shipped table (the panel answering w)
+            let panels = &boltzone::table::near::table().panels;
+            let mut per_panel = vec![0.0f64; panels.len()];
             for r in read_csv(&arg(2)?) {
                 let t = boltzone::table::near::separation_radius(r[0], r[0] + r[1], 1.0, r[2], 1.0)?;
                 let err = (t.value - r[3]).abs();
                 let q = err / (t.error + r[4]);
-                let k = PANELS.iter().position(|p| r[1] <= p.1).unwrap_or(PANELS.len() - 1);
+                let k = panels.iter().position(|p| r[1] <= p.w_hi).unwrap_or(panels.len() - 1);
                 per_panel[k] = per_panel[k].max(q);
                 if q > worst.0 {
                     worst = (q, [r[0], r[1], r[2]]);
