@@ -130,7 +130,7 @@ pub fn run(out: &Path) -> anyhow::Result<Summary> {
         c.single.value
     );
 
-    let cone45 = c.rules[0].radius;
+    let cone45 = c.rules[0].context("the 45° cone applies")?.radius;
     ensure!(
         c.two.value < c.single.value && c.single.value < cone45,
         "ordering"
@@ -234,7 +234,7 @@ pub fn run(out: &Path) -> anyhow::Result<Summary> {
         c.single.error,
         format!("[{}]", report.single),
     );
-    for r in &c.rules {
+    for r in c.rules.iter().flatten() {
         row(
             &format!("{} ({:.1}°)", r.name, r.half_angle_degrees),
             r.radius,

@@ -109,8 +109,8 @@ pub fn main() -> Result<(), Box<dyn std::error::Error>> {
 
 /// The shipped tables' g and bar (in D) across B/D, both models.
 fn show() -> Result<(), Box<dyn std::error::Error>> {
-    use boltzone::table::far::FarModel;
-    for model in [FarModel::TwoPlates, FarModel::SinglePlate] {
+    use boltzone::table::Model;
+    for model in [Model::TwoPlates, Model::SinglePlate] {
         let table = FarTable::of(model);
         println!("{model:?}:");
         for b in [2.0, 5.0, 10.0, 48.0, 60.0, 100.0, 1e3, 1e4, f64::INFINITY] {

@@ -58,3 +58,16 @@ def test_scene_pickles_and_help_reads():
     assert t == s and boltzone.solve(t).r_o == boltzone.solve(s).r_o
     for f in (boltzone.solve, boltzone.solve_many, boltzone.Scene, boltzone.table1):
         assert f.__doc__ and ("unit" in f.__doc__ or "inches" in f.__doc__), f
+
+
+def test_the_single_plate_answers_from_the_tables_as_from_its_hankel_route():
+    plate = {"hole": {"radius": 0.1}, "load": {"outer_radius": 0.31, "pressure": 1.0},
+             "plates": [{"thickness": 0.1}]}
+    table = boltzone.solve(dict(plate, model="single-plate", method="table", tolerance=1e-4))
+    hankel = boltzone.solve(dict(plate, model="single-plate", method="hankel", tolerance=1e-6))
+    assert table.method == "table" and table.converged
+    assert abs(table.r_o - hankel.r_o) <= table.r_o_error + hankel.r_o_error
+    # a rim is out of the tables' reach: bad input naming the key
+    rim = dict(plate, model="single-plate", method="table", joint={"outer_radius": 1.54})
+    with pytest.raises(boltzone.InputError, match="outer_radius"):
+        boltzone.solve(rim)

@@ -69,7 +69,7 @@ pub fn run() -> anyhow::Result<Status> {
         show(c.area_discrepancy_percent, 1),
     );
     println!("\nRules of thumb (contact radius R, error against the two-plate R_o):");
-    for r in &c.rules {
+    for r in c.rules.iter().flatten() {
         println!(
             "  {:<16} half-angle {:>5.2}°   R = {:.4} in   R/A = {:.3}   {:+.1} ± {:.1} %",
             rule_name(r.name, r.half_angle_degrees),

@@ -31,7 +31,8 @@ pub struct Args {
     /// Relative tolerance of each R_o.
     #[arg(long, default_value_t = 1e-3)]
     tol: f64,
-    /// C/A of the plates (Table 1's: 15.4).
+    /// C/A of the plates (Table 1's: 15.4; inf: infinite plates, which `auto` answers from
+    /// the tables where their bar meets --tol).
     #[arg(long, default_value_t = 15.4)]
     c_over_a: f64,
     /// Your own A/D values instead of the log-spaced axis (comma-separated; sorted).
@@ -51,9 +52,10 @@ pub struct Args {
     png: Option<PathBuf>,
     /// How each model's R_o is computed: fem (finite elements), hankel (the semi-analytic
     /// routes with the rim; refuses a point beyond the two-plate route's reach: B/D > 8,
-    /// A/D < 0.04 or C ≤ B + D) or auto (hankel for the single plate; for two plates only
-    /// below --tol 3e-5 and where it applies, as `two --method auto`; fem where hankel does
-    /// not converge).
+    /// A/D < 0.04 or C ≤ B + D), table (infinite plates only: --c-over-a inf) or auto (the
+    /// route layer's choice per point and model, as `two` and `single --method auto`: the
+    /// tables where their bar meets --tol, hankel for the single plate, for two plates only
+    /// below --tol 3e-5 and where it applies; fem where hankel does not converge).
     /// The CSV says which method produced each value.
     #[arg(long, value_enum, default_value_t = Method::Fem)]
     method: Method,
@@ -65,7 +67,9 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         return super::exit::usage("--n", args.n, "must lie in 2..=400");
     }
     check::tolerance("--tol", args.tol)?;
-    check::positive("--c-over-a", "C/A", args.c_over_a)?;
+    if args.c_over_a != f64::INFINITY {
+        check::positive("--c-over-a", "C/A", args.c_over_a)?;
+    }
     for (flag, field, list) in [
         ("--a-over-d", "A/D", &args.a_over_d),
         ("--b-over-a", "B/A", &args.b_over_a),
@@ -144,7 +148,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             v
         }
     };
-    if args.method == Method::Table {
+    if args.method == Method::Table && args.c_over_a.is_finite() {
         return super::exit::usage(
             "--method",
             "table",
@@ -161,7 +165,7 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         ..MapParams::default()
     };
     if let Err(e) = check_reach(&params) {
-        return super::exit::usage("--method", "hankel", &e.to_string());
+        return super::exit::usage("--method", args.method.as_str(), &e.to_string());
     }
     let bar = progress(
         (params.a_over_d.len() * params.b_over_a.len()) as u64,
@@ -195,14 +199,22 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
             })
     };
     let (d0, d1) = range(&|c| c.discrepancy_percent.value);
-    let (r0, r1) = range(&|c| c.rules[0].error_percent.value);
+    let (r0, r1) = range(&|c| rule_error(c, 0));
     println!("single-plate discrepancy {d0:.1} .. {d1:.1} %; 45° rule error {r0:.1} .. {r1:.1} %");
     let n = map.points.len();
-    let ((sh, th), (sf, tf)) = (map.count(Route::Hankel), map.count(Route::Fem));
+    let counts = [Route::Table, Route::Hankel, Route::Fem].map(|r| (r, map.count(r)));
+    let of = |model: fn((usize, usize)) -> usize| {
+        counts
+            .iter()
+            .map(|(r, c)| format!("{} at {}", r.as_str(), model(*c)))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
     println!(
-        "methods (--method {}): single plate hankel at {sh}, fem at {sf} of {n} points; \
-         two plates hankel at {th}, fem at {tf} of {n} points",
-        args.method.as_str()
+        "methods (--method {}): single plate {} of {n} points; two plates {} of {n} points",
+        args.method.as_str(),
+        of(|c| c.0),
+        of(|c| c.1)
     );
     if let Some(p) = &args.csv {
         write_output(p, &map.csv())?;
@@ -233,12 +245,20 @@ fn figure(map: &DesignMap) -> HeatMapFigure {
             panel("single-plate vs two-plate R_o, %", &|c| {
                 c.discrepancy_percent.value
             }),
-            panel("45° rule vs two-plate R_o, %", &|c| {
-                c.rules[0].error_percent.value
-            }),
-            panel("VDI 2230 cone vs two-plate R_o, %", &|c| {
-                c.rules[1].error_percent.value
-            }),
+            panel("45° rule vs two-plate R_o, %", &|c| rule_error(c, 0)),
+            match map.points.first().and_then(|c| c.rules[1]) {
+                Some(_) => panel("VDI 2230 cone vs two-plate R_o, %", &|c| rule_error(c, 1)),
+                // infinite plates: VDI's cone angle needs D'_A = 2C
+                None => panel(
+                    "30° cone vs two-plate R_o, % (VDI 2230 needs a rim)",
+                    &|c| rule_error(c, 2),
+                ),
+            },
         ],
     }
+}
+
+/// Rule `k`'s error against the two-plate R_o, % (NaN where it does not apply).
+fn rule_error(c: &boltzone::compare::Comparison, k: usize) -> f64 {
+    c.rules[k].map_or(f64::NAN, |r| r.error_percent.value)
 }

@@ -28,6 +28,7 @@ use boltzone::fem::single::{
 use boltzone::fem::ElementKind;
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
 use boltzone::hankel::separation::SeparationError;
+use boltzone::route::two_plate::Key;
 use boltzone::route::{single_plate, Method};
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
@@ -56,8 +57,9 @@ pub struct Args {
     /// Plate outer radius C (default: infinite, truncated at B + 30 D).
     #[arg(long)]
     c: Option<f64>,
-    /// Solver: fem, hankel (R_o and the midplane curve, milliseconds), or auto (hankel unless
-    /// --field, --plot or --nut rigid ask for the finite elements).
+    /// Solver: fem, hankel (R_o and the midplane curve, milliseconds), table (R_o of an
+    /// infinite plate from the tables, microseconds), or auto (fem where --field, --plot or
+    /// --nut rigid ask for it, else table where its bar meets --tol, else hankel).
     #[arg(long, value_enum, default_value_t = Method::Fem)]
     method: Method,
     /// Element family (fem).
@@ -87,16 +89,54 @@ pub struct Args {
     out: OutputFiles,
 }
 
-/// The route that answers (the route layer's choice for the method asked).
-fn route(args: &Args) -> Method {
-    single_plate::plan(&single_plate::Question {
+/// The plate of the flags (None where they do not make one: [`check_args`] says why).
+fn plate(args: &Args) -> Option<SinglePlate> {
+    let g = &args.geom;
+    let outer = args.c.map_or(OuterRadius::Infinite, OuterRadius::Finite);
+    let load = FaceLoad::uniform(g.a, g.b, 1.0).ok()?;
+    SinglePlate::new(g.a, outer, g.d, Material::unit(g.nu).ok()?, load).ok()
+}
+
+/// The route layer's question of the flags, on `plate` (--tol, or the Hankel route's and
+/// the tables' default: the finite elements never answer from the tables).
+fn question<'a>(args: &Args, plate: Option<&'a SinglePlate>) -> single_plate::Question<'a> {
+    single_plate::Question {
         method: args.method,
         field: args.out.field.is_some() || args.out.plot.is_some(),
+        curve: args.out.curve.is_some(),
         rigid_nut: args.nut == Nut::Rigid,
         thermal: false,
         b_over_d: args.geom.b / args.geom.d,
-    })
-    .method
+        plate,
+        tolerance: args
+            .tol
+            .unwrap_or(single_plate::default_tolerance(Method::Table)),
+    }
+}
+
+/// The route that answers (the route layer's choice for the method asked; `table` out of the
+/// tables' reach is refused by [`check_args`]).
+fn route(args: &Args) -> Method {
+    let plate = plate(args);
+    single_plate::plan(&question(args, plate.as_ref())).map_or(Method::Table, |p| p.method)
+}
+
+/// The flag of the route layer's [`Key`] that keeps the flags from the tables, and its value.
+fn table_flag(args: &Args, key: Key) -> (&'static str, String) {
+    let g = &args.geom;
+    match key {
+        Key::OuterRadius => ("--c", args.c.map_or("infinite".into(), num)),
+        Key::HoleRadius => ("--a", num(g.a)),
+        Key::Poisson => ("--nu", g.nu.to_string()),
+        Key::Tolerance => (
+            "--tol",
+            args.tol.map_or("default".into(), |t| t.to_string()),
+        ),
+        Key::Curve => ("--curve", "given".into()),
+        Key::Field => ("--field/--plot", "given".into()),
+        Key::NutDisplacement => ("--nut", "rigid".into()),
+        _ => ("--b", num(g.b)),
+    }
 }
 
 /// --tol, or the route's default ([`single_plate::default_tolerance`]).
@@ -128,12 +168,15 @@ fn check_args(args: &Args) -> anyhow::Result<()> {
         return super::exit::usage("--corner-terms", args.corner_terms, "must lie in 0..=6");
     }
     if args.method == Method::Table {
-        return super::exit::usage(
-            "--method",
-            "table",
-            "the tables answer the two-plate model (two --method table); single takes fem, \
-             hankel or auto",
-        );
+        let plate = plate(args);
+        if let Err(b) = single_plate::table_answer(&question(args, plate.as_ref())) {
+            let (flag, value) = table_flag(args, b.key);
+            return super::exit::usage(
+                flag,
+                value,
+                &format!("{} (--method table); use --method hankel or auto", b.reason),
+            );
+        }
     }
     let hankel_reach = boltzone::route::reach::B_OVER_D_SINGLE_HANKEL;
     if args.method == Method::Hankel && g.b / g.d > hankel_reach {
@@ -177,8 +220,10 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
         Material::unit(args.geom.nu)?,
         load,
     )?;
-    if route(&args) == Method::Hankel {
-        return run_hankel(&args, &plate, start);
+    match route(&args) {
+        Method::Hankel => return run_hankel(&args, &plate, start),
+        Method::Table => return run_table(&args, &plate, start),
+        _ => {}
     }
     let kind = ElementKind::from(args.element);
     let loading = match args.nut {
@@ -203,23 +248,17 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     let l = args.units.length();
     if args.json {
         let v = serde_json::json!({
-            "method": "fem",
             "element": format!("{kind:?}"),
             "loading": format!("{loading:?}"),
-            "r_o": s.r_o,
-            "r_o_error": s.r_o_error,
-            "converged": s.converged,
             "full_contact": s.full_contact,
-            "tolerance": tolerance(&args),
             // one object per level, coarse to fine, keyed as two's level records
             "levels": info.levels.iter().map(|r_o| serde_json::json!({ "r_o": r_o })).collect::<Vec<_>>(),
             "observed_order": info.observed_order,
             "nodes": info.nodes,
             "dofs": info.dofs,
             "seconds": info.seconds,
-            "units": args.units.units.name(),
         });
-        finish_json(v, &args, s.r_o, start)?;
+        finish_json(v, &args, "fem", (s.r_o, s.r_o_error, s.converged), start)?;
     } else {
         let r_o = (s.r_o, s.r_o_error, s.converged);
         print_head(&args, &format!("FE ({kind:?})"), r_o, (7, 5));
@@ -239,15 +278,22 @@ pub fn run(args: Args) -> anyhow::Result<Status> {
     Ok(Status::from_converged(s.converged))
 }
 
-/// The text flag of a result that missed --tol.
-/// Adds R_o/A (with a hole), the run's stamp and the tolerance used to the JSON answer `v` of
-/// R_o = `r_o`, and prints it.
+/// Adds the keys every route answers — `method`, `r_o`, `r_o_error`, `converged` of
+/// `(r_o, error, converged)`, `tolerance`, `units`, R_o/A (with a hole) — and the run's stamp
+/// and the tolerance used to the route's own JSON keys `v`, and prints it.
 fn finish_json(
     mut v: serde_json::Value,
     args: &Args,
-    r_o: f64,
+    method: &str,
+    (r_o, error, converged): (f64, f64, bool),
     start: std::time::Instant,
 ) -> anyhow::Result<()> {
+    v["method"] = method.into();
+    v["r_o"] = r_o.into();
+    v["r_o_error"] = error.into();
+    v["converged"] = converged.into();
+    v["tolerance"] = tolerance(args).into();
+    v["units"] = args.units.units.name().into();
     if args.geom.a > 0.0 {
         v["r_o_over_a"] = (r_o / args.geom.a).into();
     }
@@ -280,12 +326,37 @@ fn print_head(args: &Args, route: &str, r_o: (f64, f64, bool), digits: (usize, u
     }
 }
 
+/// The text flag of a result that missed --tol.
 fn not_converged(converged: bool) -> &'static str {
     if converged {
         ""
     } else {
         "   NOT converged to --tol (exit 3)"
     }
+}
+
+/// `--method table` (or `auto` where the tables' bar meets --tol): R_o of the infinite plate
+/// from the tables ([`single_plate::table_answer`]).
+fn run_table(
+    args: &Args,
+    plate: &SinglePlate,
+    start: std::time::Instant,
+) -> anyhow::Result<Status> {
+    let r = single_plate::table_answer(&question(args, Some(plate)))
+        .map_err(|b| anyhow::anyhow!("the tables do not answer: {}", b.reason))?;
+    if args.json {
+        let v = serde_json::json!({});
+        finish_json(v, args, "table", (r.value, r.error, r.converged), start)?;
+    } else {
+        print_head(
+            args,
+            "from the tables (built by the 1e-8 Hankel route)",
+            (r.value, r.error, r.converged),
+            (9, 7),
+        );
+        println!("time     = {:.3} ms", 1e3 * start.elapsed().as_secs_f64());
+    }
+    Ok(Status::from_converged(r.converged))
 }
 
 /// `--method hankel`: R_o of the plate with its hole made traction-free (Hankel route).
@@ -337,11 +408,6 @@ fn run_hankel(
     let l = args.units.length();
     if args.json {
         let v = serde_json::json!({
-            "method": "hankel",
-            "r_o": sep.r_o,
-            "r_o_error": sep.r_o_error,
-            "converged": sep.converged,
-            "tolerance": tolerance(args),
             "outer_radius": args.c,
             "hole_terms": hole.terms,
             "hole_corner_terms": hole.corner_terms,
@@ -353,9 +419,14 @@ fn run_hankel(
             "hole_history": hole.history,
             "evaluations": sep.evaluations + hole.slab_evaluations,
             "seconds": sep.seconds,
-            "units": args.units.units.name(),
         });
-        finish_json(v, args, sep.r_o, start)?;
+        finish_json(
+            v,
+            args,
+            "hankel",
+            (sep.r_o, sep.r_o_error, sep.converged),
+            start,
+        )?;
     } else {
         let r_o = (sep.r_o, sep.r_o_error, sep.converged);
         print_head(args, "with a hole, Hankel route", r_o, (9, 7));

@@ -76,6 +76,7 @@ fn named(args: &Args, b: two_plate::Blocker) -> (&'static str, String, String) {
         Key::Field | Key::Temperature => ("--field/--plot/--report", given()),
         Key::Conductance => ("--conductance", given()),
         Key::Stiffness => ("--stiffness", given()),
+        Key::Tolerance => ("--tol", args.tol.to_string()),
     };
     (flag, value, format!("{}; use --method fem", b.reason))
 }

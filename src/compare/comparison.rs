@@ -56,7 +56,7 @@ impl Default for CompareParams {
 
 /// A rule of thumb's contact radius and its error against the two-plate R_o (the route
 /// layer's, as every front end prints them).
-pub use crate::route::rules_beside::RuleResult;
+pub use crate::route::rules_beside::{RuleLeftOut, RuleResult};
 
 /// Timings and sizes of one comparison.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -99,8 +99,12 @@ pub struct Comparison {
     pub discrepancy_percent: Value,
     /// Contact-area discrepancy (X_single − X_two)/X_two·100, X = R_o² − A².
     pub area_discrepancy_percent: Value,
-    /// 45°, VDI 2230 and the extra cone, in that order.
-    pub rules: [RuleResult; 3],
+    /// 45°, VDI 2230 and the extra cone, in that order; None where the rule does not apply
+    /// (VDI 2230 needs a rim: its cone angle takes D'_A = 2C), the reason in
+    /// `rules_left_out`.
+    pub rules: [Option<RuleResult>; 3],
+    /// The rules that do not apply to the geometry, and why.
+    pub rules_left_out: Vec<RuleLeftOut>,
     /// Timings and sizes.
     pub info: CompareInfo,
 }
@@ -174,20 +178,28 @@ pub fn compare(g: &Geometry, params: &CompareParams) -> Result<Comparison, Compa
     let pair = route::two(&g, params.method, params.tolerance)?;
     let two = pair.value;
     let seconds_two = t.elapsed().as_secs_f64();
-    let beside = rules_beside::beside(
-        (g.b, g.d, g.d, OuterRadius::Finite(g.c)),
-        params.cone_degrees,
-        two,
-    );
-    let rules: [RuleResult; 3] = match (beside.rules.try_into(), beside.left_out.first()) {
-        (Ok(rules), _) => rules,
-        (Err(_), left_out) => {
-            return Err(CompareError::Rule {
-                geometry: label(),
-                reason: left_out.map_or_else(String::new, |r| format!("{}: {}", r.name, r.reason)),
-            })
-        }
-    };
+    let beside = rules_beside::beside((g.b, g.d, g.d, g.outer_radius()), params.cone_degrees, two);
+    // every rule applies to plates with a rim; VDI 2230 alone needs one
+    let infinite = g.outer_radius() == OuterRadius::Infinite;
+    if let Some(r) = beside
+        .left_out
+        .iter()
+        .find(|r| !(infinite && r.name == "VDI 2230"))
+    {
+        return Err(CompareError::Rule {
+            geometry: label(),
+            reason: format!("{}: {}", r.name, r.reason),
+        });
+    }
+    let mut rules = [None; 3];
+    for r in beside.rules {
+        let slot = match r.name {
+            "45° cone" => 0,
+            "VDI 2230" => 1,
+            _ => 2,
+        };
+        rules[slot] = Some(r);
+    }
     Ok(Comparison {
         geometry: g,
         single,
@@ -198,6 +210,7 @@ pub fn compare(g: &Geometry, params: &CompareParams) -> Result<Comparison, Compa
         discrepancy_percent: percent_difference(single, two),
         area_discrepancy_percent: percent_difference(area(single, g.a), area(two, g.a)),
         rules,
+        rules_left_out: beside.left_out,
         info: CompareInfo {
             single_dofs: one.dofs,
             single_levels: one.levels,

@@ -34,7 +34,8 @@ pub struct Geometry {
     pub b: f64,
     /// Thickness D of one plate.
     pub d: f64,
-    /// Plate outer radius C (finite: the rim is part of the report's model and of VDI's cone).
+    /// Plate outer radius C (the report's plates have a rim, 1.54 in on Table 1; infinite
+    /// plates are `f64::INFINITY`).
     pub c: f64,
     /// Poisson's ratio.
     pub nu: f64,
@@ -52,7 +53,7 @@ impl Geometry {
                 reason: "must be finite and exceed the hole radius A",
             });
         }
-        if !c.is_finite() || c <= b {
+        if c.is_nan() || c <= b {
             return Err(InputError::OuterRadius { b, c });
         }
         Material::unit(nu)?;
@@ -100,10 +101,18 @@ impl Geometry {
         self.b / self.a
     }
 
+    /// The plates' outer radius: C, or infinite.
+    pub fn outer_radius(&self) -> OuterRadius {
+        match self.c.is_finite() {
+            true => OuterRadius::Finite(self.c),
+            false => OuterRadius::Infinite,
+        }
+    }
+
     /// The two-plate joint (unit modulus, unit pressure: R_o depends on neither).
     pub fn joint(&self) -> Result<Joint, InputError> {
         Joint::symmetric(self.a, self.b, self.d, Material::unit(self.nu)?)?
-            .with_outer_radius(OuterRadius::Finite(self.c))
+            .with_outer_radius(self.outer_radius())
     }
 
     /// The single-plate substitute, 2D thick, outer radius `c`.

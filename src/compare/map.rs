@@ -6,8 +6,10 @@
 //! own error estimate, which the CSV carries beside each value with the method that produced it
 //! and whether it converged. [`MapParams::method`] picks the method ([`super::route`]): the finite
 //! elements (default), the Hankel routes (refused, before any point is computed, when a point
-//! is beyond the two-plate route's reach: [`check_reach`]) or `auto` (the single plate's Hankel
-//! route; the two plates' only below a tolerance of 3e-5, [`super::two_takes_hankel`]).
+//! is beyond the two-plate route's reach: [`check_reach`]), the tables (infinite plates,
+//! `c_over_a` = ∞; refused the same way outside them) or `auto` (the route layer's choice per
+//! point and model: the tables where their bar meets the tolerance, the single plate's Hankel
+//! route, the two plates' only below a tolerance of 3e-5, [`super::two_takes_hankel`]).
 //!
 //! # Accuracy
 //!
@@ -51,7 +53,8 @@ pub struct MapParams {
     pub b_over_a: Vec<f64>,
     /// Hole radius A (any unit; R_o/A depends only on the ratios).
     pub a: f64,
-    /// C/A (default 15.4, Table 1's plates).
+    /// C/A (default 15.4, Table 1's plates; `f64::INFINITY`: infinite plates, which the
+    /// tables answer under `auto`).
     pub c_over_a: f64,
     /// Poisson's ratio (default 0.3).
     pub nu: f64,
@@ -155,19 +158,22 @@ impl DesignMap {
 pub const METHOD_COLUMNS: &str = "single_method,single_converged,two_method,two_converged";
 
 /// With [`Method::Hankel`], the first point of the map beyond the two-plate Hankel route's
-/// reach ([`super::two_hankel_reach`]) as [`CompareError::OutOfReach`] naming the point;
-/// [`compute`] checks it before computing any point. Ok for the other methods and when every point is in
-/// reach (the single plate's route has no reach limit).
+/// reach ([`super::two_hankel_reach`]), with [`Method::Table`] the first outside either
+/// model's tables ([`super::table_reach`]), as [`CompareError::OutOfReach`] naming the point
+/// and the model; [`compute`] checks it before computing any point. Ok for the other methods
+/// and when every point is in reach (the single plate's Hankel route has no reach limit).
 pub fn check_reach(params: &MapParams) -> Result<(), CompareError> {
     let geometries = geometries(params)?;
-    if params.method != Method::Hankel {
-        return Ok(());
-    }
     for g in geometries {
-        if let Err(reason) = super::two_hankel_reach(&g) {
+        let blocked = match params.method {
+            Method::Hankel => super::two_hankel_reach(&g).map_err(|r| ("two-plate", r)),
+            Method::Table => super::table_reach(&g, params.tolerance),
+            _ => Ok(()),
+        };
+        if let Err((model, reason)) = blocked {
             return Err(CompareError::OutOfReach {
                 geometry: g.label(),
-                model: "two-plate",
+                model,
                 reason,
             });
         }
@@ -178,7 +184,14 @@ pub fn check_reach(params: &MapParams) -> Result<(), CompareError> {
 /// The map's geometries, row-major (checked).
 fn geometries(params: &MapParams) -> Result<Vec<Geometry>, CompareError> {
     positive("hole radius A", params.a)?;
-    positive("C/A", params.c_over_a)?;
+    if params.c_over_a.is_nan() || params.c_over_a <= 0.0 {
+        return Err(InputError::Parameter {
+            field: "C/A",
+            value: params.c_over_a,
+            reason: "must be positive (infinite: plates without a rim)",
+        }
+        .into());
+    }
     if params.a_over_d.is_empty() || params.b_over_a.is_empty() {
         return Err(InputError::Parameter {
             field: "map size",

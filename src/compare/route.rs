@@ -63,9 +63,8 @@ use super::{CompareError, Geometry};
 use crate::contact::two_plate::solve as solve_two;
 use crate::hankel::hole::single_plate_separation;
 use crate::hankel::receding::holed::two_plate_hole_to;
-use crate::joint::OuterRadius;
 use crate::route::single_plate;
-use crate::route::two_plate::{self, Key};
+use crate::route::two_plate::{self, Blocker, Key};
 use crate::value::Value;
 
 pub use crate::route::{Method, Route};
@@ -78,16 +77,38 @@ pub fn two_hankel_reach(g: &Geometry) -> Result<(), String> {
         method: Method::Hankel,
         ..two_plate::Question::new(&joint, 1e-3)
     };
-    let Some(b) = two_plate::hankel_blocker(&q) else {
-        return Ok(());
+    two_plate::hankel_blocker(&q).map_or(Ok(()), |b| Err(reach_message(g, b)))
+}
+
+/// Why the tables do not answer `g` at tolerance `tol` (the route layer's
+/// [`single_plate::table_answer`] and [`two_plate::table_answer`]): the model and the ratio
+/// that blocks it, or Ok.
+pub fn table_reach(g: &Geometry, tol: f64) -> Result<(), (&'static str, String)> {
+    let joint = g.joint().map_err(|e| ("two-plate", e.to_string()))?;
+    let two = two_plate::Question::new(&joint, tol);
+    two_plate::table_answer(&two).map_err(|b| ("two-plate", reach_message(g, b)))?;
+    let plate = g
+        .single_plate(g.outer_radius())
+        .map_err(|e| ("single-plate", e.to_string()))?;
+    let single = single_plate::Question {
+        plate: Some(&plate),
+        tolerance: tol,
+        ..Default::default()
     };
+    single_plate::table_answer(&single).map_err(|b| ("single-plate", reach_message(g, b)))?;
+    Ok(())
+}
+
+/// The route layer's blocker `b` on `g`, named by the ratio or length that blocks it.
+fn reach_message(g: &Geometry, b: Blocker) -> String {
     let what = match b.key {
         Key::HoleRadius => format!("A/D = {}", g.a / g.d),
         Key::LoadOuterRadius => format!("B/D = {}", g.b / g.d),
         Key::OuterRadius => format!("C = {} (B = {}, D = {})", g.c, g.b, g.d),
+        Key::Poisson => format!("nu = {}", g.nu),
         other => format!("{other:?}"),
     };
-    Err(format!("{what}: {}", b.reason))
+    format!("{what}: {}", b.reason)
 }
 
 /// One model's R_o, the route that produced it, and the FE study's sizes (zero for Hankel).
@@ -117,10 +138,23 @@ fn keep<E>(
     outcome.map(Some).map_err(error)
 }
 
-/// The single plate's R_o by `method` at relative tolerance `tol` (module docs).
+/// The single plate's R_o by `method` at relative tolerance `tol` (module docs): the route
+/// layer's [`single_plate::plan`].
 pub(super) fn single(g: &Geometry, method: Method, tol: f64) -> Result<ModelResult, CompareError> {
-    let plate = g.single_plate(OuterRadius::Finite(g.c))?;
-    if method != Method::Fem {
+    let plate = g.single_plate(g.outer_radius())?;
+    let q = single_plate::Question {
+        method,
+        b_over_d: g.b / g.d,
+        plate: Some(&plate),
+        tolerance: tol,
+        ..Default::default()
+    };
+    let tables = || single_plate::table_answer(&q);
+    let plan = match planned(g, "single-plate", single_plate::plan(&q), tables)? {
+        Ok(from_tables) => return Ok(from_tables),
+        Err(method) => method,
+    };
+    if plan == Method::Hankel {
         let (sep, hole) = single_plate::hankel_params(tol);
         let outcome = single_plate_separation(&plate, &sep, &hole).map(|(s, h)| ModelResult {
             value: Value::with_tolerance(s.r_o, s.r_o_error, tol),
@@ -151,24 +185,60 @@ pub(super) fn single(g: &Geometry, method: Method, tol: f64) -> Result<ModelResu
     })
 }
 
+/// The route layer's `plan` for `model` ("single-plate" or "two-plate") on `g`: refused out of
+/// reach ([`CompareError::OutOfReach`] naming the ratio), the tables' answer (`tables`) where
+/// it chose them (Ok(Ok)), else the method to run (Ok(Err)).
+fn planned(
+    g: &Geometry,
+    model: &'static str,
+    plan: Result<two_plate::Plan, Blocker>,
+    tables: impl FnOnce() -> Result<Value, Blocker>,
+) -> Result<Result<ModelResult, Method>, CompareError> {
+    let plan = plan.map_err(|b| CompareError::OutOfReach {
+        geometry: g.label(),
+        model,
+        reason: reach_message(g, b),
+    })?;
+    if plan.method != Method::Table {
+        return Ok(Err(plan.method));
+    }
+    match tables() {
+        Ok(value) => Ok(Ok(ModelResult {
+            value,
+            route: Route::Table,
+            levels: 0,
+            dofs: 0,
+            model: match model {
+                "single-plate" => "single plate, tables",
+                _ => "two plates, tables",
+            },
+        })),
+        // (the plan checked the tables: not reached) the FE answers
+        Err(_) => Ok(Err(Method::Fem)),
+    }
+}
+
 /// Whether `method` tries the two-plate Hankel route at tolerance `tol` on a point it reaches
 /// (`in_reach`) or not: the route layer's [`two_plate::takes_hankel`].
 pub fn two_takes_hankel(method: Method, tol: f64, in_reach: bool) -> bool {
     two_plate::takes_hankel(method, tol, in_reach)
 }
 
-/// The two-plate R_o by `method` at relative tolerance `tol` (module docs).
+/// The two-plate R_o by `method` at relative tolerance `tol` (module docs): the route layer's
+/// [`two_plate::plan`].
 pub(super) fn two(g: &Geometry, method: Method, tol: f64) -> Result<ModelResult, CompareError> {
-    let reach = two_hankel_reach(g);
-    if let (Method::Hankel, Err(reason)) = (method, &reach) {
-        return Err(CompareError::OutOfReach {
-            geometry: g.label(),
-            model: "two-plate",
-            reason: reason.clone(),
-        });
-    }
-    if two_takes_hankel(method, tol, reach.is_ok()) {
-        let plate = g.single_plate(OuterRadius::Finite(g.c))?;
+    let joint = g.joint()?;
+    let q = two_plate::Question {
+        method,
+        ..two_plate::Question::new(&joint, tol)
+    };
+    let tables = || two_plate::table_answer(&q);
+    let plan = match planned(g, "two-plate", two_plate::plan(&q), tables)? {
+        Ok(from_tables) => return Ok(from_tables),
+        Err(method) => method,
+    };
+    if plan == Method::Hankel {
+        let plate = g.single_plate(g.outer_radius())?;
         let outcome = two_plate_hole_to(&plate, tol, &[]).map(|(out, _)| ModelResult {
             value: Value {
                 converged: out.meets(tol),
@@ -187,13 +257,10 @@ pub(super) fn two(g: &Geometry, method: Method, tol: f64) -> Result<ModelResult,
             return Ok(r);
         }
     }
-    let joint = g.joint()?;
-    let sol = solve_two(&joint, &two_plate::Question::new(&joint, tol).fem_params()).map_err(
-        |source| CompareError::Two {
-            geometry: g.label(),
-            source,
-        },
-    )?;
+    let sol = solve_two(&joint, &q.fem_params()).map_err(|source| CompareError::Two {
+        geometry: g.label(),
+        source,
+    })?;
     Ok(ModelResult {
         value: Value {
             value: sol.r_o,

@@ -115,11 +115,12 @@ pub fn csv_fields(c: &Comparison) -> String {
         c.area_discrepancy_percent.error,
     ];
     for (k, r) in c.rules.iter().enumerate() {
-        f.push(r.radius / a);
+        // an empty field where the rule does not apply (VDI 2230 without a rim)
+        f.push(r.map_or(f64::NAN, |r| r.radius / a));
         if k > 0 {
-            f.push(r.half_angle_degrees);
+            f.push(r.map_or(f64::NAN, |r| r.half_angle_degrees));
         }
-        f.push(r.error_percent.value);
+        f.push(r.map_or(f64::NAN, |r| r.error_percent.value));
     }
     f.iter()
         .map(|x| {
@@ -240,7 +241,10 @@ pub fn text_in(rows: &[Row], units: UnitSystem) -> String {
     for r in rows {
         let c = &r.ours;
         let a = c.geometry.a;
-        let [q, v, k] = &c.rules;
+        // Table 1's plates have their rim, so every rule applies
+        let [Some(q), Some(v), Some(k)] = &c.rules else {
+            continue;
+        };
         s += &format!(
             "{:>5} {:>5}  {:>7.3} {:>+8.1}%  {:>7.3} {:>+8.1}% ({:>4.1}°)  {:>7.3} {:>+6.1}% ({:.0}°)\n",
             r.report.a_over_d,

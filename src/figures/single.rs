@@ -36,7 +36,6 @@ use super::{
 use crate::compare::Geometry;
 use crate::contact::two_plate::{solve, TwoPlateParams};
 use crate::fem::single::{midplane_of, solve_with_field, SingleParams};
-use crate::joint::OuterRadius;
 use crate::reference;
 use rayon::prelude::*;
 
@@ -150,7 +149,7 @@ fn sigma_z_curve(
     g: &Geometry,
     params: &FiguresParams,
 ) -> Result<Computed, FigureError> {
-    let plate = g.single_plate(OuterRadius::Finite(g.c))?;
+    let plate = g.single_plate(g.outer_radius())?;
     let sp = SingleParams {
         tolerance: params.tolerance,
         levels: crate::fem::single::MAX_LEVELS,

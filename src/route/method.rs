@@ -28,9 +28,10 @@ pub enum Method {
     /// The semi-analytic Hankel-transform routes; a question beyond their reach is refused,
     /// naming the input that blocks it.
     Hankel,
-    /// The tables built offline by the semi-analytic route (`boltzone::table`: equal infinite
-    /// plates with a hole, frictionless, a uniform pressure): R_o in microseconds with its
-    /// bar; a question outside the tables is refused, naming the input that blocks them.
+    /// The tables built offline by the semi-analytic routes (`boltzone::table`: equal infinite
+    /// plates with a hole, frictionless, or the infinite single plate; a uniform pressure):
+    /// R_o in microseconds with its bar; a question outside the tables is refused, naming the
+    /// input that blocks them.
     Table,
     /// The cheapest route that can meet the tolerance and serve the outputs asked (the
     /// default): the route layer's choice, with its reason.

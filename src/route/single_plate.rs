@@ -5,9 +5,13 @@
 //!   ([`crate::hankel::hole::single_plate_separation`]): R_o alone, a root search of
 //!   milliseconds, any rim (bounded where too far to matter, fitted otherwise);
 //! - the **finite elements** ([`crate::fem::single`]): also the field, the midplane σ_z curve,
-//!   a rigid nut (a uniform displacement) and thermal strains.
+//!   a rigid nut (a uniform displacement) and thermal strains;
+//! - the **tables** ([`crate::table::lookup`] with [`Model::SinglePlate`]): an infinite plate, a
+//!   uniform pressure from the hole, R_o alone, in microseconds with a bar ([`table_answer`]
+//!   is their reach and their answer).
 //!
-//! `auto` takes the Hankel route unless an output or input asks for the finite elements.
+//! `auto` takes the finite elements where an output or input asks for them, else the tables
+//! where their bar meets the tolerance, else the Hankel route.
 //!
 //! # Accuracy
 //!
@@ -19,22 +23,32 @@
 //!
 //! ```
 //! use boltzone::route::{single_plate, Method};
+//! use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 //! let q = single_plate::Question { method: Method::Auto, ..Default::default() };
-//! assert_eq!(single_plate::plan(&q).method, Method::Hankel);
+//! assert_eq!(single_plate::plan(&q).unwrap().method, Method::Hankel);  // no plate: no tables
 //! let field = single_plate::Question { field: true, ..q };
-//! assert_eq!(single_plate::plan(&field).method, Method::Fem);
+//! assert_eq!(single_plate::plan(&field).unwrap().method, Method::Fem);
+//! // Table 1's first row at C = ∞: the tables' bar meets 1e-4
+//! let load = FaceLoad::uniform(0.1, 0.31, 1.0)?;
+//! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3)?, load)?;
+//! let q = single_plate::Question { plate: Some(&plate), tolerance: 1e-4, ..q };
+//! assert_eq!(single_plate::plan(&q).unwrap().method, Method::Table);
 //! let (search, _hole) = single_plate::hankel_params(1e-6);
 //! assert!(search.rel_tol <= 1e-9);
+//! # Ok::<(), boltzone::InputError>(())
 //! ```
 
-use super::two_plate::Plan;
+use super::two_plate::{table_blocker, Blocker, Key, Plan};
 use super::Method;
 use crate::hankel::hole::HoleParams;
 use crate::hankel::SeparationParams;
+use crate::joint::{OuterRadius, SinglePlate};
+use crate::table::Model;
+use crate::value::Value;
 
 /// What a single-plate question asks beyond R_o, and by which method.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Question {
+pub struct Question<'a> {
     /// The method asked for.
     pub method: Method,
     /// The field or the midplane σ_z curve from the finite elements' levels is wanted.
@@ -46,17 +60,29 @@ pub struct Question {
     /// The bearing face's reach B/D (D the plate's half-thickness; 0 when not known): beyond
     /// [`super::reach::B_OVER_D_SINGLE_HANKEL`] `auto` takes the finite elements.
     pub b_over_d: f64,
+    /// The midplane σ_z curve is wanted (the Hankel route and the FE give it, the tables do
+    /// not).
+    pub curve: bool,
+    /// The plate, for the tables' reach (None: not known, so not answered from the tables).
+    pub plate: Option<&'a SinglePlate>,
+    /// Wanted relative error of R_o, for the tables' bar (0 when not given: not from the
+    /// tables).
+    pub tolerance: f64,
 }
 
-/// The route for `q` (module docs).
-pub fn plan(q: &Question) -> Plan {
+/// The route for `q` (module docs); `table` out of the tables' reach is refused with the
+/// input that blocks it.
+pub fn plan(q: &Question) -> Result<Plan, Blocker> {
     let (method, why) = match q.method {
         Method::Fem => (Method::Fem, "finite elements (asked)"),
         Method::Hankel => (Method::Hankel, "Hankel + hole correction (asked)"),
-        Method::Table => (
-            Method::Hankel,
-            "Hankel + hole correction: the tables are the two-plate model's (milliseconds here)",
-        ),
+        Method::Table => {
+            table_answer(q)?;
+            (
+                Method::Table,
+                "tables built by the 1e-8 semi-analytic route (asked)",
+            )
+        }
         Method::Auto if q.thermal => (
             Method::Fem,
             "finite elements: the thermal strains are in the FE model only",
@@ -69,6 +95,10 @@ pub fn plan(q: &Question) -> Plan {
             Method::Fem,
             "finite elements: the Hankel route loads the faces by a pressure only",
         ),
+        Method::Auto if table_answer(q).is_ok_and(|r| r.converged) => (
+            Method::Table,
+            "tables built by the 1e-8 semi-analytic route: their bar meets the tolerance",
+        ),
         Method::Auto if q.b_over_d > super::reach::B_OVER_D_SINGLE_HANKEL => (
             Method::Fem,
             "finite elements: the bearing face is beyond the Hankel route's reach",
@@ -78,14 +108,69 @@ pub fn plan(q: &Question) -> Plan {
             "Hankel + hole correction: R_o alone is a root search of milliseconds, no FE solve",
         ),
     };
-    Plan { method, why }
+    Ok(Plan { method, why })
+}
+
+/// The tables' R_o for `q` ([`crate::table::lookup`], [`Model::SinglePlate`]: an infinite
+/// plate, a uniform pressure from the hole, R_o alone, converged when its bar is within the
+/// tolerance), or the first input that keeps the question from them.
+pub fn table_answer(q: &Question) -> Result<Value, Blocker> {
+    let blocked = |key, reason| Err(Blocker { key, reason });
+    let Some(plate) = q.plate else {
+        return blocked(
+            Key::LoadOuterRadius,
+            "the plate is not known to the route layer",
+        );
+    };
+    let load = plate.load();
+    if q.field {
+        return blocked(
+            Key::Field,
+            "the tables give R_o alone (the field comes from the FE)",
+        );
+    }
+    if q.curve {
+        return blocked(
+            Key::Curve,
+            "the tables give R_o alone (the curve comes from a solver)",
+        );
+    }
+    if q.rigid_nut {
+        return blocked(
+            Key::NutDisplacement,
+            "the tables load the plate by a pressure",
+        );
+    }
+    if q.thermal {
+        return blocked(
+            Key::Temperature,
+            "the tables' plate carries no temperatures",
+        );
+    }
+    if matches!(plate.outer_radius(), OuterRadius::Finite(_)) {
+        return blocked(
+            Key::OuterRadius,
+            "the tables take an infinite plate (no rim C)",
+        );
+    }
+    if load.profile() != crate::load::Profile::Uniform || load.inner() != plate.hole_radius() {
+        return blocked(
+            Key::LoadProfile,
+            "the tables take a uniform pressure from the hole's edge to B",
+        );
+    }
+    let (a, b, d) = (plate.hole_radius(), load.outer(), plate.half_thickness());
+    let nu = plate.material().poisson_ratio();
+    crate::table::lookup::separation_radius(Model::SinglePlate, a, b, d, nu, q.tolerance)
+        .map_err(table_blocker)
 }
 
 /// The tolerance a route works to when none is asked: the Hankel route's root search reaches
-/// 1e-6 in milliseconds; the finite elements' default is 5e-4 (their levels' cost).
+/// 1e-6 in milliseconds, and the tables' bar meets it; the finite elements' default is 5e-4
+/// (their levels' cost).
 pub fn default_tolerance(method: Method) -> f64 {
     match method {
-        Method::Hankel => 1e-6,
+        Method::Hankel | Method::Table => 1e-6,
         _ => 5e-4,
     }
 }

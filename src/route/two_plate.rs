@@ -203,6 +203,8 @@ pub enum Key {
     LoadProfile,
     /// The interface pressure curve (the tables give R_o alone).
     Curve,
+    /// The tolerance (the tables need a positive one for their bar).
+    Tolerance,
 }
 
 /// Why the Hankel routes do not take a question: the input that blocks them and the reason.
@@ -498,30 +500,50 @@ pub fn table_answer(q: &Question) -> Result<crate::value::Value, Blocker> {
     }
     let (a, b, d) = (j.hole_radius(), load.outer(), up.thickness());
     let nu = up.material().poisson_ratio();
-    crate::table::two_plates::separation_radius(a, b, d, nu, q.tolerance).map_err(|e| {
-        let field = match &e {
-            crate::error::InputError::Parameter { field, .. } => *field,
-            _ => "",
-        };
-        if field.starts_with("Poisson") {
-            Blocker {
-                key: Key::Poisson,
-                reason: "is outside the tables' Poisson's ratios (0..0.5)",
-            }
-        } else if field.starts_with("A/D") {
-            Blocker {
-                key: Key::HoleRadius,
-                reason: "is outside the tables' hole radii (A/D within 0.25..4 near the \
-                         contact edge, at most 4 far from it)",
-            }
-        } else {
-            Blocker {
-                key: Key::LoadOuterRadius,
-                reason: "is outside the tables' load widths ((B - A)/D at least 0.1 near the \
-                         hole; without a hole B/D at least 2)",
-            }
+    crate::table::lookup::separation_radius(
+        crate::table::Model::TwoPlates,
+        a,
+        b,
+        d,
+        nu,
+        q.tolerance,
+    )
+    .map_err(table_blocker)
+}
+
+/// The input named by a table lookup's error ([`crate::table::lookup::separation_radius`]):
+/// Poisson's ratio, the hole or the load width outside the tables.
+pub(super) fn table_blocker(e: crate::error::InputError) -> Blocker {
+    use crate::error::InputError;
+    let field = match &e {
+        InputError::Parameter { field, .. }
+        | InputError::NotPositive { field, .. }
+        | InputError::NotFinite { field, .. } => *field,
+        _ => "",
+    };
+    if field.starts_with("Poisson") {
+        Blocker {
+            key: Key::Poisson,
+            reason: "is outside the tables' Poisson's ratios (0..0.5)",
         }
-    })
+    } else if field.starts_with("A/D") {
+        Blocker {
+            key: Key::HoleRadius,
+            reason: "is outside the tables' hole radii (A/D within 0.25..4 near the \
+                     contact edge, at most 4 far from it)",
+        }
+    } else if field.starts_with("tolerance") {
+        Blocker {
+            key: Key::Tolerance,
+            reason: "must be positive for the tables' bar",
+        }
+    } else {
+        Blocker {
+            key: Key::LoadOuterRadius,
+            reason: "is outside the tables' load widths ((B - A)/D at least 0.1 near the \
+                     hole; without a hole B/D at least 2)",
+        }
+    }
 }
 
 /// Why `auto` hands a holed run whose modes stopped short of their residual target to the

@@ -382,8 +382,12 @@ fn check_model(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
     };
     let method = [k("method")];
     match scene.model {
-        Model::TwoPlate if scene.method == Method::Table => {
-            match super::two_hankel::table_blocker(scene) {
+        Model::TwoPlate | Model::SinglePlate if scene.method == Method::Table && symmetric => {
+            let blocker = match scene.model {
+                Model::SinglePlate => super::run::single_table_blocker(scene),
+                _ => super::two_hankel::table_blocker(scene),
+            };
+            match blocker {
                 Some((key, reason)) => {
                     let path: Vec<Seg> = key.split('.').map(k).collect();
                     let text = format!("{reason}; use method \"fem\" or \"auto\"");
@@ -402,10 +406,10 @@ fn check_model(scene: &Scene, c: &Checker) -> Result<(), SceneError> {
                 None => Ok(()),
             }
         }
-        Model::SinglePlate | Model::Slab if scene.method == Method::Table => Err(c.fail(
+        Model::Slab if scene.method == Method::Table => Err(c.fail(
             &method,
             "\"table\"",
-            "the tables answer the two-plate model: use \"fem\", \"hankel\" or \"auto\"",
+            "the tables answer the two-plate and single-plate models: use \"hankel\" or \"auto\"",
         )),
         Model::Slab if scene.method == Method::Fem => Err(c.fail(
             &method,

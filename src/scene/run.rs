@@ -40,16 +40,15 @@ pub use crate::route::single_plate::hankel_params;
 pub fn pick(scene: &Scene) -> (Method, &'static str) {
     let plan = match scene.model {
         Model::Slab => return (Method::Hankel, "Hankel transforms: the slab's exact route"),
-        Model::SinglePlate => single_plate::plan(&single_plate::Question {
-            method: scene.method,
-            field: scene.outputs.field.is_some() || scene.outputs.midplane.is_some(),
-            rigid_nut: scene.load.nut_displacement.is_some(),
-            thermal: scene.temperature.is_some(),
-            b_over_d: scene
-                .plates
-                .first()
-                .map_or(0.0, |p| scene.load.outer_radius / p.thickness),
-        }),
+        Model::SinglePlate => {
+            let plate = joint_solved(scene)
+                .ok()
+                .and_then(|(j, _)| substitute(&j).ok());
+            match single_plate::plan(&single_question(scene, plate.as_ref())) {
+                Ok(plan) => plan,
+                Err(b) => return (Method::Table, b.reason),
+            }
+        }
         Model::TwoPlate => {
             // a scene whose joint cannot be built, or that asks `hankel` out of reach, is refused
             // by its checks before it is solved
@@ -64,6 +63,37 @@ pub fn pick(scene: &Scene) -> (Method, &'static str) {
         }
     };
     (plan.method, plan.why)
+}
+
+/// The single-plate question of `scene` for the route layer, its plate `plate` (in the units
+/// it is solved in) when it can be built.
+fn single_question<'a>(
+    scene: &Scene,
+    plate: Option<&'a crate::joint::SinglePlate>,
+) -> single_plate::Question<'a> {
+    single_plate::Question {
+        method: scene.method,
+        field: scene.outputs.field.is_some() || scene.outputs.midplane.is_some(),
+        rigid_nut: scene.load.nut_displacement.is_some(),
+        thermal: scene.temperature.is_some(),
+        b_over_d: scene
+            .plates
+            .first()
+            .map_or(0.0, |p| scene.load.outer_radius / p.thickness),
+        curve: false,
+        plate,
+        tolerance: scene.tolerance,
+    }
+}
+
+/// The first scene key that keeps a single-plate scene from the tables
+/// ([`single_plate::table_answer`]), with the reason; None when they answer.
+pub(super) fn single_table_blocker(scene: &Scene) -> Option<(&'static str, &'static str)> {
+    let plate = joint_solved(scene)
+        .ok()
+        .and_then(|(j, _)| substitute(&j).ok())?;
+    let b = single_plate::table_answer(&single_question(scene, Some(&plate))).err()?;
+    Some((super::two_hankel::scene_key(b.key), b.reason))
 }
 
 /// Answers `scene`. A scene built in code is checked here as [`Scene::parse`] checks a file
@@ -212,6 +242,17 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
             }
             (out.r_o, out.r_o_error, out.converged) = (s.r_o / l, s.r_o_error / l, s.converged);
             Some("Hankel + hole correction")
+        }
+        (Model::SinglePlate, Method::Table) => {
+            let plate = substitute(&joint)?;
+            let q = single_question(scene, Some(&plate));
+            let r = single_plate::table_answer(&q).map_err(|b| SceneError::Invalid {
+                key: super::two_hankel::scene_key(b.key).into(),
+                line: 1,
+                reason: b.reason.into(),
+            })?;
+            (out.r_o, out.r_o_error, out.converged) = (r.value / l, r.error / l, r.converged);
+            Some("finite elements and the Hankel route (not needed: the tables answer R_o)")
         }
         (Model::SinglePlate, _) => {
             let (search, hole) = hankel_params(scene.tolerance);

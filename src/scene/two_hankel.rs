@@ -89,7 +89,7 @@ pub fn table_blocker(scene: &Scene) -> Option<(&'static str, &'static str)> {
 }
 
 /// The scene key of a route layer's [`Key`].
-fn scene_key(key: Key) -> &'static str {
+pub(super) fn scene_key(key: Key) -> &'static str {
     match key {
         Key::LowerThickness | Key::LowerModulus | Key::LowerPoisson | Key::Poisson => "plates",
         Key::LoadProfile => "load.profile",
@@ -105,6 +105,7 @@ fn scene_key(key: Key) -> &'static str {
         Key::Field => "outputs.field",
         Key::Conductance => "outputs.conductance",
         Key::Stiffness => "outputs.stiffness",
+        Key::Tolerance => "tolerance",
     }
 }
 

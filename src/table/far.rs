@@ -36,14 +36,15 @@
 //! microsecond (`benches/table.rs`); the data are parsed once per process.
 //!
 //! ```
-//! use boltzone::table::far::{separation_radius, FarModel};
+//! use boltzone::table::{far::separation_radius, Model};
 //! // two plates 0.1 in thick, hole 0.1 in, head 1.2 in: the hole is 11 D from the edge
-//! let r = separation_radius(FarModel::TwoPlates, 0.1, 1.2, 0.1, 1e-8)?;
+//! let r = separation_radius(Model::TwoPlates, 0.1, 1.2, 0.1, 1e-8)?;
 //! assert!(r.converged && (r.value - 1.2) > 0.03 && (r.value - 1.2) < 0.05);
 //! # Ok::<(), boltzone::InputError>(())
 //! ```
 
 use super::decay::HANDOVER_RATE;
+use super::Model;
 use crate::error::{non_negative, positive, InputError};
 use crate::value::Value;
 use serde::Deserialize;
@@ -60,15 +61,6 @@ pub const HANDOVER_K_SINGLE: f64 = 300.0;
 pub const MAX_A_OVER_D: f64 = 4.0;
 /// Smallest x = (R_o − A)/D from which the handover prefactor was measured.
 pub const MIN_HANDOVER_X: f64 = 2.0;
-
-/// Which model's far table.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum FarModel {
-    /// Two equal plates D thick, frictionless interface (the report's model).
-    TwoPlates,
-    /// The single plate 2D thick (Fernlund's substitution).
-    SinglePlate,
-}
 
 /// One model's table of g(B/D), as shipped.
 #[derive(Debug, Clone, Deserialize)]
@@ -152,11 +144,11 @@ pub fn envelope(c: &[f64]) -> (f64, f64) {
 
 impl FarTable {
     /// The table of `model`.
-    pub fn of(model: FarModel) -> &'static FarTable {
+    pub fn of(model: Model) -> &'static FarTable {
         let f = tables();
         match model {
-            FarModel::TwoPlates => &f.two_plates,
-            FarModel::SinglePlate => &f.single_plate,
+            Model::TwoPlates => &f.two_plates,
+            Model::SinglePlate => &f.single_plate,
         }
     }
 
@@ -206,7 +198,7 @@ pub fn lebesgue(n: usize, s: f64) -> f64 {
 /// A/D above [`MAX_A_OVER_D`], or the hole nearer than [`MIN_HANDOVER_X`]·D to the contact
 /// edge (the near region: a solver's).
 pub fn separation_radius(
-    model: FarModel,
+    model: Model,
     a: f64,
     b: f64,
     d: f64,
@@ -249,8 +241,8 @@ pub fn separation_radius(
             });
         }
         let k = match model {
-            FarModel::TwoPlates => HANDOVER_K_TWO,
-            FarModel::SinglePlate => HANDOVER_K_SINGLE,
+            Model::TwoPlates => HANDOVER_K_TWO,
+            Model::SinglePlate => HANDOVER_K_SINGLE,
         };
         k * (-HANDOVER_RATE * x).exp()
     };

@@ -1,19 +1,23 @@
-//! The near region: R_o of two equal infinite plates with a hole, frictionless interface,
-//! uniform pressure on A ≤ r ≤ B, where the hole is near the contact edge (the far table's
-//! handover bound is too large there), from a tensor Chebyshev interpolant built offline by the
-//! 1e-8 holed route, with an error bar.
+//! The near region: R_o of a table [`Model`] with a hole — two equal infinite plates with a
+//! frictionless interface, or the single plate 2D thick — uniform pressure on A ≤ r ≤ B, where
+//! the hole is near the contact edge (the far table's handover bound is too large there), from
+//! a tensor Chebyshev interpolant built offline by the model's holed route at 1e-8, with an
+//! error bar.
 //!
 //! **What.** y = (R_o − B)/D as a function of a = A/D ∈ [0.25, 4], w = (B − A)/D ∈
 //! [[`W_MIN`], [`W_MAX`]] and ν ∈ [0, 0.5] (R_o/D depends on these three ratios alone: the
-//! report's two-plate model, Ch. II.B, C = ∞).
+//! report's two-plate model, Ch. II.B, and its single plate, Ch. II.A, at C = ∞; D one plate's
+//! thickness).
 //!
 //! **Method.** The domain is cut in w into panels; on each, y is interpolated at the tensor
 //! grid of Chebyshev points of the first kind in (ln a, v, ν), v = ln w on the panels below
 //! w = 1.2 (the load narrows onto the hole's corner as w → 0: the log map keeps that end's
 //! non-analyticity away from the interval) and v = w on the others (short: the hole's faster
 //! Papkovich–Fadle modes still vary there). The samples are
-//! [`crate::hankel::receding::holed::two_plate_hole_to`] at 1e-8 (example 27 builds them and
-//! writes `src/table/data/near.json` with its provenance: route, tolerance, commit, date); the
+//! [`crate::hankel::receding::holed::two_plate_hole_to`] (two plates) or
+//! [`crate::hankel::hole::single_plate_separation`] (single plate) at 1e-8 (example 27 builds
+//! them and writes `src/table/data/near.json` or `near_single.json` with its provenance: route,
+//! tolerance, commit, date); the
 //! coefficients c_ijk come from the discrete cosine transform of type II along each axis. The
 //! error bar of R_o (in D) is the sum of
 //! 1. the interpolation bound, per axis: the axis's coefficient magnitudes m_i = Σ_jk |c_ijk|
@@ -30,10 +34,11 @@
 //!
 //! # Accuracy
 //!
-//! `tests/table/near.rs`: two random points (seed fixed) against fresh 1e-8 solves not used to
+//! `tests/table/near.rs`: random points (seed fixed) against fresh 1e-8 solves not used to
 //! build the table, |table − route| ≤ bar + the route's estimate, and the same on the held-out
-//! solves kept in `reference/tables/` (10⁴ points by the route at 1e-5, 1,600 at 1e-8; example
-//! 27 `validate` draws them and `check` prints their distribution: `docs/tables.md`).
+//! solves kept in `reference/tables/` (two plates: 10⁴ points by the route at 1e-5, 1,600 at
+//! 1e-8; the single plate: 10⁴ at 1e-8; example 27 `validate` draws them and `check` prints
+//! their distribution: `docs/tables.md`).
 //!
 //! # Cost
 //!
@@ -42,15 +47,16 @@
 //! per process.
 //!
 //! ```
-//! use boltzone::table::near::separation_radius;
+//! use boltzone::table::{near::separation_radius, Model};
 //! // two plates 0.1 in thick, hole 0.1 in, bearing face to 0.22 in (Table 1, A/D = 1, B/A = 2.2)
-//! let r = separation_radius(0.1, 0.22, 0.1, 0.3, 1e-2)?;
+//! let r = separation_radius(Model::TwoPlates, 0.1, 0.22, 0.1, 0.3, 1e-2)?;
 //! // the 1e-8 route: R_o/A = 2.6235234 (`docs/tables.md`)
 //! assert!(r.converged && (r.value - 0.26235234).abs() <= r.error);
 //! # Ok::<(), boltzone::InputError>(())
 //! ```
 
 use super::far::envelope;
+use super::Model;
 use crate::error::{positive, InputError};
 use crate::value::Value;
 use serde::Deserialize;
@@ -276,17 +282,22 @@ fn cardinal(s: f64, l: &mut [f64]) {
     }
 }
 
-/// The shipped table (parsed once).
-pub fn table() -> &'static NearTable {
-    static TABLE: OnceLock<NearTable> = OnceLock::new();
-    TABLE.get_or_init(|| {
-        let mut t: NearTable = serde_json::from_str(include_str!("data/near.json"))
-            .expect("src/table/data/near.json is written by example 27");
+/// `model`'s shipped table (parsed once).
+pub fn table(model: Model) -> &'static NearTable {
+    static TWO: OnceLock<NearTable> = OnceLock::new();
+    static SINGLE: OnceLock<NearTable> = OnceLock::new();
+    let parse = |json: &str| {
+        let mut t: NearTable =
+            serde_json::from_str(json).expect("src/table/data/near*.json is written by example 27");
         for p in &mut t.panels {
             p.tails = p.axis_tails();
         }
         t
-    })
+    };
+    match model {
+        Model::TwoPlates => TWO.get_or_init(|| parse(include_str!("data/near.json"))),
+        Model::SinglePlate => SINGLE.get_or_init(|| parse(include_str!("data/near_single.json"))),
+    }
 }
 
 /// Checks that (A/D, (B − A)/D, ν) lie in the near table's domain (a typed error naming the
@@ -316,11 +327,18 @@ pub fn check_domain(a: f64, w: f64, nu: f64) -> Result<(), InputError> {
     Ok(())
 }
 
-/// R_o of two equal infinite plates D thick with hole A, uniform pressure on A..B, Poisson's
-/// ratio ν, frictionless interface, from the near table: a [`Value`] in the units of the
-/// lengths, converged when its bar is within `tol`·R_o. Errors: bad lengths, or a ratio
-/// outside the table ([`check_domain`]).
-pub fn separation_radius(a: f64, b: f64, d: f64, nu: f64, tol: f64) -> Result<Value, InputError> {
+/// R_o of `model` (two equal infinite plates D thick, frictionless interface, or the single
+/// plate 2D thick) with hole A, uniform pressure on A..B, Poisson's ratio ν, from its near
+/// table: a [`Value`] in the units of the lengths, converged when its bar is within `tol`·R_o.
+/// Errors: bad lengths, or a ratio outside the table ([`check_domain`]).
+pub fn separation_radius(
+    model: Model,
+    a: f64,
+    b: f64,
+    d: f64,
+    nu: f64,
+    tol: f64,
+) -> Result<Value, InputError> {
     positive("hole radius A", a)?;
     positive("plate thickness D", d)?;
     positive("tolerance", tol)?;
@@ -329,12 +347,12 @@ pub fn separation_radius(a: f64, b: f64, d: f64, nu: f64, tol: f64) -> Result<Va
     }
     let (ad, w) = (a / d, (b - a) / d);
     check_domain(ad, w, nu)?;
-    let t = table();
+    let t = table(model);
     let Some(panel) = t.panels.iter().find(|p| w <= p.w_hi).or(t.panels.last()) else {
         return Err(InputError::Parameter {
             field: "near table",
             value: 0.0,
-            reason: "not built (example 27 writes src/table/data/near.json)",
+            reason: "not built (example 27 writes src/table/data/near*.json)",
         });
     };
     let (y, bar) = panel.y(ad, w, nu);

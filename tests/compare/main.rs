@@ -8,6 +8,7 @@ mod cli;
 mod map;
 mod map_fallback;
 mod map_method;
+mod map_table;
 mod one_question;
 mod reference;
 mod table_units;

@@ -147,8 +147,8 @@ fn map_method_flag_is_named_and_auto_says_which_method_ran() {
     );
     let out = String::from_utf8_lossy(&o.stdout);
     assert!(
-        out.contains("single plate hankel at 2, fem at 0 of 2 points")
-            && out.contains("two plates hankel at 0, fem at 2 of 2 points"),
+        out.contains("single plate table at 0, hankel at 2, fem at 0 of 2 points")
+            && out.contains("two plates table at 0, hankel at 0, fem at 2 of 2 points"),
         "{out}"
     );
     let text = std::fs::read_to_string(dir.join("map_auto.csv")).unwrap();

@@ -4,7 +4,8 @@ use boltzone::hankel::hole::{single_plate_separation, HoleParams};
 use boltzone::hankel::receding::holed::two_plate_hole_to;
 use boltzone::hankel::receding::{Layer, RecedingParams};
 use boltzone::hankel::{SeparationParams, Slab};
-use boltzone::table::far::{separation_radius, FarModel, FarTable};
+use boltzone::table::far::{separation_radius, FarTable};
+use boltzone::table::Model;
 use boltzone::{FaceLoad, InputError, Material, OuterRadius, SinglePlate};
 
 fn two_plates_no_hole(b: f64) -> (f64, f64) {
@@ -35,7 +36,7 @@ fn single_plate_no_hole(b: f64) -> (f64, f64) {
 
 /// The table's answer for the disk load 0..B (A = 0) against a fresh solve (r_o, its error),
 /// and its bar within `tol`.
-fn assert_table_holds(model: FarModel, b: f64, (r_o, err): (f64, f64), tol: f64) {
+fn assert_table_holds(model: Model, b: f64, (r_o, err): (f64, f64), tol: f64) {
     let t = separation_radius(model, 0.0, b, 1.0, tol).unwrap();
     assert!(
         (t.value - r_o).abs() <= t.error + err,
@@ -50,7 +51,7 @@ fn assert_table_holds(model: FarModel, b: f64, (r_o, err): (f64, f64), tol: f64)
 fn the_two_plate_table_holds_against_fresh_no_hole_solves() {
     // B/D not among the table's nodes (first-kind points in D/B on [1/48, 1/2])
     for b in [2.3, 3.7, 6.1] {
-        assert_table_holds(FarModel::TwoPlates, b, two_plates_no_hole(b), 1e-8);
+        assert_table_holds(Model::TwoPlates, b, two_plates_no_hole(b), 1e-8);
     }
 }
 
@@ -58,7 +59,7 @@ fn the_two_plate_table_holds_against_fresh_no_hole_solves() {
 fn the_single_plate_table_holds_against_fresh_no_hole_solves_out_to_wide_loads() {
     // the build's own estimate is 4e-10 D, times the Lebesgue function: 1e-9 of R_o ≥ 2D
     for b in [2.2, 4.9, 17.0, 333.0, 4100.0] {
-        assert_table_holds(FarModel::SinglePlate, b, single_plate_no_hole(b), 1e-9);
+        assert_table_holds(Model::SinglePlate, b, single_plate_no_hole(b), 1e-9);
     }
 }
 
@@ -67,8 +68,8 @@ fn an_extrapolated_bar_holds_on_the_single_plate_out_to_b_over_d_infinite() {
     // the two-plate table extrapolates beyond B/D = 48 (its solver's reach); the same
     // construction on the single plate, sampled only to B/D = 48 as the two-plate table is,
     // against the single plate's full table (sampled to B/D ≈ 10⁴ and through t = 0)
-    let full = FarTable::of(FarModel::SinglePlate);
-    let two = FarTable::of(FarModel::TwoPlates);
+    let full = FarTable::of(Model::SinglePlate);
+    let two = FarTable::of(Model::TwoPlates);
     let n = two.coefficients.len();
     let nodes = FarTable::nodes(two.t_lo, two.t_hi, n);
     let mut build = 0.0f64;
@@ -110,7 +111,7 @@ fn the_holed_single_plate_lies_within_the_bar_where_the_hole_is_far() {
         };
         let (s, _) =
             single_plate_separation(&plate, &sep, &HoleParams::for_tolerance(1e-10)).unwrap();
-        let t = separation_radius(FarModel::SinglePlate, a, b, 1.0, 1e-6).unwrap();
+        let t = separation_radius(Model::SinglePlate, a, b, 1.0, 1e-6).unwrap();
         assert!(
             (t.value - s.r_o).abs() <= t.error + s.r_o_error,
             "A/D {a}, B/D {b}: table {} ± {:.1e}, holed {} ± {:.1e}",
@@ -136,7 +137,7 @@ fn the_holed_two_plate_route_lies_within_the_bar_where_the_hole_is_far() {
     )
     .unwrap();
     let (h, _) = two_plate_hole_to(&plate, 1e-8, &[]).unwrap();
-    let t = separation_radius(FarModel::TwoPlates, a, b, 1.0, 1e-6).unwrap();
+    let t = separation_radius(Model::TwoPlates, a, b, 1.0, 1e-6).unwrap();
     assert!(
         (t.value - h.r_o).abs() <= t.error + h.info.r_o_error,
         "table {} ± {:.1e}, holed {} ± {:.1e}",
@@ -149,7 +150,7 @@ fn the_holed_two_plate_route_lies_within_the_bar_where_the_hole_is_far() {
 
 #[test]
 fn the_far_table_refuses_what_it_does_not_cover_naming_the_ratio() {
-    let e = separation_radius(FarModel::TwoPlates, 0.1, 0.15, 0.1, 1e-6).unwrap_err();
+    let e = separation_radius(Model::TwoPlates, 0.1, 0.15, 0.1, 1e-6).unwrap_err();
     assert!(
         matches!(
             e,
@@ -160,7 +161,7 @@ fn the_far_table_refuses_what_it_does_not_cover_naming_the_ratio() {
         ),
         "{e}"
     );
-    let e = separation_radius(FarModel::TwoPlates, 0.5, 0.6, 0.1, 1e-6).unwrap_err();
+    let e = separation_radius(Model::TwoPlates, 0.5, 0.6, 0.1, 1e-6).unwrap_err();
     assert!(
         matches!(
             e,
@@ -171,12 +172,12 @@ fn the_far_table_refuses_what_it_does_not_cover_naming_the_ratio() {
         ),
         "{e}"
     );
-    let e = separation_radius(FarModel::TwoPlates, 0.1, 0.2, 0.1, 1e-6).unwrap_err();
+    let e = separation_radius(Model::TwoPlates, 0.1, 0.2, 0.1, 1e-6).unwrap_err();
     assert!(e.to_string().contains("(R_o − A)/D"), "{e}");
-    let e = separation_radius(FarModel::SinglePlate, 0.3, 0.2, 0.1, 1e-6).unwrap_err();
+    let e = separation_radius(Model::SinglePlate, 0.3, 0.2, 0.1, 1e-6).unwrap_err();
     assert!(matches!(e, InputError::LoadRadii { .. }), "{e}");
     for bad in [f64::NAN, -1.0, 0.0] {
-        assert!(separation_radius(FarModel::SinglePlate, 0.0, 1.0, bad, 1e-6).is_err());
+        assert!(separation_radius(Model::SinglePlate, 0.0, 1.0, bad, 1e-6).is_err());
     }
 }
 
@@ -216,7 +217,7 @@ fn the_single_plate_limit_is_the_plane_strain_edge_of_a_half_plane_load() {
     let fine = root(0.25, 80.0);
     let coarse = root(0.5, 60.0);
     let quadrature = (fine.x - coarse.x).abs() + fine.half_width;
-    let (g, bar) = FarTable::of(FarModel::SinglePlate).g(0.0);
+    let (g, bar) = FarTable::of(Model::SinglePlate).g(0.0);
     eprintln!(
         "g(∞): table {g} ± {bar:.1e}, plane strain {} ± {quadrature:.1e}",
         fine.x

@@ -221,7 +221,7 @@ pub fn answer(q: &JointQuery) -> anyhow::Result<serde_json::Value> {
         ..Default::default()
     };
     let two_plan = two_plate::plan(&two_q).map_err(|b| anyhow::anyhow!("{}", b.reason))?;
-    let single_plan = single_plate::plan(&single_q);
+    let single_plan = single_plate::plan(&single_q).map_err(|b| anyhow::anyhow!("{}", b.reason))?;
     for plan in [two_plan, single_plan] {
         if plan.method != Method::Fem {
             anyhow::bail!(
