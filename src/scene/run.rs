@@ -252,7 +252,7 @@ pub fn solve(scene: &Scene) -> Result<Solution, SceneError> {
                 reason: b.reason.into(),
             })?;
             (out.r_o, out.r_o_error, out.converged) = (r.value / l, r.error / l, r.converged);
-            Some("finite elements and the Hankel route (not needed: the tables answer R_o)")
+            Some("FE and Hankel routes (the tables answer)")
         }
         (Model::SinglePlate, _) => {
             let (search, hole) = hankel_params(scene.tolerance);

@@ -85,7 +85,7 @@ pub struct Solution {
     pub length_unit: &'static str,
     /// The model.
     pub model: Model,
-    /// The method that ran (`fem` or `hankel`; what `auto` picked).
+    /// The method that ran (`fem`, `hankel` or `table`; what `auto` picked).
     pub method: Method,
     /// boltzone's version.
     pub version: &'static str,

@@ -101,11 +101,21 @@ fn bad_values_are_refused_naming_their_key() {
             Box::new(|| table1_row1().friction(-0.2).build()),
             "joint.mu",
         ),
-        // the tables answer the two-plate model only
+        // the tables hold infinite plates: a rim is refused by its key
         (
             Box::new(|| {
                 table1_row1()
                     .model(Model::SinglePlate)
+                    .method(Method::Table)
+                    .build()
+            }),
+            "joint.outer_radius",
+        ),
+        // and they hold no slab
+        (
+            Box::new(|| {
+                table1_row1()
+                    .model(Model::Slab)
                     .method(Method::Table)
                     .build()
             }),

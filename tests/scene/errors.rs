@@ -158,9 +158,10 @@ fn explain_prints_the_plan_with_the_skipped_route() {
         .unwrap();
     assert_eq!(out.status.code(), Some(0));
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(text.contains("(single-plate, hankel)"), "{text}");
+    // infinite plates inside the near table: auto answers from it and skips both solvers
+    assert!(text.contains("(single-plate, table)"), "{text}");
     assert!(
-        text.contains("ran     hankel route") && text.contains("skipped finite elements"),
+        text.contains("ran     table route") && text.contains("skipped FE and Hankel routes"),
         "{text}"
     );
     assert!(text.contains(" in "), "R_o says its unit: {text}");
@@ -237,7 +238,7 @@ fn geometries_csv_gives_one_point_per_row_and_locates_bad_cells() {
 }
 
 #[test]
-fn a_single_plate_beyond_the_hankel_reach_is_refused_by_name_and_auto_takes_the_fe() {
+fn a_single_plate_beyond_the_hankel_reach_is_refused_by_name_and_auto_takes_the_far_table() {
     // B/D = 4000 > route::reach::B_OVER_D_SINGLE_HANKEL (the ξ-quadrature's node budget)
     let wide = GOOD
         .replace("model = \"slab\"", "model = \"single-plate\"")
@@ -245,6 +246,10 @@ fn a_single_plate_beyond_the_hankel_reach_is_refused_by_name_and_auto_takes_the_
     let (key, line, msg) = located(&format!("method = \"hankel\"\n{wide}"));
     assert_eq!((key.as_str(), line), ("plates[0].thickness", 10), "{msg}");
     assert!(msg.contains("Hankel route's reach"), "{msg}");
+    // infinite, so the far table answers it; with a rim only the FE can
     let (method, why) = boltzone::scene::run::pick(&Scene::parse(&wide).unwrap());
+    assert_eq!(method, boltzone::route::Method::Table, "{why}");
+    let rimmed = format!("{wide}[joint]\nouter_radius = 500.0\n");
+    let (method, why) = boltzone::scene::run::pick(&Scene::parse(&rimmed).unwrap());
     assert_eq!(method, boltzone::route::Method::Fem, "{why}");
 }

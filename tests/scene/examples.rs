@@ -7,6 +7,7 @@ use crate::{example, scratch};
 use boltzone::contact::two_plate::{self, InterfaceModel, TwoPlateParams};
 use boltzone::hankel::hole::{single_plate_separation, HoleParams};
 use boltzone::hankel::SeparationParams;
+use boltzone::route::Method;
 use boltzone::scene::sweep::points;
 use boltzone::scene::{Scene, UnitSystem};
 use boltzone::{FaceLoad, Joint, Material, OuterRadius, Plate, SinglePlate};
@@ -118,7 +119,7 @@ fn chapter6_pair_through_the_command_writes_the_interface_csv() {
 use std::path::PathBuf;
 
 #[test]
-fn m8_sweep_points_equal_the_hankel_route() {
+fn m8_sweep_points_agree_with_the_hankel_route() {
     let pts = points(&example("m8_aluminium_sweep")).unwrap();
     assert_eq!(pts.len(), 3);
     let results = boltzone::scene::sweep::solve_all(&pts, &|| {});
@@ -138,7 +139,20 @@ fn m8_sweep_points_equal_the_hankel_route() {
             ..HoleParams::default()
         };
         let (direct, _) = single_plate_separation(&plate, &search, &hole).unwrap();
-        assert_eq!(s.r_o.to_bits(), direct.r_o.to_bits(), "B = {b_mm} mm");
+        // auto answers from the near table where its bar meets the scene's 1e-6, else by the
+        // Hankel route itself (then bit for bit)
+        match s.method {
+            Method::Hankel => assert_eq!(s.r_o.to_bits(), direct.r_o.to_bits(), "B = {b_mm} mm"),
+            Method::Table => assert!(
+                (s.r_o - direct.r_o).abs() <= s.r_o_error + direct.r_o_error,
+                "B = {b_mm} mm: table {} ± {} against Hankel {} ± {}",
+                s.r_o,
+                s.r_o_error,
+                direct.r_o,
+                direct.r_o_error
+            ),
+            other => panic!("B = {b_mm} mm: auto took {other:?}"),
+        }
         assert!(s.converged);
     }
 }
