@@ -79,7 +79,7 @@ fn a_built_scene_in_mm_equals_the_same_scene_in_inches() {
 #[test]
 fn bad_values_are_refused_naming_their_key() {
     type Build = Box<dyn Fn() -> Result<Scene, SceneError>>;
-    let cases: [(Build, &str); 7] = [
+    let cases: [(Build, &str); 8] = [
         (
             Box::new(|| table1_row1().tolerance(f64::NAN).build()),
             "tolerance",
@@ -114,7 +114,11 @@ fn bad_values_are_refused_naming_their_key() {
         // and they hold no slab
         (
             Box::new(|| {
-                table1_row1()
+                Scene::builder(UnitSystem::InPsiLbf)
+                    .hole(0.1)
+                    .bearing_face(0.31)
+                    .pressure(1000.0)
+                    .plate(0.1)
                     .model(Model::Slab)
                     .method(Method::Table)
                     .build()
