@@ -57,8 +57,8 @@ pub struct Args {
     /// Plate outer radius C (default: infinite, truncated at B + 30 D).
     #[arg(long)]
     c: Option<f64>,
-    /// Solver: fem, hankel (R_o and the midplane curve, milliseconds), table (R_o of an
-    /// infinite plate from the tables, microseconds), or auto (fem where --field, --plot or
+    /// Solver: fem, hankel (R_o and the midplane curve, milliseconds), table (R_o from the
+    /// infinite plate's tables, a rim --c through its bound, microseconds), or auto (fem where --field, --plot or
     /// --nut rigid ask for it, else table where its bar meets --tol, else hankel).
     #[arg(long, value_enum, default_value_t = Method::Fem)]
     method: Method,
@@ -335,8 +335,8 @@ fn not_converged(converged: bool) -> &'static str {
     }
 }
 
-/// `--method table` (or `auto` where the tables' bar meets --tol): R_o of the infinite plate
-/// from the tables ([`single_plate::table_answer`]).
+/// `--method table` (or `auto` where the tables' bar meets --tol): R_o from the infinite
+/// plate's tables, a rim through its bound ([`single_plate::table_answer`]).
 fn run_table(
     args: &Args,
     plate: &SinglePlate,

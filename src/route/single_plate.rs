@@ -6,9 +6,9 @@
 //!   milliseconds, any rim (bounded where too far to matter, fitted otherwise);
 //! - the **finite elements** ([`crate::fem::single`]): also the field, the midplane σ_z curve,
 //!   a rigid nut (a uniform displacement) and thermal strains;
-//! - the **tables** ([`crate::table::lookup`] with [`Model::SinglePlate`]): an infinite plate, a
-//!   uniform pressure from the hole, R_o alone, in microseconds with a bar ([`table_answer`]
-//!   is their reach and their answer).
+//! - the **tables** ([`crate::table::lookup`] with [`Model::SinglePlate`]): the infinite plate,
+//!   a rim through its bound ([`crate::table::rim`]), a uniform pressure from the hole, R_o
+//!   alone, in microseconds with a bar ([`table_answer`] is their reach and their answer).
 //!
 //! `auto` takes the finite elements where an output or input asks for them, else the tables
 //! where their bar meets the tolerance, else the Hankel route.
@@ -30,9 +30,15 @@
 //! assert_eq!(single_plate::plan(&field).unwrap().method, Method::Fem);
 //! // Table 1's first row at C = ∞: the tables' bar meets 1e-4
 //! let load = FaceLoad::uniform(0.1, 0.31, 1.0)?;
-//! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3)?, load)?;
+//! let plate = SinglePlate::new(0.1, OuterRadius::Infinite, 0.1, Material::unit(0.3)?, load.clone())?;
 //! let q = single_plate::Question { plate: Some(&plate), tolerance: 1e-4, ..q };
 //! assert_eq!(single_plate::plan(&q).unwrap().method, Method::Table);
+//! // with Table 1's rim C = 1.54 in, 11 D beyond R_o: the rim's bound joins the bar
+//! let rimmed = SinglePlate::new(0.1, OuterRadius::Finite(1.54), 0.1, Material::unit(0.3)?, load)?;
+//! let infinite = single_plate::table_answer(&q).unwrap();
+//! let q = single_plate::Question { plate: Some(&rimmed), ..q };
+//! let rim = single_plate::table_answer(&q).unwrap();
+//! assert!(rim.converged && rim.error > infinite.error && rim.value == infinite.value);
 //! let (search, _hole) = single_plate::hankel_params(1e-6);
 //! assert!(search.rel_tol <= 1e-9);
 //! # Ok::<(), boltzone::InputError>(())
@@ -43,6 +49,7 @@ use super::Method;
 use crate::hankel::hole::HoleParams;
 use crate::hankel::SeparationParams;
 use crate::joint::{OuterRadius, SinglePlate};
+use crate::table::rim::single_plate_rim_bound;
 use crate::table::Model;
 use crate::value::Value;
 
@@ -111,9 +118,10 @@ pub fn plan(q: &Question) -> Result<Plan, Blocker> {
     Ok(Plan { method, why })
 }
 
-/// The tables' R_o for `q` ([`crate::table::lookup`], [`Model::SinglePlate`]: an infinite
-/// plate, a uniform pressure from the hole, R_o alone, converged when its bar is within the
-/// tolerance), or the first input that keeps the question from them.
+/// The tables' R_o for `q` ([`crate::table::lookup`], [`Model::SinglePlate`]: the infinite
+/// plate's, with a rim's bound added to the bar ([`crate::table::rim`]); a uniform pressure
+/// from the hole, R_o alone, converged when its bar is within the tolerance), or the first
+/// input that keeps the question from them.
 pub fn table_answer(q: &Question) -> Result<Value, Blocker> {
     let blocked = |key, reason| Err(Blocker { key, reason });
     let Some(plate) = q.plate else {
@@ -147,12 +155,6 @@ pub fn table_answer(q: &Question) -> Result<Value, Blocker> {
             "the tables' plate carries no temperatures",
         );
     }
-    if matches!(plate.outer_radius(), OuterRadius::Finite(_)) {
-        return blocked(
-            Key::OuterRadius,
-            "the tables take an infinite plate (no rim C)",
-        );
-    }
     if load.profile() != crate::load::Profile::Uniform || load.inner() != plate.hole_radius() {
         return blocked(
             Key::LoadProfile,
@@ -161,8 +163,25 @@ pub fn table_answer(q: &Question) -> Result<Value, Blocker> {
     }
     let (a, b, d) = (plate.hole_radius(), load.outer(), plate.half_thickness());
     let nu = plate.material().poisson_ratio();
-    crate::table::lookup::separation_radius(Model::SinglePlate, a, b, d, nu, q.tolerance)
-        .map_err(table_blocker)
+    let infinite =
+        crate::table::lookup::separation_radius(Model::SinglePlate, a, b, d, nu, q.tolerance)
+            .map_err(table_blocker)?;
+    let OuterRadius::Finite(c) = plate.outer_radius() else {
+        return Ok(infinite);
+    };
+    // a free rim: its bound joins the bar (crate::table::rim)
+    let rim = single_plate_rim_bound(c, infinite.value + infinite.error, d);
+    if !rim.is_finite() {
+        return blocked(
+            Key::OuterRadius,
+            "the rim C is inside the infinite plate's contact zone, which the tables cannot bound",
+        );
+    }
+    Ok(Value::with_tolerance(
+        infinite.value,
+        infinite.error + rim,
+        q.tolerance,
+    ))
 }
 
 /// The tolerance a route works to when none is asked: the Hankel route's root search reaches

@@ -7,7 +7,8 @@
 //! - [`near`]: the near region, R_o/D over (A/D, (B − A)/D, ν) from tensor Chebyshev tables
 //!   built by the holed routes at 1e-8 (`data/near.json`, `data/near_single.json`, written by
 //!   example 27);
-//! - [`lookup`]: R_o of a [`Model`] from whichever of the two answers with the smaller bar.
+//! - [`lookup`]: R_o of a [`Model`] from whichever of the two answers with the smaller bar;
+//! - [`rim`]: the bound a free rim adds to the single plate's answers.
 //!
 //! # Accuracy
 //!
@@ -20,6 +21,7 @@ pub mod decay;
 pub mod far;
 pub mod lookup;
 pub mod near;
+pub mod rim;
 
 /// Which model a table answers for (both infinite, C = ∞, uniform pressure on A..B, D one
 /// plate's thickness).

@@ -417,14 +417,14 @@ fn input_faults_the_fuzz_found_exit_2_naming_the_flag() {
             ],
             "--b = 4000",
         ),
-        // the tables take infinite plates: single and map refuse them on a rim, not quietly
-        // answer by another route
+        // the tables take the single plate's rim through its bound only, the map's two plates
+        // no rim: a rim they cannot bound is refused, not quietly answered by another route
         (
             &[
-                "single", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--c", "1.54", "--method",
+                "single", "--a", "0.1", "--b", "0.31", "--d", "0.1", "--c", "0.35", "--method",
                 "table",
             ],
-            "--c = 1.54",
+            "--c = 0.35",
         ),
         (
             &["map", "--n", "2", "--method", "table"],
@@ -487,7 +487,8 @@ fn a_tolerance_below_the_f64_epsilon_is_refused_naming_it() {
 fn the_single_plate_hankel_reach_holds_up_to_its_limit() {
     // route::reach::B_OVER_D_SINGLE_HANKEL = 3e3: at the limit the route answers (converged or
     // not, never a failure), over holes and Poisson's ratios; beyond it `auto` answers an
-    // infinite plate from the far table (any B/D) and a plate with a rim by the FE
+    // infinite plate from the far table (any B/D), a rim far beyond R_o too (its bound joins
+    // the bar), and a rim near R_o by the FE
     for (a, nu) in [("0.01", "0.3"), ("1", "-0.7"), ("30", "0.49")] {
         let args = [
             "single", "--a", a, "--b", "3000", "--d", "1", "--nu", nu, "--method", "hankel",
@@ -500,10 +501,11 @@ fn the_single_plate_hankel_reach_holds_up_to_its_limit() {
     ]);
     assert_eq!(code(&r), 0, "{}", r.stderr);
     assert_eq!(json(&r)["method"], "table", "{}", r.stdout);
-    let r = go(&[
-        "single", "--a", "1", "--b", "5000", "--d", "1", "--c", "6000", "--method", "auto",
-        "--json",
-    ]);
-    assert_eq!(code(&r), 0, "{}", r.stderr);
-    assert_eq!(json(&r)["method"], "fem", "{}", r.stdout);
+    for (c, method) in [("6000", "table"), ("5003", "fem")] {
+        let r = go(&[
+            "single", "--a", "1", "--b", "5000", "--d", "1", "--c", c, "--method", "auto", "--json",
+        ]);
+        assert_eq!(code(&r), 0, "--c {c}: {}", r.stderr);
+        assert_eq!(json(&r)["method"], method, "--c {c}: {}", r.stdout);
+    }
 }

@@ -306,3 +306,13 @@ fn ex29_fe_fitted_study() {
     quick();
     ex29::main().unwrap();
 }
+
+#[path = "../../examples/30_single_plate_rim.rs"]
+mod ex30;
+
+#[test]
+fn ex30_single_plate_rim() {
+    // quick: the slope survey's corners and four plates, six rimmed plates against the route
+    quick();
+    ex30::main().unwrap();
+}

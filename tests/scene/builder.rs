@@ -101,10 +101,12 @@ fn bad_values_are_refused_naming_their_key() {
             Box::new(|| table1_row1().friction(-0.2).build()),
             "joint.mu",
         ),
-        // the tables hold infinite plates: a rim is refused by its key
+        // the tables bound a single plate's rim far from R_o only: one inside the contact
+        // zone is refused by its key
         (
             Box::new(|| {
                 table1_row1()
+                    .outer_radius(0.35)
                     .model(Model::SinglePlate)
                     .method(Method::Table)
                     .build()

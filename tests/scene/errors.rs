@@ -238,7 +238,7 @@ fn geometries_csv_gives_one_point_per_row_and_locates_bad_cells() {
 }
 
 #[test]
-fn a_single_plate_beyond_the_hankel_reach_is_refused_by_name_and_auto_takes_the_far_table() {
+fn a_single_plate_beyond_the_hankel_reach_is_refused_by_name_and_auto_takes_a_table_or_the_fe() {
     // B/D = 4000 > route::reach::B_OVER_D_SINGLE_HANKEL (the ξ-quadrature's node budget)
     let wide = GOOD
         .replace("model = \"slab\"", "model = \"single-plate\"")
@@ -246,10 +246,15 @@ fn a_single_plate_beyond_the_hankel_reach_is_refused_by_name_and_auto_takes_the_
     let (key, line, msg) = located(&format!("method = \"hankel\"\n{wide}"));
     assert_eq!((key.as_str(), line), ("plates[0].thickness", 10), "{msg}");
     assert!(msg.contains("Hankel route's reach"), "{msg}");
-    // infinite, so the far table answers it; with a rim only the FE can
-    let (method, why) = boltzone::scene::run::pick(&Scene::parse(&wide).unwrap());
-    assert_eq!(method, boltzone::route::Method::Table, "{why}");
-    let rimmed = format!("{wide}[joint]\nouter_radius = 500.0\n");
-    let (method, why) = boltzone::scene::run::pick(&Scene::parse(&rimmed).unwrap());
-    assert_eq!(method, boltzone::route::Method::Fem, "{why}");
+    // infinite, or with a rim far beyond R_o (its bound joins the bar), the far table answers
+    // it; with a rim 1.6 D beyond R_o only the FE can
+    use boltzone::route::Method::{Fem, Table};
+    for (rim, expected) in [("", Table), ("[joint]\nouter_radius = 500.0\n", Table)] {
+        let (method, why) =
+            boltzone::scene::run::pick(&Scene::parse(&format!("{wide}{rim}")).unwrap());
+        assert_eq!(method, expected, "{rim}: {why}");
+    }
+    let near = format!("{wide}[joint]\nouter_radius = 400.25\n");
+    let (method, why) = boltzone::scene::run::pick(&Scene::parse(&near).unwrap());
+    assert_eq!(method, Fem, "{why}");
 }

@@ -7,4 +7,5 @@ mod common;
 mod decay;
 mod far;
 mod near;
+mod rim;
 mod two_plates;
