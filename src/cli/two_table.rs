@@ -1,5 +1,6 @@
-//! `boltzone two --method table|auto`: R_o of two equal infinite plates with a hole (or none)
-//! from the tables built offline by the semi-analytic route ([`boltzone::table::two_plates`]),
+//! `boltzone two --method table|auto`: R_o of two equal plates with a hole (or none), infinite
+//! or with a free rim `--c` at least 4 D beyond R_o (the rim table's shift),
+//! from the tables built offline by the semi-analytic route ([`boltzone::table::lookup`]),
 //! in microseconds, with its bar; `--verify` also runs one solve by the holed route at --tol
 //! and prints both with their difference against the summed bars.
 //!
@@ -17,7 +18,7 @@ use super::exit::{sig, Status};
 use super::two_args::Args;
 use boltzone::hankel::receding::holed::two_plate_hole_to;
 use boltzone::route::two_plate::{self, HankelSolver};
-use boltzone::{Material, OuterRadius, SinglePlate, Value};
+use boltzone::{Material, SinglePlate, Value};
 
 /// Answers `q` (checked arguments whose plan is the tables) from the tables.
 pub fn run(
@@ -87,7 +88,8 @@ pub fn run(
     Ok(Status::from_converged(r.converged))
 }
 
-/// One solve of `q` by the holed route at --tol (the receding contact without a hole).
+/// One solve of `q` by the holed route at --tol, with its rim if it has one (the receding
+/// contact without a hole).
 fn verify(args: &Args, q: &two_plate::Question) -> anyhow::Result<Value> {
     let g = &args.geom;
     let m = Material::new(args.e(), g.nu)?;
@@ -99,9 +101,11 @@ fn verify(args: &Args, q: &two_plate::Question) -> anyhow::Result<Value> {
             let c = layer.receding_contact(&params)?;
             return Ok(Value::with_tolerance(c.r_o, c.info.r_o_error, args.tol));
         }
-        HankelSolver::Rim(_) => anyhow::bail!("internal: the tables answer infinite plates only"),
+        HankelSolver::Rim(_) => {
+            anyhow::bail!("internal: the tables answer a rim only on plates with a hole")
+        }
     }
-    let plate = SinglePlate::new(g.a, OuterRadius::Infinite, g.d, m, q.joint.load().clone())?;
+    let plate = SinglePlate::new(g.a, q.joint.outer_radius(), g.d, m, q.joint.load().clone())?;
     let (out, _) = two_plate_hole_to(&plate, args.tol, &[])?;
     Ok(Value {
         converged: out.meets(args.tol),

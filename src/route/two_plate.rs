@@ -16,10 +16,11 @@
 //!   its own, [`Key::NutOuterRadius`], goes to the finite elements), answering R_o and the
 //!   interface pressure only, to 1e-8.
 //!
-//! - the **tables** ([`crate::table::two_plates`]): equal infinite plates, a uniform pressure
-//!   from the hole, R_o alone, in microseconds with a bar (the near table's interpolation bound
-//!   and build error, the far table's handover bound); [`table_answer`] is their reach and
-//!   their answer.
+//! - the **tables** ([`crate::table::lookup`]): equal plates, infinite or with a free rim at
+//!   least 4 plate thicknesses beyond R_o ([`crate::table::rim`]: the rim's shift from its own
+//!   table), a uniform pressure from the hole, R_o alone, in microseconds with a bar (the near
+//!   table's interpolation bound and build error, the far table's handover bound, the rim
+//!   table's); [`table_answer`] is their reach and their answer.
 //!
 //! [`hankel_blocker`] is the one statement of the semi-analytic routes' reach: the first input of
 //! the question that keeps it from them, as a [`Key`] (each front end names it in its own words:
@@ -49,7 +50,10 @@
 //! assert_eq!(two_plate::plan(&q).unwrap().method, Method::Table);    // the tables' bar meets it
 //! let rim = joint.clone().with_outer_radius(boltzone::OuterRadius::Finite(1.54))?;
 //! let q = two_plate::Question::new(&rim, 5e-4);
-//! assert_eq!(two_plate::plan(&q).unwrap().method, Method::Fem);      // the FE is cheaper there
+//! assert_eq!(two_plate::plan(&q).unwrap().method, Method::Table);    // with the rim's shift
+//! let near = joint.clone().with_outer_radius(boltzone::OuterRadius::Finite(0.6))?;
+//! let q = two_plate::Question::new(&near, 5e-4);
+//! assert_eq!(two_plate::plan(&q).unwrap().method, Method::Fem);      // a rim within 4 D of R_o
 //! let mut q = two_plate::Question::new(&joint, 5e-4);
 //! q.fixed_edge = true;
 //! q.method = Method::Hankel;
@@ -448,9 +452,10 @@ pub fn plan(q: &Question) -> Result<Plan, Blocker> {
     }
 }
 
-/// The tables' R_o for `q` ([`crate::table::two_plates`]: equal infinite plates, a uniform
-/// pressure from the hole, no field, converged when its bar is within the tolerance), or the
-/// first input that keeps the question from them.
+/// The tables' R_o for `q` ([`crate::table::lookup`]: equal infinite plates, a free rim through
+/// the rim table's shift ([`crate::table::rim`]), a uniform pressure from the hole, no field,
+/// converged when its bar is within the tolerance), or the first input that keeps the question
+/// from them.
 pub fn table_answer(q: &Question) -> Result<crate::value::Value, Blocker> {
     let j = q.joint;
     let (up, lo) = (j.upper(), j.lower());
@@ -469,11 +474,6 @@ pub fn table_answer(q: &Question) -> Result<crate::value::Value, Blocker> {
             "the tables take the same bearing face under head and nut (B2 = B1)",
         ),
         (!q.equal_plates(), lower, "the tables take two equal plates"),
-        (
-            matches!(j.outer_radius(), OuterRadius::Finite(_)),
-            Key::OuterRadius,
-            "the tables take infinite plates (no rim C)",
-        ),
         (
             load.profile() != crate::load::Profile::Uniform || load.inner() != j.hole_radius(),
             Key::LoadProfile,
@@ -500,7 +500,7 @@ pub fn table_answer(q: &Question) -> Result<crate::value::Value, Blocker> {
     }
     let (a, b, d) = (j.hole_radius(), load.outer(), up.thickness());
     let nu = up.material().poisson_ratio();
-    crate::table::lookup::separation_radius(
+    let infinite = crate::table::lookup::separation_radius(
         crate::table::Model::TwoPlates,
         a,
         b,
@@ -508,7 +508,35 @@ pub fn table_answer(q: &Question) -> Result<crate::value::Value, Blocker> {
         nu,
         q.tolerance,
     )
-    .map_err(table_blocker)
+    .map_err(table_blocker)?;
+    let OuterRadius::Finite(c) = j.outer_radius() else {
+        return Ok(infinite);
+    };
+    // a free rim: its shift from the rim table (crate::table::rim), its bar added
+    let shift = crate::table::rim::two_plates_rim_shift(a, b, d, nu, c, infinite.value).map_err(
+        |e| match e {
+            crate::error::InputError::Parameter { field, .. } if field.starts_with("rim") => {
+                Blocker {
+                    key: Key::OuterRadius,
+                    reason: "is within 4 plate thicknesses of the contact edge, nearer than the \
+                             tables' rim law reaches",
+                }
+            }
+            crate::error::InputError::Parameter { field, .. } if field.contains("rim table") => {
+                Blocker {
+                    key: Key::LoadOuterRadius,
+                    reason: "is outside the tables' load widths with a rim ((B - A)/D within \
+                             0.15..4)",
+                }
+            }
+            other => table_blocker(other),
+        },
+    )?;
+    Ok(crate::value::Value::with_tolerance(
+        infinite.value - shift.value,
+        infinite.error + shift.error,
+        q.tolerance,
+    ))
 }
 
 /// The input named by a table lookup's error ([`crate::table::lookup::separation_radius`]):

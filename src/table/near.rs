@@ -207,6 +207,12 @@ impl Panel {
         m
     }
 
+    /// This panel as parsed, with its interpolation bounds computed (they are not shipped).
+    pub(super) fn with_tails(mut self) -> Self {
+        self.tails = self.axis_tails();
+        self
+    }
+
     /// The interpolation bound of each axis (module docs, item 1), in D.
     pub fn tails(&self) -> [f64; 3] {
         self.tails
@@ -287,12 +293,12 @@ pub fn table(model: Model) -> &'static NearTable {
     static TWO: OnceLock<NearTable> = OnceLock::new();
     static SINGLE: OnceLock<NearTable> = OnceLock::new();
     let parse = |json: &str| {
-        let mut t: NearTable =
+        let t: NearTable =
             serde_json::from_str(json).expect("src/table/data/near*.json is written by example 27");
-        for p in &mut t.panels {
-            p.tails = p.axis_tails();
+        NearTable {
+            panels: t.panels.into_iter().map(Panel::with_tails).collect(),
+            ..t
         }
-        t
     };
     match model {
         Model::TwoPlates => TWO.get_or_init(|| parse(include_str!("data/near.json"))),

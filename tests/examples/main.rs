@@ -316,3 +316,13 @@ fn ex30_single_plate_rim() {
     quick();
     ex30::main().unwrap();
 }
+
+#[path = "../../examples/31_two_plate_rim_law.rs"]
+mod ex31;
+
+#[test]
+fn ex31_two_plate_rim_law() {
+    // quick: the rim table against two fresh rimmed solves, and the law on one geometry at 1e-6
+    quick();
+    ex31::main().unwrap();
+}

@@ -42,9 +42,23 @@ fn solve_equals_the_library_call_table1_row1() {
     let steel = Material::new(28.0e6, 0.3).unwrap();
     let joint = two_plate_joint(0.1, 0.31, 1000.0, 0.1, 0.1, 1.54, steel);
     let direct = two_plate::solve(&joint, &TwoPlateParams::default()).unwrap();
-    assert_eq!(s.r_o.to_bits(), direct.r_o.to_bits());
-    assert_eq!(s.r_o_error.to_bits(), direct.r_o_error.to_bits());
-    assert_eq!(s.converged, direct.converged);
+    // auto answers from the tables (the rim table's shift) where their bar meets the scene's
+    // tolerance: then within both bars of the FE, else the FE bit for bit
+    match s.method {
+        boltzone::scene::Method::Table => assert!(
+            (s.r_o - direct.r_o).abs() <= s.r_o_error + direct.r_o_error,
+            "table {} ± {}, FE {} ± {}",
+            s.r_o,
+            s.r_o_error,
+            direct.r_o,
+            direct.r_o_error
+        ),
+        _ => {
+            assert_eq!(s.r_o.to_bits(), direct.r_o.to_bits());
+            assert_eq!(s.r_o_error.to_bits(), direct.r_o_error.to_bits());
+            assert_eq!(s.converged, direct.converged);
+        }
+    }
     // the report's two-plate R_o/A of this row is 3.7 on its coarse mesh, whose values sit up
     // to one nodal interval above the converged R_o (README): ours must lie below, within 0.3 A
     let over_a = s.r_o / 0.1;

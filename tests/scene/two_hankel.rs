@@ -73,11 +73,14 @@ fn the_scene_is_the_library_call_and_agrees_with_the_finite_elements() {
 fn auto_takes_the_route_only_below_3e_5_where_it_applies() {
     let pick = |text: &str| boltzone::scene::run::pick(&Scene::parse(text).unwrap()).0;
     assert_eq!(pick(&scene("auto", 1e-6, "")), Method::Hankel);
-    // at 1e-4 the tables' bar meets it on these infinite plates; with a rim (which the tables
-    // do not take) the FE is the cheaper route above 3e-5
+    // at 1e-4 the tables' bar meets it on these plates, infinite or with Table 1's rim (the rim
+    // table's shift); with a rim within 4 D of R_o (beyond the tables' rim law) the FE is the
+    // cheaper route above 3e-5
     assert_eq!(pick(&scene("auto", 1e-4, "")), Method::Table);
     let rim = "[joint]\nouter_radius = 1.54\n";
-    assert_eq!(pick(&scene("auto", 1e-4, rim)), Method::Fem);
+    assert_eq!(pick(&scene("auto", 1e-4, rim)), Method::Table);
+    let near = "[joint]\nouter_radius = 0.6\n";
+    assert_eq!(pick(&scene("auto", 1e-4, near)), Method::Fem);
     // a finite rim beyond B + D takes the route (its rim correction); one within D does not
     let finite = scene("auto", 1e-6, "[joint]\nouter_radius = 1.54\n");
     assert_eq!(pick(&finite), Method::Hankel);

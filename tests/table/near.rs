@@ -147,7 +147,7 @@ fn outside_the_near_table_the_error_names_the_ratio() {
 }
 
 #[test]
-fn two_by_table_answers_refuses_a_rim_and_verifies() {
+fn two_by_table_answers_verifies_and_refuses_a_rim_near_the_contact() {
     let out = boltzone(&[
         "two", "--a", "0.1", "--b", "0.22", "--d", "0.1", "--method", "table", "--tol", "1e-2",
         "--verify", "--json",
@@ -155,11 +155,19 @@ fn two_by_table_answers_refuses_a_rim_and_verifies() {
     let j = json_of(&out);
     assert_eq!(j["method"], "table");
     assert_eq!(j["verify"]["within_bars"], true, "{j}");
-    let rim = boltzone(&[
+    // Table 1's rim: the rim table's shift, verified by the holed route with the rim
+    let rim = json_of(&boltzone(&[
         "two", "--a", "0.1", "--b", "0.22", "--d", "0.1", "--c", "1.54", "--method", "table",
+        "--tol", "1e-2", "--verify", "--json",
+    ]));
+    assert_eq!(rim["method"], "table");
+    assert_eq!(rim["verify"]["within_bars"], true, "{rim}");
+    // a rim within 4 D of the contact edge: exit 2 naming --c
+    let near = boltzone(&[
+        "two", "--a", "0.1", "--b", "0.22", "--d", "0.1", "--c", "0.3", "--method", "table",
     ]);
-    assert_eq!(rim.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&rim.stderr).contains("--c"));
+    assert_eq!(near.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&near.stderr).contains("--c"));
 }
 
 #[test]

@@ -1,4 +1,4 @@
-//! The single plate's tables with a free rim (`boltzone::table::rim`): the slope floor the bound
+//! The tables with a free rim (`boltzone::table::rim`): the single plate's slope floor the bound
 //! divides by against the route's slopes, the rimmed answers against the Hankel route with the
 //! rim, and the command line.
 
@@ -8,6 +8,7 @@ use boltzone::numerics::random::SplitMix64;
 use boltzone::route::{single_plate, Method};
 use boltzone::table::near::{A_MAX, A_MIN, W_MAX, W_MIN};
 use boltzone::table::rim::SINGLE_PLATE_SLOPE_MIN;
+use boltzone::table::Model;
 use boltzone::{FaceLoad, Material, OuterRadius, SinglePlate};
 
 fn plate(a: f64, b: f64, nu: f64, c: OuterRadius) -> SinglePlate {
@@ -110,4 +111,46 @@ fn single_with_a_rim_answers_from_the_tables_and_a_rim_at_the_contact_is_refused
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("--c") && err.contains("0.35"), "{err}");
+}
+
+#[test]
+fn two_plates_rimmed_table_answers_hold_against_the_holed_route_with_the_rim() {
+    use boltzone::hankel::receding::holed::two_plate_hole_to;
+    use boltzone::table::{lookup, rim};
+    // Table 1's first row (A = D = 0.1 in, B = 0.31 in, C = 1.54 in) and three random plates
+    // of their own seed, the rim 4..40 D beyond R_o
+    let mut rng = SplitMix64::new(3135);
+    let mut cases = vec![(0.1, 0.31, 0.1, 0.3, 1.54)];
+    for _ in 0..3 {
+        let a = rng.log_uniform(A_MIN, A_MAX);
+        let w = rng.log_uniform(W_MIN, rim::W_MAX_TWO);
+        let nu = 0.5 * rng.unit();
+        let inf = lookup::separation_radius(Model::TwoPlates, a, a + w, 1.0, nu, 1.0).unwrap();
+        cases.push((
+            a,
+            a + w,
+            1.0,
+            nu,
+            inf.value + rng.log_uniform(rim::U_MIN, 40.0),
+        ));
+    }
+    for (a, b, d, nu, c) in cases {
+        let inf = lookup::separation_radius(Model::TwoPlates, a, b, d, nu, 1.0).unwrap();
+        let shift = rim::two_plates_rim_shift(a, b, d, nu, c, inf.value).unwrap();
+        assert!(shift.value > 0.0, "a free rim pulls R_o in");
+        let (value, bar) = (inf.value - shift.value, inf.error + shift.error);
+        let load = FaceLoad::uniform(a, b, 1.0).unwrap();
+        let m = Material::unit(nu).unwrap();
+        let p = SinglePlate::new(a, OuterRadius::Finite(c), d, m, load).unwrap();
+        let (h, _) = two_plate_hole_to(&p, 1e-8, &[]).unwrap();
+        assert!(
+            (value - h.r_o).abs() <= bar + h.info.r_o_error,
+            "A {a} B {b} D {d} ν {nu} C {c}: table {value} ± {bar:.1e}, route {} ± {:.1e}",
+            h.r_o,
+            h.info.r_o_error
+        );
+    }
+    // a rim within 4 D of R_o is beyond the law's reach
+    let inf = lookup::separation_radius(Model::TwoPlates, 0.1, 0.31, 0.1, 0.3, 1.0).unwrap();
+    assert!(rim::two_plates_rim_shift(0.1, 0.31, 0.1, 0.3, inf.value + 0.3, inf.value).is_err());
 }
