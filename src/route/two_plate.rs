@@ -513,25 +513,8 @@ pub fn table_answer(q: &Question) -> Result<crate::value::Value, Blocker> {
         return Ok(infinite);
     };
     // a free rim: its shift from the rim table (crate::table::rim), its bar added
-    let shift = crate::table::rim::two_plates_rim_shift(a, b, d, nu, c, infinite.value).map_err(
-        |e| match e {
-            crate::error::InputError::Parameter { field, .. } if field.starts_with("rim") => {
-                Blocker {
-                    key: Key::OuterRadius,
-                    reason: "is within 4 plate thicknesses of the contact edge, nearer than the \
-                             tables' rim law reaches",
-                }
-            }
-            crate::error::InputError::Parameter { field, .. } if field.contains("rim table") => {
-                Blocker {
-                    key: Key::LoadOuterRadius,
-                    reason: "is outside the tables' load widths with a rim ((B - A)/D within \
-                             0.15..4)",
-                }
-            }
-            other => table_blocker(other),
-        },
-    )?;
+    let shift = crate::table::rim::two_plates_rim_shift(a, b, d, nu, c, infinite.value)
+        .map_err(table_blocker)?;
     Ok(crate::value::Value::with_tolerance(
         infinite.value - shift.value,
         infinite.error + shift.error,
@@ -539,8 +522,9 @@ pub fn table_answer(q: &Question) -> Result<crate::value::Value, Blocker> {
     ))
 }
 
-/// The input named by a table lookup's error ([`crate::table::lookup::separation_radius`]):
-/// Poisson's ratio, the hole or the load width outside the tables.
+/// The input named by a table lookup's error ([`crate::table::lookup::separation_radius`],
+/// [`crate::table::rim::two_plates_rim_shift`]): the rim, Poisson's ratio, the hole or the load
+/// width outside the tables.
 pub(super) fn table_blocker(e: crate::error::InputError) -> Blocker {
     use crate::error::InputError;
     let field = match &e {
@@ -549,7 +533,18 @@ pub(super) fn table_blocker(e: crate::error::InputError) -> Blocker {
         | InputError::NotFinite { field, .. } => *field,
         _ => "",
     };
-    if field.starts_with("Poisson") {
+    if field.starts_with("rim") {
+        Blocker {
+            key: Key::OuterRadius,
+            reason: "is within 4 plate thicknesses of the contact edge, nearer than the tables' \
+                     rim law reaches",
+        }
+    } else if field.contains("rim table") {
+        Blocker {
+            key: Key::LoadOuterRadius,
+            reason: "is outside the tables' load widths with a rim ((B - A)/D within 0.15..4)",
+        }
+    } else if field.starts_with("Poisson") {
         Blocker {
             key: Key::Poisson,
             reason: "is outside the tables' Poisson's ratios (0..0.5)",
